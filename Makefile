@@ -1,0 +1,90 @@
+# One entry point: build, test, figures, check, bench. `make help` lists the targets.
+# Objects mirror the source tree under build/ (build-san/ for the sanitizer build).
+
+SANITIZE ?= 0
+SCALE ?= quick
+export SCALE
+
+ifeq ($(SANITIZE),1)
+  BUILD := build-san
+  BIN := build-san/bin
+  OPT := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
+else
+  BUILD := build
+  BIN := bin
+  OPT := -O2 -g
+endif
+
+CC ?= cc
+CXX ?= c++
+WARN := -Wall -Wextra $(if $(WERROR),-Werror)
+CPPFLAGS := -Icore -D_DEFAULT_SOURCE -MMD -MP
+CFLAGS := -std=c11 $(OPT) $(WARN) -pthread
+CXXFLAGS := -std=c++17 $(OPT) $(WARN) -pthread $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
+LDFLAGS := $(OPT) -pthread
+LDLIBS := -lembree3 $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lcjson -lgsl -lgslcblas -lm -lstdc++
+
+CORE_SRC := $(wildcard core/*.c) $(wildcard core/*.cpp)
+CORE_OBJ := $(patsubst %,$(BUILD)/%.o,$(CORE_SRC))
+LIBCORE := $(BUILD)/libcore.a
+
+TEST_SRC := $(wildcard tests/*.c)
+TEST_OBJ := $(patsubst %,$(BUILD)/%.o,$(TEST_SRC))
+TEST_BIN := $(BUILD)/tests/run-tests
+
+EXP_SRC := $(wildcard experiments/*.c)
+EXP_BIN := $(patsubst experiments/%.c,$(BIN)/%,$(EXP_SRC))
+
+.PHONY: all deps test test-fast test-san check bench clean help
+all: $(LIBCORE) $(EXP_BIN) $(TEST_BIN)
+
+deps:
+	@bash scripts/install-deps.sh
+
+$(BUILD)/%.c.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/%.cpp.o: %.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
+
+$(LIBCORE): $(CORE_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BIN)/%: $(BUILD)/experiments/%.c.o $(LIBCORE)
+	@mkdir -p $(dir $@)
+	$(CXX) $(LDFLAGS) $< $(LIBCORE) $(LDLIBS) -o $@
+
+$(TEST_BIN): $(TEST_OBJ) $(LIBCORE)
+	@mkdir -p $(dir $@)
+	$(CXX) $(LDFLAGS) $(TEST_OBJ) $(LIBCORE) $(LDLIBS) -lcriterion -o $@
+
+# Statistical suites are named stat_*; the fast subset is everything else.
+TEST_ARGS ?=
+test: deps all
+	$(TEST_BIN) --jobs 2 $(TEST_ARGS)
+
+test-fast: deps all
+	$(TEST_BIN) --jobs 2 --filter '!(stat_*)/*' $(TEST_ARGS)
+
+# AddressSanitizer + UBSan on the fast tests.
+test-san: deps
+	$(MAKE) SANITIZE=1 test-fast
+
+# Experiments add their figure, check and bench rules here.
+-include experiments/*/*.mk
+
+clean:
+	rm -rf build build-san bin
+
+help:
+	@echo "make            build core, tools (bin/) and tests"
+	@echo "make test       install deps if missing, build, run all tests"
+	@echo "make test-san   fast tests under AddressSanitizer + UBSan"
+	@echo "make check      regression-check every statistic against results/baselines/"
+	@echo "make bench      throughput figures"
+	@echo "SCALE=quick|paper selects experiment sizes (default quick)"
+
+-include $(CORE_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(patsubst %,$(BUILD)/%.d,$(EXP_SRC))

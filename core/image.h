@@ -1,0 +1,42 @@
+/* Framebuffers and image files. File I/O goes through core/oiio.cpp (OpenImageIO has no C API);
+ * every write is atomic: a temporary file in the same directory, then rename(2). */
+#ifndef IMAGE_H
+#define IMAGE_H
+
+#include "vecmath.h"
+#include <stddef.h>
+
+struct image {
+    int w, h;
+    double *px; /* 3 per pixel, row-major, row 0 on top */
+};
+
+struct image *img_create(int w, int h);
+void img_destroy(struct image *im);
+void img_clear(struct image *im);
+static inline void img_add(struct image *im, int x, int y, rgb c)
+{
+    double *p = im->px + 3 * ((size_t)y * im->w + x);
+    p[0] += c.x;
+    p[1] += c.y;
+    p[2] += c.z;
+}
+/* Box filter: the contribution lands in the pixel containing raster position (px, py). */
+static inline void img_splat(struct image *im, double px, double py, rgb c)
+{
+    int x = (int)px, y = (int)py;
+    if (x < 0 || y < 0 || x >= im->w || y >= im->h) return;
+    img_add(im, x, y, c);
+}
+void img_accumulate(struct image *dst, const struct image *src, double scale);
+rgb img_get(const struct image *im, int x, int y);
+
+/* Linear float EXR with the image scaled by `scale`. */
+bool img_write_exr(const struct image *im, double scale, const char *path, char *err, size_t errlen);
+/* Tone-mapped 8-bit PNG: exposure `scale`, clamp, sRGB transfer curve. */
+bool img_write_png(const struct image *im, double scale, const char *path, char *err, size_t errlen);
+/* Reads any OpenImageIO format as linear RGB float (grey is replicated, alpha dropped). */
+bool img_read_rgb(const char *path, int *w, int *h, float **rgb, char *err, size_t errlen);
+struct image *img_read(const char *path, char *err, size_t errlen);
+
+#endif

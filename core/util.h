@@ -1,0 +1,20 @@
+/* Programmer-error checks and allocation that cannot fail silently (Redis-style). */
+#ifndef UTIL_H
+#define UTIL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+void *xmalloc(size_t n);
+void *xcalloc(size_t n, size_t size);
+void *xrealloc(void *p, size_t n);
+char *xstrdup(const char *s);
+void die_assert(const char *expr, const char *file, int line);
+#define ASSERT(e) ((e) ? (void)0 : die_assert(#e, __FILE__, __LINE__))
+
+/* Writes through a temporary file beside `path`, then renames: readers never see a partial file.
+ * `write` is called with the temporary path. */
+typedef bool (*write_fn)(const char *tmp_path, void *ctx, char *err, size_t errlen);
+bool atomic_write(const char *path, write_fn write, void *ctx, char *err, size_t errlen);
+
+#endif

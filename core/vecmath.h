@@ -1,0 +1,75 @@
+/* Vectors, colours, orthonormal frames and 4x4 affine transforms.
+ * Path code works in double precision: inversion round trips (thesis §5.1) must hold to
+ * float tolerance, which single precision cannot guarantee after several bounces.
+ * Colours reuse vec3 (r, g, b in x, y, z) to keep one set of operators. */
+#ifndef VECMATH_H
+#define VECMATH_H
+
+#include <math.h>
+#include <stdbool.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+#define INV_PI (1.0 / M_PI)
+
+typedef struct { double x, y, z; } vec3;
+typedef vec3 rgb;
+
+static inline vec3 v3(double x, double y, double z) { return (vec3){x, y, z}; }
+static inline vec3 v3s(double s) { return (vec3){s, s, s}; }
+static inline vec3 vadd(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline vec3 vsub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline vec3 vmul(vec3 a, vec3 b) { return v3(a.x * b.x, a.y * b.y, a.z * b.z); }
+static inline vec3 vdivs(vec3 a, double s) { return v3(a.x / s, a.y / s, a.z / s); }
+static inline vec3 vscale(vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static inline vec3 vneg(vec3 a) { return v3(-a.x, -a.y, -a.z); }
+/* a + b*s */
+static inline vec3 vmad(vec3 a, vec3 b, double s) { return v3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
+static inline double vdot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline vec3 vcross(vec3 a, vec3 b)
+{
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline double vlen2(vec3 a) { return vdot(a, a); }
+static inline double vlen(vec3 a) { return sqrt(vdot(a, a)); }
+static inline vec3 vnorm(vec3 a) { return vscale(a, 1.0 / vlen(a)); }
+static inline double vmax(vec3 a) { return fmax(a.x, fmax(a.y, a.z)); }
+static inline bool vzero(vec3 a) { return a.x == 0 && a.y == 0 && a.z == 0; }
+static inline bool vfinite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+static inline double vget(vec3 a, int i) { return i == 0 ? a.x : i == 1 ? a.y : a.z; }
+/* Rec. 709 luminance: the scalar target of every MCMC method. */
+static inline double luminance(rgb c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
+static inline double clampd(double x, double lo, double hi) { return x < lo ? lo : x > hi ? hi : x; }
+static inline double sqr(double x) { return x * x; }
+
+/* Orthonormal frame; local z is the normal. */
+typedef struct { vec3 s, t, n; } frame;
+
+frame frame_from_normal(vec3 n);
+static inline vec3 frame_to_local(const frame *f, vec3 v)
+{
+    return v3(vdot(v, f->s), vdot(v, f->t), vdot(v, f->n));
+}
+static inline vec3 frame_to_world(const frame *f, vec3 v)
+{
+    return vadd(vadd(vscale(f->s, v.x), vscale(f->t, v.y)), vscale(f->n, v.z));
+}
+
+/* Row-major 4x4 matrix; points are column vectors (p' = M p). */
+typedef struct { double m[4][4]; } mat4;
+
+mat4 mat4_identity(void);
+mat4 mat4_mul(const mat4 *a, const mat4 *b);
+vec3 mat4_point(const mat4 *m, vec3 p);
+vec3 mat4_vector(const mat4 *m, vec3 v);
+/* Transforms a normal by the inverse transpose of the upper 3x3 (not normalised). */
+vec3 mat4_normal(const mat4 *m, vec3 n);
+bool mat4_invert(const mat4 *m, mat4 *out);
+/* Tungsten's rotYXZ: rotation by Euler angles in degrees, applied Z first, then X, then Y. */
+mat4 mat4_rot_yxz(vec3 degrees);
+/* M = T * R * S, as Tungsten builds transforms from position/rotation/scale. */
+mat4 mat4_trs(vec3 position, vec3 rotation_deg, vec3 scale);
+
+#endif

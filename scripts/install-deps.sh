@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs exactly the Debian packages the harness needs; does nothing when they are all present.
+# Used by the README's set-up, by `make` (deps target) and by .ci/run.
+set -euo pipefail
+pkgs=(
+  build-essential pkg-config
+  libembree-dev            # ray casting (Embree 3)
+  libopenimageio-dev openimageio-tools   # EXR/PNG I/O, image comparison tools
+  libgsl-dev               # statistics: chi-square, normal quantiles
+  libcjson-dev             # scene JSON
+  libcriterion-dev         # test framework
+  gnuplot-nox              # figures
+)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "install-deps: installing ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
