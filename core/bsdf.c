@@ -1,0 +1,30 @@
+/* BSDF dispatch and derived parameters. */
+#include "bsdf.h"
+#include "fresnel.h"
+
+const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type)
+{
+    switch (type) {
+    /* one line per family: case BSDF_X: return &bsdf_x_ops; */
+    default:
+        return NULL;
+    }
+}
+
+/* Hemispherical average of the coat's Fresnel reflectance seen from inside (cosine-weighted):
+ * the fraction of diffusely scattered light the coat sends back down (plastics). */
+static double diffuse_fresnel_inside(double ior)
+{
+    const int n = 2048; /* midpoint rule in cos^2, smooth integrand: error << 1e-6 */
+    double s = 0, ct;
+    for (int i = 0; i < n; i++) {
+        double c = sqrt((i + 0.5) / n);
+        s += fresnel_dielectric(c, 1.0 / ior, &ct);
+    }
+    return s / n;
+}
+
+void bsdf_prepare(struct bsdf *b)
+{
+    if (b->type == BSDF_PLASTIC || b->type == BSDF_ROUGH_PLASTIC) b->diffuse_fresnel = diffuse_fresnel_inside(b->ior);
+}
