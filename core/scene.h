@@ -111,5 +111,7 @@ struct scene *scene_load(const char *path, char *err, size_t errlen);
 /* Same, without building emitters and accel (loader tests, tools). */
 struct scene *scene_load_model(const char *path, char *err, size_t errlen);
 void scene_free(struct scene *s);
+/* Frees what scene_load_model allocated (scene_free also releases emitters and accel). */
+void scene_model_free(struct scene *s);
 
 #endif

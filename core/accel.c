@@ -1,0 +1,131 @@
+/* Embree 3 behind a two-call interface. The only file that includes Embree.
+ * Geometry IDs equal primitive indices so hits map straight back to the scene. */
+#include "accel.h"
+#include "util.h"
+#include <embree3/rtcore.h>
+#include <float.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+struct accel {
+    RTCDevice device;
+    RTCScene scene;
+};
+
+static void on_error(void *user, enum RTCError code, const char *msg)
+{
+    (void)user;
+    fprintf(stderr, "embree error %d: %s\n", (int)code, msg ? msg : "");
+}
+
+static void add_triangles(RTCDevice dev, RTCScene scn, const struct prim *p, unsigned id)
+{
+    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+    /* rtcSetNewGeometryBuffer pads the vertex buffer as Embree's SSE loads require. */
+    float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                       (size_t)p->nverts);
+    unsigned *ix = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
+                                           (size_t)p->ntris);
+    for (int i = 0; i < p->nverts; i++) {
+        v[3 * i] = (float)p->p[i].x;
+        v[3 * i + 1] = (float)p->p[i].y;
+        v[3 * i + 2] = (float)p->p[i].z;
+    }
+    for (int i = 0; i < 3 * p->ntris; i++) ix[i] = (unsigned)p->tri[i];
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(scn, g, id);
+    rtcReleaseGeometry(g);
+}
+
+static void add_sphere(RTCDevice dev, RTCScene scn, const struct prim *p, unsigned id)
+{
+    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1);
+    v[0] = (float)p->center.x;
+    v[1] = (float)p->center.y;
+    v[2] = (float)p->center.z;
+    v[3] = (float)p->radius;
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(scn, g, id);
+    rtcReleaseGeometry(g);
+}
+
+struct accel *accel_build(const struct scene *sc, char *err, size_t errlen)
+{
+    RTCDevice dev = rtcNewDevice(NULL);
+    if (!dev) {
+        snprintf(err, errlen, "%s: cannot create Embree device (error %d)", sc->file, (int)rtcGetDeviceError(NULL));
+        return NULL;
+    }
+    rtcSetDeviceErrorFunction(dev, on_error, NULL);
+    RTCScene scn = rtcNewScene(dev);
+    rtcSetSceneBuildQuality(scn, RTC_BUILD_QUALITY_HIGH);
+    for (int i = 0; i < sc->nprims; i++) {
+        const struct prim *p = &sc->prims[i];
+        if (p->kind == PRIM_SPHERE) add_sphere(dev, scn, p, (unsigned)i);
+        else if (p->kind == PRIM_MESH || p->kind == PRIM_QUAD) add_triangles(dev, scn, p, (unsigned)i);
+    }
+    rtcCommitScene(scn);
+    if (rtcGetDeviceError(dev) != RTC_ERROR_NONE) {
+        snprintf(err, errlen, "%s: Embree could not build the scene", sc->file);
+        rtcReleaseScene(scn);
+        rtcReleaseDevice(dev);
+        return NULL;
+    }
+    struct accel *a = xmalloc(sizeof *a);
+    a->device = dev;
+    a->scene = scn;
+    return a;
+}
+
+void accel_free(struct accel *a)
+{
+    if (!a) return;
+    rtcReleaseScene(a->scene);
+    rtcReleaseDevice(a->device);
+    free(a);
+}
+
+static void make_ray(struct RTCRay *r, vec3 o, vec3 d, double tmin, double tmax)
+{
+    r->org_x = (float)o.x;
+    r->org_y = (float)o.y;
+    r->org_z = (float)o.z;
+    r->dir_x = (float)d.x;
+    r->dir_y = (float)d.y;
+    r->dir_z = (float)d.z;
+    r->tnear = (float)tmin;
+    r->tfar = tmax >= FLT_MAX ? INFINITY : (float)tmax;
+    r->mask = 0xFFFFFFFFu;
+    r->flags = 0;
+    r->time = 0;
+    r->id = 0;
+}
+
+bool accel_intersect(const struct accel *a, vec3 o, vec3 d, double tmin, double tmax, struct hit *h)
+{
+    struct RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    struct RTCRayHit rh __attribute__((aligned(16)));
+    make_ray(&rh.ray, o, d, tmin, tmax);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(a->scene, &ctx, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    h->t = rh.ray.tfar;
+    h->prim = (int)rh.hit.geomID;
+    h->tri = (int)rh.hit.primID;
+    h->b1 = rh.hit.u;
+    h->b2 = rh.hit.v;
+    return true;
+}
+
+bool accel_occluded(const struct accel *a, vec3 o, vec3 d, double tmin, double tmax)
+{
+    struct RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    struct RTCRay r __attribute__((aligned(16)));
+    make_ray(&r, o, d, tmin, tmax);
+    rtcOccluded1(a->scene, &ctx, &r);
+    return r.tfar < 0; /* Embree sets tfar = -inf on a hit */
+}

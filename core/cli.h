@@ -1,0 +1,15 @@
+/* Command-line parsing helpers for the tools: every bad value is one error line and exit 2. */
+#ifndef CLI_H
+#define CLI_H
+
+#include <stdint.h>
+
+/* Prints "PROG: message" to stderr and exits with status 2. */
+_Noreturn void cli_fail(const char *prog, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+long cli_long(const char *prog, const char *opt, const char *val, long lo, long hi);
+double cli_double(const char *prog, const char *opt, const char *val, double lo, double hi);
+uint64_t cli_u64(const char *prog, const char *opt, const char *val);
+/* The value after option argv[*i]; fails if missing. */
+const char *cli_value(const char *prog, int argc, char **argv, int *i);
+
+#endif

@@ -1,0 +1,101 @@
+/* Joining subpaths: contributions and the density bookkeeping at the connection. */
+#include "connect.h"
+#include "camera.h"
+#include "emitter.h"
+
+static vec3 dir_to(const struct vertex *a, const struct vertex *b) { return vnorm(vsub(b->p, a->p)); }
+
+/* Solid-angle density with which vertex `at` (entered from `from_dir`, world, toward its
+ * predecessor) scatters toward `to`; for the camera and emitter vertices their own densities. */
+static double scatter_pdf(const struct scene *sc, const struct vertex *at, vec3 from_dir, const struct vertex *to)
+{
+    vec3 d = dir_to(at, to);
+    if (at->kind == VK_CAMERA) return camera_pdf_dir(&sc->cam, d);
+    if (at->kind == VK_EMITTER) return emitter_pdf_dir(at->ng, d);
+    if (!at->bc.b) return 0;
+    return bsdf_pdf(&at->bc, frame_to_local(&at->sh, from_dir), frame_to_local(&at->sh, d));
+}
+
+/* Geometric normal on the emitting side of an emitter hit by a camera walk. */
+static vec3 emit_normal(const struct vertex *v) { return v->flipped ? vneg(v->ng) : v->ng; }
+
+void connect_densities(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t,
+                       struct mis_path *m)
+{
+    const struct scene *sc = pc->sc;
+    int k = s + t - 1;
+    m->k = k;
+    for (int i = 0; i < s; i++) {
+        m->pl[i] = y[i].pdf_fwd;
+        m->pc[i] = y[i].pdf_rev;
+        m->delta[i] = y[i].delta;
+    }
+    for (int j = 0; j < t; j++) {
+        m->pc[k - j] = z[j].pdf_fwd;
+        m->pl[k - j] = z[j].pdf_rev;
+        m->delta[k - j] = z[j].delta;
+    }
+    const struct vertex *zc = &z[t - 1];
+    if (s == 0) {
+        /* z_{t-1} lies on an emitter: densities of generating it, and z_{t-2} from it, by emission. */
+        m->pl[0] = emitter_pick_prob(sc, zc->prim) * emitter_pdf_pos(sc, zc->prim, zc->p);
+        if (t >= 2) m->pl[1] = pdf_to_area(emitter_pdf_dir(emit_normal(zc), dir_to(zc, &z[t - 2])), zc, &z[t - 2]);
+        m->delta[0] = false;
+        return;
+    }
+    const struct vertex *yc = &y[s - 1];
+    vec3 to_z = dir_to(yc, zc), to_y = vneg(to_z);
+    m->delta[s - 1] = m->delta[s] = false;
+    /* camera side generating y_{s-1}, then y_{s-2} */
+    m->pc[s - 1] = pdf_to_area(scatter_pdf(sc, zc, zc->wi, yc), zc, yc);
+    if (s >= 2) m->pc[s - 2] = pdf_to_area(scatter_pdf(sc, yc, to_z, &y[s - 2]), yc, &y[s - 2]);
+    /* emitter side generating z_{t-1}, then z_{t-2} */
+    m->pl[s] = pdf_to_area(scatter_pdf(sc, yc, yc->wi, zc), yc, zc);
+    if (t >= 2) m->pl[s + 1] = pdf_to_area(scatter_pdf(sc, zc, to_y, &z[t - 2]), zc, &z[t - 2]);
+}
+
+/* f at a connection endpoint: the BSDF (no cosine), the emitted radiance, or the importance. */
+static rgb endpoint_f(const struct scene *sc, const struct vertex *v, vec3 d, enum transport mode)
+{
+    if (v->kind == VK_CAMERA) return v3s(camera_pdf_dir(&sc->cam, d));
+    if (v->kind == VK_EMITTER) return emitter_radiance(sc, v->prim, v->ng, d);
+    if (!v->bc.b || bsdf_ops_for(v->bc.b->type)->delta_only) return v3s(0);
+    return bsdf_eval(&v->bc, frame_to_local(&v->sh, v->wi), frame_to_local(&v->sh, d), mode);
+}
+
+static double endpoint_cos(const struct vertex *v, vec3 d)
+{
+    if (v->kind == VK_CAMERA) return 1.0;
+    if (v->kind == VK_EMITTER) return fabs(vdot(v->ng, d));
+    return fabs(vdot(v->sh.n, d));
+}
+
+bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t,
+                int max_s, struct connection *out, double *ratios)
+{
+    const struct scene *sc = pc->sc;
+    const struct vertex *zc = &z[t - 1];
+    out->px = z[0].px;
+    out->py = z[0].py;
+    if (s == 0) {
+        if (t < 2 || zc->kind != VK_SURFACE || !zc->front || !sc->prims[zc->prim].emissive) return false;
+        out->f = vmul(zc->beta, vertex_emission(sc, zc, zc->wi));
+    } else {
+        const struct vertex *yc = &y[s - 1];
+        vec3 d = vsub(zc->p, yc->p);
+        double dist2 = vlen2(d);
+        if (dist2 == 0) return false;
+        d = vscale(d, 1.0 / sqrt(dist2));
+        if (t == 1 && !camera_raster(&sc->cam, vneg(d), &out->px, &out->py)) return false;
+        rgb fy = endpoint_f(sc, yc, d, TRANSPORT_IMPORTANCE), fz = endpoint_f(sc, zc, vneg(d), TRANSPORT_RADIANCE);
+        double g = endpoint_cos(yc, d) * endpoint_cos(zc, d) / dist2;
+        out->f = vscale(vmul(vmul(yc->beta, fy), vmul(fz, zc->beta)), g);
+        if (vzero(out->f) || !visible(sc, yc, zc)) return false;
+    }
+    if (vzero(out->f)) return false;
+    struct mis_path m;
+    connect_densities(pc, y, s, z, t, &m);
+    double r[MAX_PATH_LENGTH + 2];
+    out->w = mis_weights(&m, s, max_s, ratios ? ratios : r);
+    return true;
+}

@@ -1,0 +1,92 @@
+#include "parallel.h"
+#include "util.h"
+#include <pthread.h>
+#include <stdlib.h>
+#include <stdio.h>
+#include <time.h>
+#include <unistd.h>
+
+double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int cpu_count(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n > 0 ? (int)n : 1;
+}
+
+struct job {
+    void (*fn)(int, void *);
+    void *ctx;
+    int tid;
+};
+
+static void *trampoline(void *p)
+{
+    struct job *j = p;
+    j->fn(j->tid, j->ctx);
+    return NULL;
+}
+
+void parallel_run(int threads, void (*fn)(int tid, void *ctx), void *ctx)
+{
+    if (threads < 1) threads = 1;
+    pthread_t *th = xcalloc((size_t)threads, sizeof *th);
+    struct job *jobs = xcalloc((size_t)threads, sizeof *jobs);
+    for (int i = 1; i < threads; i++) {
+        jobs[i] = (struct job){fn, ctx, i};
+        if (pthread_create(&th[i], NULL, trampoline, &jobs[i]) != 0) {
+            fprintf(stderr, "cannot start worker thread\n");
+            abort();
+        }
+    }
+    fn(0, ctx);
+    for (int i = 1; i < threads; i++) pthread_join(th[i], NULL);
+    free(th);
+    free(jobs);
+}
+
+void progress_init(struct progress *p, const char *label, long total, bool enabled)
+{
+    p->label = label;
+    p->total = total > 0 ? total : 1;
+    atomic_init(&p->done, 0);
+    atomic_init(&p->last_draw_ms, 0);
+    p->start = now_seconds();
+    p->enabled = enabled;
+    atomic_init(&p->drawn, false);
+}
+
+static void draw(struct progress *p, long done)
+{
+    double el = now_seconds() - p->start, f = (double)done / (double)p->total;
+    int bar = (int)(f * 30);
+    char b[31];
+    for (int i = 0; i < 30; i++) b[i] = i < bar ? '#' : '.';
+    b[30] = 0;
+    double eta = f > 0 ? el * (1 - f) / f : 0;
+    fprintf(stderr, "\r%s [%s] %5.1f%%  %.0fs elapsed, ~%.0fs left ", p->label, b, 100 * f, el, eta);
+    p->drawn = true;
+}
+
+void progress_add(struct progress *p, long n)
+{
+    long done = atomic_fetch_add(&p->done, n) + n;
+    if (!p->enabled) return;
+    long ms = (long)((now_seconds() - p->start) * 1000);
+    long last = atomic_load(&p->last_draw_ms);
+    if (ms < 1000 || ms - last < 100) return;
+    if (atomic_compare_exchange_strong(&p->last_draw_ms, &last, ms)) draw(p, done);
+}
+
+void progress_finish(struct progress *p)
+{
+    if (p->enabled && p->drawn) {
+        draw(p, atomic_load(&p->done));
+        fputc('\n', stderr);
+    }
+}

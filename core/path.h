@@ -1,0 +1,87 @@
+/* Path vertices, random walks (thesis Alg. 1), inverse random walks (Alg. 2) and the
+ * multiple-importance weights of every technique of a path (Eq. 5.21-5.25).
+ *
+ * Camera subpath z_0 (camera), z_1, ...; emitter subpath y_0 (point on an emitter), y_1, ...
+ * Technique (s, t) joins y_0..y_{s-1} and z_{t-1}..z_0 into a path of length s + t - 1 segments.
+ * Dimension blocks: camera stream block 0 = image position; block i >= 1 = BSDF sampling at z_i.
+ * Emitter stream block 0 = light choice, position, direction; block i >= 1 = BSDF sampling at y_i.
+ *
+ * Throughput convention: z_0.beta = 1 (the pinhole's importance equals its direction density, see
+ * camera.h); y_0.beta = 1 / (pick * pdf_pos); vertex i's beta is the subpath's contribution up to
+ * and including the sampling of vertex i. pdf_fwd is the area density of a vertex given its
+ * predecessor in its own subpath, pdf_rev the area density of generating it from its successor
+ * (0 stands for a Dirac density, which cancels in the MIS ratios as in Veach's thesis). */
+#ifndef PATH_H
+#define PATH_H
+
+#include "accel.h"
+#include "bsdf.h"
+#include "sampler.h"
+#include "scene.h"
+
+enum vertex_kind { VK_CAMERA, VK_EMITTER, VK_SURFACE };
+
+struct vertex {
+    enum vertex_kind kind;
+    vec3 p;
+    vec3 ng;            /* geometric normal, flipped to the incoming side for two-sided shading */
+    frame sh;           /* shading frame, flipped like ng */
+    bool front;         /* reached from the front (emitting) side of the geometry */
+    bool flipped;       /* two-sided shading flipped the frame */
+    int prim, tri;
+    double b1, b2;      /* barycentrics on triangles */
+    struct bsdf_ctx bc; /* bc.b == NULL: no scattering (null BSDF) */
+    vec3 wi;            /* unit, toward the previous vertex of its subpath (world) */
+    rgb beta;
+    double pdf_fwd, pdf_rev;
+    bool delta;         /* the next vertex of its subpath was sampled by a delta lobe */
+    double px, py;      /* camera vertex: raster position of the primary ray */
+};
+
+struct path_ctx {
+    const struct scene *sc;
+    int max_length;     /* segments */
+};
+
+/* Thesis Alg. 1. Fill `v` (capacity MAX_SUBPATH_VERTS) and return the vertex count.
+ * Camera walks stop after max_verts vertices, at a miss, or at a null/absorbing surface. */
+int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts);
+int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts);
+
+/* The emitter vertex y_0 from the current block (light choice and position). */
+bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y);
+
+/* Thesis Alg. 2: write the numbers that make walk_* reproduce the subpath's vertices from vertex
+ * `from` on (from = 0: the whole subpath; from > 0: partial inversion of a suffix, keeping the
+ * numbers of the earlier blocks). Returns false when a step is not invertible. */
+bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w);
+bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w);
+
+/* Surface vertex from a ray hit; `incoming` is the ray direction. */
+void surface_from_hit(const struct scene *sc, vec3 origin, vec3 dir, const struct hit *h, struct vertex *v);
+
+/* Area density at `to` of a direction sampled at `from` with solid-angle density pdf. */
+double pdf_to_area(double pdf_sa, const struct vertex *from, const struct vertex *to);
+
+/* Radiance emitted by vertex v (an emitter surface reached from its front) toward direction w. */
+rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w);
+
+/* Self-intersection offset for rays leaving p. */
+double ray_eps(vec3 p);
+
+/* Unoccluded test between two vertices. */
+bool visible(const struct scene *sc, const struct vertex *a, const struct vertex *b);
+
+/* MIS. The densities of a full path x_0 (on an emitter) .. x_k (camera): pl[i] = area density of
+ * x_i generated from the emitter side, pc[i] from the camera side (0 = Dirac), delta[i] = x_i
+ * scatters by a delta lobe. ratios[j] = p_j / p_s for every technique j = 0..k (j light vertices;
+ * 0 where technique j cannot produce the path), and the return value is the balance-heuristic
+ * weight of technique s. `max_s` limits the techniques considered (a path tracer uses 1). */
+struct mis_path {
+    int k;
+    double pl[MAX_PATH_LENGTH + 2], pc[MAX_PATH_LENGTH + 2];
+    bool delta[MAX_PATH_LENGTH + 2];
+};
+double mis_weights(const struct mis_path *m, int s, int max_s, double *ratios);
+
+#endif

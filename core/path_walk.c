@@ -1,0 +1,77 @@
+/* Random walks, thesis Alg. 1: every number comes from the sampler, in fixed per-vertex blocks. */
+#include "camera.h"
+#include "emitter.h"
+#include "path.h"
+
+/* Extends a subpath whose last vertex v[n-1] emits direction d with solid-angle density pdf_sa
+ * (0 for a delta lobe); beta is the throughput the next vertex receives. */
+static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts,
+                 vec3 d, double pdf_sa, rgb beta, enum transport mode, int stream)
+{
+    const struct scene *sc = pc->sc;
+    while (n < max_verts) {
+        struct vertex *prev = &v[n - 1], *cur = &v[n];
+        struct hit h;
+        double eps = prev->kind == VK_CAMERA ? 0 : ray_eps(prev->p);
+        if (!accel_intersect(sc->accel, prev->p, d, eps, INFINITY, &h)) break;
+        surface_from_hit(sc, prev->p, d, &h, cur);
+        cur->beta = beta;
+        cur->pdf_fwd = pdf_sa > 0 ? pdf_to_area(pdf_sa, prev, cur) : 0;
+        n++;
+        if (!cur->bc.b || n >= max_verts) break;
+        sampler_begin(s, stream, n - 1);
+        vec3 wi = frame_to_local(&cur->sh, cur->wi);
+        struct bsdf_sample bs;
+        if (!bsdf_sample(&cur->bc, wi, s, mode, &bs)) break;
+        vec3 wo = frame_to_world(&cur->sh, bs.wo);
+        /* A shading normal may disagree with the geometry: such directions would leak light. */
+        if ((vdot(wo, cur->ng) > 0) != (bs.wo.z > 0)) break;
+        beta = vmul(beta, bs.weight);
+        if (vzero(beta) || !vfinite(beta)) break;
+        cur->delta = bs.delta;
+        prev->pdf_rev = bs.delta ? 0 : pdf_to_area(bsdf_pdf(&cur->bc, bs.wo, wi), cur, prev);
+        d = wo;
+        pdf_sa = bs.delta ? 0 : bs.pdf;
+    }
+    return n;
+}
+
+int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts)
+{
+    const struct camera *cam = &pc->sc->cam;
+    if (max_verts < 1) return 0;
+    sampler_begin(s, STREAM_CAMERA, 0);
+    struct vertex *z = &v[0];
+    *z = (struct vertex){.kind = VK_CAMERA, .p = cam->pos, .ng = cam->basis.n, .sh = cam->basis,
+                         .front = true, .prim = -1, .tri = -1, .beta = v3s(1), .pdf_fwd = 1};
+    vec3 d = camera_sample_dir(cam, s, &z->px, &z->py);
+    return trace(pc, s, v, 1, max_verts, d, camera_pdf_dir(cam, d), v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA);
+}
+
+/* The emitter vertex y_0 from block 0 of the emitter stream (also a path tracer's light sample). */
+bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
+{
+    double pick;
+    int prim = emitter_pick(sc, s, &pick);
+    struct emitter_pos pos;
+    if (prim < 0 || !emitter_sample_pos(sc, prim, s, &pos) || !(pos.pdf > 0)) return false;
+    *y = (struct vertex){.kind = VK_EMITTER, .p = pos.p, .ng = pos.n, .sh = frame_from_normal(pos.n),
+                         .front = true, .prim = prim, .tri = pos.tri, .pdf_fwd = pick * pos.pdf};
+    y->beta = v3s(1.0 / y->pdf_fwd);
+    return true;
+}
+
+int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts)
+{
+    const struct scene *sc = pc->sc;
+    if (max_verts < 1) return 0;
+    sampler_begin(s, STREAM_EMITTER, 0);
+    if (!sample_emitter_vertex(sc, s, &v[0])) return 0;
+    double pdf_dir;
+    vec3 d = emitter_sample_dir(v[0].ng, s, &pdf_dir);
+    rgb le = emitter_radiance(sc, v[0].prim, v[0].ng, d);
+    double c = fabs(vdot(d, v[0].ng));
+    if (!(pdf_dir > 0) || vzero(le)) return 1;
+    rgb beta = vscale(vmul(v[0].beta, le), c / pdf_dir);
+    return trace(pc, s, v, 1, max_verts, d, pdf_dir, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER);
+}

@@ -1,0 +1,98 @@
+#include "render.h"
+#include "integrator.h"
+#include "parallel.h"
+#include "util.h"
+#include <stdlib.h>
+#include <string.h>
+
+static const char *names[] = {"pt", "bdpt"};
+
+const char *method_name(enum method m) { return names[m]; }
+
+bool method_parse(const char *s, enum method *m)
+{
+    for (int i = 0; i < (int)(sizeof names / sizeof *names); i++)
+        if (!strcmp(s, names[i])) {
+            *m = (enum method)i;
+            return true;
+        }
+    return false;
+}
+
+/* Stratifies camera samples by pixel: the image dims land inside pixel (x, y), every other
+ * number is independent. The annotation is what makes this possible without touching path code. */
+struct pixel_sampler {
+    struct sampler base;
+    rng r;
+    double x0, y0, sx, sy;
+};
+
+static double pixel_next(struct sampler *s, enum dim_kind kind)
+{
+    struct pixel_sampler *p = (struct pixel_sampler *)s;
+    double u = rng_uniform(&p->r);
+    if (kind == DIM_IMAGE_X) return (p->x0 + u) * p->sx;
+    if (kind == DIM_IMAGE_Y) return (p->y0 + u) * p->sy;
+    return u;
+}
+static const struct sampler_ops pixel_ops = {pixel_next, NULL, NULL};
+
+struct job {
+    const struct scene *sc;
+    const struct render_opts *o;
+    struct image **img;
+    long *nonfinite;
+    struct progress prog;
+};
+
+static void worker(int tid, void *p)
+{
+    struct job *j = p;
+    const struct scene *sc = j->sc;
+    const struct render_opts *o = j->o;
+    struct path_ctx pc = {sc, o->max_length};
+    struct scratch *w = xmalloc(sizeof *w);
+    w->nonfinite = 0;
+    struct image *img = j->img[tid];
+    int W = sc->cam.width, H = sc->cam.height;
+    struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H};
+    for (int y = tid; y < H; y += o->threads) {
+        for (int x = 0; x < W; x++) {
+            s.x0 = x;
+            s.y0 = y;
+            for (int i = 0; i < o->spp; i++) {
+                rng_seed(&s.r, o->seed, ((uint64_t)y * W + x) * (uint64_t)o->spp + (uint64_t)i);
+                if (o->method == METHOD_PT) pt_sample(&pc, &s.base, w, img);
+                else bdpt_sample(&pc, &s.base, w, img);
+            }
+        }
+        progress_add(&j->prog, 1);
+    }
+    j->nonfinite[tid] = w->nonfinite;
+    free(w);
+}
+
+struct image *render_mc(const struct scene *sc, const struct render_opts *o, struct render_stats *st)
+{
+    int W = sc->cam.width, H = sc->cam.height, T = o->threads < 1 ? 1 : o->threads;
+    struct render_opts opts = *o;
+    opts.threads = T;
+    struct job j = {sc, &opts, xcalloc((size_t)T, sizeof(struct image *)), xcalloc((size_t)T, sizeof(long)), {0}};
+    for (int i = 0; i < T; i++) j.img[i] = img_create(W, H);
+    progress_init(&j.prog, method_name(o->method), H, o->progress);
+    double t0 = now_seconds();
+    parallel_run(T, worker, &j);
+    progress_finish(&j.prog);
+    struct image *out = img_create(W, H);
+    st->nonfinite = 0;
+    for (int i = 0; i < T; i++) { /* fixed order: reproducible sums */
+        img_accumulate(out, j.img[i], 1.0 / o->spp);
+        st->nonfinite += j.nonfinite[i];
+        img_destroy(j.img[i]);
+    }
+    st->seconds = now_seconds() - t0;
+    st->samples = (long)W * H * o->spp;
+    free(j.img);
+    free(j.nonfinite);
+    return out;
+}

@@ -1,0 +1,34 @@
+/* The Monte Carlo render driver: pixels in rows dealt round-robin to threads, one sampler stream
+ * per camera sample, per-thread framebuffers merged in thread order. For a given seed and thread
+ * count the image is bitwise reproducible; it also does not depend on the thread count except
+ * through the summation order of light-tracing splats. */
+#ifndef RENDER_H
+#define RENDER_H
+
+#include "image.h"
+#include "scene.h"
+#include <stdint.h>
+
+enum method { METHOD_PT, METHOD_BDPT };
+
+struct render_opts {
+    enum method method;
+    int spp;
+    uint64_t seed;
+    int threads;
+    int max_length;
+    bool progress;
+};
+
+struct render_stats {
+    long samples;
+    double seconds;
+    long nonfinite;
+};
+
+/* Returns the image in final units (average radiance per pixel). */
+struct image *render_mc(const struct scene *sc, const struct render_opts *o, struct render_stats *st);
+const char *method_name(enum method m);
+bool method_parse(const char *s, enum method *m);
+
+#endif
