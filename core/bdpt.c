@@ -14,7 +14,9 @@ void bdpt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w
         for (int s_ = 0; s_ <= ny; s_++) {
             int k = s_ + t - 1;
             if (k < 1 || k > K) continue;
+            if (pc->only_t > 0 && (s_ != pc->only_s || t != pc->only_t)) continue;
             if (!connect_st(pc, w->emi, s_, w->cam, t, k, &c, NULL)) continue;
+            if (pc->only_t > 0) c.w = 1;
             if (t == 1) splat_checked(img, w, c.px, c.py, vscale(c.f, c.w));
             else sum = vmad(sum, c.f, c.w);
         }

@@ -41,6 +41,9 @@ struct vertex {
 struct path_ctx {
     const struct scene *sc;
     int max_length;     /* segments */
+    /* BDPT restricted to one technique (s, t), unweighted, when only_t > 0: each technique alone is
+     * an unbiased estimator of the paths of length s + t - 1 (tests, per-technique images). */
+    int only_s, only_t;
 };
 
 /* Thesis Alg. 1. Fill `v` (capacity MAX_SUBPATH_VERTS) and return the vertex count.

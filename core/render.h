@@ -18,6 +18,7 @@ struct render_opts {
     int threads;
     int max_length;
     bool progress;
+    int only_s, only_t; /* BDPT: one technique, unweighted (only_t > 0) */
 };
 
 struct render_stats {
