@@ -73,6 +73,9 @@ test-fast: deps all
 test-san: deps
 	$(MAKE) SANITIZE=1 test-fast
 
+bench: deps all
+	$(BIN)/bench
+
 # Experiments add their figure, check and bench rules here.
 -include experiments/*/*.mk
 

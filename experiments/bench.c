@@ -1,0 +1,110 @@
+/* bin/bench: throughput on a committed scene. Embree's raw incoherent ray rate, PT and BDPT camera
+ * samples per second on one and two threads (320x180, max length 8 by default), the speed-up, and
+ * peak memory. Numbers are medians over --runs repetitions. */
+#include "accel.h"
+#include "camera.h"
+#include "cli.h"
+#include "parallel.h"
+#include "render.h"
+#include "warp.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+
+static const char *usage = "usage: bench [SCENE.json] [--runs N] [--seconds S] [--max-length K]\n"
+                           "  SCENE defaults to scenes/cornell-box/scene.json, rendered at 320x180.\n";
+
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_d);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* Random rays from points inside the scene's box in uniform directions: incoherent by design. */
+static double ray_rate(const struct scene *sc, double seconds)
+{
+    rng r;
+    rng_seed(&r, 3, 0);
+    long n = 0, hits = 0;
+    double t0 = now_seconds();
+    vec3 lo = sc->bbox_min, ext = vsub(sc->bbox_max, sc->bbox_min);
+    while (now_seconds() - t0 < seconds) {
+        for (int i = 0; i < 100000; i++) {
+            vec3 o = v3(lo.x + ext.x * rng_uniform(&r), lo.y + ext.y * rng_uniform(&r), lo.z + ext.z * rng_uniform(&r));
+            vec3 d = warp_uniform_sphere(rng_uniform(&r), rng_uniform(&r));
+            struct hit h;
+            hits += accel_intersect(sc->accel, o, d, 0, INFINITY, &h);
+        }
+        n += 100000;
+    }
+    (void)hits;
+    return n / (now_seconds() - t0);
+}
+
+static double sample_rate(const struct scene *sc, enum method m, int threads, int K, double seconds)
+{
+    struct render_opts o = {m, 1, 1, threads, K, false, 0, 0};
+    struct render_stats st;
+    img_destroy(render_mc(sc, &o, &st));
+    o.spp = (int)fmax(1, seconds / st.seconds);
+    img_destroy(render_mc(sc, &o, &st));
+    return st.samples / st.seconds;
+}
+
+int main(int argc, char **argv)
+{
+    const char *prog = "bench", *path = "scenes/cornell-box/scene.json";
+    int runs = 3, K = 8;
+    double seconds = 1.5;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "--runs")) {
+            runs = (int)cli_long(prog, argv[i], cli_value(prog, argc, argv, &i), 1, 99);
+        } else if (!strcmp(argv[i], "--seconds")) {
+            seconds = cli_double(prog, argv[i], cli_value(prog, argc, argv, &i), 0.01, 600);
+        } else if (!strcmp(argv[i], "--max-length")) {
+            K = (int)cli_long(prog, argv[i], cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
+        } else if (argv[i][0] == '-') {
+            cli_fail(prog, "unknown option '%s' (see --help)", argv[i]);
+        } else {
+            path = argv[i];
+        }
+    }
+    char err[1024];
+    struct scene *sc = scene_load(path, err, sizeof err);
+    if (!sc) {
+        fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    camera_resize(&sc->cam, 320, 180);
+    double v[5][99];
+    for (int r = 0; r < runs; r++) {
+        v[0][r] = ray_rate(sc, seconds);
+        v[1][r] = sample_rate(sc, METHOD_PT, 1, K, seconds);
+        v[2][r] = sample_rate(sc, METHOD_PT, 2, K, seconds);
+        v[3][r] = sample_rate(sc, METHOD_BDPT, 1, K, seconds);
+        v[4][r] = sample_rate(sc, METHOD_BDPT, 2, K, seconds);
+    }
+    double m[5];
+    for (int i = 0; i < 5; i++) m[i] = median(v[i], runs);
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    printf("# %s at 320x180, max length %d, median of %d runs\n", path, K, runs);
+    printf("%-34s %12.0f\n", "embree incoherent rays/s (1 thread)", m[0]);
+    printf("%-34s %12.0f\n", "pt samples/s (1 thread)", m[1]);
+    printf("%-34s %12.0f   speed-up %.2fx\n", "pt samples/s (2 threads)", m[2], m[2] / m[1]);
+    printf("%-34s %12.0f\n", "bdpt samples/s (1 thread)", m[3]);
+    printf("%-34s %12.0f   speed-up %.2fx\n", "bdpt samples/s (2 threads)", m[4], m[4] / m[3]);
+    printf("%-34s %12.1f\n", "peak memory (MB)", ru.ru_maxrss / 1024.0);
+    scene_free(sc);
+    return 0;
+}
