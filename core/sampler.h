@@ -19,10 +19,12 @@ enum dim_kind {
     DIM_CONTINUOUS, /* drives a continuous mapping (direction, position) */
     DIM_DISCRETE,   /* drives a discrete decision (lobe, reflect/refract, light choice, RR) */
     DIM_IMAGE_X,    /* image-plane position of the camera subpath */
-    DIM_IMAGE_Y
+    DIM_IMAGE_Y,
+    DIM_TECHNIQUE   /* MMLT's technique index: small steps mutate it like a continuous number
+                       (MMLT §4), constrained discrete choices leave it free */
 };
 
-enum { STREAM_CAMERA = 0, STREAM_EMITTER = 1, STREAM_COUNT = 2 };
+enum { STREAM_CAMERA = 0, STREAM_EMITTER = 1, STREAM_TECHNIQUE = 2, STREAM_COUNT = 3 };
 
 #define SAMPLER_BLOCK 8      /* dimensions per vertex */
 #define MAX_PATH_LENGTH 32   /* segments; subpaths hold at most MAX_PATH_LENGTH + 1 vertices */

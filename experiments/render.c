@@ -22,7 +22,7 @@ static const char *usage =
 int main(int argc, char **argv)
 {
     const char *prog = "render", *scene_path = NULL, *out = "out";
-    struct render_opts o = {METHOD_BDPT, -1, 1, cpu_count(), -1, true};
+    struct render_opts o = {.method = METHOD_BDPT, .spp = -1, .seed = 1, .threads = cpu_count(), .max_length = -1, .progress = true};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {

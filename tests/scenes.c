@@ -8,7 +8,7 @@ struct scene *test_scene(const char *path)
 {
     char err[1024];
     struct scene *s = scene_load(path, err, sizeof err);
-    if (!s) cr_fatal("cannot load %s: %s", path, err);
+    cr_assert(s != NULL, "cannot load %s: %s", path, err);
     return s;
 }
 

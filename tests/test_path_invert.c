@@ -28,7 +28,7 @@ static bool same_prefix(const struct vertex *a, int na, const struct vertex *b, 
 static void check_scene(const char *path)
 {
     struct scene *sc = test_scene(path);
-    struct path_ctx pc = {sc, 8};
+    struct path_ctx pc = {.sc = sc, .max_length = 8};
     static struct vertex a[MAX_SUBPATH_VERTS], b[MAX_SUBPATH_VERTS];
     static struct sampler_writer w;
     struct sampler_independent ind;

@@ -1,0 +1,127 @@
+/* Lazy primary-sample-space mutations with exact restore (see pss.h). */
+#include "pss.h"
+#include <math.h>
+#include <string.h>
+
+void pss_opts_default(struct pss_opts *o, int width, int height)
+{
+    *o = (struct pss_opts){KERNEL_KELEMEN, 1.0 / 1024, 1.0 / 64, 1.0 / 64, false, false, false, width, height, 1024};
+}
+
+static double wrap(double u)
+{
+    u -= floor(u);
+    return u >= 1.0 ? 0.0 : u;
+}
+
+double pss_small_step(struct pss_sampler *p, enum dim_kind kind, double u)
+{
+    if (p->o.cdc && kind == DIM_DISCRETE) return u;
+    double scale = kind == DIM_IMAGE_X ? p->scale_x : kind == DIM_IMAGE_Y ? p->scale_y : 1.0;
+    double step;
+    if (p->o.kernel == KERNEL_KELEMEN) {
+        /* Kelemen et al. 2002: |step| = s2 exp(-log(s2/s1) xi), sign by a second number. */
+        double xi = rng_uniform(&p->r);
+        step = p->o.s2 * exp(-log(p->o.s2 / p->o.s1) * xi);
+        if (rng_uniform(&p->r) < 0.5) step = -step;
+    } else {
+        /* Box-Muller; one normal per call keeps the stream layout simple. */
+        double a = rng_uniform(&p->r), b = rng_uniform(&p->r);
+        step = p->o.sigma * sqrt(-2.0 * log1p(-a)) * cos(2 * M_PI * b);
+    }
+    return wrap(u + step * scale);
+}
+
+static double pss_next(struct sampler *s, enum dim_kind kind);
+static const struct sampler_ops pss_ops = {pss_next, NULL, NULL};
+
+void pss_init(struct pss_sampler *p, const struct pss_opts *o, uint64_t seed, uint64_t stream)
+{
+    memset(p, 0, sizeof *p);
+    p->base.ops = &pss_ops;
+    p->o = *o;
+    rng_seed(&p->r, seed, stream);
+    double m = fmin(o->width, o->height);
+    p->scale_x = p->scale_y = 1.0;
+    if (o->rap) {
+        p->scale_x = m / o->width;
+        p->scale_y = m / o->height;
+        if (o->rap_resolution) {
+            p->scale_x *= o->rap_reference / m;
+            p->scale_y *= o->rap_reference / m;
+        }
+    }
+    /* as after an accepted large step at iteration 1: every dim (modified = 0) is fresh */
+    p->iteration = 1;
+    p->last_large = 1;
+    p->large = false;
+}
+
+void pss_begin(struct pss_sampler *p, bool large)
+{
+    p->iteration++;
+    p->large = large;
+    p->ntouched = 0;
+}
+
+static double pss_next(struct sampler *s, enum dim_kind kind)
+{
+    struct pss_sampler *p = (struct pss_sampler *)s;
+    int idx = sampler_index(s);
+    struct pss_dim *d = &p->d[s->stream][idx];
+    if (d->modified == p->iteration) return d->value; /* already brought up to date */
+    d->saved = d->value;
+    d->saved_modified = d->modified;
+    p->touched[p->ntouched++] = (uint16_t)(s->stream * STREAM_DIMS + idx);
+    if (p->large || d->modified < p->last_large) {
+        /* never read since the last large step (or this is one): a fresh number */
+        d->value = rng_uniform(&p->r);
+    } else {
+        uint64_t n = p->iteration - d->modified;
+        if (n > 16) n = 16;
+        for (uint64_t i = 0; i < n; i++) d->value = pss_small_step(p, kind, d->value);
+    }
+    d->modified = p->iteration;
+    return d->value;
+}
+
+void pss_accept(struct pss_sampler *p)
+{
+    /* Only an accepted large step makes the numbers it did not read stale (fresh when next read). */
+    if (p->large) p->last_large = p->iteration;
+    p->ntouched = 0;
+}
+
+void pss_reject(struct pss_sampler *p)
+{
+    for (int i = 0; i < p->ntouched; i++) {
+        int st = p->touched[i] / STREAM_DIMS, idx = p->touched[i] % STREAM_DIMS;
+        struct pss_dim *d = &p->d[st][idx];
+        d->value = d->saved;
+        d->modified = d->saved_modified;
+    }
+    p->ntouched = 0;
+    /* The rejected proposal did not happen: the next one reuses its iteration number, so lazy
+     * catch-up counts only accepted iterations. */
+    p->iteration--;
+}
+
+void pss_export(const struct pss_sampler *p, double (*u)[STREAM_DIMS])
+{
+    for (int st = 0; st < STREAM_COUNT; st++)
+        for (int i = 0; i < STREAM_DIMS; i++) u[st][i] = p->d[st][i].modified ? p->d[st][i].value : NAN;
+}
+
+void pss_import(struct pss_sampler *p, const double (*u)[STREAM_DIMS])
+{
+    for (int st = 0; st < STREAM_COUNT; st++)
+        for (int i = 0; i < STREAM_DIMS; i++) {
+            struct pss_dim *d = &p->d[st][i];
+            if (isnan(u[st][i])) {
+                d->modified = 0;
+            } else {
+                d->value = u[st][i];
+                d->modified = p->iteration;
+            }
+        }
+}

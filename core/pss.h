@@ -1,0 +1,61 @@
+/* The primary-sample-space state of a Markov chain (thesis §3.5-3.8, Kelemen et al. 2002), as a
+ * sampler: path code draws its numbers from it exactly as under plain Monte Carlo.
+ *
+ * A proposal is started with pss_begin(large); numbers are mutated lazily when path code reads
+ * them, so only the dimensions a path uses cost anything. pss_accept() keeps the proposal;
+ * pss_reject() restores every number touched by it, bit for bit.
+ * Small steps: Kelemen's exponential kernel (s1 = 1/1024, s2 = 1/64) or a Gaussian, wrapped to
+ * [0, 1). A dimension not read for n iterations receives min(n, 16) small steps at once: any
+ * symmetric kernel keeps detailed balance, and this keeps the cost bounded.
+ * Annotations (thesis §4.1-4.2): with `rap`, image dims get steps scaled by min(W, H) / W and
+ * min(W, H) / H so that steps are isotropic in pixels; with `rap_resolution` additionally by
+ * rap_reference / min(W, H) (a fixed step in pixels at every resolution); with `cdc`, small steps
+ * leave DIM_DISCRETE numbers unchanged. */
+#ifndef PSS_H
+#define PSS_H
+
+#include "sampler.h"
+#include <stdint.h>
+
+enum pss_kernel { KERNEL_KELEMEN, KERNEL_GAUSSIAN };
+
+struct pss_opts {
+    enum pss_kernel kernel;
+    double s1, s2;        /* Kelemen: smallest and largest step */
+    double sigma;         /* Gaussian: standard deviation */
+    bool rap, rap_resolution, cdc;
+    int width, height;    /* image, for rap */
+    double rap_reference; /* pixels, for rap_resolution (default 1024) */
+};
+void pss_opts_default(struct pss_opts *o, int width, int height);
+
+struct pss_dim {
+    double value, saved;
+    uint64_t modified, saved_modified;
+};
+
+struct pss_sampler {
+    struct sampler base;
+    struct pss_opts o;
+    rng r;
+    uint64_t iteration, last_large;
+    bool large;
+    double scale_x, scale_y; /* image-dim step factors */
+    struct pss_dim d[STREAM_COUNT][STREAM_DIMS];
+    int ntouched;
+    uint16_t touched[STREAM_COUNT * STREAM_DIMS];
+};
+
+/* The state starts as if after a large step: every number fresh when first read. */
+void pss_init(struct pss_sampler *p, const struct pss_opts *o, uint64_t seed, uint64_t stream);
+void pss_begin(struct pss_sampler *p, bool large);
+void pss_accept(struct pss_sampler *p);
+void pss_reject(struct pss_sampler *p);
+/* Copies the current numbers of all dims read so far into u (NAN where never read). */
+void pss_export(const struct pss_sampler *p, double (*u)[STREAM_DIMS]);
+/* Replaces the state by u (used to start a chain from a seed path); NAN entries stay fresh. */
+void pss_import(struct pss_sampler *p, const double (*u)[STREAM_DIMS]);
+/* One small step of value u for a number of the given kind (exposed for tests). */
+double pss_small_step(struct pss_sampler *p, enum dim_kind kind, double u);
+
+#endif
