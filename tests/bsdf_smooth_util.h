@@ -56,26 +56,27 @@ static inline vec3 wi_up(int i) { return dir_cos_phi(wi_up_cos[i], 0.3 + 1.1 * i
 #define RT_VERTEX 3
 
 /* Sample wi with s, invert into w, replay: returns 0 on success, 1 forward failure, 2 inversion
- * failure, 3 mismatch. *out is the forward sample; *u0 the first number put (NAN if none). */
+ * failure, 3 replay mismatch (other wo or lobe), 4 a pass that did not consume/put exactly
+ * ops->dims numbers. *out is the forward sample; *u0 the first number put (NAN if none). */
 static inline int roundtrip_once(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, struct sampler_writer *w,
                                  enum transport mode, struct bsdf_sample *out, double *u0)
 {
     const struct bsdf_ops *ops = bsdf_ops_for(c->b->type);
     sampler_begin(s, STREAM_CAMERA, RT_VERTEX);
     if (!ops->sample(c, wi, s, mode, out)) return 1;
-    if (s->offset != ops->dims) return 3;
+    if (s->offset != ops->dims) return 4;
     int base = RT_VERTEX * SAMPLER_BLOCK;
     for (int i = 0; i < SAMPLER_BLOCK; i++) w->u[STREAM_CAMERA][base + i] = NAN;
     sampler_begin(&w->base, STREAM_CAMERA, RT_VERTEX);
     if (!ops->invert(c, wi, out->wo, &w->base)) return 2;
-    if (w->base.offset != ops->dims) return 3;
+    if (w->base.offset != ops->dims) return 4;
     *u0 = w->u[STREAM_CAMERA][base];
     struct sampler_replay rp;
     sampler_replay_init(&rp, (const double(*)[STREAM_DIMS])w->u);
     sampler_begin(&rp.base, STREAM_CAMERA, RT_VERTEX);
     struct bsdf_sample back;
     if (!ops->sample(c, wi, &rp.base, mode, &back)) return 3;
-    if (rp.base.offset != ops->dims) return 3;
+    if (rp.base.offset != ops->dims) return 4;
     if (back.lobe != out->lobe || back.delta != out->delta || vlen(vsub(back.wo, out->wo)) > 1e-6) return 3;
     return 0;
 }
