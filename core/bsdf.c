@@ -6,6 +6,11 @@ const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type)
 {
     switch (type) {
     /* one line per family: case BSDF_X: return &bsdf_x_ops; */
+    case BSDF_LAMBERT: return &bsdf_lambert_ops;
+    case BSDF_MIRROR: return &bsdf_mirror_ops;
+    case BSDF_CONDUCTOR: return &bsdf_conductor_ops;
+    case BSDF_DIELECTRIC: return &bsdf_dielectric_ops;
+    case BSDF_PLASTIC: return &bsdf_plastic_ops;
     default:
         return NULL;
     }
