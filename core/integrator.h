@@ -6,6 +6,7 @@
 
 #include "image.h"
 #include "path.h"
+#include "splat.h"
 
 /* Per-thread scratch: subpath arrays allocated once, never in the sample loop. */
 struct scratch {
@@ -14,6 +15,8 @@ struct scratch {
 };
 
 void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct image *img);
+/* BDPT's contributions of one sample: t = 1 splats, then the sum of t >= 2 at z_0's pixel. */
+void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct splat_list *out);
 void bdpt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct image *img);
 
 /* Adds c to the image at raster (px, py) unless it is not finite (then counts it). */
