@@ -24,6 +24,11 @@ CXXFLAGS := -std=c++17 $(OPT) $(WARN) -pthread $(shell pkg-config --cflags OpenI
 LDFLAGS := $(OPT) -pthread
 LDLIBS := -lembree3 $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lcjson -lgsl -lgslcblas -lm -lstdc++
 
+# The commit recorded in every CSV's metadata; version.h is rewritten only when it changes.
+GIT_COMMIT := $(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD 2>/dev/null || echo -dirty)
+$(shell mkdir -p $(BUILD) && echo '#define GIT_COMMIT "$(GIT_COMMIT)"' > $(BUILD)/version.h.new && (cmp -s $(BUILD)/version.h.new $(BUILD)/version.h || mv $(BUILD)/version.h.new $(BUILD)/version.h))
+CPPFLAGS += -I$(BUILD)
+
 CORE_SRC := $(wildcard core/*.c) $(wildcard core/*.cpp)
 CORE_OBJ := $(patsubst %,$(BUILD)/%.o,$(CORE_SRC))
 LIBCORE := $(BUILD)/libcore.a

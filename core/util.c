@@ -61,3 +61,21 @@ bool atomic_write(const char *path, write_fn write, void *ctx, char *err, size_t
     free(tmp);
     return ok;
 }
+
+static bool write_text(const char *tmp, void *ctx, char *err, size_t errlen)
+{
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        snprintf(err, errlen, "%s: cannot write", tmp);
+        return false;
+    }
+    bool ok = fputs((const char *)ctx, f) >= 0;
+    ok = (fclose(f) == 0) && ok;
+    if (!ok) snprintf(err, errlen, "%s: write failed", tmp);
+    return ok;
+}
+
+bool write_text_atomic(const char *path, const char *text, char *err, size_t errlen)
+{
+    return atomic_write(path, write_text, (void *)text, err, errlen);
+}

@@ -18,3 +18,6 @@ typedef bool (*write_fn)(const char *tmp_path, void *ctx, char *err, size_t errl
 bool atomic_write(const char *path, write_fn write, void *ctx, char *err, size_t errlen);
 
 #endif
+
+/* Atomically writes a NUL-terminated text buffer to `path`. */
+bool write_text_atomic(const char *path, const char *text, char *err, size_t errlen);

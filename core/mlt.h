@@ -1,0 +1,52 @@
+/* Markov chain renderers in primary sample space, driving the same BDPT code as the Monte Carlo
+ * renderer (thesis §3.5-3.8; MMLT paper §3-4).
+ *
+ * PSSMLT: the state is one pair of subpaths; its target is the luminance of the MIS-weighted sum of
+ * all their connections (as the thesis's Chapter 6 uses it).
+ * MMLT: one chain per path length k (per thread); the state adds a technique number
+ * (STREAM_TECHNIQUE) choosing t = 1 + floor((k + 1) u) camera vertices and s = k + 1 - t emitter
+ * vertices; the target is (k + 1) w_t C_t (MMLT Eq. 20; k + 1 techniques because a pinhole cannot
+ * be hit, so t = 0 is not a technique here). Each iteration picks k with probability b_k / sum b.
+ *
+ * Normalisation: a seed pass of `seed_paths` independent samples (per length for MMLT) estimates
+ * b; each chain starts from a seed sample resampled in proportion to its target, so there is no
+ * start-up bias. Splatting uses expected values: weight a on the proposal and 1 - a on the current
+ * state. Each run is reproducible from its seed and thread count (with a mutation budget). */
+#ifndef MLT_H
+#define MLT_H
+
+#include "image.h"
+#include "mlt_stats.h"
+#include "pss.h"
+#include "scene.h"
+
+enum mlt_method { MLT_PSSMLT, MLT_MMLT };
+
+struct mlt_opts {
+    enum mlt_method method;
+    struct pss_opts pss;
+    double p_large;
+    long mutations;        /* total over all threads; ignored when seconds > 0 */
+    double seconds;        /* equal-time budget */
+    long seed_paths;
+    uint64_t seed;
+    int threads;
+    int max_length;
+    bool progress;
+};
+
+struct mlt_result {
+    struct image *img;     /* final units, like render_mc */
+    struct mlt_stats stats;
+    double b;              /* total normalisation sum_k b_k */
+    double b_k[MAX_PATH_LENGTH + 1];
+    long mutations;
+    double seconds, seed_seconds;
+    long nonfinite;
+};
+
+/* Returns false (with a message) when the seed pass finds no light at all. */
+bool mlt_render(const struct scene *sc, const struct mlt_opts *o, struct mlt_result *r, char *err, size_t errlen);
+void mlt_result_free(struct mlt_result *r);
+
+#endif

@@ -1,0 +1,85 @@
+#include "mlt_stats.h"
+#include <math.h>
+#include <string.h>
+
+static const char *kind_names[] = {"small", "large"};
+const char *proposal_name(enum proposal_kind k) { return kind_names[k]; }
+
+void stats_clear(struct mlt_stats *s) { memset(s, 0, sizeof *s); }
+
+void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool changed, double a, bool accepted,
+                  bool nonzero)
+{
+    if (length < 0 || length >= STATS_LENGTHS) length = 0;
+    struct accept_cell *c = &s->cell[kind][length][changed];
+    double m = a < 1 ? a : 1;
+    c->attempts++;
+    c->accepted += accepted;
+    c->nonzero += nonzero;
+    c->sum_a += m;
+    c->batch_sum += m;
+    if (++c->batch_n == STATS_BATCH) {
+        double b = c->batch_sum / STATS_BATCH;
+        c->bsum += b;
+        c->bsum2 += b * b;
+        c->nbatches++;
+        c->batch_sum = 0;
+        c->batch_n = 0;
+    }
+}
+
+static void merge_cell(struct accept_cell *d, const struct accept_cell *s)
+{
+    d->attempts += s->attempts;
+    d->accepted += s->accepted;
+    d->nonzero += s->nonzero;
+    d->sum_a += s->sum_a;
+    d->nbatches += s->nbatches;
+    d->bsum += s->bsum;
+    d->bsum2 += s->bsum2;
+    /* incomplete batches count in the mean but not in the standard error */
+}
+
+void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src)
+{
+    for (int k = 0; k < PROPOSAL_KINDS; k++)
+        for (int l = 0; l < STATS_LENGTHS; l++)
+            for (int c = 0; c < 2; c++) merge_cell(&dst->cell[k][l][c], &src->cell[k][l][c]);
+    dst->nonfinite += src->nonfinite;
+}
+
+double cell_mean(const struct accept_cell *c) { return c->attempts ? c->sum_a / c->attempts : NAN; }
+
+double cell_stderr(const struct accept_cell *c)
+{
+    if (c->nbatches < 2) return NAN;
+    double n = (double)c->nbatches, m = c->bsum / n;
+    double var = (c->bsum2 - n * m * m) / (n - 1);
+    return sqrt(var > 0 ? var : 0) / sqrt(n);
+}
+
+static void row(FILE *f, const char *method, const char *kind, const char *len, const char *changed,
+                const struct accept_cell *c)
+{
+    fprintf(f, "%s,%s,%s,%s,%ld,%.9g,%.9g,%.9g,%ld\n", method, kind, len, changed, c->attempts, cell_mean(c),
+            cell_stderr(c), c->attempts ? (double)c->accepted / c->attempts : NAN, c->nonzero);
+}
+
+void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, bool header)
+{
+    if (header) fprintf(f, "method,kind,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,nonzero\n");
+    char len[16];
+    for (int k = 0; k < PROPOSAL_KINDS; k++) {
+        struct accept_cell total;
+        memset(&total, 0, sizeof total);
+        for (int l = 0; l < STATS_LENGTHS; l++)
+            for (int c = 0; c < 2; c++) {
+                const struct accept_cell *cell = &s->cell[k][l][c];
+                if (!cell->attempts) continue;
+                snprintf(len, sizeof len, "%d", l);
+                row(f, method, kind_names[k], l ? len : "all", c ? "yes" : "no", cell);
+                merge_cell(&total, cell);
+            }
+        if (total.attempts) row(f, method, kind_names[k], "total", "any", &total);
+    }
+}

@@ -1,0 +1,40 @@
+/* Acceptance statistics keyed by (proposal kind, path length, technique changed), with batch-means
+ * standard errors of the mean acceptance probability E[min(1, a)] (autocorrelation-aware). */
+#ifndef MLT_STATS_H
+#define MLT_STATS_H
+
+#include "sampler.h"
+#include <stdbool.h>
+#include <stdio.h>
+
+enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_KINDS };
+#define STATS_LENGTHS (MAX_PATH_LENGTH + 1) /* index 0 = all lengths (PSSMLT states) */
+#define STATS_BATCH 256                      /* proposals per batch */
+
+struct accept_cell {
+    long attempts, accepted, nonzero;
+    double sum_a;                /* sum of min(1, a) */
+    double batch_sum;            /* running batch */
+    long batch_n;
+    long nbatches;
+    double bsum, bsum2;          /* sums of batch means and their squares */
+};
+
+struct mlt_stats {
+    struct accept_cell cell[PROPOSAL_KINDS][STATS_LENGTHS][2];
+    long nonfinite;
+};
+
+void stats_clear(struct mlt_stats *s);
+void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool technique_changed, double a,
+                  bool accepted, bool nonzero);
+/* Adds src into dst (threads are merged in a fixed order). */
+void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src);
+/* Mean acceptance, its batch-means standard error (NAN with fewer than 2 batches). */
+double cell_mean(const struct accept_cell *c);
+double cell_stderr(const struct accept_cell *c);
+/* CSV rows (see README "Statistics CSV"); header once when `header`. */
+void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, bool header);
+const char *proposal_name(enum proposal_kind k);
+
+#endif
