@@ -3,6 +3,7 @@
 #include <criterion/criterion.h>
 
 #include "camera.h"
+#include "image.h"
 #include "scene.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -340,5 +341,58 @@ Test(loader, bad_inputs)
         cr_expect(strstr(err, bad_cases[i].expect), "%s:\n  got      %s\n  expected ...%s...", path, err,
                   bad_cases[i].expect);
         cr_expect(!strchr(err, '\n'), "%s: message is not one line", path);
+    }
+}
+
+Test(loader, textures_and_environment, .init = mk_tmp, .fini = rm_tmp)
+{
+    /* 2x2 image: top row red, green; bottom row blue, white */
+    struct image *im = img_create(2, 2);
+    img_add(im, 0, 0, v3(1, 0, 0));
+    img_add(im, 1, 0, v3(0, 1, 0));
+    img_add(im, 0, 1, v3(0, 0, 1));
+    img_add(im, 1, 1, v3(1, 1, 1));
+    char path[512], err[512];
+    snprintf(path, sizeof path, "%s/t.exr", tmpdir);
+    cr_assert(img_write_exr(im, 1.0, path, err, sizeof err), "%s", err);
+    img_destroy(im);
+    struct scene *s = load_tmp_scene(
+        "{\"type\": \"quad\", \"bsdf\": {\"type\": \"lambert\", \"albedo\": \"t.exr\"}},"
+        "{\"type\": \"quad\", \"bsdf\": {\"type\": \"mirror\", \"albedo\": {\"type\": \"bitmap\", \"file\": \"t.exr\"}}},"
+        "{\"type\": \"infinite_sphere\", \"emission\": \"t.exr\", \"transform\": {\"rotation\": [0, 90, 0]}}");
+    const struct texture *t = s->bsdfs[s->prims[0].bsdf].albedo_tex;
+    cr_assert(t && t->w == 2 && t->h == 2);
+    cr_assert(s->bsdfs[s->prims[1].bsdf].albedo_tex);
+    /* v = 0 is the bottom row */
+    cr_assert(near3(texture_lookup(t, 0.25, 0.25), v3(0, 0, 1), 1e-6));
+    cr_assert(near3(texture_lookup(t, 0.75, 0.75), v3(0, 1, 0), 1e-6));
+    cr_assert(near3(texture_lookup(t, -0.25, 1.25), v3(1, 1, 1), 1e-6)); /* wraps */
+    cr_assert_eq(s->env_prim, 2);
+    const struct prim *e = &s->prims[2];
+    cr_assert(e->env_tex && e->emissive && e->bsdf == -1);
+    vec3 x = mat4_vector(&e->env_to_world, v3(1, 0, 0));
+    cr_assert(near3(x, v3(0, 0, -1), 1e-12));
+    mat4 id = mat4_mul(&e->env_to_world, &e->env_to_local);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) cr_assert(fabs(id.m[i][j] - (i == j)) < 1e-12);
+    scene_model_free(s);
+}
+
+/* Every prefix of a valid scene either loads or fails with a message; none crashes or leaks. */
+Test(loader, truncated_scenes_fail_cleanly, .init = mk_tmp, .fini = rm_tmp)
+{
+    FILE *f = fopen("scenes/cornell-box/scene.json", "rb");
+    cr_assert(f);
+    static char text[1 << 16];
+    size_t n = fread(text, 1, sizeof text, f);
+    fclose(f);
+    char path[512];
+    snprintf(path, sizeof path, "%s/scene.json", tmpdir);
+    for (size_t k = 0; k < n; k += 7) {
+        write_file("scene.json", text, k);
+        char err[1024] = "";
+        struct scene *s = scene_load_model(path, err, sizeof err);
+        if (!s) cr_assert(strncmp(err, path, strlen(path)) == 0 && strstr(err, "malformed JSON"), "%zu: %s", k, err);
+        scene_model_free(s);
     }
 }
