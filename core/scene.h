@@ -30,6 +30,8 @@ struct texture {
 /* Nearest-texel lookup with wrap-around; v = 0 is the bottom row (OBJ convention). */
 rgb texture_lookup(const struct texture *t, double u, double v);
 void texture_free(struct texture *t);
+/* Reads an image file (OpenImageIO) into a texture; NULL and a message in err on failure. */
+struct texture *texture_load(const char *path, char *err, size_t errlen);
 
 struct bsdf {
     enum bsdf_type type;
@@ -111,7 +113,7 @@ struct scene *scene_load(const char *path, char *err, size_t errlen);
 /* Same, without building emitters and accel (loader tests, tools). */
 struct scene *scene_load_model(const char *path, char *err, size_t errlen);
 void scene_free(struct scene *s);
-/* Frees what scene_load_model allocated (scene_free also releases emitters and accel). */
+/* Frees what scene_load_model allocated (not emitters/accel); NULL is a no-op. */
 void scene_model_free(struct scene *s);
 
 #endif
