@@ -176,6 +176,7 @@ bool emitter_pick_invert(const struct scene *sc, int prim, struct sampler *w)
 bool emitter_sample_pos(const struct scene *sc, int prim, struct sampler *s, struct emitter_pos *out)
 {
     const struct emitter_table *t = table(sc);
+    if (prim < 0 || prim >= t->nprims) return false;
     const struct prim *pr = &sc->prims[prim];
     int k = t->slot[prim];
     if (k < 0 || pr->kind == PRIM_INFINITE_SPHERE) return false;
