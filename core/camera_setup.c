@@ -26,3 +26,10 @@ void camera_setup(struct camera *c, vec3 pos, vec3 look_at, vec3 up, double fov_
     c->tan_half_fov = tan(fov_deg * M_PI / 360.0);
     c->aspect = (double)w / h;
 }
+
+void camera_resize(struct camera *c, int w, int h)
+{
+    c->width = w;
+    c->height = h;
+    c->aspect = (double)w / h;
+}

@@ -37,7 +37,9 @@ static void check_scene(const char *path)
     rng_seed(&r, 11, 0);
     sampler_writer_init(&w, 5, 0);
     const int N = 20000;
-    double tol = 1e-6 * scene_size(sc);
+    /* Embree intersects in single precision: each hit is off the exact ray by ~1e-7 of the scene,
+     * and grazing bounces in corners amplify that along the walk. */
+    double tol = 1e-4 * scene_size(sc);
     for (int kind = 0; kind < 2; kind++) {
         int fail = 0, fail_suffix = 0, tried = 0;
         for (int i = 0; i < N; i++) {
