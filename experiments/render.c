@@ -1,8 +1,12 @@
-/* bin/render: renders a Tungsten scene with one method and writes PREFIX.exr and PREFIX.png. */
+/* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
+ * MCMC methods, PREFIX.csv with acceptance statistics. */
+#include "camera.h"
 #include "cli.h"
+#include "mlt.h"
 #include "parallel.h"
 #include "render.h"
-#include "sampler.h"
+#include "util.h"
+#include "version.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,70 +14,181 @@
 
 static const char *usage =
     "usage: render SCENE.json [options]\n"
-    "  --method pt|bdpt     estimator (default bdpt)\n"
-    "  --spp N              samples per pixel (default: the scene's renderer.spp, else 16)\n"
-    "  --seed S             random seed (default 1); same seed and threads -> same image\n"
+    "  --method pt|bdpt|pssmlt|mmlt  estimator (default bdpt)\n"
+    "  --spp N              samples per pixel; for pssmlt/mmlt mutations per pixel\n"
+    "                       (default: the scene's renderer.spp, else 16)\n"
+    "  --time SECONDS       pssmlt/mmlt: run for this long instead of --spp mutations\n"
+    "  --seed S             random seed (default 1); same seed and threads -> same output\n"
     "  --threads T          worker threads (default: all cores)\n"
-    "  --max-length K       maximum path length in segments (default: from integrator.max_bounces)\n"
-    "  --out PREFIX         output prefix (default out); writes PREFIX.exr (linear) and PREFIX.png\n"
+    "  --max-length K       maximum path length in segments (default: integrator.max_bounces)\n"
+    "  --resolution WxH     override the camera resolution (same horizontal fov)\n"
+    "  --out PREFIX         output prefix (default out)\n"
     "  --quiet              no progress bar\n"
+    "MCMC options (pssmlt, mmlt):\n"
+    "  --p-large P          large-step probability (default 0.1)\n"
+    "  --kernel kelemen|gaussian  small-step kernel (default kelemen: s1 = 1/1024, s2 = 1/64)\n"
+    "  --sigma S            gaussian small-step standard deviation (default 1/64)\n"
+    "  --rap                resolution-aware proposals: image steps corrected for aspect ratio\n"
+    "  --rap-resolution     also scale image steps to a fixed size in pixels (thesis 4.1)\n"
+    "  --cdc                constrained discrete choices: small steps keep discrete numbers\n"
+    "  --seed-paths N       samples of the normalisation seed pass (default 100000)\n"
     "Prints one summary line: method, samples, seconds, samples/s.\n";
+
+struct args {
+    const char *scene, *out;
+    char method[16];
+    struct render_opts mc;
+    struct mlt_opts mlt;
+    int width, height;
+};
+
+static void parse(int argc, char **argv, struct args *a)
+{
+    const char *prog = "render";
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i];
+#define VALUE cli_value(prog, argc, argv, &i)
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            fputs(usage, stdout);
+            exit(0);
+        } else if (!strcmp(o, "--method")) {
+            const char *v = VALUE;
+            if (strcmp(v, "pt") && strcmp(v, "bdpt") && strcmp(v, "pssmlt") && strcmp(v, "mmlt"))
+                cli_fail(prog, "--method: expected pt, bdpt, pssmlt or mmlt, got '%s'", v);
+            snprintf(a->method, sizeof a->method, "%s", v);
+        } else if (!strcmp(o, "--spp")) {
+            a->mc.spp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
+        } else if (!strcmp(o, "--time")) {
+            a->mlt.seconds = cli_double(prog, o, VALUE, 1e-3, 1e7);
+        } else if (!strcmp(o, "--seed")) {
+            a->mc.seed = a->mlt.seed = cli_u64(prog, o, VALUE);
+        } else if (!strcmp(o, "--threads")) {
+            a->mc.threads = a->mlt.threads = (int)cli_long(prog, o, VALUE, 1, 1024);
+        } else if (!strcmp(o, "--max-length")) {
+            a->mc.max_length = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
+        } else if (!strcmp(o, "--resolution")) {
+            const char *v = VALUE;
+            char extra;
+            if (sscanf(v, "%dx%d%c", &a->width, &a->height, &extra) != 2 || a->width < 1 || a->height < 1 ||
+                a->width > 1 << 15 || a->height > 1 << 15)
+                cli_fail(prog, "--resolution: expected WxH with positive integers, got '%s'", v);
+        } else if (!strcmp(o, "--out")) {
+            a->out = VALUE;
+        } else if (!strcmp(o, "--quiet")) {
+            a->mc.progress = a->mlt.progress = false;
+        } else if (!strcmp(o, "--p-large")) {
+            a->mlt.p_large = cli_double(prog, o, VALUE, 0, 1);
+        } else if (!strcmp(o, "--kernel")) {
+            const char *v = VALUE;
+            if (!strcmp(v, "kelemen")) a->mlt.pss.kernel = KERNEL_KELEMEN;
+            else if (!strcmp(v, "gaussian")) a->mlt.pss.kernel = KERNEL_GAUSSIAN;
+            else cli_fail(prog, "--kernel: expected kelemen or gaussian, got '%s'", v);
+        } else if (!strcmp(o, "--sigma")) {
+            a->mlt.pss.sigma = cli_double(prog, o, VALUE, 1e-9, 1);
+        } else if (!strcmp(o, "--rap")) {
+            a->mlt.pss.rap = true;
+        } else if (!strcmp(o, "--rap-resolution")) {
+            a->mlt.pss.rap = a->mlt.pss.rap_resolution = true;
+        } else if (!strcmp(o, "--cdc")) {
+            a->mlt.pss.cdc = true;
+        } else if (!strcmp(o, "--seed-paths")) {
+            a->mlt.seed_paths = cli_long(prog, o, VALUE, 1, 1L << 40);
+        } else if (o[0] == '-') {
+            cli_fail(prog, "unknown option '%s' (see --help)", o);
+        } else if (a->scene) {
+            cli_fail(prog, "more than one scene given ('%s' and '%s')", a->scene, o);
+        } else {
+            a->scene = o;
+        }
+#undef VALUE
+    }
+    if (!a->scene) cli_fail(prog, "no scene given (see --help)");
+}
+
+static bool write_images(const struct image *img, const char *out, char *err, size_t errlen)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s.exr", out);
+    if (!img_write_exr(img, 1.0, path, err, errlen)) return false;
+    snprintf(path, sizeof path, "%s.png", out);
+    return img_write_png(img, 1.0, path, err, errlen);
+}
+
+static bool write_csv(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    fprintf(f, "# render %s --method %s\n# commit %s\n# seed %llu\n# threads %d\n# max_length %d\n", a->scene,
+            a->method, GIT_COMMIT, (unsigned long long)a->mlt.seed, a->mlt.threads, a->mlt.max_length);
+    fprintf(f, "# p_large %g\n# kernel %s\n# rap %d\n# rap_resolution %d\n# cdc %d\n# seed_paths %ld\n", a->mlt.p_large,
+            a->mlt.pss.kernel == KERNEL_KELEMEN ? "kelemen" : "gaussian", a->mlt.pss.rap, a->mlt.pss.rap_resolution,
+            a->mlt.pss.cdc, a->mlt.seed_paths);
+    fprintf(f, "# mutations %ld\n# seconds %.3f\n# seed_seconds %.3f\n# mutations_per_second %.0f\n# nonfinite %ld\n",
+            r->mutations, r->seconds, r->seed_seconds, r->mutations / r->seconds, r->nonfinite);
+    fprintf(f, "# b %.9g\n", r->b);
+    for (int k = 1; k <= a->mlt.max_length && a->mlt.method == MLT_MMLT; k++) fprintf(f, "# b_%d %.9g\n", k, r->b_k[k]);
+    stats_write_csv(f, a->method, &r->stats, true);
+    fclose(f);
+    char path[4096];
+    snprintf(path, sizeof path, "%s.csv", a->out);
+    bool ok = write_text_atomic(path, buf, err, errlen);
+    free(buf);
+    return ok;
+}
 
 int main(int argc, char **argv)
 {
-    const char *prog = "render", *scene_path = NULL, *out = "out";
-    struct render_opts o = {.method = METHOD_BDPT, .spp = -1, .seed = 1, .threads = cpu_count(), .max_length = -1, .progress = true};
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (!strcmp(a, "--method")) {
-            const char *v = cli_value(prog, argc, argv, &i);
-            if (!method_parse(v, &o.method)) cli_fail(prog, "--method: expected pt or bdpt, got '%s'", v);
-        } else if (!strcmp(a, "--spp")) {
-            o.spp = (int)cli_long(prog, a, cli_value(prog, argc, argv, &i), 1, 1 << 24);
-        } else if (!strcmp(a, "--seed")) {
-            o.seed = cli_u64(prog, a, cli_value(prog, argc, argv, &i));
-        } else if (!strcmp(a, "--threads")) {
-            o.threads = (int)cli_long(prog, a, cli_value(prog, argc, argv, &i), 1, 1024);
-        } else if (!strcmp(a, "--max-length")) {
-            o.max_length = (int)cli_long(prog, a, cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
-        } else if (!strcmp(a, "--out")) {
-            out = cli_value(prog, argc, argv, &i);
-        } else if (!strcmp(a, "--quiet")) {
-            o.progress = false;
-        } else if (a[0] == '-') {
-            cli_fail(prog, "unknown option '%s' (see --help)", a);
-        } else if (scene_path) {
-            cli_fail(prog, "more than one scene given ('%s' and '%s')", scene_path, a);
-        } else {
-            scene_path = a;
-        }
-    }
-    if (!scene_path) cli_fail(prog, "no scene given (see --help)");
+    struct args a = {.out = "out", .method = "bdpt"};
+    a.mc = (struct render_opts){.method = METHOD_BDPT, .spp = -1, .seed = 1, .threads = cpu_count(), .max_length = -1,
+                                .progress = true};
+    a.mlt = (struct mlt_opts){.p_large = 0.1, .seed_paths = 100000, .seed = 1, .threads = cpu_count(), .progress = true};
+    pss_opts_default(&a.mlt.pss, 1, 1);
+    struct pss_opts cli_pss = a.mlt.pss;
+    parse(argc, argv, &a);
+    cli_pss = a.mlt.pss;
     char err[1024];
-    struct scene *sc = scene_load(scene_path, err, sizeof err);
+    struct scene *sc = scene_load(a.scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
-    if (o.spp < 0) o.spp = sc->spp > 0 ? sc->spp : 16;
-    if (o.max_length < 0) o.max_length = sc->max_length;
-    if (o.progress) o.progress = isatty(2);
-    struct render_stats st;
-    struct image *img = render_mc(sc, &o, &st);
-    char path[4096];
-    int ok = 1;
-    snprintf(path, sizeof path, "%s.exr", out);
-    ok = ok && img_write_exr(img, 1.0, path, err, sizeof err);
-    snprintf(path, sizeof path, "%s.png", out);
-    ok = ok && img_write_png(img, 1.0, path, err, sizeof err);
+    if (a.width) camera_resize(&sc->cam, a.width, a.height);
+    if (a.mc.spp < 0) a.mc.spp = sc->spp > 0 ? sc->spp : 16;
+    if (a.mc.max_length < 0) a.mc.max_length = sc->max_length;
+    if (a.mc.progress && !isatty(2)) a.mc.progress = a.mlt.progress = false;
+    bool ok;
+    if (!strcmp(a.method, "pt") || !strcmp(a.method, "bdpt")) {
+        method_parse(a.method, &a.mc.method);
+        struct render_stats st;
+        struct image *img = render_mc(sc, &a.mc, &st);
+        ok = write_images(img, a.out, err, sizeof err);
+        if (ok)
+            printf("%s: %ld samples in %.2f s, %.0f samples/s (%d threads), %ld non-finite dropped\n", a.method,
+                   st.samples, st.seconds, st.samples / st.seconds, a.mc.threads, st.nonfinite);
+        img_destroy(img);
+    } else {
+        a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : MLT_PSSMLT;
+        a.mlt.max_length = a.mc.max_length;
+        a.mlt.mutations = (long)a.mc.spp * sc->cam.width * sc->cam.height;
+        a.mlt.pss = cli_pss;
+        a.mlt.pss.width = sc->cam.width;
+        a.mlt.pss.height = sc->cam.height;
+        struct mlt_result r;
+        ok = mlt_render(sc, &a.mlt, &r, err, sizeof err);
+        if (!ok) {
+            fprintf(stderr, "%s\n", err);
+            scene_free(sc);
+            return 1;
+        }
+        ok = write_images(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err);
+        if (ok)
+            printf("%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%d threads), %ld non-finite "
+                   "dropped\n",
+                   a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds, a.mlt.threads, r.nonfinite);
+        mlt_result_free(&r);
+    }
     if (!ok) fprintf(stderr, "%s\n", err);
-    else
-        printf("%s: %ld samples in %.2f s, %.0f samples/s (%d threads), %ld non-finite dropped\n",
-               method_name(o.method), st.samples, st.seconds, st.samples / st.seconds, o.threads, st.nonfinite);
-    img_destroy(img);
     scene_free(sc);
     return ok ? 0 : 1;
 }
