@@ -1,0 +1,28 @@
+/* Agreement of two estimators from independent replicate renders: per-block Welch t-tests on a
+ * downsampled luminance image plus a test of the image mean, Sidak-corrected at alpha = 0.01. */
+#ifndef AGREE_H
+#define AGREE_H
+
+#include "image.h"
+#include <stdint.h>
+
+#define AGREE_MAX_REPS 16
+#define AGREE_MAX_BLOCKS (64 * 64)
+
+struct stack {
+    int w, h, reps;
+    double m[AGREE_MAX_BLOCKS], v[AGREE_MAX_BLOCKS]; /* block means and variances of the mean */
+    double mean, mean_se;                          /* image mean luminance */
+};
+
+/* Renders `reps` replicates with seeds seed0, seed0 + 1, ... and accumulates their blk x blk blocks. */
+typedef struct image *(*render_fn)(void *ctx, uint64_t seed);
+void stack_runs(struct stack *out, render_fn render, void *ctx, int reps, uint64_t seed0, int blk);
+
+/* Number of failing comparisons (blocks + image mean) at alpha = 0.01 Sidak-corrected over those
+ * comparisons times `families` (the number of such comparisons in one test); *pmean and *worst
+ * receive p-values. */
+int stack_compare(const struct stack *a, const struct stack *b, int families, double *pmean, double *worst);
+double image_mean_luminance(const struct image *im);
+
+#endif

@@ -1,0 +1,150 @@
+/* PSSMLT and MMLT against BDPT: per-block agreement on the Cornell box for every proposal option,
+ * the furnace's exact answer, and the statistics' bookkeeping and reproducibility. */
+#include <criterion/criterion.h>
+
+#include "agree.h"
+#include "camera.h"
+#include "mlt.h"
+#include "render.h"
+#include "scenes.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct mlt_ctx {
+    const struct scene *sc;
+    struct mlt_opts o;
+};
+
+static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, long mutations)
+{
+    *o = (struct mlt_opts){.method = m, .p_large = 0.1, .mutations = mutations, .seed_paths = 20000, .threads = 2,
+                           .max_length = 8};
+    pss_opts_default(&o->pss, sc->cam.width, sc->cam.height);
+}
+
+static struct image *render_mlt(void *p, uint64_t seed)
+{
+    struct mlt_ctx *c = p;
+    struct mlt_opts o = c->o;
+    o.seed = seed;
+    struct mlt_result r;
+    char err[256];
+    cr_assert(mlt_render(c->sc, &o, &r, err, sizeof err), "%s", err);
+    cr_assert_eq(r.nonfinite, 0);
+    return r.img;
+}
+
+static struct image *render_bdpt(void *p, uint64_t seed)
+{
+    const struct scene *sc = p;
+    struct render_opts o = {.method = METHOD_BDPT, .spp = 16, .seed = seed, .threads = 2, .max_length = 8};
+    struct render_stats st;
+    return render_mc(sc, &o, &st);
+}
+
+/* Cornell box at 64x64: 8 BDPT renders of 16 spp against 12 independent MCMC runs of 16 mutations
+ * per pixel (each with its own 10k-path seed pass) per configuration; Welch t on 8x8 blocks and on
+ * the image mean, alpha 0.01 Sidak over the 65 comparisons of all 5 configurations. */
+Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
+{
+    struct scene *sc = test_scene("scenes/cornell-box/scene.json");
+    camera_resize(&sc->cam, 64, 64);
+    static struct stack ref, a;
+    stack_runs(&ref, render_bdpt, sc, 8, 1000, 8);
+    const struct {
+        const char *name;
+        enum mlt_method m;
+        bool rap, cdc;
+        enum pss_kernel kernel;
+    } cfg[] = {{"pssmlt", MLT_PSSMLT, false, false, KERNEL_KELEMEN},
+               {"mmlt", MLT_MMLT, false, false, KERNEL_KELEMEN},
+               {"pssmlt --rap", MLT_PSSMLT, true, false, KERNEL_KELEMEN},
+               {"pssmlt --cdc", MLT_PSSMLT, false, true, KERNEL_KELEMEN},
+               {"mmlt --rap --cdc --kernel gaussian", MLT_MMLT, true, true, KERNEL_GAUSSIAN}};
+    for (size_t i = 0; i < sizeof cfg / sizeof *cfg; i++) {
+        struct mlt_ctx c = {sc, {0}};
+        opts(&c.o, sc, cfg[i].m, 16L * 64 * 64);
+        c.o.seed_paths = 10000;
+        c.o.pss.rap = cfg[i].rap;
+        c.o.pss.cdc = cfg[i].cdc;
+        c.o.pss.kernel = cfg[i].kernel;
+        stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * i, 8);
+        double pm, worst;
+        int f = stack_compare(&a, &ref, 5, &pm, &worst);
+        cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", cfg[i].name, a.mean,
+                     a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    }
+    scene_free(sc);
+}
+
+/* Furnace: the exact value Le (1 - a^K) / (1 - a) with K = 6, 32x32 pixels, 16 mutations per pixel,
+ * 6 runs per method; the run-to-run mean must contain it (t-test, alpha 0.01 / 2 methods). */
+Test(stat_mlt, furnace_exact_answer)
+{
+    struct scene *sc = test_scene("scenes/furnace/scene.json");
+    camera_resize(&sc->cam, 32, 32);
+    double exact = 0.5 * (1 - pow(0.5, 6)) / 0.5;
+    for (int m = 0; m < 2; m++) {
+        struct mlt_ctx c = {sc, {0}};
+        opts(&c.o, sc, (enum mlt_method)m, 16L * 32 * 32);
+        c.o.max_length = 6;
+        static struct stack a;
+        stack_runs(&a, render_mlt, &c, 6, 50 + 10 * m, 32);
+        double t = fabs(a.mean - exact) / a.mean_se;
+        cr_assert(t < 4.03 /* t_5 quantile at 0.005 / 2 two-sided */ && fabs(a.mean / exact - 1) < 0.01,
+                  "method %d: %g +- %g vs exact %g", m, a.mean, a.mean_se, exact);
+    }
+    scene_free(sc);
+}
+
+static char *csv_of(const struct mlt_result *r, const char *name)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    stats_write_csv(f, name, &r->stats, true);
+    fclose(f);
+    return buf;
+}
+
+/* Counts add up to the mutation count; small steps are accepted more often than large ones on the
+ * Cornell box; the same seed and thread count reproduce the statistics and the image exactly. */
+Test(mlt, statistics_bookkeeping_and_reproducibility)
+{
+    struct scene *sc = test_scene("scenes/cornell-box/scene.json");
+    camera_resize(&sc->cam, 32, 32);
+    for (int m = 0; m < 2; m++) {
+        struct mlt_opts o;
+        opts(&o, sc, (enum mlt_method)m, 20000);
+        o.seed_paths = 5000;
+        o.seed = 7;
+        struct mlt_result r1, r2;
+        char err[256];
+        cr_assert(mlt_render(sc, &o, &r1, err, sizeof err) && mlt_render(sc, &o, &r2, err, sizeof err));
+        long n = 0;
+        for (int k = 0; k < PROPOSAL_KINDS; k++)
+            for (int l = 0; l < STATS_LENGTHS; l++)
+                for (int c = 0; c < 2; c++) n += r1.stats.cell[k][l][c].attempts;
+        cr_assert_eq(n, r1.mutations);
+        cr_assert_eq(r1.mutations, 20000);
+        struct accept_cell small = {0}, large = {0};
+        for (int l = 0; l < STATS_LENGTHS; l++)
+            for (int c = 0; c < 2; c++) {
+                small.attempts += r1.stats.cell[PROPOSAL_SMALL][l][c].attempts;
+                small.sum_a += r1.stats.cell[PROPOSAL_SMALL][l][c].sum_a;
+                large.attempts += r1.stats.cell[PROPOSAL_LARGE][l][c].attempts;
+                large.sum_a += r1.stats.cell[PROPOSAL_LARGE][l][c].sum_a;
+            }
+        cr_assert_gt(cell_mean(&small), cell_mean(&large) + 0.1, "small %g large %g", cell_mean(&small),
+                     cell_mean(&large));
+        char *c1 = csv_of(&r1, "x"), *c2 = csv_of(&r2, "x");
+        cr_assert_str_eq(c1, c2);
+        cr_assert(memcmp(r1.img->px, r2.img->px, sizeof(double) * 3 * 32 * 32) == 0, "images differ");
+        free(c1);
+        free(c2);
+        mlt_result_free(&r1);
+        mlt_result_free(&r2);
+    }
+    scene_free(sc);
+}
