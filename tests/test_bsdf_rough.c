@@ -191,3 +191,65 @@ static void check_inversion(enum bsdf_type type, bool refraction, long per_case)
 }
 
 Test(bsdf_rough, conductor_inversion_roundtrip) { check_inversion(BSDF_ROUGH_CONDUCTOR, true, 100000); }
+
+Test(bsdf_rough, dielectric_sample_matches_pdf_and_eval)
+{
+    check_sample_consistency(BSDF_ROUGH_DIELECTRIC, true);
+    check_sample_consistency(BSDF_ROUGH_DIELECTRIC, false);
+}
+
+Test(bsdf_rough, dielectric_reflection_reciprocity) { check_reflection_reciprocity(BSDF_ROUGH_DIELECTRIC); }
+
+/* Refraction: generalized reciprocity. With K(wi, wo) symmetric, f_imp(wi, wo) = eta_o^2 K and
+ * f_rad(wi, wo) = eta_i^2 K, so f_rad(wi, wo) = f_imp(wo, wi) and
+ * f_imp(wi, wo) / eta_o^2 = f_imp(wo, wi) / eta_i^2 (Veach Eq. 5.14). Plain reciprocity does not
+ * hold: f_imp(wi, wo) / f_imp(wo, wi) = (eta_o / eta_i)^2 -- checked too. */
+Test(bsdf_rough, dielectric_refraction_generalized_reciprocity)
+{
+    struct bsdf b = rough_material(BSDF_ROUGH_DIELECTRIC, MF_GGX, 0.3);
+    struct bsdf_ctx c = {&b, b.albedo};
+    rng r;
+    rng_seed(&r, 33, 0);
+    struct rng_sampler s;
+    rng_sampler_init(&s, &r);
+    long tested = 0;
+    for (int i = 0; i < 100000; i++) {
+        b.dist = (i & 1) ? MF_GGX : MF_BECKMANN;
+        b.roughness = 0.05 + rng_uniform(&r);
+        double side = (i & 2) ? -1 : 1;
+        vec3 wi = dir_cos(side * rng_uniform(&r), 2 * M_PI * rng_uniform(&r));
+        struct bsdf_sample out;
+        sampler_begin(&s.base, STREAM_CAMERA, 0);
+        if (!bsdf_sample(&c, wi, &s.base, TRANSPORT_IMPORTANCE, &out) || out.lobe != 1) continue;
+        vec3 wo = out.wo;
+        double eta_i = wi.z > 0 ? 1 : b.ior, eta_o = wo.z > 0 ? 1 : b.ior;
+        double f_imp = bsdf_eval(&c, wi, wo, TRANSPORT_IMPORTANCE).x, f_rad = bsdf_eval(&c, wi, wo, TRANSPORT_RADIANCE).x;
+        double g_imp = bsdf_eval(&c, wo, wi, TRANSPORT_IMPORTANCE).x, g_rad = bsdf_eval(&c, wo, wi, TRANSPORT_RADIANCE).x;
+        if (!(f_imp > 0)) continue;
+        tested++;
+        cr_assert(rel_err(f_rad, g_imp) < 1e-9, "f_rad(wi,wo) %.12g f_imp(wo,wi) %.12g", f_rad, g_imp);
+        cr_assert(rel_err(g_rad, f_imp) < 1e-9);
+        cr_assert(rel_err(f_imp / sqr(eta_o), g_imp / sqr(eta_i)) < 1e-9);
+        cr_assert(rel_err(f_imp / g_imp, sqr(eta_o / eta_i)) < 1e-9);
+        cr_assert(rel_err(f_rad / f_imp, sqr(eta_i / eta_o)) < 1e-12);
+    }
+    cr_assert(tested > 10000, "%ld", tested);
+}
+
+Test(bsdf_rough, dielectric_inversion_roundtrip)
+{
+    check_inversion(BSDF_ROUGH_DIELECTRIC, true, 100000);
+    check_inversion(BSDF_ROUGH_DIELECTRIC, false, 100000);
+}
+
+/* With enable_refraction = false nothing is transmitted. */
+Test(bsdf_rough, dielectric_reflection_only)
+{
+    struct bsdf b = rough_material(BSDF_ROUGH_DIELECTRIC, MF_BECKMANN, 0.5);
+    b.enable_refraction = false;
+    struct bsdf_ctx c = {&b, b.albedo};
+    vec3 wi = dir_cos(0.7, 0.2), wo = dir_cos(-0.6, 3.0);
+    cr_assert_eq(bsdf_pdf(&c, wi, wo), 0.0);
+    cr_assert_eq(bsdf_eval(&c, wi, wo, TRANSPORT_RADIANCE).x, 0.0);
+    cr_assert(bsdf_ops_for(BSDF_ROUGH_DIELECTRIC)->transmissive);
+}
