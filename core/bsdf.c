@@ -8,6 +8,7 @@ const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type)
     /* one line per family: case BSDF_X: return &bsdf_x_ops; */
     case BSDF_ROUGH_CONDUCTOR: return &bsdf_rough_conductor_ops;
     case BSDF_ROUGH_DIELECTRIC: return &bsdf_rough_dielectric_ops;
+    case BSDF_ROUGH_PLASTIC: return &bsdf_rough_plastic_ops;
     default:
         return NULL;
     }

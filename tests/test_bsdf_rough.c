@@ -253,3 +253,21 @@ Test(bsdf_rough, dielectric_reflection_only)
     cr_assert_eq(bsdf_eval(&c, wi, wo, TRANSPORT_RADIANCE).x, 0.0);
     cr_assert(bsdf_ops_for(BSDF_ROUGH_DIELECTRIC)->transmissive);
 }
+
+Test(bsdf_rough, plastic_sample_matches_pdf_and_eval) { check_sample_consistency(BSDF_ROUGH_PLASTIC, true); }
+
+Test(bsdf_rough, plastic_inversion_roundtrip) { check_inversion(BSDF_ROUGH_PLASTIC, true, 100000); }
+
+/* Rough plastic is reciprocal in its coat lobe; the base lobe is symmetric too (product form). */
+Test(bsdf_rough, plastic_reciprocity) { check_reflection_reciprocity(BSDF_ROUGH_PLASTIC); }
+
+Test(bsdf_rough, ops_flags)
+{
+    cr_assert_eq(bsdf_rough_conductor_ops.dims, 2);
+    cr_assert_eq(bsdf_rough_dielectric_ops.dims, 3);
+    cr_assert_eq(bsdf_rough_plastic_ops.dims, 3);
+    cr_assert(!bsdf_rough_conductor_ops.transmissive && !bsdf_rough_plastic_ops.transmissive);
+    cr_assert(bsdf_rough_dielectric_ops.transmissive);
+    cr_assert(!bsdf_rough_conductor_ops.delta_only && !bsdf_rough_dielectric_ops.delta_only &&
+              !bsdf_rough_plastic_ops.delta_only);
+}

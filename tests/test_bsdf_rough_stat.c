@@ -138,6 +138,10 @@ Test(stat_bsdf_rough, dielectric_chi2) { run_family_chi2(BSDF_ROUGH_DIELECTRIC, 
 /* The same 48 configurations with enable_refraction = false (reflection only, pdf without F). */
 Test(stat_bsdf_rough, dielectric_reflection_only_chi2) { run_family_chi2(BSDF_ROUGH_DIELECTRIC, false); }
 
+/* 24 cases: 2 distributions x alpha {0.1, 0.3, 0.7} x cos theta_i {0.95, 0.6, 0.25, 0.05};
+ * 1M samples each; alpha 0.01 Sidak. */
+Test(stat_bsdf_rough, plastic_chi2) { run_family_chi2(BSDF_ROUGH_PLASTIC, true); }
+
 /* ---- white furnace ---- */
 
 /* A perfect white conductor (eta = 0, k = 1 gives F = 1 exactly, albedo 1): the directional
