@@ -8,6 +8,8 @@
 #include <criterion/criterion.h>
 
 #include "chi2.h"
+#include "fresnel.h"
+#include <gsl/gsl_cdf.h>
 #include "rough_util.h"
 #include <stdlib.h>
 
@@ -138,6 +140,36 @@ Test(stat_bsdf_rough, dielectric_chi2) { run_family_chi2(BSDF_ROUGH_DIELECTRIC, 
 /* The same 48 configurations with enable_refraction = false (reflection only, pdf without F). */
 Test(stat_bsdf_rough, dielectric_reflection_only_chi2) { run_family_chi2(BSDF_ROUGH_DIELECTRIC, false); }
 
+/* Failure demonstration kept as a test: a pdf that forgets Tungsten's sampling-roughness widening
+ * (D_s with alpha instead of (1.2 - 0.2 sqrt|wi.z|) alpha) must be rejected. Rough dielectric,
+ * reflection only, GGX alpha 0.3, cos theta_i 0.6; 1M samples; alpha 0.01 Sidak. */
+static double unwidened_pdf(void *p, double u, double v)
+{
+    struct bsdf_chi_ctx *c = p;
+    const struct rough_case *k = c->k;
+    double q = bsdf_chi_pdf(p, u, v);
+    vec3 wo = chi_dir(c, u, v), m;
+    if (q == 0 || !mf_half_reflect(k->wi, wo, &m)) return q;
+    return q * mf_D(k->b.dist, k->b.roughness, m) / mf_D(k->b.dist, mf_sample_alpha(k->b.roughness, k->wi.z), m);
+}
+Test(stat_bsdf_rough, rejects_pdf_without_roughness_widening)
+{
+    static struct rough_case k;
+    k.b = rough_material(BSDF_ROUGH_DIELECTRIC, MF_GGX, 0.3);
+    k.b.enable_refraction = false;
+    k.wi = dir_cos(0.6, 0.4);
+    k.mode = TRANSPORT_RADIANCE;
+    rough_case_bind(&k);
+    struct bsdf_chi_ctx c = {&k, atan2(-k.wi.y, -k.wi.x), 0};
+    char buf[256];
+    struct chi2_result good = chi2_test_2d(bsdf_chi_sample, bsdf_chi_pdf, &c, 64, 64, CHI2_N, 900);
+    struct chi2_result bad = chi2_test_2d(bsdf_chi_sample, unwidened_pdf, &c, 64, 64, CHI2_N, 900);
+    cr_log_info("widened pdf: %s", chi2_describe(&good, buf, sizeof buf));
+    cr_log_info("unwidened pdf: %s", chi2_describe(&bad, buf, sizeof buf));
+    cr_expect(good.pass, "%s", chi2_describe(&good, buf, sizeof buf));
+    cr_expect(!bad.pass, "unwidened pdf accepted: %s", chi2_describe(&bad, buf, sizeof buf));
+}
+
 /* 24 cases: 2 distributions x alpha {0.1, 0.3, 0.7} x cos theta_i {0.95, 0.6, 0.25, 0.05};
  * 1M samples each; alpha 0.01 Sidak. */
 Test(stat_bsdf_rough, plastic_chi2) { run_family_chi2(BSDF_ROUGH_PLASTIC, true); }
@@ -178,4 +210,138 @@ Test(stat_bsdf_rough, conductor_white_furnace)
         cr_expect(mean <= 1 + 3 * sd, "%s: albedo %.5f +- %.5f", name, mean, sd);
         if (k->b.roughness == 0.1 && k->wi.z > 0.9) cr_expect(mean > 0.98, "%s: albedo %.5f", name, mean);
     }
+}
+
+/* ---- inverted discrete numbers ---- */
+
+/* Forward sample with uniform numbers, invert wo, look at the inverted discrete number ud'.
+ * Thesis Eq. 5.3: given the path, the inverse must return numbers distributed as the forward
+ * numbers that produce it. Hence (a) ud' is uniform within its outcome's interval (Eq. 5.6, 5.8),
+ * and (b) over successful forward samples, ud' has the same distribution as the forward ud of
+ * successful samples (not uniform: reflection fails more often than refraction, the coat more
+ * often than the base). For rough plastic (b) holds only if the lobe is picked in proportion to
+ * its pdf share (Eq. 5.7). */
+struct inv_ctx {
+    struct rough_case *cases;
+    int n, next;
+    struct sampler_writer *w;
+};
+
+/* Interval split of the discrete choice for (wi, wo): F(wi.m) or the coat probability. */
+static double discrete_split(const struct rough_case *k, vec3 wo)
+{
+    double ct;
+    if (k->b.type == BSDF_ROUGH_DIELECTRIC) {
+        bool refl = wo.z * k->wi.z > 0;
+        double eta_i = k->wi.z > 0 ? 1 : k->b.ior, eta_o = wo.z > 0 ? 1 : k->b.ior;
+        vec3 m;
+        if (!(refl ? mf_half_reflect(k->wi, wo, &m) : mf_half_refract(k->wi, wo, eta_i, eta_o, &m))) return NAN;
+        return fresnel_dielectric(fabs(vdot(k->wi, m)), k->wi.z > 0 ? k->b.ior : 1 / k->b.ior, &ct);
+    }
+    double Fi = fresnel_dielectric(k->wi.z, k->b.ior, &ct);
+    double T = exp(-2 * k->b.thickness * (k->b.sigma_a.x + k->b.sigma_a.y + k->b.sigma_a.z) / 3);
+    return Fi / (Fi + T * (1 - Fi));
+}
+
+/* One successful forward sample and its inversion: forward ud, inverted ud', split. */
+static void inv_draw(struct inv_ctx *c, rng *r, double *ud, double *ud_inv, double *split)
+{
+    for (;;) {
+        struct rough_case *k = &c->cases[c->next++ % c->n];
+        struct bsdf_sample out;
+        *ud = rng_uniform(r);
+        double u1 = rng_uniform(r), u2 = rng_uniform(r);
+        double vec[STREAM_COUNT][STREAM_DIMS];
+        vec[STREAM_CAMERA][0] = *ud;
+        vec[STREAM_CAMERA][1] = u1;
+        vec[STREAM_CAMERA][2] = u2;
+        struct sampler_replay fw;
+        sampler_replay_init(&fw, (const double(*)[STREAM_DIMS])vec);
+        sampler_begin(&fw.base, STREAM_CAMERA, 0);
+        if (!k->ops->sample(&k->c, k->wi, &fw.base, k->mode, &out)) continue;
+        sampler_writer_clear(c->w);
+        sampler_begin(&c->w->base, STREAM_CAMERA, 1);
+        if (!k->ops->invert(&k->c, k->wi, out.wo, &c->w->base)) continue;
+        *ud_inv = c->w->u[STREAM_CAMERA][SAMPLER_BLOCK];
+        *split = discrete_split(k, out.wo);
+        if (isnan(*split)) continue;
+        return;
+    }
+}
+
+static bool inv_within_sample(void *p, rng *r, double *u, double *v)
+{
+    double ud, ui, sp;
+    inv_draw(p, r, &ud, &ui, &sp);
+    *u = ui < sp ? ui / sp : (ui - sp) / (1 - sp);
+    *v = 0.5;
+    return true;
+}
+static double uniform_pdf(void *p, double u, double v)
+{
+    (void)p;
+    (void)u;
+    (void)v;
+    return 1;
+}
+
+/* (a) 2 cases {rough dielectric, rough plastic}: n = 100k inversions each, cycling through all
+ * configurations of the family (rough_cases); 10 bins; chi2 harness, alpha 0.01 Sidak. */
+Test(stat_bsdf_rough, inverted_discrete_uniform_within_interval)
+{
+    static struct sampler_writer w;
+    struct rough_case *cases = calloc(MAX_ROUGH_CASES, sizeof *cases);
+    const enum bsdf_type types[] = {BSDF_ROUGH_DIELECTRIC, BSDF_ROUGH_PLASTIC};
+    char buf[256];
+    for (int t = 0; t < 2; t++) {
+        sampler_writer_init(&w, 500 + t, 0);
+        struct inv_ctx c = {cases, rough_cases(types[t], cases), 0, &w};
+        struct chi2_result r = chi2_test_2d(inv_within_sample, uniform_pdf, &c, 10, 1, 100000, 600 + t);
+        cr_log_info("type %d within interval: %s", (int)types[t], chi2_describe(&r, buf, sizeof buf));
+        cr_expect(r.pass, "type %d: %s", (int)types[t], chi2_describe(&r, buf, sizeof buf));
+    }
+    free(cases);
+}
+
+/* (b) Two-sample chi-square homogeneity test (equal n: stat = sum (A - B)^2 / (A + B), dof =
+ * bins - 1) between forward ud of successful samples (run A) and inverted ud' of an independent
+ * run B. 2 cases, n = 1M each run, 20 bins, alpha 0.01 Sidak. */
+static double homogeneity_p(const long *a, const long *b, int bins, double *stat)
+{
+    double x = 0;
+    int used = 0;
+    for (int i = 0; i < bins; i++)
+        if (a[i] + b[i] > 0) {
+            x += sqr((double)(a[i] - b[i])) / (double)(a[i] + b[i]);
+            used++;
+        }
+    *stat = x;
+    return gsl_cdf_chisq_Q(x, used - 1);
+}
+
+Test(stat_bsdf_rough, inverted_discrete_matches_forward)
+{
+    static struct sampler_writer w;
+    struct rough_case *cases = calloc(MAX_ROUGH_CASES, sizeof *cases);
+    const enum bsdf_type types[] = {BSDF_ROUGH_DIELECTRIC, BSDF_ROUGH_PLASTIC};
+    enum { BINS = 20 };
+    const long N = 1000000;
+    for (int t = 0; t < 2; t++) {
+        long A[BINS] = {0}, B[BINS] = {0};
+        rng r;
+        rng_seed(&r, 700 + t, 0);
+        sampler_writer_init(&w, 800 + t, 0);
+        struct inv_ctx c = {cases, rough_cases(types[t], cases), 0, &w};
+        for (long i = 0; i < 2 * N; i++) {
+            double ud, ui, sp;
+            inv_draw(&c, &r, &ud, &ui, &sp);
+            if (i % 2 == 0) A[(int)(ud * BINS)]++;
+            else B[(int)(ui * BINS)]++;
+        }
+        double stat, p = homogeneity_p(A, B, BINS, &stat);
+        cr_log_info("type %d forward ud vs inverted ud': chi2=%.1f dof=%d p=%.3g (alpha=%.2g)", (int)types[t], stat,
+                    BINS - 1, p, chi2_alpha_sidak());
+        cr_expect(p > chi2_alpha_sidak(), "type %d: chi2=%.1f p=%g", (int)types[t], stat, p);
+    }
+    free(cases);
 }
