@@ -156,6 +156,8 @@ static void check_inversion(enum bsdf_type type, bool refraction, long per_case)
     rng_sampler_init(&s, &r);
     sampler_writer_init(&w, 43, (uint64_t)type);
     char name[256];
+    double min_rate = 1;
+    long total = 0;
     for (int k = 0; k < n; k++) {
         struct rough_case *rc = &cases[k];
         rc->b.enable_refraction = refraction;
@@ -187,7 +189,11 @@ static void check_inversion(enum bsdf_type type, bool refraction, long per_case)
         cr_assert(sampled > per_case / 20, "%s", rough_case_name(rc, name, sizeof name));
         cr_assert(good >= 0.999 * sampled, "%s: %ld of %ld round trips (worst %g)",
                   rough_case_name(rc, name, sizeof name), good, sampled, worst);
+        min_rate = fmin(min_rate, (double)good / sampled);
+        total += sampled;
     }
+    cr_log_info("type %d refraction %d: %ld round trips over %d configurations, lowest success rate %.6f", (int)type,
+                (int)refraction, total, n, min_rate);
 }
 
 Test(bsdf_rough, conductor_inversion_roundtrip) { check_inversion(BSDF_ROUGH_CONDUCTOR, true, 100000); }
