@@ -5,12 +5,14 @@
 const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type)
 {
     switch (type) {
-    /* one line per family: case BSDF_X: return &bsdf_x_ops; */
     case BSDF_LAMBERT: return &bsdf_lambert_ops;
     case BSDF_MIRROR: return &bsdf_mirror_ops;
     case BSDF_CONDUCTOR: return &bsdf_conductor_ops;
     case BSDF_DIELECTRIC: return &bsdf_dielectric_ops;
     case BSDF_PLASTIC: return &bsdf_plastic_ops;
+    case BSDF_ROUGH_CONDUCTOR: return &bsdf_rough_conductor_ops;
+    case BSDF_ROUGH_DIELECTRIC: return &bsdf_rough_dielectric_ops;
+    case BSDF_ROUGH_PLASTIC: return &bsdf_rough_plastic_ops;
     default:
         return NULL;
     }
