@@ -36,6 +36,32 @@ static double eval_state(enum mlt_method m, const struct path_ctx *pc, struct sa
     return isfinite(f) && f > 0 ? f : 0;
 }
 
+/* MCTLS (thesis Eq. 4.7): the targets of all k + 1 techniques of the subpaths the sampler's numbers
+ * give, traced to full length; pi[t] and sp[t] for t = 1..k+1. Returns their sum. */
+static double all_techniques(const struct path_ctx *pc, struct sampler *s, struct scratch *w, int k, double *pi,
+                             struct splat_list *sp)
+{
+    int nz = walk_camera(pc, s, w->cam, k + 1);
+    int ny = walk_emitter(pc, s, w->emi, k);
+    double sum = 0;
+    struct connection c;
+    for (int t = 1; t <= k + 1; t++) {
+        int sv = k + 1 - t;
+        pi[t] = 0;
+        sp[t].n = 0;
+        if (nz < t || ny < sv || !connect_st(pc, w->emi, sv, w->cam, t, k, &c, NULL)) continue;
+        rgb v = vscale(c.f, c.w * (k + 1));
+        if (!vfinite(v)) {
+            w->nonfinite++;
+            continue;
+        }
+        splat_push(&sp[t], c.px, c.py, v);
+        pi[t] = splat_luminance(&sp[t]);
+        sum += pi[t];
+    }
+    return sum;
+}
+
 struct seed_job {
     const struct scene *sc;
     const struct mlt_opts *o;
@@ -69,6 +95,15 @@ struct chain {
     struct splat_list cur;
     double f;
     int k, tech;
+    double scale;      /* b_k / P(k): the chain's splat weight */
+    double xsum;       /* MCTLS: sum over techniques of the current numbers' targets */
+    bool xsum_valid;
+};
+
+/* Per-thread MCTLS buffers (k + 2 splat lists each for proposal and current). */
+struct mctls_buf {
+    double pi[MAX_PATH_LENGTH + 2], xpi[MAX_PATH_LENGTH + 2];
+    struct splat_list sp[MAX_PATH_LENGTH + 2], xsp[MAX_PATH_LENGTH + 2];
 };
 
 struct run_job {
@@ -78,6 +113,7 @@ struct run_job {
     const double *f;          /* seed targets */
     const double *cdf[MAX_PATH_LENGTH + 1]; /* per chain index: seed-pool CDF over i */
     double kcdf[MAX_PATH_LENGTH + 2];       /* length selection */
+    double scale[MAX_PATH_LENGTH + 1];      /* per chain index: b_k / P(k) */
     struct image **img;
     struct mlt_stats *stats;
     long *done;
@@ -103,6 +139,58 @@ static void splat_list_weighted(struct image *img, const struct splat_list *l, d
     for (int i = 0; i < l->n; i++) img_splat(img, l->s[i].px, l->s[i].py, vscale(l->s[i].c, wgt));
 }
 
+int mctls_pick(const double *pi, int n, double u)
+{
+    double sum = 0, acc = 0;
+    for (int i = 0; i < n; i++) sum += pi[i];
+    u *= sum;
+    int j = 0;
+    for (; j < n - 1; j++)
+        if ((acc += pi[j]) > u && pi[j] > 0) break;
+    while (j > 0 && pi[j] == 0) j--; /* rounding at the top end */
+    return j;
+}
+
+double mctls_accept(double ysum, double xsum) { return xsum > 0 ? fmin(1.0, ysum / xsum) : 1.0; }
+
+static bool use_mctls(const struct mlt_opts *o, int k)
+{
+    if (o->method != MLT_MMLT) return false;
+    return o->large_step == LARGE_MCTLS || (o->large_step == LARGE_HYBRID && k >= o->hybrid_length);
+}
+
+/* One MCTLS proposal for chain c; returns the acceptance probability and fills *acc. */
+static double mctls_step(const struct path_ctx *pc, struct chain *c, struct scratch *w, struct mctls_buf *b, rng *r,
+                         struct image *img, bool *acc, bool *changed, bool *nonzero)
+{
+    int k = c->k;
+    if (!c->xsum_valid) {
+        c->xsum = all_techniques(pc, &c->pss.base, w, k, b->xpi, b->xsp);
+        c->xsum_valid = true;
+    }
+    pss_begin(&c->pss, true);
+    double ysum = all_techniques(pc, &c->pss.base, w, k, b->pi, b->sp);
+    int j = ysum > 0 ? mctls_pick(b->pi + 1, k + 1, rng_uniform(r)) + 1 : 0;
+    double a = mctls_accept(ysum, c->xsum);
+    if (ysum > 0) splat_list_weighted(img, &b->sp[j], a * c->scale / b->pi[j]);
+    if (c->f > 0) splat_list_weighted(img, &c->cur, (1 - a) * c->scale / c->f);
+    *nonzero = ysum > 0;
+    *acc = ysum > 0 && rng_uniform(r) < a;
+    *changed = *acc && j != c->tech;
+    if (*acc) {
+        /* the state's technique number: a uniform point of the chosen technique's interval (Eq. 5.6) */
+        pss_set(&c->pss, STREAM_TECHNIQUE, 0, invert_discrete((double)(j - 1) / (k + 1), (double)j / (k + 1), rng_uniform(r)));
+        pss_accept(&c->pss);
+        c->cur = b->sp[j];
+        c->f = b->pi[j];
+        c->tech = j;
+        c->xsum = ysum;
+    } else {
+        pss_reject(&c->pss);
+    }
+    return a;
+}
+
 static void run_worker(int tid, void *p)
 {
     struct run_job *j = p;
@@ -111,6 +199,7 @@ static void run_worker(int tid, void *p)
     struct scratch *w = xmalloc(sizeof *w);
     w->nonfinite = 0;
     struct chain *ch = xcalloc((size_t)j->nk, sizeof *ch);
+    struct mctls_buf *mb = xmalloc(sizeof *mb);
     struct mlt_stats *st = &j->stats[tid];
     struct image *img = j->img[tid];
     rng r;
@@ -119,6 +208,7 @@ static void run_worker(int tid, void *p)
     for (int kk = 0; kk < j->nk; kk++) {
         struct chain *c = &ch[kk];
         c->k = kk + 1;
+        c->scale = j->scale[kk];
         if (!j->cdf[kk]) continue;
         long i = pick_cdf(j->cdf[kk], o->seed_paths, rng_uniform(&r));
         pss_init(&c->pss, &o->pss, o->seed, seed_stream(i, j->nk, kk));
@@ -141,28 +231,37 @@ static void run_worker(int tid, void *p)
         }
         struct chain *c = &ch[kk];
         bool large = rng_uniform(&r) < o->p_large;
-        pss_begin(&c->pss, large);
-        int tech;
-        double f = eval_state(o->method, &pc, &c->pss.base, w, c->k, &prop, &tech);
-        double a = c->f > 0 ? fmin(1.0, f / c->f) : 1.0;
-        /* expected values: the proposal with weight a, the current state with 1 - a */
-        if (f > 0) splat_list_weighted(img, &prop, a / f);
-        if (c->f > 0) splat_list_weighted(img, &c->cur, (1 - a) / c->f);
-        bool acc = rng_uniform(&r) < a;
-        stats_record(st, large ? PROPOSAL_LARGE : PROPOSAL_SMALL, o->method == MLT_MMLT ? c->k : 0,
-                     o->method == MLT_MMLT && tech != c->tech, a, acc, f > 0);
-        if (acc) {
-            pss_accept(&c->pss);
-            c->cur = prop;
-            c->f = f;
-            c->tech = tech;
+        double t_start = now_seconds();
+        if (large && use_mctls(o, c->k)) {
+            bool acc, changed, nonzero;
+            double a = mctls_step(&pc, c, w, mb, &r, img, &acc, &changed, &nonzero);
+            stats_record(st, PROPOSAL_MCTLS, c->k, changed, a, acc, nonzero, now_seconds() - t_start);
         } else {
-            pss_reject(&c->pss);
+            pss_begin(&c->pss, large);
+            int tech;
+            double f = eval_state(o->method, &pc, &c->pss.base, w, c->k, &prop, &tech);
+            double a = c->f > 0 ? fmin(1.0, f / c->f) : 1.0;
+            /* expected values: the proposal with weight a, the current state with 1 - a */
+            if (f > 0) splat_list_weighted(img, &prop, a * c->scale / f);
+            if (c->f > 0) splat_list_weighted(img, &c->cur, (1 - a) * c->scale / c->f);
+            bool acc = rng_uniform(&r) < a;
+            if (acc) {
+                pss_accept(&c->pss);
+                c->cur = prop;
+                c->f = f;
+                c->xsum_valid = false;
+            } else {
+                pss_reject(&c->pss);
+            }
+            stats_record(st, large ? PROPOSAL_LARGE : PROPOSAL_SMALL, o->method == MLT_MMLT ? c->k : 0,
+                         o->method == MLT_MMLT && tech != c->tech, a, acc, f > 0, now_seconds() - t_start);
+            if (acc) c->tech = tech;
         }
         if ((n & 4095) == 4095) progress_add(&j->prog, o->seconds > 0 ? 0 : 4096);
     }
     j->done[tid] = n;
     st->nonfinite += w->nonfinite;
+    free(mb);
     free(ch);
     free(w);
 }
@@ -188,14 +287,25 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     rj.nk = nk;
     rj.f = sj.f;
     double total = 0;
+    int live = 0;
     for (int kk = 0; kk < nk; kk++) {
         double *cdf = xmalloc((size_t)o.seed_paths * sizeof(double)), acc = 0;
         for (long i = 0; i < o.seed_paths; i++) cdf[i] = acc += sj.f[i * nk + kk];
         r->b_k[kk + 1] = acc / o.seed_paths;
         total += r->b_k[kk + 1];
-        if (acc > 0) rj.cdf[kk] = cdf;
-        else free(cdf);
-        rj.kcdf[kk + 1] = total;
+        if (acc > 0) {
+            rj.cdf[kk] = cdf;
+            live++;
+        } else {
+            free(cdf);
+        }
+    }
+    /* Length k is chosen with probability P(k) (b_k / b, or uniform over the lengths with b_k > 0)
+     * and its splats weigh b_k / P(k), so every length is estimated without bias either way. */
+    for (int kk = 0; kk < nk; kk++) {
+        double pk = !rj.cdf[kk] ? 0 : o.uniform_lengths ? 1.0 / live : r->b_k[kk + 1] / total;
+        rj.kcdf[kk + 1] = rj.kcdf[kk] + pk;
+        rj.scale[kk] = pk > 0 ? r->b_k[kk + 1] / pk : 0;
     }
     r->b = total;
     r->seed_seconds = now_seconds() - t0;
@@ -217,7 +327,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     for (int i = 0; i < T; i++) r->mutations += rj.done[i];
     r->img = img_create(W, H);
     stats_clear(&r->stats);
-    double scale = r->mutations > 0 ? (double)W * H * total / (double)r->mutations : 0;
+    double scale = r->mutations > 0 ? (double)W * H / (double)r->mutations : 0;
     for (int i = 0; i < T; i++) { /* fixed order: reproducible sums */
         img_accumulate(r->img, rj.img[i], scale);
         stats_merge(&r->stats, &rj.stats[i]);

@@ -22,6 +22,12 @@
 
 enum mlt_method { MLT_PSSMLT, MLT_MMLT };
 
+/* MMLT's large step: fresh numbers (MMLT), the multiple correlated-try large step of thesis §4.3
+ * (Eq. 4.2-4.7: trace both subpaths to length k, pick one of the k + 1 connections in proportion to
+ * its target, accept with min(1, sum_i pi(y_i) / sum_i pi(x_i))), or MMLT below hybrid_length and
+ * MCTLS from it on. */
+enum large_step { LARGE_MMLT, LARGE_MCTLS, LARGE_HYBRID };
+
 struct mlt_opts {
     enum mlt_method method;
     struct pss_opts pss;
@@ -33,6 +39,9 @@ struct mlt_opts {
     int threads;
     int max_length;
     bool progress;
+    enum large_step large_step;  /* MMLT only */
+    int hybrid_length;
+    bool uniform_lengths;        /* MMLT: every length gets the same share of mutations, not b_k */
 };
 
 struct mlt_result {
@@ -48,5 +57,10 @@ struct mlt_result {
 /* Returns false (with a message) when the seed pass finds no light at all. */
 bool mlt_render(const struct scene *sc, const struct mlt_opts *o, struct mlt_result *r, char *err, size_t errlen);
 void mlt_result_free(struct mlt_result *r);
+
+/* MCTLS's two decisions, exposed for the detailed-balance test: the trial picked in proportion to
+ * its target pi[0..n-1] (u uniform; sum > 0), and the generalised acceptance ratio of Eq. 4.7. */
+int mctls_pick(const double *pi, int n, double u);
+double mctls_accept(double ysum, double xsum);
 
 #endif

@@ -2,13 +2,13 @@
 #include <math.h>
 #include <string.h>
 
-static const char *kind_names[] = {"small", "large"};
+static const char *kind_names[] = {"small", "large", "mctls"};
 const char *proposal_name(enum proposal_kind k) { return kind_names[k]; }
 
 void stats_clear(struct mlt_stats *s) { memset(s, 0, sizeof *s); }
 
 void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool changed, double a, bool accepted,
-                  bool nonzero)
+                  bool nonzero, double seconds)
 {
     if (length < 0 || length >= STATS_LENGTHS) length = 0;
     struct accept_cell *c = &s->cell[kind][length][changed];
@@ -16,6 +16,7 @@ void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool
     c->attempts++;
     c->accepted += accepted;
     c->nonzero += nonzero;
+    c->seconds += seconds;
     c->sum_a += m;
     c->batch_sum += m;
     if (++c->batch_n == STATS_BATCH) {
@@ -33,6 +34,7 @@ static void merge_cell(struct accept_cell *d, const struct accept_cell *s)
     d->attempts += s->attempts;
     d->accepted += s->accepted;
     d->nonzero += s->nonzero;
+    d->seconds += s->seconds;
     d->sum_a += s->sum_a;
     d->nbatches += s->nbatches;
     d->bsum += s->bsum;

@@ -7,7 +7,7 @@
 #include <stdbool.h>
 #include <stdio.h>
 
-enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_KINDS };
+enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_KINDS };
 #define STATS_LENGTHS (MAX_PATH_LENGTH + 1) /* index 0 = all lengths (PSSMLT states) */
 #define STATS_BATCH 256                      /* proposals per batch */
 
@@ -18,6 +18,7 @@ struct accept_cell {
     long batch_n;
     long nbatches;
     double bsum, bsum2;          /* sums of batch means and their squares */
+    double seconds;              /* time spent on these proposals (not in the CSV rows: they reproduce exactly) */
 };
 
 struct mlt_stats {
@@ -27,7 +28,7 @@ struct mlt_stats {
 
 void stats_clear(struct mlt_stats *s);
 void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool technique_changed, double a,
-                  bool accepted, bool nonzero);
+                  bool accepted, bool nonzero, double seconds);
 /* Adds src into dst (threads are merged in a fixed order). */
 void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src);
 /* Mean acceptance, its batch-means standard error (NAN with fewer than 2 batches). */

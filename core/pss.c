@@ -64,15 +64,32 @@ void pss_begin(struct pss_sampler *p, bool large)
     p->ntouched = 0;
 }
 
+static void touch(struct pss_sampler *p, int stream, int idx)
+{
+    struct pss_dim *d = &p->d[stream][idx];
+    d->saved = d->value;
+    d->saved_modified = d->modified;
+    p->touched[p->ntouched++] = (uint16_t)(stream * STREAM_DIMS + idx);
+}
+
+void pss_set(struct pss_sampler *p, int stream, int index, double u)
+{
+    struct pss_dim *d = &p->d[stream][index];
+    if (d->modified != p->iteration) touch(p, stream, index);
+    d->value = u;
+    d->modified = p->iteration;
+}
+
+/* Outside a proposal (after accept or reject) reads describe the current state: a number never
+ * read since the last accepted large step is fresh, any other catches up on the small steps of
+ * the accepted iterations it was not read in (which an eager implementation would have applied). */
 static double pss_next(struct sampler *s, enum dim_kind kind)
 {
     struct pss_sampler *p = (struct pss_sampler *)s;
     int idx = sampler_index(s);
     struct pss_dim *d = &p->d[s->stream][idx];
     if (d->modified == p->iteration) return d->value; /* already brought up to date */
-    d->saved = d->value;
-    d->saved_modified = d->modified;
-    p->touched[p->ntouched++] = (uint16_t)(s->stream * STREAM_DIMS + idx);
+    touch(p, s->stream, idx);
     if (p->large || d->modified < p->last_large) {
         /* never read since the last large step (or this is one): a fresh number */
         d->value = rng_uniform(&p->r);
@@ -89,6 +106,7 @@ void pss_accept(struct pss_sampler *p)
 {
     /* Only an accepted large step makes the numbers it did not read stale (fresh when next read). */
     if (p->large) p->last_large = p->iteration;
+    p->large = false;
     p->ntouched = 0;
 }
 
@@ -101,6 +119,7 @@ void pss_reject(struct pss_sampler *p)
         d->modified = d->saved_modified;
     }
     p->ntouched = 0;
+    p->large = false;
     /* The rejected proposal did not happen: the next one reuses its iteration number, so lazy
      * catch-up counts only accepted iterations. */
     p->iteration--;

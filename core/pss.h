@@ -51,6 +51,9 @@ void pss_init(struct pss_sampler *p, const struct pss_opts *o, uint64_t seed, ui
 void pss_begin(struct pss_sampler *p, bool large);
 void pss_accept(struct pss_sampler *p);
 void pss_reject(struct pss_sampler *p);
+/* Sets a number as part of the current proposal (restored by pss_reject), e.g. the technique
+ * number an MCTLS step selected. */
+void pss_set(struct pss_sampler *p, int stream, int index, double u);
 /* Copies the current numbers of all dims read so far into u (NAN where never read). */
 void pss_export(const struct pss_sampler *p, double (*u)[STREAM_DIMS]);
 /* Replaces the state by u (used to start a chain from a seed path); NAN entries stay fresh. */

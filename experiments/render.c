@@ -32,6 +32,9 @@ static const char *usage =
     "  --rap-resolution     also scale image steps to a fixed size in pixels (thesis 4.1)\n"
     "  --cdc                constrained discrete choices: small steps keep discrete numbers\n"
     "  --seed-paths N       samples of the normalisation seed pass (default 100000)\n"
+    "  --large-step mmlt|mctls|hybrid  mmlt's large step (default mmlt; mctls: thesis 4.3)\n"
+    "  --hybrid-length K    hybrid: MCTLS from path length K on, MMLT large steps below (default 6)\n"
+    "  --uniform-lengths    mmlt: equal mutations per path length instead of in proportion to b_k\n"
     "Prints one summary line: method, samples, seconds, samples/s.\n";
 
 struct args {
@@ -91,6 +94,16 @@ static void parse(int argc, char **argv, struct args *a)
             a->mlt.pss.rap = a->mlt.pss.rap_resolution = true;
         } else if (!strcmp(o, "--cdc")) {
             a->mlt.pss.cdc = true;
+        } else if (!strcmp(o, "--large-step")) {
+            const char *v = VALUE;
+            if (!strcmp(v, "mmlt")) a->mlt.large_step = LARGE_MMLT;
+            else if (!strcmp(v, "mctls")) a->mlt.large_step = LARGE_MCTLS;
+            else if (!strcmp(v, "hybrid")) a->mlt.large_step = LARGE_HYBRID;
+            else cli_fail(prog, "--large-step: expected mmlt, mctls or hybrid, got '%s'", v);
+        } else if (!strcmp(o, "--hybrid-length")) {
+            a->mlt.hybrid_length = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
+        } else if (!strcmp(o, "--uniform-lengths")) {
+            a->mlt.uniform_lengths = true;
         } else if (!strcmp(o, "--seed-paths")) {
             a->mlt.seed_paths = cli_long(prog, o, VALUE, 1, 1L << 40);
         } else if (o[0] == '-') {
@@ -121,6 +134,8 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     FILE *f = open_memstream(&buf, &len);
     fprintf(f, "# render %s --method %s\n# commit %s\n# seed %llu\n# threads %d\n# max_length %d\n", a->scene,
             a->method, GIT_COMMIT, (unsigned long long)a->mlt.seed, a->mlt.threads, a->mlt.max_length);
+    fprintf(f, "# large_step %s\n# hybrid_length %d\n# uniform_lengths %d\n",
+            (const char *[]){"mmlt", "mctls", "hybrid"}[a->mlt.large_step], a->mlt.hybrid_length, a->mlt.uniform_lengths);
     fprintf(f, "# p_large %g\n# kernel %s\n# rap %d\n# rap_resolution %d\n# cdc %d\n# seed_paths %ld\n", a->mlt.p_large,
             a->mlt.pss.kernel == KERNEL_KELEMEN ? "kelemen" : "gaussian", a->mlt.pss.rap, a->mlt.pss.rap_resolution,
             a->mlt.pss.cdc, a->mlt.seed_paths);
@@ -142,7 +157,7 @@ int main(int argc, char **argv)
     struct args a = {.out = "out", .method = "bdpt"};
     a.mc = (struct render_opts){.method = METHOD_BDPT, .spp = -1, .seed = 1, .threads = cpu_count(), .max_length = -1,
                                 .progress = true};
-    a.mlt = (struct mlt_opts){.p_large = 0.1, .seed_paths = 100000, .seed = 1, .threads = cpu_count(), .progress = true};
+    a.mlt = (struct mlt_opts){.p_large = 0.1, .seed_paths = 100000, .seed = 1, .threads = cpu_count(), .progress = true, .hybrid_length = 6};
     pss_opts_default(&a.mlt.pss, 1, 1);
     struct pss_opts cli_pss = a.mlt.pss;
     parse(argc, argv, &a);

@@ -3,6 +3,7 @@
 #include <criterion/criterion.h>
 
 #include "agree.h"
+#include <gsl/gsl_cdf.h>
 #include "camera.h"
 #include "mlt.h"
 #include "render.h"
@@ -45,7 +46,7 @@ static struct image *render_bdpt(void *p, uint64_t seed)
 
 /* Cornell box at 64x64: 8 BDPT renders of 16 spp against 12 independent MCMC runs of 16 mutations
  * per pixel (each with its own 10k-path seed pass) per configuration; Welch t on 8x8 blocks and on
- * the image mean, alpha 0.01 Sidak over the 65 comparisons of all 5 configurations. */
+ * the image mean, alpha 0.01 Sidak over the 65 comparisons of all 7 configurations. */
 Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
 {
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
@@ -57,11 +58,18 @@ Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
         enum mlt_method m;
         bool rap, cdc;
         enum pss_kernel kernel;
-    } cfg[] = {{"pssmlt", MLT_PSSMLT, false, false, KERNEL_KELEMEN},
-               {"mmlt", MLT_MMLT, false, false, KERNEL_KELEMEN},
-               {"pssmlt --rap", MLT_PSSMLT, true, false, KERNEL_KELEMEN},
-               {"pssmlt --cdc", MLT_PSSMLT, false, true, KERNEL_KELEMEN},
-               {"mmlt --rap --cdc --kernel gaussian", MLT_MMLT, true, true, KERNEL_GAUSSIAN}};
+        enum large_step large;
+        double p_large;
+        bool uniform;
+    } cfg[] = {{"pssmlt", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false},
+               {"mmlt", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false},
+               {"pssmlt --rap", MLT_PSSMLT, true, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false},
+               {"pssmlt --cdc", MLT_PSSMLT, false, true, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false},
+               {"mmlt --rap --cdc --kernel gaussian", MLT_MMLT, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false},
+               {"mmlt --large-step mctls --p-large 0.5", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MCTLS, 0.5, false},
+               {"mmlt --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_MMLT, false, false, KERNEL_KELEMEN,
+                LARGE_HYBRID, 0.3, true}};
+    const int families = sizeof cfg / sizeof *cfg;
     for (size_t i = 0; i < sizeof cfg / sizeof *cfg; i++) {
         struct mlt_ctx c = {sc, {0}};
         opts(&c.o, sc, cfg[i].m, 16L * 64 * 64);
@@ -69,9 +77,13 @@ Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
         c.o.pss.rap = cfg[i].rap;
         c.o.pss.cdc = cfg[i].cdc;
         c.o.pss.kernel = cfg[i].kernel;
+        c.o.large_step = cfg[i].large;
+        c.o.hybrid_length = 3;
+        c.o.p_large = cfg[i].p_large;
+        c.o.uniform_lengths = cfg[i].uniform;
         stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * i, 8);
         double pm, worst;
-        int f = stack_compare(&a, &ref, 5, &pm, &worst);
+        int f = stack_compare(&a, &ref, families, &pm, &worst);
         cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", cfg[i].name, a.mean,
                      a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     }
@@ -147,4 +159,61 @@ Test(mlt, statistics_bookkeeping_and_reproducibility)
         mlt_result_free(&r2);
     }
     scene_free(sc);
+}
+
+/* MCTLS on a discrete toy (thesis Eq. 4.2-4.7): states (u, t) with u in 0..5 standing for the
+ * random-number vector and t in 0..3 for the technique; target pi(u, t) from a fixed table. Each
+ * step draws a fresh u, picks t by mctls_pick and accepts with mctls_accept of the sums. The chain's
+ * histogram over 2M steps (thinned by 10: 200k draws) must match pi (chi-square, 23 dof,
+ * alpha 0.01); the same chain accepting with the plain ratio pi(y_j) / pi(x) must fail. */
+static double toy_pi(int u, int t)
+{
+    static const double tab[6][4] = {{1, 2, 0, 4}, {3, 1, 1, 1}, {0.5, 0.5, 6, 0.1}, {2, 2, 2, 2}, {0, 0, 0, 9}, {1, 5, 1, 0.2}};
+    return tab[u][t];
+}
+
+static double toy_chain(bool generalised)
+{
+    rng r;
+    rng_seed(&r, 42, 0);
+    double hist[6][4] = {{0}}, total = 0;
+    int u = 0, t = 0;
+    for (long it = 0; it < 2000000; it++) {
+        int v = (int)(rng_uniform(&r) * 6);
+        double pi[4], ys = 0, xs = 0;
+        for (int i = 0; i < 4; i++) {
+            pi[i] = toy_pi(v, i);
+            ys += pi[i];
+            xs += toy_pi(u, i);
+        }
+        if (ys > 0) {
+            int j = mctls_pick(pi, 4, rng_uniform(&r));
+            double a = generalised ? mctls_accept(ys, xs) : fmin(1.0, pi[j] / toy_pi(u, t));
+            if (rng_uniform(&r) < a) u = v, t = j;
+        }
+        if (it % 10 == 0) hist[u][t]++;
+    }
+    for (int i = 0; i < 6; i++)
+        for (int j = 0; j < 4; j++) total += toy_pi(i, j);
+    double chi = 0, n = 200000;
+    int cells = 0;
+    for (int i = 0; i < 6; i++)
+        for (int j = 0; j < 4; j++) {
+            double e = n * toy_pi(i, j) / total;
+            if (e == 0) {
+                cr_assert_eq(hist[i][j], 0, "visited a zero-target state");
+                continue;
+            }
+            chi += sqr(hist[i][j] - e) / e;
+            cells++;
+        }
+    return gsl_cdf_chisq_Q(chi, cells - 1);
+}
+
+Test(stat_mlt, mctls_detailed_balance_on_discrete_toy)
+{
+    double p = toy_chain(true);
+    cr_assert(p > 0.01, "generalised ratio: p = %g", p);
+    double q = toy_chain(false);
+    cr_assert(q < 1e-6, "plain ratio should be rejected: p = %g", q);
 }
