@@ -78,11 +78,43 @@ test-fast: deps all
 test-san: deps
 	$(MAKE) SANITIZE=1 test-fast
 
-bench: deps all
-	$(BIN)/bench
+# ---- figures: each writes results/<target>/, its check-<target> compares with results/baselines/ ----
+CHECK_STATS := $(BIN)/check_stats
 
-# Experiments add their figure, check and bench rules here.
+# Thesis Figure 4.5: acceptance of MMLT large steps vs MCTLS per path length (scenes/ajar).
+.PHONY: fig4.5 check-fig4.5
+fig4.5: deps $(BIN)/fig4_5
+	$(BIN)/fig4_5 --out results/fig4.5
+	gnuplot -e "csv='results/fig4.5/fig4.5.csv'; out='results/fig4.5/fig4.5'" scripts/fig4.5.gp
+	bash scripts/fig4.5-table.sh results/fig4.5/fig4.5.csv > results/fig4.5/fig4.5.md
+	@cat results/fig4.5/fig4.5.md
+
+# Reruns the quick experiment with its own seed and compares every (method, length) acceptance
+# with the baseline: z-test with batch-means errors, Sidak-corrected alpha = 0.01.
+check-fig4.5: deps $(BIN)/fig4_5 $(CHECK_STATS)
+	$(BIN)/fig4_5 --scale quick --seed 2 --out results/check-fig4.5
+	$(CHECK_STATS) --key method,length --mean mean_accept --se stderr --alpha 0.01 \
+	  --out results/check-fig4.5/check.md results/baselines/fig4.5/fig4.5.csv results/check-fig4.5/fig4.5.csv
+CHECK_TARGETS += check-fig4.5
+
+# Thesis Figure 4.6: equal-time renders, MMLT large steps vs MCTLS vs the hybrid, relMSE vs BDPT.
+.PHONY: fig4.6
+fig4.6: deps $(BIN)/fig4_6
+	$(BIN)/fig4_6 --out results/fig4.6
+	oiiotool results/fig4.6/reference.png results/fig4.6/mmlt-large.png results/fig4.6/mctls.png \
+	  results/fig4.6/hybrid.png --mosaic:pad=4 2x2 -o results/fig4.6/fig4.6.png
+	bash scripts/fig4.6-table.sh results/fig4.6/fig4.6.csv > results/fig4.6/fig4.6.md
+	@echo "results/fig4.6/fig4.6.png: reference (BDPT) | MMLT large steps / MCTLS | hybrid"
+	@cat results/fig4.6/fig4.6.md
+
+# Experiments in subfolders add their figure, check and bench rules here.
 -include experiments/*/*.mk
+
+.PHONY: check
+check: $(CHECK_TARGETS)
+
+bench: deps all $(BENCH_TARGETS)
+	$(BIN)/bench
 
 clean:
 	rm -rf build build-san bin

@@ -93,3 +93,12 @@ struct image *img_read(const char *path, char *err, size_t errlen)
     free(px);
     return im;
 }
+
+double img_relmse(const struct image *a, const struct image *ref, double eps)
+{
+    ASSERT(a->w == ref->w && a->h == ref->h);
+    size_t n = (size_t)a->w * a->h * 3;
+    double s = 0;
+    for (size_t i = 0; i < n; i++) s += sqr(a->px[i] - ref->px[i]) / (sqr(ref->px[i]) + eps);
+    return s / n;
+}

@@ -39,4 +39,8 @@ bool img_write_png(const struct image *im, double scale, const char *path, char 
 bool img_read_rgb(const char *path, int *w, int *h, float **rgb, char *err, size_t errlen);
 struct image *img_read(const char *path, char *err, size_t errlen);
 
+
+
+/* Relative MSE against a reference: mean over pixels and channels of (a - r)^2 / (r^2 + eps). */
+double img_relmse(const struct image *a, const struct image *ref, double eps);
 #endif

@@ -1,0 +1,18 @@
+# Thesis Figure 4.5: average acceptance probability per path length, MMLT large steps vs MCTLS.
+# usage: gnuplot -e "csv='results/fig4.5/fig4.5.csv'; out='results/fig4.5/fig4.5'" scripts/fig4.5.gp
+set datafile separator ","
+set key top right box opaque
+set xlabel "path length (segments)"
+set ylabel "average acceptance probability E[min(1, a)]"
+set grid ytics
+set xtics 1
+set xrange [0.5:*]
+set yrange [0:*]
+set errorbars small
+sel(m, col) = (strcol(1) eq m) ? column(col) : NaN
+do for [fmt in "png pdf"] {
+    if (fmt eq "png") { set terminal pngcairo size 800,500 font ",11" } else { set terminal pdfcairo size 5in,3.2in font ",9" }
+    set output out.".".fmt
+    plot csv skip 0 using ($2-0.08):(sel("mmlt-large", 4)):(sel("mmlt-large", 5)) with yerrorlines lw 2 pt 7 title "MMLT large steps", \
+         csv skip 0 using ($2+0.08):(sel("mctls", 4)):(sel("mctls", 5)) with yerrorlines lw 2 pt 5 title "MCTLS"
+}
