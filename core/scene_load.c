@@ -127,7 +127,7 @@ static bool load_camera(struct loader *L, const cJSON *cam)
     out->filter = FILTER_BOX;
     if (!jget_string(c, cam, "camera", "reconstruction_filter", false, &filter)) return false;
     if (filter && strcmp(filter, "tent") == 0)
-        out->filter = FILTER_TENT;
+        jwarn(c, "camera.reconstruction_filter", "the tent filter is not implemented; using box");
     else if (filter && strcmp(filter, "box") != 0)
         jwarn(c, "camera.reconstruction_filter", "filter \"%s\" is not supported; using box", filter);
     return true;
