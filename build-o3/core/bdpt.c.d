@@ -1,0 +1,14 @@
+build-o3/core/bdpt.c.o: core/bdpt.c core/connect.h core/path.h \
+ core/accel.h core/scene.h core/vecmath.h core/bsdf.h core/sampler.h \
+ core/rng.h core/integrator.h core/image.h core/splat.h
+core/connect.h:
+core/path.h:
+core/accel.h:
+core/scene.h:
+core/vecmath.h:
+core/bsdf.h:
+core/sampler.h:
+core/rng.h:
+core/integrator.h:
+core/image.h:
+core/splat.h:

@@ -1,0 +1,11 @@
+build-o3/core/bsdf_rough_plastic.c.o: core/bsdf_rough_plastic.c \
+ core/bsdf.h core/sampler.h core/rng.h core/scene.h core/vecmath.h \
+ core/fresnel.h core/microfacet.h core/warp.h
+core/bsdf.h:
+core/sampler.h:
+core/rng.h:
+core/scene.h:
+core/vecmath.h:
+core/fresnel.h:
+core/microfacet.h:
+core/warp.h:

@@ -1,0 +1,2 @@
+build-o3/core/cli.c.o: core/cli.c core/cli.h
+core/cli.h:

@@ -1,0 +1,3 @@
+build-o3/core/metals.c.o: core/metals.c core/metals.h core/vecmath.h
+core/metals.h:
+core/vecmath.h:

@@ -1,0 +1,2 @@
+build-o3/core/vecmath.c.o: core/vecmath.c core/vecmath.h
+core/vecmath.h:

@@ -1,0 +1,1 @@
+#define GIT_COMMIT "bb60ccf8a2ca-dirty"
