@@ -271,8 +271,8 @@ static struct image *get_reference(const struct opts *o, struct cmlt_ref_result 
     snprintf(path, sizeof path, "%s/reference.exr", o->out);
     snprintf(keypath, sizeof keypath, "%s/reference.key", o->out);
     snprintf(key, sizeof key,
-             "cmlt-toy-v1 res=%d spp=%d A1=%g K1=%g strip=%g,%g,%g hole=%g,%g,%g L2=%g,%g rho=%g\n",
-             o->res, o->ref_spp, CMLT_A1, CMLT_K1, CMLT_STRIP_Y, CMLT_STRIP_X0, CMLT_STRIP_X1, CMLT_HOLE_X,
+             "cmlt-toy-v2 res=%d spp=%d L1Y=%g A1=%g K1=%g strip=%g,%g,%g hole=%g,%g,%g L2=%g,%g rho=%g\n",
+             o->res, o->ref_spp, CMLT_L1_Y, CMLT_A1, CMLT_K1, CMLT_STRIP_Y, CMLT_STRIP_X0, CMLT_STRIP_X1, CMLT_HOLE_X,
              CMLT_HOLE_Z, CMLT_HOLE_R, CMLT_L2_Y, CMLT_LE2, CMLT_RHO);
     FILE *f = fopen(keypath, "r");
     if (f) {

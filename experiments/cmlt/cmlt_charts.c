@@ -46,7 +46,7 @@ bool cmlt_chart_R(int chart, const struct cmlt_path *x, const double *v, double 
         u[3] = x->lb;
         return true;
     }
-    double dx = x->la - x->gx, dy = (x->light == CMLT_L1 ? 0.0 : CMLT_L2_Y) - x->gy, dz = x->lb;
+    double dx = x->la - x->gx, dy = (x->light == CMLT_L1 ? CMLT_L1_Y : CMLT_L2_Y) - x->gy, dz = x->lb;
     double d2 = dx * dx + dy * dy + dz * dz;
     if (!(d2 > 0) || !(dz > 0)) return false;
     u[2] = (dx * dx + dy * dy) / d2;

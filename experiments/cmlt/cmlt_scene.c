@@ -32,7 +32,7 @@ static inline bool in_hole(double x, double z)
 /* Light point in world space. */
 static inline vec3 light_pos(const struct cmlt_path *x)
 {
-    return v3(x->la, x->light == CMLT_L1 ? 0.0 : CMLT_L2_Y, x->lb);
+    return v3(x->la, x->light == CMLT_L1 ? CMLT_L1_Y : CMLT_L2_Y, x->lb);
 }
 
 double cmlt_geom(const struct cmlt_path *x)
@@ -50,7 +50,7 @@ bool cmlt_visible(const struct cmlt_path *x)
     double gx = x->gx, gy = x->gy;
     if (x->light == CMLT_L1) {
         if (gy > CMLT_STRIP_Y) { /* segment crosses the strip plane */
-            double t = (gy - CMLT_STRIP_Y) / gy;
+            double t = (gy - CMLT_STRIP_Y) / (gy - CMLT_L1_Y);
             if (in_strip(gx + t * (x->la - gx))) return false;
         }
         return true;
@@ -77,7 +77,7 @@ bool cmlt_trace(double gx, double gy, vec3 d, struct cmlt_path *x)
             double t = (CMLT_STRIP_Y - gy) / d.y;
             if (in_strip(gx + t * d.x) && t * d.z <= 1.0) return false;
         }
-        double t = -gy / d.y, hx = gx + t * d.x, hz = t * d.z;
+        double t = (CMLT_L1_Y - gy) / d.y, hx = gx + t * d.x, hz = t * d.z;
         if (hx < 0 || hx > 1 || hz > 1) return false;
         x->light = CMLT_L1;
         x->la = hx;

@@ -4,8 +4,10 @@
  *   ground   the square [0,1]x[0,1] in the plane z = 0, normal +z, grey Lambertian, albedo RHO.
  *            Seen by an orthographic camera looking down -z: pixel (i, j) of a W x H image covers
  *            x in [i/W, (i+1)/W), y in [1-(j+1)/H, 1-j/H) (row 0 on top = far side, y = 1).
- *   light 1  unit square in the plane y = 0: x in [0,1], z in [0,1], facing +y (towards the ground,
- *            whose edge y = 0 touches the light's bottom edge: the geometric-term singularity).
+ *   light 1  unit square in the plane y = L1_Y = -0.03: x in [0,1], z in [0,1], facing +y, just
+ *            beyond the ground's near edge y = 0. The gap keeps the geometric term bounded
+ *            (G <= 0.325/0.03^2 = 361) but strongly peaked near the edge: that peak is what the
+ *            Eq. 13 target of chart 1 (proportional to G) chases.
  *            Emission Le1(x) = A1 exp(K1 x) (1, 0.15 + 0.75 x, 0.9 - 0.8 x): grows along x and goes
  *            from magenta-red to orange-yellow; max component A1 exp(K1 x).
  *   strip    thin black two-sided occluder in the plane y = STRIP_Y: x in [STRIP_X0, STRIP_X1],
@@ -24,17 +26,18 @@
 #include <stdbool.h>
 
 #define CMLT_RHO 0.8
-#define CMLT_A1 2.0
+#define CMLT_L1_Y (-0.03)
+#define CMLT_A1 0.5
 #define CMLT_K1 3.0
 #define CMLT_EXPK1 20.085536923187668 /* exp(CMLT_K1), checked by a test */
-#define CMLT_STRIP_Y 0.1
+#define CMLT_STRIP_Y 0.25
 #define CMLT_STRIP_X0 0.80
 #define CMLT_STRIP_X1 0.84
 #define CMLT_HOLE_X 0.5
 #define CMLT_HOLE_Z 0.35
 #define CMLT_HOLE_R 0.04
 #define CMLT_L2_Y 1.05
-#define CMLT_LE2 150.0
+#define CMLT_LE2 37.5
 
 enum { CMLT_NONE = 0, CMLT_L1 = 1, CMLT_L2 = 2 };
 
