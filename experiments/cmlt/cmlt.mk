@@ -10,7 +10,7 @@ $(BIN)/table1_cmlt: $(BUILD)/experiments/table1_cmlt.c.o $(CMLT_OBJ) $(LIBCORE)
 	$(CXX) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
 # tests/test_cmlt*.c see the toy's headers and link its objects.
-$(BUILD)/tests/test_cmlt%.c.o: CPPFLAGS += -Iexperiments/cmlt
+$(BUILD)/tests/test_cmlt%: CPPFLAGS += -Iexperiments/cmlt
 $(BUILD)/tests/test_cmlt_check.c.o: CPPFLAGS += -DCHECK_STATS_BIN='"$(BIN)/check_stats"' -DCMLT_BASELINE='"$(CMLT_BASE)/stats-quick.csv"'
 TEST_OBJ += $(CMLT_OBJ)
 $(TEST_BIN): $(CMLT_OBJ) $(BIN)/check_stats
