@@ -41,11 +41,11 @@ static void usage(FILE *f)
             "  --scale quick|paper  defaults for budgets and seeds (default $SCALE or quick)\n"
             "  --budgets LIST       comma-separated total samples per algorithm, suffix k or M\n"
             "                       (quick: 1M,8M; paper: 16M,128M)\n"
-            "  --seeds K            independent runs per algorithm and budget (quick 10, paper 4)\n"
+            "  --seeds K            independent runs per algorithm and budget (quick 10, paper 8)\n"
             "  --seed S             base seed (default 1)\n"
             "  --threads T          worker threads (default 2)\n"
             "  --res N              image resolution N x N (default 128)\n"
-            "  --ref-spp N          reference samples per pixel (default 16384)\n"
+            "  --ref-spp N          reference samples per pixel (quick 16384, paper 65536)\n"
             "  --p-large P          large-step probability (default 0.1)\n"
             "  --swap-every K       CMLT chart swap every K iterations (default 4)\n"
             "  --seed-frac F        seed-pass samples per chart = F * n (default 0.0625)\n"
@@ -109,7 +109,7 @@ static void parse(int argc, char **argv, struct opts *o)
 {
     const char *env = getenv("SCALE");
     *o = (struct opts){.scale = env && *env ? env : "quick", .out = "results/table1-cmlt", .commit = "unknown",
-                       .seeds = -1, .threads = 2, .res = 128, .ref_spp = 16384, .swap_every = 4,
+                       .seeds = -1, .threads = 2, .res = 128, .ref_spp = -1, .swap_every = 4,
                        .seed = 1, .p_large = 0.1, .seed_frac = 0.0625};
     const char *budgets = NULL;
     for (int i = 1; i < argc; i++) {
@@ -144,7 +144,8 @@ static void parse(int argc, char **argv, struct opts *o)
     else if (!strcmp(o->scale, "paper")) paper = 1;
     else bad("--scale: expected quick or paper, got '%s'", o->scale);
     o->nbudgets = parse_budgets(budgets ? budgets : paper ? "16M,128M" : "1M,8M", o->budgets);
-    if (o->seeds < 0) o->seeds = paper ? 4 : 10;
+    if (o->seeds < 0) o->seeds = paper ? 8 : 10;
+    if (o->ref_spp < 0) o->ref_spp = paper ? 65536 : 16384;
 }
 
 /* ---- small output helpers ---------------------------------------------------------------- */
