@@ -10,6 +10,7 @@ pkgs=(
   libcjson-dev             # scene JSON
   libcriterion-dev         # test framework
   gnuplot-nox              # figures
+  fonts-dejavu-core        # labels in oiiotool montages (cmlt-montage.sh)
 )
 missing=()
 for p in "${pkgs[@]}"; do

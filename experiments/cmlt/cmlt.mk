@@ -1,0 +1,33 @@
+# CMLT toy (CMLT paper §5, Table 1 / Figure 3): objects, binary, figure, check and bench targets.
+CMLT_SRC := $(wildcard experiments/cmlt/*.c)
+CMLT_OBJ := $(patsubst %,$(BUILD)/%.o,$(CMLT_SRC))
+CMLT_OUT := results/table1-cmlt
+CMLT_BASE := results/baselines/table1-cmlt
+CMLT_COMMIT := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
+
+$(BIN)/table1_cmlt: $(BUILD)/experiments/table1_cmlt.c.o $(CMLT_OBJ) $(LIBCORE)
+	@mkdir -p $(dir $@)
+	$(CXX) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+# tests/test_cmlt*.c see the toy's headers and link its objects.
+$(BUILD)/tests/test_cmlt%: CPPFLAGS += -Iexperiments/cmlt
+$(BUILD)/tests/test_cmlt_check.c.o: CPPFLAGS += -DCHECK_STATS_BIN='"$(BIN)/check_stats"' -DCMLT_BASELINE='"$(CMLT_BASE)/stats-quick.csv"'
+TEST_OBJ += $(CMLT_OBJ)
+$(TEST_BIN): $(CMLT_OBJ) $(BIN)/check_stats
+
+.PHONY: table1-cmlt check-table1-cmlt bench-cmlt
+table1-cmlt: deps $(BIN)/table1_cmlt
+	$(BIN)/table1_cmlt --scale $(SCALE) --out $(CMLT_OUT) --commit $(CMLT_COMMIT)
+	bash scripts/cmlt-montage.sh $(CMLT_OUT)
+
+# Statistical regression check: RMSE mean and standard error per (algorithm, n) against the
+# committed baseline of the same scale (Welch z/t test, Sidak-corrected alpha = 0.01).
+check-table1-cmlt: table1-cmlt $(BIN)/check_stats
+	$(BIN)/check_stats --key algorithm,n --mean rmse_mean --se rmse_se --count seeds --alpha 0.01 \
+	  --out $(CMLT_OUT)/check.md $(CMLT_BASE)/stats-$(SCALE).csv $(CMLT_OUT)/table1_stats.csv
+
+bench-cmlt: $(BIN)/table1_cmlt
+	$(BIN)/table1_cmlt --bench --budgets 4M
+
+CHECK_TARGETS += check-table1-cmlt
+BENCH_TARGETS += bench-cmlt
