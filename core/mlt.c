@@ -176,7 +176,7 @@ static double mctls_step(const struct path_ctx *pc, struct chain *c, struct scra
     if (c->f > 0) splat_list_weighted(img, &c->cur, (1 - a) * c->scale / c->f);
     *nonzero = ysum > 0;
     *acc = ysum > 0 && rng_uniform(r) < a;
-    *changed = *acc && j != c->tech;
+    *changed = ysum > 0 && j != c->tech; /* a property of the proposal, not of its acceptance */
     if (*acc) {
         /* the state's technique number: a uniform point of the chosen technique's interval (Eq. 5.6) */
         pss_set(&c->pss, STREAM_TECHNIQUE, 0, invert_discrete((double)(j - 1) / (k + 1), (double)j / (k + 1), rng_uniform(r)));

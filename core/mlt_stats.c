@@ -1,4 +1,5 @@
 #include "mlt_stats.h"
+#include "vecmath.h"
 #include <math.h>
 #include <string.h>
 
@@ -7,11 +8,8 @@ const char *proposal_name(enum proposal_kind k) { return kind_names[k]; }
 
 void stats_clear(struct mlt_stats *s) { memset(s, 0, sizeof *s); }
 
-void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool changed, double a, bool accepted,
-                  bool nonzero, double seconds)
+static void record(struct accept_cell *c, double a, bool accepted, bool nonzero, double seconds)
 {
-    if (length < 0 || length >= STATS_LENGTHS) length = 0;
-    struct accept_cell *c = &s->cell[kind][length][changed];
     double m = a < 1 ? a : 1;
     c->attempts++;
     c->accepted += accepted;
@@ -29,6 +27,15 @@ void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool
     }
 }
 
+void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool changed, double a, bool accepted,
+                  bool nonzero, double seconds)
+{
+    if (length < 0 || length >= STATS_LENGTHS) length = 0;
+    record(&s->cell[kind][length][changed], a, accepted, nonzero, seconds);
+    record(&s->any[kind][length], a, accepted, nonzero, seconds);
+    record(&s->total[kind], a, accepted, nonzero, seconds);
+}
+
 static void merge_cell(struct accept_cell *d, const struct accept_cell *s)
 {
     d->attempts += s->attempts;
@@ -44,9 +51,13 @@ static void merge_cell(struct accept_cell *d, const struct accept_cell *s)
 
 void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src)
 {
-    for (int k = 0; k < PROPOSAL_KINDS; k++)
-        for (int l = 0; l < STATS_LENGTHS; l++)
+    for (int k = 0; k < PROPOSAL_KINDS; k++) {
+        for (int l = 0; l < STATS_LENGTHS; l++) {
             for (int c = 0; c < 2; c++) merge_cell(&dst->cell[k][l][c], &src->cell[k][l][c]);
+            merge_cell(&dst->any[k][l], &src->any[k][l]);
+        }
+        merge_cell(&dst->total[k], &src->total[k]);
+    }
     dst->nonfinite += src->nonfinite;
 }
 
@@ -63,8 +74,8 @@ double cell_stderr(const struct accept_cell *c)
 static void row(FILE *f, const char *method, const char *kind, const char *len, const char *changed,
                 const struct accept_cell *c)
 {
-    fprintf(f, "%s,%s,%s,%s,%ld,%.9g,%.9g,%.9g,%ld\n", method, kind, len, changed, c->attempts, cell_mean(c),
-            cell_stderr(c), c->attempts ? (double)c->accepted / c->attempts : NAN, c->nonzero);
+    fprintf(f, "%s,%s,%s,%s,%ld,%.9g,%.9g,%.9g,%ld\n", method, kind, len, changed, c->attempts, cell_mean(c), cell_stderr(c),
+            c->attempts ? (double)c->accepted / c->attempts : NAN, c->nonzero);
 }
 
 void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, bool header)
@@ -72,16 +83,13 @@ void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, boo
     if (header) fprintf(f, "method,kind,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,nonzero\n");
     char len[16];
     for (int k = 0; k < PROPOSAL_KINDS; k++) {
-        struct accept_cell total;
-        memset(&total, 0, sizeof total);
-        for (int l = 0; l < STATS_LENGTHS; l++)
-            for (int c = 0; c < 2; c++) {
-                const struct accept_cell *cell = &s->cell[k][l][c];
-                if (!cell->attempts) continue;
-                snprintf(len, sizeof len, "%d", l);
-                row(f, method, kind_names[k], l ? len : "all", c ? "yes" : "no", cell);
-                merge_cell(&total, cell);
-            }
-        if (total.attempts) row(f, method, kind_names[k], "total", "any", &total);
+        for (int l = 0; l < STATS_LENGTHS; l++) {
+            if (!s->any[k][l].attempts) continue;
+            snprintf(len, sizeof len, "%d", l);
+            for (int c = 0; c < 2; c++)
+                if (s->cell[k][l][c].attempts) row(f, method, kind_names[k], l ? len : "all", c ? "yes" : "no", &s->cell[k][l][c]);
+            row(f, method, kind_names[k], l ? len : "all", "any", &s->any[k][l]);
+        }
+        if (s->total[k].attempts) row(f, method, kind_names[k], "total", "any", &s->total[k]);
     }
 }

@@ -9,7 +9,7 @@
 
 enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_KINDS };
 #define STATS_LENGTHS (MAX_PATH_LENGTH + 1) /* index 0 = all lengths (PSSMLT states) */
-#define STATS_BATCH 256                      /* proposals per batch */
+#define STATS_BATCH 2048 /* proposals per batch: long enough for chains stuck ~1/acceptance steps */
 
 struct accept_cell {
     long attempts, accepted, nonzero;
@@ -21,8 +21,12 @@ struct accept_cell {
     double seconds;              /* time spent on these proposals (not in the CSV rows: they reproduce exactly) */
 };
 
+/* Every proposal is recorded three times, each cell a contiguous subsequence of the chain so that
+ * batch means apply: by (kind, length, technique changed), by (kind, length), and by kind. */
 struct mlt_stats {
     struct accept_cell cell[PROPOSAL_KINDS][STATS_LENGTHS][2];
+    struct accept_cell any[PROPOSAL_KINDS][STATS_LENGTHS];
+    struct accept_cell total[PROPOSAL_KINDS];
     long nonfinite;
 };
 

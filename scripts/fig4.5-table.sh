@@ -4,13 +4,14 @@
 set -euo pipefail
 awk -F, '
 /^#/ || $1 == "method" { next }
-{ key = $2; m[$1, key] = $4; s[$1, key] = $5; if (key > K) K = key }
+{ key = $2 + 0; m[$1, key] = $4; s[$1, key] = $5; if (key > K) K = key }
 END {
     print "| length | MMLT large steps | MCTLS | MCTLS / MMLT |"
     print "| ---: | ---: | ---: | ---: |"
     for (k = 1; k <= K; k++) {
+        if (!(("mmlt-large", k) in m) && !(("mctls", k) in m)) { printf "| %d | no light | no light | – |\n", k; continue }
         a = m["mmlt-large", k]; b = m["mctls", k]
         r = (a > 0) ? sprintf("%.2f", b / a) : "–"
-        printf "| %d | %.4f ± %.4f | %.4f ± %.4f | %s |\n", k, a, s["mmlt-large", k], b, s["mctls", k], r
+        printf "| %d | %.5f ± %.5f | %.5f ± %.5f | %s |\n", k, a, s["mmlt-large", k], b, s["mctls", k], r
     }
 }' "$1"

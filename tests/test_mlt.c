@@ -134,22 +134,20 @@ Test(mlt, statistics_bookkeeping_and_reproducibility)
         struct mlt_result r1, r2;
         char err[256];
         cr_assert(mlt_render(sc, &o, &r1, err, sizeof err) && mlt_render(sc, &o, &r2, err, sizeof err));
-        long n = 0;
-        for (int k = 0; k < PROPOSAL_KINDS; k++)
-            for (int l = 0; l < STATS_LENGTHS; l++)
+        long n = 0, n_any = 0, n_total = 0;
+        for (int k = 0; k < PROPOSAL_KINDS; k++) {
+            for (int l = 0; l < STATS_LENGTHS; l++) {
                 for (int c = 0; c < 2; c++) n += r1.stats.cell[k][l][c].attempts;
-        cr_assert_eq(n, r1.mutations);
-        cr_assert_eq(r1.mutations, 20000);
-        struct accept_cell small = {0}, large = {0};
-        for (int l = 0; l < STATS_LENGTHS; l++)
-            for (int c = 0; c < 2; c++) {
-                small.attempts += r1.stats.cell[PROPOSAL_SMALL][l][c].attempts;
-                small.sum_a += r1.stats.cell[PROPOSAL_SMALL][l][c].sum_a;
-                large.attempts += r1.stats.cell[PROPOSAL_LARGE][l][c].attempts;
-                large.sum_a += r1.stats.cell[PROPOSAL_LARGE][l][c].sum_a;
+                n_any += r1.stats.any[k][l].attempts;
             }
-        cr_assert_gt(cell_mean(&small), cell_mean(&large) + 0.1, "small %g large %g", cell_mean(&small),
-                     cell_mean(&large));
+            n_total += r1.stats.total[k].attempts;
+        }
+        cr_assert_eq(n, r1.mutations);
+        cr_assert_eq(n_any, r1.mutations);
+        cr_assert_eq(n_total, r1.mutations);
+        cr_assert_eq(r1.mutations, 20000);
+        const struct accept_cell *small = &r1.stats.total[PROPOSAL_SMALL], *large = &r1.stats.total[PROPOSAL_LARGE];
+        cr_assert_gt(cell_mean(small), cell_mean(large) + 0.1, "small %g large %g", cell_mean(small), cell_mean(large));
         char *c1 = csv_of(&r1, "x"), *c2 = csv_of(&r2, "x");
         cr_assert_str_eq(c1, c2);
         cr_assert(memcmp(r1.img->px, r2.img->px, sizeof(double) * 3 * 32 * 32) == 0, "images differ");
