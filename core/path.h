@@ -51,8 +51,21 @@ struct path_ctx {
 int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts);
 int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts);
 
-/* The emitter vertex y_0 from the current block (light choice and position). */
+/* The emitter vertex y_0 from the current block (light choice and position); false when the
+ * choice falls on the environment, which has no emitter vertex in this version. */
 bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y);
+/* The same after the light choice: a point on area emitter `prim` chosen with probability pick. */
+bool sample_area_emitter(const struct scene *sc, int prim, double pick, struct sampler *s, struct vertex *y);
+
+/* How a camera walk left the scene: the direction, the throughput it carried and the solid-angle
+ * density it was sampled with (0: a delta lobe or the camera ray itself). */
+struct escape {
+    bool escaped;
+    vec3 d;
+    rgb beta;
+    double pdf_sa;
+};
+int walk_camera_escape(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts, struct escape *esc);
 
 /* Thesis Alg. 2: write the numbers that make walk_* reproduce the subpath's vertices from vertex
  * `from` on (from = 0: the whole subpath; from > 0: partial inversion of a suffix, keeping the

@@ -6,14 +6,18 @@
 /* Extends a subpath whose last vertex v[n-1] emits direction d with solid-angle density pdf_sa
  * (0 for a delta lobe); beta is the throughput the next vertex receives. */
 static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts,
-                 vec3 d, double pdf_sa, rgb beta, enum transport mode, int stream)
+                 vec3 d, double pdf_sa, rgb beta, enum transport mode, int stream, struct escape *esc)
 {
     const struct scene *sc = pc->sc;
+    if (esc) esc->escaped = false;
     while (n < max_verts) {
         struct vertex *prev = &v[n - 1], *cur = &v[n];
         struct hit h;
         double eps = prev->kind == VK_CAMERA ? 0 : ray_eps(prev->p);
-        if (!accel_intersect(sc->accel, prev->p, d, eps, INFINITY, &h)) break;
+        if (!accel_intersect(sc->accel, prev->p, d, eps, INFINITY, &h)) {
+            if (esc) *esc = (struct escape){true, d, beta, pdf_sa};
+            break;
+        }
         surface_from_hit(sc, prev->p, d, &h, cur);
         cur->beta = beta;
         cur->pdf_fwd = pdf_sa > 0 ? pdf_to_area(pdf_sa, prev, cur) : 0;
@@ -38,6 +42,11 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
 
 int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts)
 {
+    return walk_camera_escape(pc, s, v, max_verts, NULL);
+}
+
+int walk_camera_escape(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts, struct escape *esc)
+{
     const struct camera *cam = &pc->sc->cam;
     if (max_verts < 1) return 0;
     sampler_begin(s, STREAM_CAMERA, 0);
@@ -45,16 +54,20 @@ int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, 
     *z = (struct vertex){.kind = VK_CAMERA, .p = cam->pos, .ng = cam->basis.n, .sh = cam->basis,
                          .front = true, .prim = -1, .tri = -1, .beta = v3s(1), .pdf_fwd = 1};
     vec3 d = camera_sample_dir(cam, s, &z->px, &z->py);
-    return trace(pc, s, v, 1, max_verts, d, camera_pdf_dir(cam, d), v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA);
+    return trace(pc, s, v, 1, max_verts, d, camera_pdf_dir(cam, d), v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA, esc);
 }
 
-/* The emitter vertex y_0 from block 0 of the emitter stream (also a path tracer's light sample). */
 bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
 {
     double pick;
     int prim = emitter_pick(sc, s, &pick);
+    return prim >= 0 && prim != sc->env_prim && sample_area_emitter(sc, prim, pick, s, y);
+}
+
+bool sample_area_emitter(const struct scene *sc, int prim, double pick, struct sampler *s, struct vertex *y)
+{
     struct emitter_pos pos;
-    if (prim < 0 || !emitter_sample_pos(sc, prim, s, &pos) || !(pos.pdf > 0)) return false;
+    if (!emitter_sample_pos(sc, prim, s, &pos) || !(pos.pdf > 0)) return false;
     *y = (struct vertex){.kind = VK_EMITTER, .p = pos.p, .ng = pos.n, .sh = frame_from_normal(pos.n),
                          .front = true, .prim = prim, .tri = pos.tri, .pdf_fwd = pick * pos.pdf};
     y->beta = v3s(1.0 / y->pdf_fwd);
@@ -73,5 +86,5 @@ int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
     double c = fabs(vdot(d, v[0].ng));
     if (!(pdf_dir > 0) || vzero(le)) return 1;
     rgb beta = vscale(vmul(v[0].beta, le), c / pdf_dir);
-    return trace(pc, s, v, 1, max_verts, d, pdf_dir, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER);
+    return trace(pc, s, v, 1, max_verts, d, pdf_dir, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER, NULL);
 }
