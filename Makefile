@@ -110,7 +110,7 @@ fig4.6: deps $(BIN)/fig4_6
 	oiiotool results/fig4.6/reference.png results/fig4.6/mmlt-large.png results/fig4.6/mctls.png \
 	  results/fig4.6/hybrid.png --mosaic:pad=4 2x2 -o results/fig4.6/fig4.6.png
 	bash scripts/fig4.6-table.sh results/fig4.6/fig4.6.csv > results/fig4.6/fig4.6.md
-	@echo "results/fig4.6/fig4.6.png: reference (BDPT) | MMLT large steps / MCTLS | hybrid"
+	@echo "results/fig4.6/fig4.6.png: top reference (BDPT), MMLT large steps; bottom MCTLS, hybrid"
 	@cat results/fig4.6/fig4.6.md
 
 # Experiments in subfolders add their figure, check and bench rules here.

@@ -3,24 +3,35 @@
 #include "camera.h"
 #include "emitter.h"
 
-static vec3 dir_to(const struct vertex *a, const struct vertex *b) { return vnorm(vsub(b->p, a->p)); }
-
 /* Solid-angle density with which vertex `at` (entered from `from_dir`, world, toward its
- * predecessor) scatters toward `to`; for the camera and emitter vertices their own densities. */
-static double scatter_pdf(const struct scene *sc, const struct vertex *at, vec3 from_dir, const struct vertex *to)
+ * predecessor) scatters into unit direction d; for camera and emitter vertices their own densities. */
+static double scatter_pdf(const struct scene *sc, const struct vertex *at, vec3 from_dir, vec3 d)
 {
-    vec3 d = dir_to(at, to);
     if (at->kind == VK_CAMERA) return camera_pdf_dir(&sc->cam, d);
     if (at->kind == VK_EMITTER) return emitter_pdf_dir(at->ng, d);
     if (!at->bc.b) return 0;
     return bsdf_pdf(&at->bc, frame_to_local(&at->sh, from_dir), frame_to_local(&at->sh, d));
 }
 
+/* Area density at `to`, reached along unit direction d over squared distance dist2. */
+static double area_pdf(double pdf_sa, const struct vertex *to, vec3 d, double dist2)
+{
+    double c = to->kind == VK_CAMERA ? 1.0 : fabs(vdot(to->ng, d));
+    return dist2 > 0 ? pdf_sa * c / dist2 : 0;
+}
+
+/* The same toward the predecessor of `at` in its own subpath, which lies along at->wi. */
+static double pdf_to_prev(const struct scene *sc, const struct vertex *at, vec3 from_dir, const struct vertex *prev)
+{
+    return area_pdf(scatter_pdf(sc, at, from_dir, at->wi), prev, at->wi, vlen2(vsub(prev->p, at->p)));
+}
+
 /* Geometric normal on the emitting side of an emitter hit by a camera walk. */
 static vec3 emit_normal(const struct vertex *v) { return v->flipped ? vneg(v->ng) : v->ng; }
 
-void connect_densities(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t,
-                       struct mis_path *m)
+/* d: unit direction from y_{s-1} to z_{t-1}, dist2 their squared distance (s >= 1). */
+static void densities(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t, vec3 d,
+                      double dist2, struct mis_path *m)
 {
     const struct scene *sc = pc->sc;
     int k = s + t - 1;
@@ -39,19 +50,35 @@ void connect_densities(const struct path_ctx *pc, const struct vertex *y, int s,
     if (s == 0) {
         /* z_{t-1} lies on an emitter: densities of generating it, and z_{t-2} from it, by emission. */
         m->pl[0] = emitter_pick_prob(sc, zc->prim) * emitter_pdf_pos(sc, zc->prim, zc->p);
-        if (t >= 2) m->pl[1] = pdf_to_area(emitter_pdf_dir(emit_normal(zc), dir_to(zc, &z[t - 2])), zc, &z[t - 2]);
+        if (t >= 2) {
+            double pdf = emitter_pdf_dir(emit_normal(zc), zc->wi);
+            m->pl[1] = area_pdf(pdf, &z[t - 2], zc->wi, vlen2(vsub(z[t - 2].p, zc->p)));
+        }
         m->delta[0] = false;
         return;
     }
     const struct vertex *yc = &y[s - 1];
-    vec3 to_z = dir_to(yc, zc), to_y = vneg(to_z);
+    vec3 back = vneg(d);
     m->delta[s - 1] = m->delta[s] = false;
     /* camera side generating y_{s-1}, then y_{s-2} */
-    m->pc[s - 1] = pdf_to_area(scatter_pdf(sc, zc, zc->wi, yc), zc, yc);
-    if (s >= 2) m->pc[s - 2] = pdf_to_area(scatter_pdf(sc, yc, to_z, &y[s - 2]), yc, &y[s - 2]);
+    m->pc[s - 1] = area_pdf(scatter_pdf(sc, zc, zc->wi, back), yc, back, dist2);
+    if (s >= 2) m->pc[s - 2] = pdf_to_prev(sc, yc, d, &y[s - 2]);
     /* emitter side generating z_{t-1}, then z_{t-2} */
-    m->pl[s] = pdf_to_area(scatter_pdf(sc, yc, yc->wi, zc), yc, zc);
-    if (t >= 2) m->pl[s + 1] = pdf_to_area(scatter_pdf(sc, zc, to_y, &z[t - 2]), zc, &z[t - 2]);
+    m->pl[s] = area_pdf(scatter_pdf(sc, yc, yc->wi, d), zc, d, dist2);
+    if (t >= 2) m->pl[s + 1] = pdf_to_prev(sc, zc, back, &z[t - 2]);
+}
+
+void connect_densities(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t,
+                       struct mis_path *m)
+{
+    vec3 d = v3s(0);
+    double dist2 = 0;
+    if (s > 0) {
+        d = vsub(z[t - 1].p, y[s - 1].p);
+        dist2 = vlen2(d);
+        d = vscale(d, 1.0 / sqrt(dist2));
+    }
+    densities(pc, y, s, z, t, d, dist2, m);
 }
 
 /* f at a connection endpoint: the BSDF (no cosine), the emitted radiance, or the importance. */
@@ -77,13 +104,15 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     const struct vertex *zc = &z[t - 1];
     out->px = z[0].px;
     out->py = z[0].py;
+    vec3 d = v3s(0);
+    double dist2 = 0;
     if (s == 0) {
         if (t < 2 || zc->kind != VK_SURFACE || !zc->front || !sc->prims[zc->prim].emissive) return false;
         out->f = vmul(zc->beta, vertex_emission(sc, zc, zc->wi));
     } else {
         const struct vertex *yc = &y[s - 1];
-        vec3 d = vsub(zc->p, yc->p);
-        double dist2 = vlen2(d);
+        d = vsub(zc->p, yc->p);
+        dist2 = vlen2(d);
         if (dist2 == 0) return false;
         d = vscale(d, 1.0 / sqrt(dist2));
         if (t == 1 && !camera_raster(&sc->cam, vneg(d), &out->px, &out->py)) return false;
@@ -94,7 +123,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     }
     if (vzero(out->f)) return false;
     struct mis_path m;
-    connect_densities(pc, y, s, z, t, &m);
+    densities(pc, y, s, z, t, d, dist2, &m);
     double r[MAX_PATH_LENGTH + 2];
     out->w = mis_weights(&m, s, max_s, ratios ? ratios : r);
     return true;

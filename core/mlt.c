@@ -231,11 +231,11 @@ static void run_worker(int tid, void *p)
         }
         struct chain *c = &ch[kk];
         bool large = rng_uniform(&r) < o->p_large;
-        double t_start = now_seconds();
+        double t_start = o->time_proposals ? now_seconds() : 0;
         if (large && use_mctls(o, c->k)) {
             bool acc, changed, nonzero;
             double a = mctls_step(&pc, c, w, mb, &r, img, &acc, &changed, &nonzero);
-            stats_record(st, PROPOSAL_MCTLS, c->k, changed, a, acc, nonzero, now_seconds() - t_start);
+            stats_record(st, PROPOSAL_MCTLS, c->k, changed, a, acc, nonzero, o->time_proposals ? now_seconds() - t_start : 0);
         } else {
             pss_begin(&c->pss, large);
             int tech;
@@ -254,7 +254,8 @@ static void run_worker(int tid, void *p)
                 pss_reject(&c->pss);
             }
             stats_record(st, large ? PROPOSAL_LARGE : PROPOSAL_SMALL, o->method == MLT_MMLT ? c->k : 0,
-                         o->method == MLT_MMLT && tech != c->tech, a, acc, f > 0, now_seconds() - t_start);
+                         o->method == MLT_MMLT && tech != c->tech, a, acc, f > 0,
+                         o->time_proposals ? now_seconds() - t_start : 0);
             if (acc) c->tech = tech;
         }
         if ((n & 4095) == 4095) progress_add(&j->prog, o->seconds > 0 ? 0 : 4096);

@@ -42,6 +42,7 @@ struct mlt_opts {
     enum large_step large_step;  /* MMLT only */
     int hybrid_length;
     bool uniform_lengths;        /* MMLT: every length gets the same share of mutations, not b_k */
+    bool time_proposals;         /* record each proposal's time in the statistics (two clock reads) */
 };
 
 struct mlt_result {

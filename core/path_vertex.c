@@ -26,7 +26,7 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
         vec3 p0 = pr->p[t[0]], p1 = pr->p[t[1]], p2 = pr->p[t[2]];
         double b0 = 1.0 - h->b1 - h->b2;
         v->p = vadd(p0, vadd(vscale(vsub(p1, p0), h->b1), vscale(vsub(p2, p0), h->b2)));
-        v->ng = vnorm(vcross(vsub(p1, p0), vsub(p2, p0)));
+        v->ng = pr->tri_n[v->tri];
         ns = v->ng;
         if (pr->n) {
             vec3 n = vadd(vadd(vscale(pr->n[t[0]], b0), vscale(pr->n[t[1]], h->b1)), vscale(pr->n[t[2]], h->b2));

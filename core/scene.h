@@ -62,6 +62,7 @@ struct prim {
     vec3 *n;                   /* world vertex normals when smooth, else NULL */
     double *uv;                /* 2 per vertex or NULL */
     int *tri;                  /* 3 per triangle, counter-clockwise seen from the front */
+    vec3 *tri_n;               /* unit geometric normal per triangle (built by scene_load) */
     /* PRIM_QUAD: p = base + a * edge0 + b * edge1, (a, b) in [0,1]^2; normal = edge1 x edge0 (unit) */
     vec3 quad_base, quad_edge0, quad_edge1, quad_normal;
     /* PRIM_SPHERE */

@@ -66,7 +66,7 @@ int main(int argc, char **argv)
     for (int m = 0; m < 2; m++) {
         struct mlt_opts o = {.method = MLT_MMLT, .p_large = 1, .mutations = mutations, .seed_paths = paper ? 1000000 : 100000,
                              .seed = seed, .threads = threads, .max_length = K, .progress = isatty(2),
-                             .large_step = m ? LARGE_MCTLS : LARGE_MMLT, .uniform_lengths = true};
+                             .large_step = m ? LARGE_MCTLS : LARGE_MMLT, .uniform_lengths = true, .time_proposals = true};
         pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
         fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", names[m], mutations, K);
         struct mlt_result r;
