@@ -20,10 +20,13 @@ double pss_small_step(struct pss_sampler *p, enum dim_kind kind, double u)
     double scale = kind == DIM_IMAGE_X ? p->scale_x : kind == DIM_IMAGE_Y ? p->scale_y : 1.0;
     double step;
     if (p->o.kernel == KERNEL_KELEMEN) {
-        /* Kelemen et al. 2002: |step| = s2 exp(-log(s2/s1) xi), sign by a second number. */
-        double xi = rng_uniform(&p->r);
-        step = p->o.s2 * exp(-log(p->o.s2 / p->o.s1) * xi);
-        if (rng_uniform(&p->r) < 0.5) step = -step;
+        /* Kelemen et al. 2002: |step| = s2 exp(-log(s2/s1) xi) with a random sign; one uniform
+         * number gives both (its first half the negative steps). */
+        double v = 2 * rng_uniform(&p->r);
+        bool neg = v < 1;
+        double xi = neg ? v : v - 1;
+        step = p->o.s2 * exp(-p->log_ratio * xi);
+        if (neg) step = -step;
     } else {
         /* Box-Muller; one normal per call keeps the stream layout simple. */
         double a = rng_uniform(&p->r), b = rng_uniform(&p->r);
@@ -41,6 +44,7 @@ void pss_init(struct pss_sampler *p, const struct pss_opts *o, uint64_t seed, ui
     p->base.ops = &pss_ops;
     p->o = *o;
     rng_seed(&p->r, seed, stream);
+    p->log_ratio = log(o->s2 / o->s1);
     double m = fmin(o->width, o->height);
     p->scale_x = p->scale_y = 1.0;
     if (o->rap) {

@@ -41,6 +41,7 @@ struct pss_sampler {
     uint64_t iteration, last_large;
     bool large;
     double scale_x, scale_y; /* image-dim step factors */
+    double log_ratio;        /* log(s2 / s1), Kelemen's kernel */
     struct pss_dim d[STREAM_COUNT][STREAM_DIMS];
     int ntouched;
     uint16_t touched[STREAM_COUNT * STREAM_DIMS];
