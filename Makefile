@@ -63,6 +63,9 @@ $(BIN)/%: $(BUILD)/experiments/%.c.o $(LIBCORE)
 	@mkdir -p $(dir $@)
 	$(CXX) $(LDFLAGS) $< $(LIBCORE) $(LDLIBS) -o $@
 
+# End-to-end tests run the tools of the same build.
+$(BUILD)/tests/%.c.o: CPPFLAGS += -DBIN_DIR='"$(BIN)"'
+$(TEST_BIN): $(EXP_BIN)
 $(TEST_BIN): $(TEST_OBJ) $(LIBCORE)
 	@mkdir -p $(dir $@)
 	$(CXX) $(LDFLAGS) $(TEST_OBJ) $(LIBCORE) $(LDLIBS) -lcriterion -o $@

@@ -125,6 +125,8 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     struct mis_path m;
     densities(pc, y, s, z, t, d, dist2, &m);
     double r[MAX_PATH_LENGTH + 2];
-    out->w = mis_weights(&m, s, max_s, ratios ? ratios : r);
+    double *rat = ratios ? ratios : r;
+    out->w = mis_weights(&m, s, max_s, rat);
+    if (pc->max_heuristic) out->w = mis_max_weight(rat, m.k, s);
     return true;
 }

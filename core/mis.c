@@ -35,3 +35,10 @@ double mis_weights(const struct mis_path *m, int s, int max_s, double *ratios)
     }
     return 1.0 / sum;
 }
+
+double mis_max_weight(const double *ratios, int k, int s)
+{
+    for (int j = 0; j <= k; j++)
+        if (ratios[j] > 1 || (ratios[j] == 1 && j < s)) return 0;
+    return 1;
+}

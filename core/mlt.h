@@ -43,6 +43,7 @@ struct mlt_opts {
     int hybrid_length;
     bool uniform_lengths;        /* MMLT: every length gets the same share of mutations, not b_k */
     bool time_proposals;         /* record each proposal's time in the statistics (two clock reads) */
+    bool max_heuristic;          /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */
 };
 
 struct mlt_result {

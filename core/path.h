@@ -44,6 +44,9 @@ struct path_ctx {
     /* BDPT restricted to one technique (s, t), unweighted, when only_t > 0: each technique alone is
      * an unbiased estimator of the paths of length s + t - 1 (tests, per-technique images). */
     int only_s, only_t;
+    /* Weights of the techniques: the balance heuristic, or Kelemen's maximum heuristic (weight 1
+     * for the technique of largest density among those that can produce the path, else 0). */
+    bool max_heuristic;
 };
 
 /* Thesis Alg. 1. Fill `v` (capacity MAX_SUBPATH_VERTS) and return the vertex count.
@@ -99,5 +102,8 @@ struct mis_path {
     bool delta[MAX_PATH_LENGTH + 2];
 };
 double mis_weights(const struct mis_path *m, int s, int max_s, double *ratios);
+/* Maximum heuristic from the same ratios: 1 if technique s has the largest density (ties go to
+ * the smallest index), else 0. */
+double mis_max_weight(const double *ratios, int k, int s);
 
 #endif

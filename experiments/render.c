@@ -35,6 +35,7 @@ static const char *usage =
     "  --large-step mmlt|mctls|hybrid  mmlt's large step (default mmlt; mctls: thesis 4.3)\n"
     "  --hybrid-length K    hybrid: MCTLS from path length K on, MMLT large steps below (default 6)\n"
     "  --uniform-lengths    mmlt: equal mutations per path length instead of in proportion to b_k\n"
+    "  --max-heuristic      pssmlt: Kelemen's maximum heuristic instead of the balance heuristic\n"
     "Prints one summary line: method, samples, seconds, samples/s.\n";
 
 struct args {
@@ -102,6 +103,8 @@ static void parse(int argc, char **argv, struct args *a)
             else cli_fail(prog, "--large-step: expected mmlt, mctls or hybrid, got '%s'", v);
         } else if (!strcmp(o, "--hybrid-length")) {
             a->mlt.hybrid_length = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
+        } else if (!strcmp(o, "--max-heuristic")) {
+            a->mlt.max_heuristic = true;
         } else if (!strcmp(o, "--uniform-lengths")) {
             a->mlt.uniform_lengths = true;
         } else if (!strcmp(o, "--seed-paths")) {
@@ -136,6 +139,7 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
             a->method, GIT_COMMIT, (unsigned long long)a->mlt.seed, a->mlt.threads, a->mlt.max_length);
     fprintf(f, "# large_step %s\n# hybrid_length %d\n# uniform_lengths %d\n",
             (const char *[]){"mmlt", "mctls", "hybrid"}[a->mlt.large_step], a->mlt.hybrid_length, a->mlt.uniform_lengths);
+    fprintf(f, "# mis %s\n", a->mlt.max_heuristic ? "maximum" : "balance");
     fprintf(f, "# p_large %g\n# kernel %s\n# rap %d\n# rap_resolution %d\n# cdc %d\n# seed_paths %ld\n", a->mlt.p_large,
             a->mlt.pss.kernel == KERNEL_KELEMEN ? "kelemen" : "gaussian", a->mlt.pss.rap, a->mlt.pss.rap_resolution,
             a->mlt.pss.cdc, a->mlt.seed_paths);

@@ -46,7 +46,7 @@ static struct image *render_bdpt(void *p, uint64_t seed)
 
 /* Cornell box at 64x64: 8 BDPT renders of 16 spp against 12 independent MCMC runs of 16 mutations
  * per pixel (each with its own 10k-path seed pass) per configuration; Welch t on 8x8 blocks and on
- * the image mean, alpha 0.01 Sidak over the 65 comparisons of all 7 configurations. */
+ * the image mean, alpha 0.01 Sidak over the 65 comparisons of all 8 configurations. */
 Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
 {
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
@@ -60,15 +60,16 @@ Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
         enum pss_kernel kernel;
         enum large_step large;
         double p_large;
-        bool uniform;
-    } cfg[] = {{"pssmlt", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false},
-               {"mmlt", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false},
-               {"pssmlt --rap", MLT_PSSMLT, true, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false},
-               {"pssmlt --cdc", MLT_PSSMLT, false, true, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false},
-               {"mmlt --rap --cdc --kernel gaussian", MLT_MMLT, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false},
-               {"mmlt --large-step mctls --p-large 0.5", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MCTLS, 0.5, false},
+        bool uniform, maxh;
+    } cfg[] = {{"pssmlt", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+               {"pssmlt --max-heuristic", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, true},
+               {"mmlt", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+               {"pssmlt --rap", MLT_PSSMLT, true, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+               {"pssmlt --cdc", MLT_PSSMLT, false, true, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+               {"mmlt --rap --cdc --kernel gaussian", MLT_MMLT, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false},
+               {"mmlt --large-step mctls --p-large 0.5", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MCTLS, 0.5, false, false},
                {"mmlt --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_MMLT, false, false, KERNEL_KELEMEN,
-                LARGE_HYBRID, 0.3, true}};
+                LARGE_HYBRID, 0.3, true, false}};
     const int families = sizeof cfg / sizeof *cfg;
     for (size_t i = 0; i < sizeof cfg / sizeof *cfg; i++) {
         struct mlt_ctx c = {sc, {0}};
@@ -81,6 +82,7 @@ Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
         c.o.hybrid_length = 3;
         c.o.p_large = cfg[i].p_large;
         c.o.uniform_lengths = cfg[i].uniform;
+        c.o.max_heuristic = cfg[i].maxh;
         stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * i, 8);
         double pm, worst;
         int f = stack_compare(&a, &ref, families, &pm, &worst);

@@ -1,0 +1,127 @@
+/* End to end through bin/render: outputs appear, bad input gives one error line, exit status 2 and
+ * no output files, and a seed reproduces the image bit for bit (EXR pixels, PNG file, CSV rows). */
+#include <criterion/criterion.h>
+
+#include "image.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#ifndef BIN_DIR
+#define BIN_DIR "bin"
+#endif
+
+static char dir[64];
+
+static void make_dir(void)
+{
+    snprintf(dir, sizeof dir, "/tmp/cli-test-XXXXXX");
+    cr_assert(mkdtemp(dir));
+}
+
+static int run(const char *args, char *err, size_t n)
+{
+    char cmd[2048], errfile[128];
+    snprintf(errfile, sizeof errfile, "%s/stderr", dir);
+    snprintf(cmd, sizeof cmd, BIN_DIR "/render %s --quiet > /dev/null 2> %s", args, errfile);
+    int st = system(cmd);
+    cr_assert(WIFEXITED(st));
+    FILE *f = fopen(errfile, "r");
+    size_t got = f ? fread(err, 1, n - 1, f) : 0;
+    err[got] = 0;
+    if (f) fclose(f);
+    return WEXITSTATUS(st);
+}
+
+static bool exists(const char *name)
+{
+    char p[256];
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    return access(p, F_OK) == 0;
+}
+
+static int lines(const char *s)
+{
+    int n = 0;
+    for (; *s; s++) n += *s == '\n';
+    return n;
+}
+
+Test(cli, bad_inputs_exit_2_with_one_line_and_no_output)
+{
+    make_dir();
+    const char *cases[][2] = {
+        {"tests/data/bad/undefined_bsdf.json", "undefined_bsdf.json"},
+        {"tests/data/bad/scale_string.json", "transform.scale"},
+        {"scenes/does-not-exist.json", "does-not-exist"},
+        {"scenes/cornell-box/scene.json --spp 0", "--spp"},
+        {"scenes/cornell-box/scene.json --method foo", "--method"},
+        {"scenes/cornell-box/scene.json --resolution 10", "--resolution"},
+        {"scenes/cornell-box/scene.json --bogus", "--bogus"},
+        {"tests/data/env_sphere.json --method bdpt", "infinite_sphere"},
+    };
+    char err[4096], args[1024];
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        snprintf(args, sizeof args, "%s --out %s/x", cases[i][0], dir);
+        int rc = run(args, err, sizeof err);
+        cr_assert_eq(rc, 2, "%s: exit %d (%s)", cases[i][0], rc, err);
+        cr_assert_eq(lines(err), 1, "%s: expected one error line, got: %s", cases[i][0], err);
+        cr_assert(strstr(err, cases[i][1]), "%s: message does not name '%s': %s", cases[i][0], cases[i][1], err);
+        cr_assert(!exists("x.exr") && !exists("x.png") && !exists("x.csv"), "%s: output written", cases[i][0]);
+    }
+}
+
+static void slurp(const char *path, char **buf, long *n)
+{
+    FILE *f = fopen(path, "rb");
+    cr_assert(f, "missing %s", path);
+    fseek(f, 0, SEEK_END);
+    *n = ftell(f);
+    rewind(f);
+    *buf = malloc((size_t)*n + 1);
+    cr_assert_eq(fread(*buf, 1, (size_t)*n, f), (size_t)*n);
+    (*buf)[*n] = 0;
+    fclose(f);
+}
+
+Test(cli, outputs_and_bitwise_reproducibility)
+{
+    make_dir();
+    char err[4096], args[1024], a[256], b[256];
+    for (int m = 0; m < 2; m++) {
+        const char *method = m ? "mmlt" : "bdpt";
+        for (int r = 0; r < 2; r++) {
+            snprintf(args, sizeof args, "scenes/cornell-box/scene.json --method %s --spp 2 --resolution 48x32 --threads 2 "
+                     "--seed 9 --seed-paths 2000 --out %s/%s%d", method, dir, method, r);
+            cr_assert_eq(run(args, err, sizeof err), 0, "%s", err);
+        }
+        const char *ext[] = {"exr", "png", "csv"};
+        for (int e = 0; e < (m ? 3 : 2); e++) {
+            snprintf(a, sizeof a, "%s/%s0.%s", dir, method, ext[e]);
+            snprintf(b, sizeof b, "%s/%s1.%s", dir, method, ext[e]);
+            char *x, *y;
+            long nx, ny;
+            slurp(a, &x, &nx);
+            slurp(b, &y, &ny);
+            if (e == 0) { /* EXR: the pixels (OpenImageIO stamps the file with the time) */
+                char msg[256];
+                struct image *ia = img_read(a, msg, sizeof msg), *ib = img_read(b, msg, sizeof msg);
+                cr_assert(ia && ib, "%s", msg);
+                cr_assert(memcmp(ia->px, ib->px, sizeof(double) * 3 * 48 * 32) == 0, "%s and %s differ", a, b);
+                img_destroy(ia);
+                img_destroy(ib);
+            } else if (e == 2) { /* CSV: statistics rows only; the metadata has timings */
+                char *rx = strstr(x, "\nmethod,"), *ry = strstr(y, "\nmethod,");
+                cr_assert(rx && ry);
+                cr_assert_str_eq(rx, ry);
+            } else {
+                cr_assert(nx == ny && memcmp(x, y, (size_t)nx) == 0, "%s and %s differ", a, b);
+            }
+            free(x);
+            free(y);
+        }
+    }
+}
