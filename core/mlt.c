@@ -219,6 +219,7 @@ static void run_worker(int tid, void *p)
     long n = 0;
     struct splat_list prop;
     for (;; n++) {
+        if ((n & 255) == 0 && interrupted()) break;
         if (o->seconds > 0) {
             if ((n & 255) == 0 && now_seconds() - j->t0 >= o->seconds) break;
         } else if (n >= budget) {
@@ -329,6 +330,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     parallel_run(T, run_worker, &rj);
     progress_finish(&rj.prog);
     r->seconds = now_seconds() - rj.t0;
+    r->partial = interrupted();
     for (int i = 0; i < T; i++) r->mutations += rj.done[i];
     r->img = img_create(W, H);
     stats_clear(&r->stats);

@@ -54,6 +54,7 @@ struct mlt_result {
     long mutations;
     double seconds, seed_seconds;
     long nonfinite;
+    bool partial;          /* interrupted: fewer mutations than asked (the image stays unbiased) */
 };
 
 /* Returns false (with a message) when the seed pass finds no light at all. */

@@ -1,6 +1,7 @@
 #include "parallel.h"
 #include "util.h"
 #include <pthread.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <stdio.h>
 #include <time.h>
@@ -90,3 +91,15 @@ void progress_finish(struct progress *p)
         fputc('\n', stderr);
     }
 }
+
+static volatile sig_atomic_t stop_flag;
+
+static void on_sigint(int sig)
+{
+    stop_flag = 1;
+    signal(sig, SIG_DFL);
+}
+
+void interrupt_install(void) { signal(SIGINT, on_sigint); }
+
+bool interrupted(void) { return stop_flag != 0; }

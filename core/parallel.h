@@ -22,6 +22,11 @@ void progress_init(struct progress *p, const char *label, long total, bool enabl
 void progress_add(struct progress *p, long n);
 void progress_finish(struct progress *p);
 
+/* Ctrl-C: the first SIGINT sets a flag long loops poll (they stop early and the tools write what
+ * was computed, marked partial); a second one terminates as usual. */
+void interrupt_install(void);
+bool interrupted(void);
+
 /* Wall-clock seconds (monotonic). */
 double now_seconds(void);
 int cpu_count(void);

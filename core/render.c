@@ -56,7 +56,7 @@ static void worker(int tid, void *p)
     struct image *img = j->img[tid];
     int W = sc->cam.width, H = sc->cam.height;
     struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H};
-    for (int y = tid; y < H; y += o->threads) {
+    for (int y = tid; y < H && !interrupted(); y += o->threads) {
         for (int x = 0; x < W; x++) {
             s.x0 = x;
             s.y0 = y;
@@ -91,7 +91,8 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         img_destroy(j.img[i]);
     }
     st->seconds = now_seconds() - t0;
-    st->samples = (long)W * H * o->spp;
+    st->samples = atomic_load(&j.prog.done) * (long)W * o->spp; /* rows finished */
+    st->partial = interrupted();
     free(j.img);
     free(j.nonfinite);
     return out;

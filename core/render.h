@@ -25,6 +25,7 @@ struct render_stats {
     long samples;
     double seconds;
     long nonfinite;
+    bool partial; /* interrupted: rows not reached are black */
 };
 
 /* Returns the image in final units (average radiance per pixel). */

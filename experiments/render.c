@@ -143,6 +143,7 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     fprintf(f, "# p_large %g\n# kernel %s\n# rap %d\n# rap_resolution %d\n# cdc %d\n# seed_paths %ld\n", a->mlt.p_large,
             a->mlt.pss.kernel == KERNEL_KELEMEN ? "kelemen" : "gaussian", a->mlt.pss.rap, a->mlt.pss.rap_resolution,
             a->mlt.pss.cdc, a->mlt.seed_paths);
+    if (r->partial) fprintf(f, "# PARTIAL: interrupted after %ld mutations\n", r->mutations);
     fprintf(f, "# mutations %ld\n# seconds %.3f\n# seed_seconds %.3f\n# mutations_per_second %.0f\n# nonfinite %ld\n",
             r->mutations, r->seconds, r->seed_seconds, r->mutations / r->seconds, r->nonfinite);
     fprintf(f, "# b %.9g\n", r->b);
@@ -182,15 +183,17 @@ int main(int argc, char **argv)
     if (a.mc.spp < 0) a.mc.spp = sc->spp > 0 ? sc->spp : 16;
     if (a.mc.max_length < 0) a.mc.max_length = sc->max_length;
     if (a.mc.progress && !isatty(2)) a.mc.progress = a.mlt.progress = false;
-    bool ok;
+    bool ok, partial;
+    interrupt_install();
     if (!strcmp(a.method, "pt") || !strcmp(a.method, "bdpt")) {
         method_parse(a.method, &a.mc.method);
         struct render_stats st;
         struct image *img = render_mc(sc, &a.mc, &st);
         ok = write_images(img, a.out, err, sizeof err);
+        partial = st.partial;
         if (ok)
-            printf("%s: %ld samples in %.2f s, %.0f samples/s (%d threads), %ld non-finite dropped\n", a.method,
-                   st.samples, st.seconds, st.samples / st.seconds, a.mc.threads, st.nonfinite);
+            printf("%s%s: %ld samples in %.2f s, %.0f samples/s (%d threads), %ld non-finite dropped\n", partial ? "PARTIAL (interrupted) " : "",
+                   a.method, st.samples, st.seconds, st.samples / st.seconds, a.mc.threads, st.nonfinite);
         img_destroy(img);
     } else {
         a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : MLT_PSSMLT;
@@ -206,14 +209,15 @@ int main(int argc, char **argv)
             scene_free(sc);
             return 1;
         }
+        partial = r.partial;
         ok = write_images(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err);
         if (ok)
-            printf("%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%d threads), %ld non-finite "
+            printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%d threads), %ld non-finite "
                    "dropped\n",
-                   a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds, a.mlt.threads, r.nonfinite);
+                   partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds, a.mlt.threads, r.nonfinite);
         mlt_result_free(&r);
     }
     if (!ok) fprintf(stderr, "%s\n", err);
     scene_free(sc);
-    return ok ? 0 : 1;
+    return !ok ? 1 : partial ? 130 : 0;
 }
