@@ -1,2 +1,0 @@
-build-o3/core/cli.c.o: core/cli.c core/cli.h
-core/cli.h:

@@ -1,2 +1,0 @@
-build-o3/core/rng.c.o: core/rng.c core/rng.h
-core/rng.h:

@@ -1,2 +1,0 @@
-build-o3/core/vecmath.c.o: core/vecmath.c core/vecmath.h
-core/vecmath.h:

@@ -1,1 +1,0 @@
-#define GIT_COMMIT "bb60ccf8a2ca-dirty"
