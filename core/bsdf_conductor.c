@@ -1,5 +1,7 @@
-/* Smooth conductor: a delta reflection with the exact conductor Fresnel term (complex IOR eta + i k
- * per channel), tinted by albedo as Tungsten's ConductorBsdf does. No numbers are consumed. */
+/* Smooth conductor and its special case, the ideal mirror: one delta reflection lobe tinted by
+ * albedo, with the exact conductor Fresnel term (complex IOR eta + i k per channel) for the
+ * conductor (Tungsten's ConductorBsdf) and reflectance 1 for the mirror (MirrorBsdf). No numbers
+ * are consumed; invert only checks that wo is the reflection. */
 #include "bsdf.h"
 #include "bsdf_smooth.h"
 #include "fresnel.h"
@@ -12,7 +14,8 @@ static bool conductor_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *
     if (wi.z <= 0) return false;
     out->wo = smooth_reflect(wi);
     out->pdf = 1;
-    out->weight = vmul(c->albedo, fresnel_conductor(wi.z, c->b->eta, c->b->k));
+    out->weight = c->albedo;
+    if (c->b->type == BSDF_CONDUCTOR) out->weight = vmul(out->weight, fresnel_conductor(wi.z, c->b->eta, c->b->k));
     out->delta = true;
     out->lobe = CONDUCTOR_LOBE_REFLECT;
     return true;
@@ -37,6 +40,16 @@ static bool conductor_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct 
 }
 
 const struct bsdf_ops bsdf_conductor_ops = {
+    .dims = 0,
+    .sample = conductor_sample,
+    .eval = conductor_eval,
+    .pdf = conductor_pdf,
+    .invert = conductor_invert,
+    .transmissive = false,
+    .delta_only = true,
+};
+
+const struct bsdf_ops bsdf_mirror_ops = {
     .dims = 0,
     .sample = conductor_sample,
     .eval = conductor_eval,

@@ -14,8 +14,7 @@
 #include "vecmath.h"
 
 enum { LAMBERT_LOBE_DIFFUSE = 0 };
-enum { MIRROR_LOBE_REFLECT = 0 };
-enum { CONDUCTOR_LOBE_REFLECT = 0 };
+enum { CONDUCTOR_LOBE_REFLECT = 0 }; /* conductor and mirror */
 enum { DIELECTRIC_LOBE_REFLECT = 0, DIELECTRIC_LOBE_REFRACT = 1 };
 enum { PLASTIC_LOBE_COAT = 0, PLASTIC_LOBE_DIFFUSE = 1 };
 

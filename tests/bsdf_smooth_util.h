@@ -6,25 +6,10 @@
 #include "bsdf.h"
 #include "bsdf_smooth.h"
 #include "rng.h"
+#include "rng_sampler.h"
 #include "sampler.h"
 #include <string.h>
 
-/* A forward sampler reading from a borrowed rng (the harness owns it). */
-struct rng_sampler {
-    struct sampler base;
-    rng *r;
-};
-static double rng_sampler_next(struct sampler *s, enum dim_kind kind)
-{
-    (void)kind;
-    return rng_uniform(((struct rng_sampler *)s)->r);
-}
-static const struct sampler_ops rng_sampler_ops = {rng_sampler_next, NULL, NULL};
-static inline void rng_sampler_init(struct rng_sampler *s, rng *r)
-{
-    s->base = (struct sampler){&rng_sampler_ops, 0, 0, 0};
-    s->r = r;
-}
 
 /* Unit direction with the given cos(theta) and phi. */
 static inline vec3 dir_cos_phi(double c, double phi)
@@ -79,6 +64,18 @@ static inline int roundtrip_once(const struct bsdf_ctx *c, vec3 wi, struct sampl
     if (rp.base.offset != ops->dims) return 4;
     if (back.lobe != out->lobe || back.delta != out->delta || vlen(vsub(back.wo, out->wo)) > 1e-6) return 3;
     return 0;
+}
+
+/* A coloured, absorbing plastic: every term of the model is active. */
+static inline struct bsdf plastic_coloured(void)
+{
+    struct bsdf b = make_bsdf(BSDF_PLASTIC);
+    b.albedo = v3(0.8, 0.3, 0.05);
+    b.ior = 1.8;
+    b.thickness = 0.5;
+    b.sigma_a = v3(0.5, 0.1, 2.0);
+    bsdf_prepare(&b);
+    return b;
 }
 
 #endif

@@ -6,26 +6,11 @@
 #include "bsdf.h"
 #include "microfacet.h"
 #include "rng.h"
+#include "rng_sampler.h"
 #include "sampler.h"
 #include <stdio.h>
 #include <string.h>
 
-/* A forward sampler reading from an external rng (the chi-square harness owns the rng). */
-struct rng_sampler {
-    struct sampler base;
-    rng *r;
-};
-static double rng_sampler_next(struct sampler *s, enum dim_kind kind)
-{
-    (void)kind;
-    return rng_uniform(((struct rng_sampler *)s)->r);
-}
-static const struct sampler_ops rng_sampler_ops = {rng_sampler_next, NULL, NULL};
-static inline void rng_sampler_init(struct rng_sampler *s, rng *r)
-{
-    s->base = (struct sampler){&rng_sampler_ops, 0, 0, 0};
-    s->r = r;
-}
 
 /* One test configuration: material plus incident direction and transport mode. */
 struct rough_case {

@@ -29,18 +29,6 @@ static struct sampler *fixed(struct fixed_sampler *f, double u)
     return &f->base;
 }
 
-/* A coloured, absorbing plastic: every term of the model is active. */
-static struct bsdf plastic_coloured(void)
-{
-    struct bsdf b = make_bsdf(BSDF_PLASTIC);
-    b.albedo = v3(0.8, 0.3, 0.05);
-    b.ior = 1.8;
-    b.thickness = 0.5;
-    b.sigma_a = v3(0.5, 0.1, 2.0);
-    bsdf_prepare(&b);
-    return b;
-}
-
 Test(bsdf_smooth, dispatch_and_flags)
 {
     cr_assert_null(bsdf_ops_for(BSDF_NULL));
@@ -160,7 +148,7 @@ Test(bsdf_smooth, mirror_and_conductor_reflect)
         struct fixed_sampler f;
         struct bsdf_ctx cm = {&m, m.albedo}, ck = {&k, k.albedo};
         cr_assert(bsdf_sample(&cm, wi, fixed(&f, 0.5), TRANSPORT_RADIANCE, &o));
-        cr_assert(o.delta && o.pdf == 1 && o.lobe == MIRROR_LOBE_REFLECT);
+        cr_assert(o.delta && o.pdf == 1 && o.lobe == CONDUCTOR_LOBE_REFLECT);
         cr_assert(o.wo.x == -wi.x && o.wo.y == -wi.y && o.wo.z == wi.z);
         cr_assert(vlen(vsub(o.weight, m.albedo)) == 0);
         cr_assert(vzero(bsdf_eval(&cm, wi, o.wo, TRANSPORT_RADIANCE)) && bsdf_pdf(&cm, wi, o.wo) == 0);

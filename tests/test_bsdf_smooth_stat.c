@@ -50,17 +50,6 @@ static struct chi2_result run_chi2(const struct bsdf *b, vec3 wi, double scale, 
     return chi2_test_dir(case_sample, case_pdf, &k, 32, 64, N_CHI2, seed);
 }
 
-static struct bsdf plastic_coloured(void)
-{
-    struct bsdf b = make_bsdf(BSDF_PLASTIC);
-    b.albedo = v3(0.8, 0.3, 0.05);
-    b.ior = 1.8;
-    b.thickness = 0.5;
-    b.sigma_a = v3(0.5, 0.1, 2.0);
-    bsdf_prepare(&b);
-    return b;
-}
-
 /* Continuous families: 1M samples x 4 incident directions (cos 1, 0.8, 0.4, 0.05). */
 Test(stat_bsdf_smooth, chi2_lambert)
 {
