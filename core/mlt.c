@@ -214,6 +214,9 @@ static void run_worker(int tid, void *p)
         pss_init(&c->pss, &o->pss, o->seed, seed_stream(i, j->nk, kk));
         c->f = eval_state(o->method, &pc, &c->pss.base, w, c->k, &c->cur, &c->tech);
         pss_accept(&c->pss);
+        /* The seed's stream reproduced its path; the mutations get a stream of their own, so that
+         * two threads starting from the same seed sample do not run identical chains. */
+        rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)tid << 24) | (uint64_t)kk);
     }
     long budget = o->mutations / o->threads + (tid < o->mutations % o->threads);
     long n = 0;
