@@ -13,13 +13,6 @@ static double scatter_pdf(const struct scene *sc, const struct vertex *at, vec3 
     return bsdf_pdf(&at->bc, frame_to_local(&at->sh, from_dir), frame_to_local(&at->sh, d));
 }
 
-/* Area density at `to`, reached along unit direction d over squared distance dist2. */
-static double area_pdf(double pdf_sa, const struct vertex *to, vec3 d, double dist2)
-{
-    double c = to->kind == VK_CAMERA ? 1.0 : fabs(vdot(to->ng, d));
-    return dist2 > 0 ? pdf_sa * c / dist2 : 0;
-}
-
 /* The same toward the predecessor of `at` in its own subpath, which lies along at->wi. */
 static double pdf_to_prev(const struct scene *sc, const struct vertex *at, vec3 from_dir, const struct vertex *prev)
 {

@@ -79,8 +79,9 @@ bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, in
 /* Surface vertex from a ray hit; `incoming` is the ray direction. */
 void surface_from_hit(const struct scene *sc, vec3 origin, vec3 dir, const struct hit *h, struct vertex *v);
 
-/* Area density at `to` of a direction sampled at `from` with solid-angle density pdf. */
-double pdf_to_area(double pdf_sa, const struct vertex *from, const struct vertex *to);
+/* Area density at `to`, reached along unit direction d (either orientation) over squared
+ * distance dist2, of a direction sampled with solid-angle density pdf_sa. */
+double area_pdf(double pdf_sa, const struct vertex *to, vec3 d, double dist2);
 
 /* Radiance emitted by vertex v (an emitter surface reached from its front) toward direction w. */
 rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w);

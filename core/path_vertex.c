@@ -54,13 +54,10 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
     v->pdf_fwd = v->pdf_rev = 0;
 }
 
-double pdf_to_area(double pdf_sa, const struct vertex *from, const struct vertex *to)
+double area_pdf(double pdf_sa, const struct vertex *to, vec3 d, double dist2)
 {
-    vec3 d = vsub(to->p, from->p);
-    double dist2 = vlen2(d);
-    if (dist2 == 0) return 0;
-    double c = to->kind == VK_CAMERA ? 1.0 : fabs(vdot(to->ng, d)) / sqrt(dist2);
-    return pdf_sa * c / dist2;
+    double c = to->kind == VK_CAMERA ? 1.0 : fabs(vdot(to->ng, d));
+    return dist2 > 0 ? pdf_sa * c / dist2 : 0;
 }
 
 rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w)

@@ -19,8 +19,9 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
             break;
         }
         surface_from_hit(sc, prev->p, d, &h, cur);
+        double dist2 = vlen2(vsub(cur->p, prev->p));
         cur->beta = beta;
-        cur->pdf_fwd = pdf_sa > 0 ? pdf_to_area(pdf_sa, prev, cur) : 0;
+        cur->pdf_fwd = pdf_sa > 0 ? area_pdf(pdf_sa, cur, d, dist2) : 0;
         n++;
         if (!cur->bc.b || n >= max_verts) break;
         sampler_begin(s, stream, n - 1);
@@ -33,7 +34,7 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
         beta = vmul(beta, bs.weight);
         if (vzero(beta) || !vfinite(beta)) break;
         cur->delta = bs.delta;
-        prev->pdf_rev = bs.delta ? 0 : pdf_to_area(bsdf_pdf(&cur->bc, bs.wo, wi), cur, prev);
+        prev->pdf_rev = bs.delta ? 0 : area_pdf(bsdf_pdf(&cur->bc, bs.wo, wi), prev, d, dist2);
         d = wo;
         pdf_sa = bs.delta ? 0 : bs.pdf;
     }
