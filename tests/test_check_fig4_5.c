@@ -7,13 +7,16 @@
 #include <string.h>
 #include <sys/wait.h>
 
+#ifndef BIN_DIR
+#define BIN_DIR "bin"
+#endif
 #define BASE "results/baselines/fig4.5/fig4.5.csv"
 #define REPL "results/baselines/fig4.5/replicate-seed2.csv"
 
 static int check(const char *current)
 {
     char cmd[1024];
-    snprintf(cmd, sizeof cmd, "bin/check_stats --key method,length --mean mean_accept --se stderr %s %s > /dev/null 2>&1",
+    snprintf(cmd, sizeof cmd, BIN_DIR "/check_stats --key method,length --mean mean_accept --se stderr %s %s > /dev/null 2>&1",
              BASE, current);
     int st = system(cmd);
     cr_assert(WIFEXITED(st), "check_stats did not run");
