@@ -6,7 +6,7 @@ const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type)
 {
     switch (type) {
     case BSDF_LAMBERT: return &bsdf_lambert_ops;
-    case BSDF_MIRROR: return &bsdf_mirror_ops;
+    case BSDF_MIRROR: /* the conductor's lobe with reflectance 1 */
     case BSDF_CONDUCTOR: return &bsdf_conductor_ops;
     case BSDF_DIELECTRIC: return &bsdf_dielectric_ops;
     case BSDF_PLASTIC: return &bsdf_plastic_ops;

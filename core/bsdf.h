@@ -75,7 +75,7 @@ static inline bool bsdf_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struc
 }
 
 /* Families (one file each). */
-extern const struct bsdf_ops bsdf_lambert_ops, bsdf_mirror_ops, bsdf_conductor_ops,
+extern const struct bsdf_ops bsdf_lambert_ops, bsdf_conductor_ops /* also the mirror */,
     bsdf_dielectric_ops, bsdf_plastic_ops, bsdf_rough_conductor_ops, bsdf_rough_dielectric_ops,
     bsdf_rough_plastic_ops;
 

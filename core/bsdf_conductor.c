@@ -48,13 +48,3 @@ const struct bsdf_ops bsdf_conductor_ops = {
     .transmissive = false,
     .delta_only = true,
 };
-
-const struct bsdf_ops bsdf_mirror_ops = {
-    .dims = 0,
-    .sample = conductor_sample,
-    .eval = conductor_eval,
-    .pdf = conductor_pdf,
-    .invert = conductor_invert,
-    .transmissive = false,
-    .delta_only = true,
-};

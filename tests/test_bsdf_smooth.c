@@ -34,7 +34,7 @@ Test(bsdf_smooth, dispatch_and_flags)
     cr_assert_null(bsdf_ops_for(BSDF_NULL));
     const struct { enum bsdf_type t; const struct bsdf_ops *ops; int dims; bool tr, delta; } want[] = {
         {BSDF_LAMBERT, &bsdf_lambert_ops, 2, false, false},
-        {BSDF_MIRROR, &bsdf_mirror_ops, 0, false, true},
+        {BSDF_MIRROR, &bsdf_conductor_ops, 0, false, true},
         {BSDF_CONDUCTOR, &bsdf_conductor_ops, 0, false, true},
         {BSDF_DIELECTRIC, &bsdf_dielectric_ops, 1, true, true},
         {BSDF_PLASTIC, &bsdf_plastic_ops, 3, false, false},
