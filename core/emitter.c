@@ -110,6 +110,8 @@ struct emitter_table *emitters_build(const struct scene *sc, char *err, size_t e
     }
     if (n > 0) cdf_build(t->cdf, t->power, n);
     else t->cdf[0] = 0, t->cdf[1] = 1;
+    t->total_power = 0;
+    for (int i = 0; i < n; i++) t->total_power += t->power[i];
     return t;
 }
 
@@ -135,18 +137,11 @@ int emitters_count(const struct scene *sc)
     return n;
 }
 
-static double total_power(const struct emitter_table *t)
-{
-    double s = 0;
-    for (int i = 0; i < t->n; i++) s += t->power[i];
-    return s;
-}
-
 int emitter_pick(const struct scene *sc, struct sampler *s, double *prob)
 {
     const struct emitter_table *t = table(sc);
     double u = sampler_next(s, DIM_DISCRETE);
-    if (t->n == 0 || !(total_power(t) > 0)) {
+    if (t->n == 0 || !(t->total_power > 0)) {
         *prob = 0;
         return -1;
     }
@@ -158,7 +153,7 @@ int emitter_pick(const struct scene *sc, struct sampler *s, double *prob)
 double emitter_pick_prob(const struct scene *sc, int prim)
 {
     const struct emitter_table *t = table(sc);
-    if (prim < 0 || prim >= t->nprims || t->slot[prim] < 0 || !(total_power(t) > 0)) return 0;
+    if (prim < 0 || prim >= t->nprims || t->slot[prim] < 0 || !(t->total_power > 0)) return 0;
     int k = t->slot[prim];
     return t->cdf[k + 1] - t->cdf[k];
 }

@@ -10,6 +10,7 @@ struct emitter_table {
     int n;              /* emissive prims, in prim order (including the environment) */
     int *prim;          /* n: prim index of each slot */
     double *power;      /* n: selection weight (see emitters_build) */
+    double total_power; /* their sum, computed once */
     double *cdf;        /* n + 1: light selection CDF */
     int nprims;
     int *slot;          /* nprims: slot of each prim, -1 if not an emitter */
