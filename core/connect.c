@@ -8,6 +8,7 @@
 static double scatter_pdf(const struct scene *sc, const struct vertex *at, vec3 from_dir, vec3 d)
 {
     if (at->kind == VK_CAMERA) return camera_pdf_dir(&sc->cam, d);
+    if (at->kind == VK_ENV) return 1.0 / (M_PI * sqr(env_radius(sc))); /* the origin disc */
     if (at->kind == VK_EMITTER) return emitter_pdf_dir(at->ng, d);
     if (!at->bc.b) return 0;
     return bsdf_pdf(&at->bc, frame_to_local(&at->sh, from_dir), frame_to_local(&at->sh, d));
@@ -16,7 +17,7 @@ static double scatter_pdf(const struct scene *sc, const struct vertex *at, vec3 
 /* The same toward the predecessor of `at` in its own subpath, which lies along at->wi. */
 static double pdf_to_prev(const struct scene *sc, const struct vertex *at, vec3 from_dir, const struct vertex *prev)
 {
-    return area_pdf(scatter_pdf(sc, at, from_dir, at->wi), prev, at->wi, vlen2(vsub(prev->p, at->p)));
+    return edge_pdf(scatter_pdf(sc, at, from_dir, at->wi), at, prev, at->wi, vlen2(vsub(prev->p, at->p)));
 }
 
 /* Geometric normal on the emitting side of an emitter hit by a camera walk. */
@@ -41,11 +42,18 @@ static void densities(const struct path_ctx *pc, const struct vertex *y, int s, 
     }
     const struct vertex *zc = &z[t - 1];
     if (s == 0) {
-        /* z_{t-1} lies on an emitter: densities of generating it, and z_{t-2} from it, by emission. */
-        m->pl[0] = emitter_pick_prob(sc, zc->prim) * emitter_pdf_pos(sc, zc->prim, zc->p);
-        if (t >= 2) {
-            double pdf = emitter_pdf_dir(emit_normal(zc), zc->wi);
-            m->pl[1] = area_pdf(pdf, &z[t - 2], zc->wi, vlen2(vsub(z[t - 2].p, zc->p)));
+        /* z_{t-1} lies on an emitter: densities of generating it, and z_{t-2} from it, by emission
+         * (for the environment: its direction, then the origin disc). */
+        double pick = emitter_pick_prob(sc, zc->prim);
+        if (zc->kind == VK_ENV) {
+            m->pl[0] = pick * env_pdf_dir(sc, env_dir(zc));
+            if (t >= 2) m->pl[1] = edge_pdf(scatter_pdf(sc, zc, zc->wi, zc->wi), zc, &z[t - 2], zc->wi, 1);
+        } else {
+            m->pl[0] = pick * emitter_pdf_pos(sc, zc->prim, zc->p);
+            if (t >= 2) {
+                double pdf = emitter_pdf_dir(emit_normal(zc), zc->wi);
+                m->pl[1] = edge_pdf(pdf, zc, &z[t - 2], zc->wi, vlen2(vsub(z[t - 2].p, zc->p)));
+            }
         }
         m->delta[0] = false;
         return;
@@ -54,10 +62,10 @@ static void densities(const struct path_ctx *pc, const struct vertex *y, int s, 
     vec3 back = vneg(d);
     m->delta[s - 1] = m->delta[s] = false;
     /* camera side generating y_{s-1}, then y_{s-2} */
-    m->pc[s - 1] = area_pdf(scatter_pdf(sc, zc, zc->wi, back), yc, back, dist2);
+    m->pc[s - 1] = edge_pdf(scatter_pdf(sc, zc, zc->wi, back), zc, yc, back, dist2);
     if (s >= 2) m->pc[s - 2] = pdf_to_prev(sc, yc, d, &y[s - 2]);
     /* emitter side generating z_{t-1}, then z_{t-2} */
-    m->pl[s] = area_pdf(scatter_pdf(sc, yc, yc->wi, d), zc, d, dist2);
+    m->pl[s] = edge_pdf(scatter_pdf(sc, yc, yc->wi, d), yc, zc, d, dist2);
     if (t >= 2) m->pl[s + 1] = pdf_to_prev(sc, zc, back, &z[t - 2]);
 }
 
@@ -66,11 +74,7 @@ void connect_densities(const struct path_ctx *pc, const struct vertex *y, int s,
 {
     vec3 d = v3s(0);
     double dist2 = 0;
-    if (s > 0) {
-        d = vsub(z[t - 1].p, y[s - 1].p);
-        dist2 = vlen2(d);
-        d = vscale(d, 1.0 / sqrt(dist2));
-    }
+    if (s > 0) d = edge_dir(&y[s - 1], &z[t - 1], &dist2);
     densities(pc, y, s, z, t, d, dist2, m);
 }
 
@@ -79,13 +83,14 @@ static rgb endpoint_f(const struct scene *sc, const struct vertex *v, vec3 d, en
 {
     if (v->kind == VK_CAMERA) return v3s(camera_pdf_dir(&sc->cam, d));
     if (v->kind == VK_EMITTER) return emitter_radiance(sc, v->prim, v->ng, d);
+    if (v->kind == VK_ENV) return env_radiance(sc, vneg(d)); /* d leaves the environment */
     if (!v->bc.b || bsdf_ops_for(v->bc.b->type)->delta_only) return v3s(0);
     return bsdf_eval(&v->bc, frame_to_local(&v->sh, v->wi), frame_to_local(&v->sh, d), mode);
 }
 
 static double endpoint_cos(const struct vertex *v, vec3 d)
 {
-    if (v->kind == VK_CAMERA) return 1.0;
+    if (v->kind == VK_CAMERA || v->kind == VK_ENV) return 1.0;
     if (v->kind == VK_EMITTER) return fabs(vdot(v->ng, d));
     return fabs(vdot(v->sh.n, d));
 }
@@ -100,14 +105,14 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     vec3 d = v3s(0);
     double dist2 = 0;
     if (s == 0) {
-        if (t < 2 || zc->kind != VK_SURFACE || !zc->front || !sc->prims[zc->prim].emissive) return false;
+        if (t < 2) return false;
+        if (zc->kind != VK_ENV && (zc->kind != VK_SURFACE || !zc->front || !sc->prims[zc->prim].emissive)) return false;
         out->f = vmul(zc->beta, vertex_emission(sc, zc, zc->wi));
     } else {
         const struct vertex *yc = &y[s - 1];
-        d = vsub(zc->p, yc->p);
-        dist2 = vlen2(d);
+        if (zc->kind == VK_ENV) return false; /* nothing scatters at infinity */
+        d = edge_dir(yc, zc, &dist2); /* dist2 = 1 from the environment: no falloff */
         if (dist2 == 0) return false;
-        d = vscale(d, 1.0 / sqrt(dist2));
         if (t == 1 && !camera_raster(&sc->cam, vneg(d), &out->px, &out->py)) return false;
         rgb fy = endpoint_f(sc, yc, d, TRANSPORT_IMPORTANCE), fz = endpoint_f(sc, zc, vneg(d), TRANSPORT_RADIANCE);
         double g = endpoint_cos(yc, d) * endpoint_cos(zc, d) / dist2;

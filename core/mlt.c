@@ -278,10 +278,6 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     int W = sc->cam.width, H = sc->cam.height, T = o.threads;
     int nk = o.method == MLT_MMLT ? o.max_length : 1;
     memset(r, 0, sizeof *r);
-    if (sc->env_prim >= 0) {
-        snprintf(err, errlen, "%s: environment emitters are not supported by the MCMC methods in this version", sc->file);
-        return false;
-    }
     double t0 = now_seconds();
 
     struct seed_job sj = {sc, &o, nk, xmalloc((size_t)o.seed_paths * nk * sizeof(double)), {0}};

@@ -19,7 +19,11 @@
 #include "sampler.h"
 #include "scene.h"
 
-enum vertex_kind { VK_CAMERA, VK_EMITTER, VK_SURFACE };
+/* VK_ENV is a vertex at infinity on the environment emitter: the end of a camera subpath that left
+ * the scene, or the first vertex of an emitter subpath started from the environment. Its direction
+ * toward the environment is env_dir(v) = -v->ng; edges to it have no length, densities of it stay
+ * in solid angle, and densities of the next vertex from it are the origin disc's times a cosine. */
+enum vertex_kind { VK_CAMERA, VK_EMITTER, VK_SURFACE, VK_ENV };
 
 struct vertex {
     enum vertex_kind kind;
@@ -54,21 +58,15 @@ struct path_ctx {
 int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts);
 int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts);
 
-/* The emitter vertex y_0 from the current block (light choice and position); false when the
- * choice falls on the environment, which has no emitter vertex in this version. */
+/* The emitter vertex y_0 from the current block (light choice, then position or environment
+ * direction and origin). */
 bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y);
 /* The same after the light choice: a point on area emitter `prim` chosen with probability pick. */
 bool sample_area_emitter(const struct scene *sc, int prim, double pick, struct sampler *s, struct vertex *y);
 
-/* How a camera walk left the scene: the direction, the throughput it carried and the solid-angle
- * density it was sampled with (0: a delta lobe or the camera ray itself). */
-struct escape {
-    bool escaped;
-    vec3 d;
-    rgb beta;
-    double pdf_sa;
-};
-int walk_camera_escape(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts, struct escape *esc);
+/* The emitter subpath's first vertex when the light choice is the environment: a direction and a
+ * point of the origin disc, from the current block. */
+bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, struct vertex *y);
 
 /* Thesis Alg. 2: write the numbers that make walk_* reproduce the subpath's vertices from vertex
  * `from` on (from = 0: the whole subpath; from > 0: partial inversion of a suffix, keeping the
@@ -79,9 +77,13 @@ bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, in
 /* Surface vertex from a ray hit; `incoming` is the ray direction. */
 void surface_from_hit(const struct scene *sc, vec3 origin, vec3 dir, const struct hit *h, struct vertex *v);
 
-/* Area density at `to`, reached along unit direction d (either orientation) over squared
- * distance dist2, of a direction sampled with solid-angle density pdf_sa. */
-double area_pdf(double pdf_sa, const struct vertex *to, vec3 d, double dist2);
+/* Density of vertex `to` generated from `from` along unit direction d (either orientation) over
+ * squared distance dist2: a solid-angle pdf becomes an area density; toward the environment it
+ * stays in solid angle; from the environment, pdf is the origin disc's area density. */
+double edge_pdf(double pdf, const struct vertex *from, const struct vertex *to, vec3 d, double dist2);
+static inline vec3 env_dir(const struct vertex *v) { return vneg(v->ng); }
+/* Unit direction from a to b and the squared distance (1 when either end is at infinity). */
+vec3 edge_dir(const struct vertex *a, const struct vertex *b, double *dist2);
 
 /* Radiance emitted by vertex v (an emitter surface reached from its front) toward direction w. */
 rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w);

@@ -5,7 +5,11 @@
 #include "emitter.h"
 #include "path.h"
 
-static vec3 dir_to(const struct vertex *a, const struct vertex *b) { return vnorm(vsub(b->p, a->p)); }
+static vec3 dir_to(const struct vertex *a, const struct vertex *b)
+{
+    double dist2;
+    return edge_dir(a, b, &dist2);
+}
 
 /* Block i of a subpath: the BSDF sample at v[i] that produced v[i+1]. */
 static bool invert_scatter(const struct vertex *v, int i, struct sampler *w)
@@ -35,7 +39,11 @@ bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, in
     const struct scene *sc = pc->sc;
     for (int i = from; i < n; i++) {
         sampler_begin(w, STREAM_EMITTER, i);
-        if (i == 0) {
+        if (i == 0 && v[0].kind == VK_ENV) {
+            if (!emitter_pick_invert(sc, v[0].prim, w) || !env_invert_dir(sc, env_dir(&v[0]), w) ||
+                !env_invert_origin(sc, env_dir(&v[0]), v[0].p, w))
+                return false;
+        } else if (i == 0) {
             struct emitter_pos pos = {v[0].p, v[0].ng, 0, v[0].tri};
             if (!emitter_pick_invert(sc, v[0].prim, w) || !emitter_invert_pos(sc, v[0].prim, &pos, w)) return false;
             if (n > 1 && !emitter_invert_dir(v[0].ng, dir_to(&v[0], &v[1]), w)) return false;

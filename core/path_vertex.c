@@ -54,14 +54,28 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
     v->pdf_fwd = v->pdf_rev = 0;
 }
 
-double area_pdf(double pdf_sa, const struct vertex *to, vec3 d, double dist2)
+double edge_pdf(double pdf, const struct vertex *from, const struct vertex *to, vec3 d, double dist2)
 {
+    if (to->kind == VK_ENV) return pdf;
     double c = to->kind == VK_CAMERA ? 1.0 : fabs(vdot(to->ng, d));
-    return dist2 > 0 ? pdf_sa * c / dist2 : 0;
+    if (from->kind == VK_ENV) return pdf * c;
+    return dist2 > 0 ? pdf * c / dist2 : 0;
+}
+
+vec3 edge_dir(const struct vertex *a, const struct vertex *b, double *dist2)
+{
+    if (b->kind == VK_ENV || a->kind == VK_ENV) {
+        *dist2 = 1;
+        return b->kind == VK_ENV ? env_dir(b) : vneg(env_dir(a));
+    }
+    vec3 d = vsub(b->p, a->p);
+    *dist2 = vlen2(d);
+    return *dist2 > 0 ? vscale(d, 1.0 / sqrt(*dist2)) : d;
 }
 
 rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w)
 {
+    if (v->kind == VK_ENV) return env_radiance(sc, env_dir(v));
     const struct prim *pr = &sc->prims[v->prim];
     if (!pr->emissive) return v3s(0);
     /* ng may be flipped by two-sided shading; emission follows the geometry's own front. */
@@ -71,6 +85,11 @@ rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w)
 
 bool visible(const struct scene *sc, const struct vertex *a, const struct vertex *b)
 {
+    if (a->kind == VK_ENV || b->kind == VK_ENV) {
+        const struct vertex *f = a->kind == VK_ENV ? b : a, *e = a->kind == VK_ENV ? a : b;
+        double eps = f->kind == VK_CAMERA ? 0 : ray_eps(f->p);
+        return !accel_occluded(sc->accel, f->p, env_dir(e), eps, INFINITY);
+    }
     vec3 d = vsub(b->p, a->p);
     double dist = vlen(d);
     if (dist == 0) return false;

@@ -6,22 +6,27 @@
 /* Extends a subpath whose last vertex v[n-1] emits direction d with solid-angle density pdf_sa
  * (0 for a delta lobe); beta is the throughput the next vertex receives. */
 static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts,
-                 vec3 d, double pdf_sa, rgb beta, enum transport mode, int stream, struct escape *esc)
+                 vec3 d, double pdf_sa, rgb beta, enum transport mode, int stream)
 {
     const struct scene *sc = pc->sc;
-    if (esc) esc->escaped = false;
     while (n < max_verts) {
         struct vertex *prev = &v[n - 1], *cur = &v[n];
         struct hit h;
         double eps = prev->kind == VK_CAMERA ? 0 : ray_eps(prev->p);
         if (!accel_intersect(sc->accel, prev->p, d, eps, INFINITY, &h)) {
-            if (esc) *esc = (struct escape){true, d, beta, pdf_sa};
+            /* A camera subpath that leaves the scene ends on the environment. */
+            if (stream == STREAM_CAMERA && sc->env_prim >= 0) {
+                *cur = (struct vertex){.kind = VK_ENV, .p = prev->p, .ng = vneg(d), .sh = frame_from_normal(vneg(d)),
+                                       .front = true, .prim = sc->env_prim, .tri = -1, .wi = vneg(d), .beta = beta,
+                                       .pdf_fwd = pdf_sa};
+                n++;
+            }
             break;
         }
         surface_from_hit(sc, prev->p, d, &h, cur);
         double dist2 = vlen2(vsub(cur->p, prev->p));
         cur->beta = beta;
-        cur->pdf_fwd = pdf_sa > 0 ? area_pdf(pdf_sa, cur, d, dist2) : 0;
+        cur->pdf_fwd = pdf_sa > 0 ? edge_pdf(pdf_sa, prev, cur, d, dist2) : 0;
         n++;
         if (!cur->bc.b || n >= max_verts) break;
         sampler_begin(s, stream, n - 1);
@@ -34,7 +39,7 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
         beta = vmul(beta, bs.weight);
         if (vzero(beta) || !vfinite(beta)) break;
         cur->delta = bs.delta;
-        prev->pdf_rev = bs.delta ? 0 : area_pdf(bsdf_pdf(&cur->bc, bs.wo, wi), prev, d, dist2);
+        prev->pdf_rev = bs.delta ? 0 : edge_pdf(bsdf_pdf(&cur->bc, bs.wo, wi), cur, prev, d, dist2);
         d = wo;
         pdf_sa = bs.delta ? 0 : bs.pdf;
     }
@@ -43,11 +48,6 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
 
 int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts)
 {
-    return walk_camera_escape(pc, s, v, max_verts, NULL);
-}
-
-int walk_camera_escape(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts, struct escape *esc)
-{
     const struct camera *cam = &pc->sc->cam;
     if (max_verts < 1) return 0;
     sampler_begin(s, STREAM_CAMERA, 0);
@@ -55,14 +55,27 @@ int walk_camera_escape(const struct path_ctx *pc, struct sampler *s, struct vert
     *z = (struct vertex){.kind = VK_CAMERA, .p = cam->pos, .ng = cam->basis.n, .sh = cam->basis,
                          .front = true, .prim = -1, .tri = -1, .beta = v3s(1), .pdf_fwd = 1};
     vec3 d = camera_sample_dir(cam, s, &z->px, &z->py);
-    return trace(pc, s, v, 1, max_verts, d, camera_pdf_dir(cam, d), v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA, esc);
+    return trace(pc, s, v, 1, max_verts, d, camera_pdf_dir(cam, d), v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA);
 }
 
 bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
 {
     double pick;
     int prim = emitter_pick(sc, s, &pick);
-    return prim >= 0 && prim != sc->env_prim && sample_area_emitter(sc, prim, pick, s, y);
+    if (prim < 0) return false;
+    return prim == sc->env_prim ? sample_env_emitter(sc, pick, s, y) : sample_area_emitter(sc, prim, pick, s, y);
+}
+
+bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, struct vertex *y)
+{
+    vec3 d;
+    double pdf, pdf_disc;
+    if (!env_sample_dir(sc, s, &d, &pdf) || !(pdf > 0)) return false;
+    vec3 origin = env_sample_origin(sc, d, s, &pdf_disc);
+    *y = (struct vertex){.kind = VK_ENV, .p = origin, .ng = vneg(d), .sh = frame_from_normal(vneg(d)), .front = true,
+                         .prim = sc->env_prim, .tri = -1, .wi = vneg(d), .pdf_fwd = pick * pdf};
+    y->beta = v3s(1.0 / y->pdf_fwd);
+    return true;
 }
 
 bool sample_area_emitter(const struct scene *sc, int prim, double pick, struct sampler *s, struct vertex *y)
@@ -81,11 +94,17 @@ int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
     if (max_verts < 1) return 0;
     sampler_begin(s, STREAM_EMITTER, 0);
     if (!sample_emitter_vertex(sc, s, &v[0])) return 0;
+    if (v[0].kind == VK_ENV) {
+        /* rays leave the origin disc (area density 1 / (pi R^2), cosine 1) against env_dir */
+        double pdf_disc = 1.0 / (M_PI * sqr(env_radius(sc)));
+        rgb beta = vscale(vmul(v[0].beta, env_radiance(sc, env_dir(&v[0]))), 1.0 / pdf_disc);
+        return trace(pc, s, v, 1, max_verts, vneg(env_dir(&v[0])), pdf_disc, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER);
+    }
     double pdf_dir;
     vec3 d = emitter_sample_dir(v[0].ng, s, &pdf_dir);
     rgb le = emitter_radiance(sc, v[0].prim, v[0].ng, d);
     double c = fabs(vdot(d, v[0].ng));
     if (!(pdf_dir > 0) || vzero(le)) return 1;
     rgb beta = vscale(vmul(v[0].beta, le), c / pdf_dir);
-    return trace(pc, s, v, 1, max_verts, d, pdf_dir, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER, NULL);
+    return trace(pc, s, v, 1, max_verts, d, pdf_dir, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER);
 }

@@ -173,12 +173,6 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s\n", err);
         return 2;
     }
-    if (sc->env_prim >= 0 && strcmp(a.method, "pt")) {
-        fprintf(stderr, "%s: primitives[%d]: environment emitters (infinite_sphere) are supported by --method pt only "
-                        "in this version\n", a.scene, sc->env_prim);
-        scene_free(sc);
-        return 2;
-    }
     if (a.width) camera_resize(&sc->cam, a.width, a.height);
     if (a.mc.spp < 0) a.mc.spp = sc->spp > 0 ? sc->spp : 16;
     if (a.mc.max_length < 0) a.mc.max_length = sc->max_length;

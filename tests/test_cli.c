@@ -61,7 +61,6 @@ Test(cli, bad_inputs_exit_2_with_one_line_and_no_output)
         {"scenes/cornell-box/scene.json --method foo", "--method"},
         {"scenes/cornell-box/scene.json --resolution 10", "--resolution"},
         {"scenes/cornell-box/scene.json --bogus", "--bogus"},
-        {"tests/data/env_sphere.json --method bdpt", "infinite_sphere"},
     };
     char err[4096], args[1024];
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {

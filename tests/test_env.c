@@ -1,31 +1,82 @@
-/* The path tracer under an environment emitter (tests/data/env_sphere.json): a convex lambert
- * sphere (albedo 0.5) under a constant white environment has radiance exactly 0.5 everywhere, which
- * holds only if the light samples toward the environment and the escaping BSDF samples are
- * weighted consistently; background pixels are exactly 1. Methods without environment support
- * refuse the scene. */
+/* Environment emitters in every method. scenes/sky-sphere: a convex lambert sphere (albedo 0.5)
+ * under a constant white sky has radiance exactly 0.5, which holds only if escaping paths, light
+ * samples toward the sky and (for BDPT) emitter subpaths started from the sky are weighted
+ * consistently. scenes/sky-courtyard: a textured sky plus an area light, where PT, PSSMLT and MMLT
+ * must agree with BDPT per block. */
 #include <criterion/criterion.h>
 
+#include "agree.h"
+#include "camera.h"
+#include "mlt.h"
 #include "render.h"
 #include "scenes.h"
 
-/* 32x32 pixels, 256 spp; the centre 8x8 pixels lie on the sphere. Their mean must be 0.5 within
- * 4 standard errors (from the pixel spread, 64 pixels) and within 1 %. */
-Test(stat_env, pt_constant_environment_sphere)
+/* Centre 8x8 pixels of the 32x32 image lie on the sphere: their mean must be 0.5 within 4 standard
+ * errors (pixel spread, 64 pixels) and 1 %; 256 spp, seeds 3 and 4. */
+Test(stat_env, constant_sky_sphere_pt_and_bdpt)
 {
-    struct scene *sc = test_scene("tests/data/env_sphere.json");
-    struct render_opts o = {.method = METHOD_PT, .spp = 256, .seed = 3, .threads = 2, .max_length = 4};
-    struct render_stats st;
-    struct image *im = render_mc(sc, &o, &st);
-    double s = 0, s2 = 0;
-    for (int y = 12; y < 20; y++)
-        for (int x = 12; x < 20; x++) {
-            double v = img_get(im, x, y).y;
-            s += v;
-            s2 += v * v;
-        }
-    double m = s / 64, se = sqrt((s2 / 64 - m * m) / 63);
-    cr_assert(fabs(m - 0.5) < 4 * se && fabs(m - 0.5) < 0.005, "sphere radiance %g +- %g, expected 0.5", m, se);
-    cr_assert(fabs(img_get(im, 0, 0).x - 1) < 1e-12 && fabs(img_get(im, 31, 31).z - 1) < 1e-12, "background is not 1");
-    img_destroy(im);
+    struct scene *sc = test_scene("scenes/sky-sphere/scene.json");
+    for (int m = 0; m < 2; m++) {
+        struct render_opts o = {.method = (enum method)m, .spp = 256, .seed = 3 + (uint64_t)m, .threads = 2, .max_length = 4};
+        struct render_stats st;
+        struct image *im = render_mc(sc, &o, &st);
+        double s = 0, s2 = 0;
+        for (int y = 12; y < 20; y++)
+            for (int x = 12; x < 20; x++) {
+                double v = img_get(im, x, y).y;
+                s += v;
+                s2 += v * v;
+            }
+        double mean = s / 64, se = sqrt(fmax(0, s2 / 64 - mean * mean) / 63);
+        cr_assert(fabs(mean - 0.5) < 4 * se + 1e-12 && fabs(mean - 0.5) < 0.005, "%s: sphere radiance %g +- %g, expected 0.5",
+                  method_name((enum method)m), mean, se);
+        if (m == METHOD_PT) cr_assert(fabs(img_get(im, 0, 0).x - 1) < 1e-12, "pt: background is not 1");
+        img_destroy(im);
+    }
+    scene_free(sc);
+}
+
+struct ctx {
+    const struct scene *sc;
+    enum method mc;
+    int mlt; /* -1: Monte Carlo, else enum mlt_method */
+};
+
+static struct image *render_any(void *p, uint64_t seed)
+{
+    struct ctx *c = p;
+    if (c->mlt < 0) {
+        struct render_opts o = {.method = c->mc, .spp = 16, .seed = seed, .threads = 2, .max_length = 6};
+        struct render_stats st;
+        return render_mc(c->sc, &o, &st);
+    }
+    struct mlt_opts o = {.method = (enum mlt_method)c->mlt, .p_large = 0.1, .mutations = 16L * 64 * 48,
+                         .seed_paths = 10000, .seed = seed, .threads = 2, .max_length = 6};
+    pss_opts_default(&o.pss, 64, 48);
+    struct mlt_result r;
+    char err[256];
+    cr_assert(mlt_render(c->sc, &o, &r, err, sizeof err), "%s", err);
+    return r.img;
+}
+
+/* 64x48 pixels; 8 BDPT runs of 16 spp against 8 PT runs (16 spp) and 12 PSSMLT / MMLT runs (16
+ * mutations per pixel); Welch t on 8x8 blocks + image mean, alpha 0.01 Sidak over 3 comparisons. */
+Test(stat_env, textured_sky_all_methods_agree_with_bdpt)
+{
+    struct scene *sc = test_scene("scenes/sky-courtyard/scene.json");
+    camera_resize(&sc->cam, 64, 48);
+    static struct stack ref, a;
+    struct ctx r = {sc, METHOD_BDPT, -1};
+    stack_runs(&ref, render_any, &r, 8, 500, 8);
+    const struct ctx cfg[] = {{sc, METHOD_PT, -1}, {sc, METHOD_BDPT, MLT_PSSMLT}, {sc, METHOD_BDPT, MLT_MMLT}};
+    const char *names[] = {"pt", "pssmlt", "mmlt"};
+    for (int i = 0; i < 3; i++) {
+        struct ctx c = cfg[i];
+        stack_runs(&a, render_any, &c, i ? 12 : 8, 600 + 50 * (uint64_t)i, 8);
+        double pm, worst;
+        int f = stack_compare(&a, &ref, 3, &pm, &worst);
+        cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", names[i], a.mean,
+                     a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    }
     scene_free(sc);
 }
