@@ -77,7 +77,7 @@ int main(int argc, char **argv)
 {
     const char *prog = "bench", *path = "scenes/cornell-box/scene.json";
     int runs = 3, K = 8;
-    double seconds = 1.5;
+    double seconds = 3;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             fputs(usage, stdout);
