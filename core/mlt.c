@@ -262,7 +262,10 @@ static void run_worker(int tid, void *p)
                          o->time_proposals ? now_seconds() - t_start : 0);
             if (acc) c->tech = tech;
         }
-        if ((n & 4095) == 4095) progress_add(&j->prog, o->seconds > 0 ? 0 : 4096);
+        if ((n & 4095) == 4095) {
+            if (o->seconds <= 0) progress_add(&j->prog, 4096);
+            else if (tid == 0) progress_set(&j->prog, (long)(1000 * (now_seconds() - j->t0)));
+        }
     }
     j->done[tid] = n;
     st->nonfinite += w->nonfinite;
@@ -325,7 +328,8 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     rj.done = xcalloc((size_t)T, sizeof(long));
     for (int i = 0; i < T; i++) rj.img[i] = img_create(W, H);
     rj.t0 = now_seconds();
-    progress_init(&rj.prog, o.method == MLT_MMLT ? "mmlt" : "pssmlt", o.seconds > 0 ? 1 : o.mutations, o.progress);
+    progress_init(&rj.prog, o.method == MLT_MMLT ? "mmlt" : "pssmlt", o.seconds > 0 ? (long)(1000 * o.seconds) : o.mutations,
+                  o.progress);
     parallel_run(T, run_worker, &rj);
     progress_finish(&rj.prog);
     r->seconds = now_seconds() - rj.t0;

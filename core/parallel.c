@@ -74,9 +74,18 @@ static void draw(struct progress *p, long done)
     p->drawn = true;
 }
 
-void progress_add(struct progress *p, long n)
+static void maybe_draw(struct progress *p, long done);
+
+void progress_add(struct progress *p, long n) { maybe_draw(p, atomic_fetch_add(&p->done, n) + n); }
+
+void progress_set(struct progress *p, long done)
 {
-    long done = atomic_fetch_add(&p->done, n) + n;
+    atomic_store(&p->done, done);
+    maybe_draw(p, done);
+}
+
+static void maybe_draw(struct progress *p, long done)
+{
     if (!p->enabled) return;
     long ms = (long)((now_seconds() - p->start) * 1000);
     long last = atomic_load(&p->last_draw_ms);

@@ -20,6 +20,8 @@ struct progress {
 };
 void progress_init(struct progress *p, const char *label, long total, bool enabled);
 void progress_add(struct progress *p, long n);
+/* Sets the units done (for time-based runs measured in milliseconds). */
+void progress_set(struct progress *p, long done);
 void progress_finish(struct progress *p);
 
 /* Ctrl-C: the first SIGINT sets a flag long loops poll (they stop early and the tools write what
