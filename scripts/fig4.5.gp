@@ -1,12 +1,13 @@
 # Thesis Figure 4.5: average acceptance probability per path length, MMLT large steps vs MCTLS.
 # usage: gnuplot -e "csv='results/fig4.5/fig4.5.csv'; out='results/fig4.5/fig4.5'" scripts/fig4.5.gp
 set datafile separator ","
-set key top right box opaque
+set key top left box opaque
+set title "Average acceptance of large steps per path length (scenes/ajar; thesis Fig. 4.5)"
 set xlabel "path length (segments)"
 set ylabel "average acceptance probability E[min(1, a)]"
 set grid ytics
 set xtics 1
-set xrange [0.5:*]
+set xrange [0.5:12.5]
 set yrange [0:*]
 set errorbars small
 sel(m, col) = (strcol(1) eq m) ? column(col) : NaN
