@@ -7,7 +7,7 @@ set xlabel "path length (segments)"
 set ylabel "average acceptance probability E[min(1, a)]"
 set grid ytics
 set xtics 1
-set xrange [0.5:12.5]
+set offsets 0.5, 0.5, 0, 0
 set yrange [0:*]
 set errorbars small
 sel(m, col) = (strcol(1) eq m) ? column(col) : NaN
