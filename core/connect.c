@@ -69,15 +69,6 @@ static void densities(const struct path_ctx *pc, const struct vertex *y, int s, 
     if (t >= 2) m->pl[s + 1] = pdf_to_prev(sc, zc, back, &z[t - 2]);
 }
 
-void connect_densities(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t,
-                       struct mis_path *m)
-{
-    vec3 d = v3s(0);
-    double dist2 = 0;
-    if (s > 0) d = edge_dir(&y[s - 1], &z[t - 1], &dist2);
-    densities(pc, y, s, z, t, d, dist2, m);
-}
-
 /* f at a connection endpoint: the BSDF (no cosine), the emitted radiance, or the importance. */
 static rgb endpoint_f(const struct scene *sc, const struct vertex *v, vec3 d, enum transport mode)
 {

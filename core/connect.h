@@ -17,9 +17,4 @@ struct connection {
 bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t,
                 int max_s, struct connection *out, double *ratios);
 
-/* Fills m with the densities of the full path y_0..y_{s-1} z_{t-1}..z_0 (endpoint corrections at
- * the connection included). */
-void connect_densities(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t,
-                       struct mis_path *m);
-
 #endif

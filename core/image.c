@@ -4,7 +4,6 @@
 #include "util.h"
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 struct image *img_create(int w, int h)
 {
@@ -21,8 +20,6 @@ void img_destroy(struct image *im)
     free(im->px);
     free(im);
 }
-
-void img_clear(struct image *im) { memset(im->px, 0, (size_t)im->w * im->h * 3 * sizeof(double)); }
 
 void img_accumulate(struct image *dst, const struct image *src, double scale)
 {
@@ -76,6 +73,15 @@ bool img_write_exr(const struct image *im, double scale, const char *path, char 
 bool img_write_png(const struct image *im, double scale, const char *path, char *err, size_t errlen)
 {
     return write_scaled(im, scale, true, path, err, errlen);
+}
+
+bool img_write_exr_png(const struct image *im, const char *prefix, char *err, size_t errlen)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s.exr", prefix);
+    if (!img_write_exr(im, 1.0, path, err, errlen)) return false;
+    snprintf(path, sizeof path, "%s.png", prefix);
+    return img_write_png(im, 1.0, path, err, errlen);
 }
 
 bool img_read_rgb(const char *path, int *w, int *h, float **rgb, char *err, size_t errlen)

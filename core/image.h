@@ -13,7 +13,6 @@ struct image {
 
 struct image *img_create(int w, int h);
 void img_destroy(struct image *im);
-void img_clear(struct image *im);
 static inline void img_add(struct image *im, int x, int y, rgb c)
 {
     double *p = im->px + 3 * ((size_t)y * im->w + x);
@@ -35,6 +34,8 @@ rgb img_get(const struct image *im, int x, int y);
 bool img_write_exr(const struct image *im, double scale, const char *path, char *err, size_t errlen);
 /* Tone-mapped 8-bit PNG: exposure `scale`, clamp, sRGB transfer curve. */
 bool img_write_png(const struct image *im, double scale, const char *path, char *err, size_t errlen);
+/* PREFIX.exr (linear) and PREFIX.png (tone-mapped), both at scale 1. */
+bool img_write_exr_png(const struct image *im, const char *prefix, char *err, size_t errlen);
 /* Reads any OpenImageIO format as linear RGB float (grey is replicated, alpha dropped). */
 bool img_read_rgb(const char *path, int *w, int *h, float **rgb, char *err, size_t errlen);
 struct image *img_read(const char *path, char *err, size_t errlen);

@@ -61,8 +61,6 @@ int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
 /* The emitter vertex y_0 from the current block (light choice, then position or environment
  * direction and origin). */
 bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y);
-/* The same after the light choice: a point on area emitter `prim` chosen with probability pick. */
-bool sample_area_emitter(const struct scene *sc, int prim, double pick, struct sampler *s, struct vertex *y);
 
 /* The emitter subpath's first vertex when the light choice is the environment: a direction and a
  * point of the origin disc, from the current block. */

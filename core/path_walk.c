@@ -58,6 +58,17 @@ int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, 
     return trace(pc, s, v, 1, max_verts, d, camera_pdf_dir(cam, d), v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA);
 }
 
+/* A point on area emitter `prim`, chosen with probability pick. */
+static bool sample_area_emitter(const struct scene *sc, int prim, double pick, struct sampler *s, struct vertex *y)
+{
+    struct emitter_pos pos;
+    if (!emitter_sample_pos(sc, prim, s, &pos) || !(pos.pdf > 0)) return false;
+    *y = (struct vertex){.kind = VK_EMITTER, .p = pos.p, .ng = pos.n, .sh = frame_from_normal(pos.n),
+                         .front = true, .prim = prim, .tri = pos.tri, .pdf_fwd = pick * pos.pdf};
+    y->beta = v3s(1.0 / y->pdf_fwd);
+    return true;
+}
+
 bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
 {
     double pick;
@@ -74,16 +85,6 @@ bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, 
     vec3 origin = env_sample_origin(sc, d, s, &pdf_disc);
     *y = (struct vertex){.kind = VK_ENV, .p = origin, .ng = vneg(d), .sh = frame_from_normal(vneg(d)), .front = true,
                          .prim = sc->env_prim, .tri = -1, .wi = vneg(d), .pdf_fwd = pick * pdf};
-    y->beta = v3s(1.0 / y->pdf_fwd);
-    return true;
-}
-
-bool sample_area_emitter(const struct scene *sc, int prim, double pick, struct sampler *s, struct vertex *y)
-{
-    struct emitter_pos pos;
-    if (!emitter_sample_pos(sc, prim, s, &pos) || !(pos.pdf > 0)) return false;
-    *y = (struct vertex){.kind = VK_EMITTER, .p = pos.p, .ng = pos.n, .sh = frame_from_normal(pos.n),
-                         .front = true, .prim = prim, .tri = pos.tri, .pdf_fwd = pick * pos.pdf};
     y->beta = v3s(1.0 / y->pdf_fwd);
     return true;
 }

@@ -25,13 +25,12 @@ static const char *usage =
     "  --hybrid-length K    (default 6)\n"
     "  --seed S  --threads T  --out DIR (default results/fig4.6)\n";
 
+/* DIR/NAME.exr and DIR/NAME.png */
 static bool write_pair(const struct image *im, const char *dir, const char *name, char *err, size_t n)
 {
-    char path[4096];
-    snprintf(path, sizeof path, "%s/%s.exr", dir, name);
-    if (!img_write_exr(im, 1, path, err, n)) return false;
-    snprintf(path, sizeof path, "%s/%s.png", dir, name);
-    return img_write_png(im, 1, path, err, n);
+    char prefix[4096];
+    snprintf(prefix, sizeof prefix, "%s/%s", dir, name);
+    return img_write_exr_png(im, prefix, err, n);
 }
 
 static struct image *reference(const struct scene *sc, const char *path, int spp, int threads, char *err, size_t n)

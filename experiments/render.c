@@ -121,15 +121,6 @@ static void parse(int argc, char **argv, struct args *a)
     if (!a->scene) cli_fail(prog, "no scene given (see --help)");
 }
 
-static bool write_images(const struct image *img, const char *out, char *err, size_t errlen)
-{
-    char path[4096];
-    snprintf(path, sizeof path, "%s.exr", out);
-    if (!img_write_exr(img, 1.0, path, err, errlen)) return false;
-    snprintf(path, sizeof path, "%s.png", out);
-    return img_write_png(img, 1.0, path, err, errlen);
-}
-
 static bool write_csv(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
     char *buf = NULL;
@@ -183,7 +174,7 @@ int main(int argc, char **argv)
         method_parse(a.method, &a.mc.method);
         struct render_stats st;
         struct image *img = render_mc(sc, &a.mc, &st);
-        ok = write_images(img, a.out, err, sizeof err);
+        ok = img_write_exr_png(img, a.out, err, sizeof err);
         partial = st.partial;
         if (ok)
             printf("%s%s: %ld samples in %.2f s, %.0f samples/s (%d threads), %ld non-finite dropped\n", partial ? "PARTIAL (interrupted) " : "",
@@ -204,7 +195,7 @@ int main(int argc, char **argv)
             return 1;
         }
         partial = r.partial;
-        ok = write_images(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err);
+        ok = img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err);
         if (ok)
             printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%d threads), %ld non-finite "
                    "dropped\n",
