@@ -110,7 +110,6 @@ struct run_job {
     const struct scene *sc;
     const struct mlt_opts *o;
     int nk;
-    const double *f;          /* seed targets */
     const double *cdf[MAX_PATH_LENGTH + 1]; /* per chain index: seed-pool CDF over i */
     double kcdf[MAX_PATH_LENGTH + 2];       /* length selection */
     double scale[MAX_PATH_LENGTH + 1];      /* per chain index: b_k / P(k) */
@@ -293,7 +292,6 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     rj.sc = sc;
     rj.o = &o;
     rj.nk = nk;
-    rj.f = sj.f;
     double total = 0;
     int live = 0;
     for (int kk = 0; kk < nk; kk++) {
