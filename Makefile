@@ -12,7 +12,7 @@ ifeq ($(SANITIZE),1)
 else
   BUILD := build
   BIN := bin
-  OPT := -O2 -g
+  OPT := -O2 -g -fno-math-errno
 endif
 
 CC ?= cc

@@ -31,14 +31,14 @@ static bool image_uv(const struct camera *c, vec3 d, double *ux, double *uy, dou
     return true;
 }
 
-bool camera_raster(const struct camera *c, vec3 d, double *px, double *py)
+double camera_raster(const struct camera *c, vec3 d, double *px, double *py)
 {
     double ux, uy, ct;
-    if (!image_uv(c, d, &ux, &uy, &ct)) return false;
-    if (!(ux >= 0 && ux < 1 && uy >= 0 && uy < 1)) return false;
+    if (!image_uv(c, d, &ux, &uy, &ct)) return 0;
+    if (!(ux >= 0 && ux < 1 && uy >= 0 && uy < 1)) return 0;
     *px = ux * c->width;
     *py = uy * c->height;
-    return true;
+    return 1.0 / (plane_area(c) * ct * ct * ct);
 }
 
 void camera_invert(const struct camera *c, double px, double py, struct sampler *w)
@@ -50,8 +50,6 @@ void camera_invert(const struct camera *c, double px, double py, struct sampler 
 
 double camera_pdf_dir(const struct camera *c, vec3 d)
 {
-    double ux, uy, ct;
-    if (!image_uv(c, d, &ux, &uy, &ct)) return 0;
-    if (!(ux >= 0 && ux < 1 && uy >= 0 && uy < 1)) return 0;
-    return 1.0 / (plane_area(c) * ct * ct * ct);
+    double px, py;
+    return camera_raster(c, d, &px, &py);
 }

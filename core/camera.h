@@ -11,8 +11,9 @@
 
 /* Consumes DIM_IMAGE_X then DIM_IMAGE_Y; returns the unit world direction of the primary ray. */
 vec3 camera_sample_dir(const struct camera *c, struct sampler *s, double *px, double *py);
-/* Raster position seen along world direction d from the camera; false if behind or outside. */
-bool camera_raster(const struct camera *c, vec3 d, double *px, double *py);
+/* Raster position seen along world direction d from the camera, and camera_pdf_dir(d) (returned:
+ * 0 if behind or outside the image, then px, py are not set). */
+double camera_raster(const struct camera *c, vec3 d, double *px, double *py);
 void camera_invert(const struct camera *c, double px, double py, struct sampler *w);
 /* Solid-angle density of camera_sample_dir (0 outside the image). */
 double camera_pdf_dir(const struct camera *c, vec3 d);

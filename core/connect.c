@@ -23,9 +23,10 @@ static double pdf_to_prev(const struct scene *sc, const struct vertex *at, vec3 
 /* Geometric normal on the emitting side of an emitter hit by a camera walk. */
 static vec3 emit_normal(const struct vertex *v) { return v->flipped ? vneg(v->ng) : v->ng; }
 
-/* d: unit direction from y_{s-1} to z_{t-1}, dist2 their squared distance (s >= 1). */
+/* d: unit direction from y_{s-1} to z_{t-1}, dist2 their squared distance (s >= 1); cam_pdf: for
+ * t = 1, the camera's density toward y_{s-1}, already known from the raster lookup. */
 static void densities(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t, vec3 d,
-                      double dist2, struct mis_path *m)
+                      double dist2, double cam_pdf, struct mis_path *m)
 {
     const struct scene *sc = pc->sc;
     int k = s + t - 1;
@@ -62,7 +63,7 @@ static void densities(const struct path_ctx *pc, const struct vertex *y, int s, 
     vec3 back = vneg(d);
     m->delta[s - 1] = m->delta[s] = false;
     /* camera side generating y_{s-1}, then y_{s-2} */
-    m->pc[s - 1] = edge_pdf(scatter_pdf(sc, zc, zc->wi, back), zc, yc, back, dist2);
+    m->pc[s - 1] = edge_pdf(t == 1 ? cam_pdf : scatter_pdf(sc, zc, zc->wi, back), zc, yc, back, dist2);
     if (s >= 2) m->pc[s - 2] = pdf_to_prev(sc, yc, d, &y[s - 2]);
     /* emitter side generating z_{t-1}, then z_{t-2} */
     m->pl[s] = edge_pdf(scatter_pdf(sc, yc, yc->wi, d), yc, zc, d, dist2);
@@ -94,7 +95,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     out->px = z[0].px;
     out->py = z[0].py;
     vec3 d = v3s(0);
-    double dist2 = 0;
+    double dist2 = 0, cam_pdf = 0;
     if (s == 0) {
         if (t < 2) return false;
         if (zc->kind != VK_ENV && (zc->kind != VK_SURFACE || !zc->front || !sc->prims[zc->prim].emissive)) return false;
@@ -104,15 +105,16 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
         if (zc->kind == VK_ENV) return false; /* nothing scatters at infinity */
         d = edge_dir(yc, zc, &dist2); /* dist2 = 1 from the environment: no falloff */
         if (dist2 == 0) return false;
-        if (t == 1 && !camera_raster(&sc->cam, vneg(d), &out->px, &out->py)) return false;
-        rgb fy = endpoint_f(sc, yc, d, TRANSPORT_IMPORTANCE), fz = endpoint_f(sc, zc, vneg(d), TRANSPORT_RADIANCE);
+        if (t == 1 && !((cam_pdf = camera_raster(&sc->cam, vneg(d), &out->px, &out->py)) > 0)) return false;
+        rgb fy = endpoint_f(sc, yc, d, TRANSPORT_IMPORTANCE);
+        rgb fz = t == 1 ? v3s(cam_pdf) : endpoint_f(sc, zc, vneg(d), TRANSPORT_RADIANCE);
         double g = endpoint_cos(yc, d) * endpoint_cos(zc, d) / dist2;
         out->f = vscale(vmul(vmul(yc->beta, fy), vmul(fz, zc->beta)), g);
         if (vzero(out->f) || !visible(sc, yc, zc)) return false;
     }
     if (vzero(out->f)) return false;
     struct mis_path m;
-    densities(pc, y, s, z, t, d, dist2, &m);
+    densities(pc, y, s, z, t, d, dist2, cam_pdf, &m);
     double r[MAX_PATH_LENGTH + 2];
     double *rat = ratios ? ratios : r;
     out->w = mis_weights(&m, s, max_s, rat);

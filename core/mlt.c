@@ -97,6 +97,7 @@ struct chain {
     int k, tech;
     double scale;      /* b_k / P(k): the chain's splat weight */
     double xsum;       /* MCTLS: sum over techniques of the current numbers' targets */
+    double pending;    /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
     bool xsum_valid;
 };
 
@@ -138,6 +139,28 @@ static void splat_list_weighted(struct image *img, const struct splat_list *l, d
     for (int i = 0; i < l->n; i++) img_splat(img, l->s[i].px, l->s[i].py, vscale(l->s[i].c, wgt));
 }
 
+/* The current state's share of expected-value splatting is deferred: a rejected proposal only adds
+ * to `pending`, and the state is splatted once, with the sum, when it is replaced or the run ends. */
+static void owe_current(struct chain *c, double a)
+{
+    if (c->f > 0) c->pending += 1 - a;
+}
+
+static void pay_current(struct image *img, struct chain *c)
+{
+    if (c->f > 0) splat_list_weighted(img, &c->cur, c->pending * c->scale / c->f);
+    c->pending = 0;
+}
+
+/* Replaces the chain's state by an accepted proposal (splat list l, target f). */
+static void move_to(struct image *img, struct chain *c, const struct splat_list *l, double f)
+{
+    pay_current(img, c);
+    c->cur.n = l->n;
+    memcpy(c->cur.s, l->s, (size_t)l->n * sizeof *l->s);
+    c->f = f;
+}
+
 int mctls_pick(const double *pi, int n, double u)
 {
     double sum = 0, acc = 0;
@@ -172,7 +195,7 @@ static double mctls_step(const struct path_ctx *pc, struct chain *c, struct scra
     int j = ysum > 0 ? mctls_pick(b->pi + 1, k + 1, rng_uniform(r)) + 1 : 0;
     double a = mctls_accept(ysum, c->xsum);
     if (ysum > 0) splat_list_weighted(img, &b->sp[j], a * c->scale / b->pi[j]);
-    if (c->f > 0) splat_list_weighted(img, &c->cur, (1 - a) * c->scale / c->f);
+    owe_current(c, a);
     *nonzero = ysum > 0;
     *acc = ysum > 0 && rng_uniform(r) < a;
     *changed = ysum > 0 && j != c->tech; /* a property of the proposal, not of its acceptance */
@@ -180,8 +203,7 @@ static double mctls_step(const struct path_ctx *pc, struct chain *c, struct scra
         /* the state's technique number: a uniform point of the chosen technique's interval (Eq. 5.6) */
         pss_set(&c->pss, STREAM_TECHNIQUE, 0, invert_discrete((double)(j - 1) / (k + 1), (double)j / (k + 1), rng_uniform(r)));
         pss_accept(&c->pss);
-        c->cur = b->sp[j];
-        c->f = b->pi[j];
+        move_to(img, c, &b->sp[j], b->pi[j]);
         c->tech = j;
         c->xsum = ysum;
     } else {
@@ -246,12 +268,11 @@ static void run_worker(int tid, void *p)
             double a = c->f > 0 ? fmin(1.0, f / c->f) : 1.0;
             /* expected values: the proposal with weight a, the current state with 1 - a */
             if (f > 0) splat_list_weighted(img, &prop, a * c->scale / f);
-            if (c->f > 0) splat_list_weighted(img, &c->cur, (1 - a) * c->scale / c->f);
+            owe_current(c, a);
             bool acc = rng_uniform(&r) < a;
             if (acc) {
                 pss_accept(&c->pss);
-                c->cur = prop;
-                c->f = f;
+                move_to(img, c, &prop, f);
                 c->xsum_valid = false;
             } else {
                 pss_reject(&c->pss);
@@ -266,6 +287,7 @@ static void run_worker(int tid, void *p)
             else if (tid == 0) progress_set(&j->prog, (long)(1000 * (now_seconds() - j->t0)));
         }
     }
+    for (int kk = 0; kk < j->nk; kk++) pay_current(img, &ch[kk]);
     j->done[tid] = n;
     st->nonfinite += w->nonfinite;
     free(mb);

@@ -25,7 +25,7 @@ bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int
         sampler_begin(w, STREAM_CAMERA, i);
         if (i == 0) {
             double px, py;
-            if (!camera_raster(&pc->sc->cam, dir_to(&v[0], &v[1]), &px, &py)) return false;
+            if (!(camera_raster(&pc->sc->cam, dir_to(&v[0], &v[1]), &px, &py) > 0)) return false;
             camera_invert(&pc->sc->cam, px, py, w);
         } else if (!invert_scatter(v, i, w)) {
             return false;

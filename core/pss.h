@@ -41,7 +41,9 @@ struct pss_sampler {
     uint64_t iteration, last_large;
     bool large;
     double scale_x, scale_y; /* image-dim step factors */
-    double log_ratio;        /* log(s2 / s1), Kelemen's kernel */
+    /* Kelemen's kernel: |step| = s2 (s1/s2)^xi. xi's top 8 bits index kelemen[] = s2 (s1/s2)^(j/256);
+     * its low bits scale that by exp(kelemen_slope * f), f in [0, 1), a short series. */
+    double kelemen[256], kelemen_slope;
     struct pss_dim d[STREAM_COUNT][STREAM_DIMS];
     int ntouched;
     uint16_t touched[STREAM_COUNT * STREAM_DIMS];

@@ -3,6 +3,7 @@
 #include <criterion/criterion.h>
 #include <gsl/gsl_cdf.h>
 
+#include "chi2.h"
 #include "pss.h"
 #include "vecmath.h"
 #include <math.h>
@@ -47,6 +48,32 @@ Test(pss, reject_restores_bit_for_bit)
         pss_accept(&p);
     }
     (void)a;
+}
+
+/* Kelemen's kernel: log(|step| / s2) / log(s1 / s2) is uniform on [0, 1) and the sign is fair.
+ * 1M steps in 2 x 1024 cells (488 expected each), alpha = 0.01 Sidak-corrected like every chi2 case.
+ * Fine cells catch a table-only kernel (8 bits of xi: 3 of 4 cells empty). */
+Test(pss, kelemen_step_distribution)
+{
+    enum { N = 1000000, B = 1024 };
+    static struct pss_sampler p;
+    static double count[2][B];
+    struct pss_opts o;
+    pss_opts_default(&o, 320, 180);
+    pss_init(&p, &o, 5, 0);
+    double lr = log(o.s1 / o.s2);
+    for (int i = 0; i < N; i++) {
+        double step = pss_small_step(&p, DIM_CONTINUOUS, 0.25) - 0.25;
+        double xi = log(fabs(step) / o.s2) / lr;
+        cr_assert(xi > -1e-9 && xi < 1 + 1e-9, "step %g outside [s1, s2]", step);
+        int b = (int)(xi * B);
+        count[step > 0][b < 0 ? 0 : b >= B ? B - 1 : b]++;
+    }
+    double chi2 = 0, e = (double)N / (2 * B);
+    for (int s = 0; s < 2; s++)
+        for (int b = 0; b < B; b++) chi2 += sqr(count[s][b] - e) / e;
+    double pv = gsl_cdf_chisq_Q(chi2, 2 * B - 1);
+    cr_assert(pv > chi2_alpha_sidak(), "Kelemen steps: chi2 %g, p %g", chi2, pv);
 }
 
 Test(pss, small_steps_respect_annotations)
