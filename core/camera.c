@@ -10,13 +10,15 @@
 
 static double plane_area(const struct camera *c) { return 4 * c->tan_half_fov * c->tan_half_fov / c->aspect; }
 
-vec3 camera_sample_dir(const struct camera *c, struct sampler *s, double *px, double *py)
+vec3 camera_sample_dir(const struct camera *c, struct sampler *s, double *px, double *py, double *pdf)
 {
     double ux = sampler_next(s, DIM_IMAGE_X), uy = sampler_next(s, DIM_IMAGE_Y);
     *px = ux * c->width;
     *py = uy * c->height;
     vec3 l = v3(c->tan_half_fov * (2 * ux - 1), c->tan_half_fov * (1 - 2 * uy) / c->aspect, 1.0);
-    return vnorm(frame_to_world(&c->basis, l));
+    double len2 = vlen2(l), inv_len = 1.0 / sqrt(len2);
+    if (pdf) *pdf = len2 * sqrt(len2) / plane_area(c); /* 1 / (A cos^3), cos = 1 / |l| */
+    return vscale(frame_to_world(&c->basis, l), inv_len);
 }
 
 /* Unit-square image coordinates of world direction d; false if behind the camera. */

@@ -9,8 +9,9 @@
 #include "sampler.h"
 #include "scene.h"
 
-/* Consumes DIM_IMAGE_X then DIM_IMAGE_Y; returns the unit world direction of the primary ray. */
-vec3 camera_sample_dir(const struct camera *c, struct sampler *s, double *px, double *py);
+/* Consumes DIM_IMAGE_X then DIM_IMAGE_Y; returns the unit world direction of the primary ray and,
+ * if pdf is not NULL, its camera_pdf_dir (known here without a second projection). */
+vec3 camera_sample_dir(const struct camera *c, struct sampler *s, double *px, double *py, double *pdf);
 /* Raster position seen along world direction d from the camera, and camera_pdf_dir(d) (returned:
  * 0 if behind or outside the image, then px, py are not set). */
 double camera_raster(const struct camera *c, vec3 d, double *px, double *py);

@@ -280,13 +280,14 @@ Test(emit, camera_raster_and_roundtrip)
     sampler_writer_init(&W, 22, 0);
     long ok = 0;
     for (int i = 0; i < NRT; i++) {
-        double px, py, qx, qy;
+        double px, py, qx, qy, pdf;
         rng r2 = r;
         double ux = rng_uniform(&r2), uy = rng_uniform(&r2);
         sampler_begin(&s.base, STREAM_CAMERA, 0);
-        vec3 d = camera_sample_dir(&c, &s.base, &px, &py);
+        vec3 d = camera_sample_dir(&c, &s.base, &px, &py, &pdf);
         cr_assert(px == ux * 320 && py == uy * 200);
-        cr_assert(camera_raster(&c, d, &qx, &qy));
+        double pr = camera_raster(&c, d, &qx, &qy);
+        cr_assert(pr > 0 && fabs(pdf - pr) <= 1e-9 * pr, "sampled pdf %g vs raster pdf %g", pdf, pr);
         cr_assert(fabs(qx - px) < 1e-7 * 320 && fabs(qy - py) < 1e-7 * 200, "%g %g vs %g %g", qx, qy, px, py);
         cr_assert(camera_pdf_dir(&c, d) > 0);
         sampler_writer_clear(&W);
@@ -297,7 +298,7 @@ Test(emit, camera_raster_and_roundtrip)
         struct sampler_replay rp;
         sampler_replay_init(&rp, (const double(*)[STREAM_DIMS])W.u);
         sampler_begin(&rp.base, STREAM_CAMERA, 0);
-        ok += close_rel(d, camera_sample_dir(&c, &rp.base, &qx, &qy));
+        ok += close_rel(d, camera_sample_dir(&c, &rp.base, &qx, &qy, NULL));
     }
     cr_assert(ok >= RT_MIN_OK * NRT, "%ld", ok);
 }

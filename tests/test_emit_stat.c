@@ -302,7 +302,7 @@ static bool cam_sample(void *ctx, rng *r, double *u, double *v)
     struct rng_sampler s;
     sampler_at(&s, r, STREAM_CAMERA);
     double px, py;
-    vec3 d = camera_sample_dir(&CAM, &s.base, &px, &py);
+    vec3 d = camera_sample_dir(&CAM, &s.base, &px, &py, NULL);
     vec3 l = frame_to_local(&CAM.basis, d);
     double al = atan(l.x / l.z), be = atan(l.y / l.z);
     *u = fx_ss_inv(clampd((al / amax() + 1) / 2, 0, 1));
