@@ -2,21 +2,17 @@
 #include "bsdf.h"
 #include "fresnel.h"
 
-const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type)
-{
-    switch (type) {
-    case BSDF_LAMBERT: return &bsdf_lambert_ops;
-    case BSDF_MIRROR: /* the conductor's lobe with reflectance 1 */
-    case BSDF_CONDUCTOR: return &bsdf_conductor_ops;
-    case BSDF_DIELECTRIC: return &bsdf_dielectric_ops;
-    case BSDF_PLASTIC: return &bsdf_plastic_ops;
-    case BSDF_ROUGH_CONDUCTOR: return &bsdf_rough_conductor_ops;
-    case BSDF_ROUGH_DIELECTRIC: return &bsdf_rough_dielectric_ops;
-    case BSDF_ROUGH_PLASTIC: return &bsdf_rough_plastic_ops;
-    default:
-        return NULL;
-    }
-}
+const struct bsdf_ops *const bsdf_ops_table[BSDF_ROUGH_PLASTIC + 1] = {
+    [BSDF_NULL] = NULL,
+    [BSDF_LAMBERT] = &bsdf_lambert_ops,
+    [BSDF_MIRROR] = &bsdf_conductor_ops, /* the conductor's lobe with reflectance 1 */
+    [BSDF_CONDUCTOR] = &bsdf_conductor_ops,
+    [BSDF_ROUGH_CONDUCTOR] = &bsdf_rough_conductor_ops,
+    [BSDF_DIELECTRIC] = &bsdf_dielectric_ops,
+    [BSDF_ROUGH_DIELECTRIC] = &bsdf_rough_dielectric_ops,
+    [BSDF_PLASTIC] = &bsdf_plastic_ops,
+    [BSDF_ROUGH_PLASTIC] = &bsdf_rough_plastic_ops,
+};
 
 /* Hemispherical average of the coat's Fresnel reflectance seen from inside (cosine-weighted):
  * the fraction of diffusely scattered light the coat sends back down (plastics). */

@@ -50,8 +50,18 @@ struct bsdf_ops {
     bool delta_only;   /* every lobe is a Dirac delta: never connect to it */
 };
 
-/* The table entry for a type; NULL for BSDF_NULL (no scattering). */
-const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type);
+/* Families (one file each). */
+extern const struct bsdf_ops bsdf_lambert_ops, bsdf_conductor_ops /* also the mirror */,
+    bsdf_dielectric_ops, bsdf_plastic_ops, bsdf_rough_conductor_ops, bsdf_rough_dielectric_ops,
+    bsdf_rough_plastic_ops;
+extern const struct bsdf_ops *const bsdf_ops_table[BSDF_ROUGH_PLASTIC + 1];
+
+/* The table entry for a type; NULL for BSDF_NULL (no scattering). Inline: every BSDF call on every
+ * path vertex dispatches through it. */
+static inline const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type)
+{
+    return (unsigned)type <= BSDF_ROUGH_PLASTIC ? bsdf_ops_table[type] : NULL;
+}
 
 /* Derived parameters (e.g. plastic's diffuse Fresnel); called once after loading. */
 void bsdf_prepare(struct bsdf *b);
@@ -73,10 +83,5 @@ static inline bool bsdf_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struc
 {
     return bsdf_ops_for(c->b->type)->invert(c, wi, wo, w);
 }
-
-/* Families (one file each). */
-extern const struct bsdf_ops bsdf_lambert_ops, bsdf_conductor_ops /* also the mirror */,
-    bsdf_dielectric_ops, bsdf_plastic_ops, bsdf_rough_conductor_ops, bsdf_rough_dielectric_ops,
-    bsdf_rough_plastic_ops;
 
 #endif
