@@ -103,10 +103,11 @@ static void dir_to_xy(const struct prim *pr, vec3 d, double *x, double *y, doubl
 
 static vec3 xy_to_dir(const struct prim *pr, double x, double y, double *sin_theta)
 {
-    double theta = M_PI * y, phi = 2 * M_PI * x - M_PI;
-    double st = sin(theta);
+    double st, ct, sp, cp;
+    sincos_turns(0.5 * y, &st, &ct); /* theta = pi y */
+    sincos_turns(x - 0.5, &sp, &cp); /* phi = 2 pi x - pi */
     *sin_theta = st;
-    vec3 l = v3(cos(phi) * st, cos(theta), sin(phi) * st);
+    vec3 l = v3(cp * st, ct, sp * st);
     return vnorm(mat4_vector(&pr->env_to_world, l));
 }
 

@@ -33,8 +33,9 @@ vec3 mf_sample(enum mf_dist dist, double alpha, double u1, double u2)
 {
     double a2 = alpha * alpha;
     double t2 = dist == MF_BECKMANN ? -a2 * log1p(-u1) : a2 * u1 / (1 - u1);
-    double c = 1 / sqrt(1 + t2), s = sqrt(t2) * c, phi = 2 * M_PI * u2;
-    return v3(s * cos(phi), s * sin(phi), c);
+    double c = 1 / sqrt(1 + t2), s = sqrt(t2) * c, sn, cs;
+    sincos_turns(u2, &sn, &cs);
+    return v3(s * cs, s * sn, c);
 }
 
 bool mf_invert(enum mf_dist dist, double alpha, vec3 m, double *u1, double *u2)

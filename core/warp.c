@@ -12,9 +12,10 @@ static double wrap01(double u) { return u >= 1.0 ? u - 1.0 : u; }
 
 void warp_disk(double u1, double u2, double *x, double *y)
 {
-    double r = sqrt(u1), phi = 2 * M_PI * u2;
-    *x = r * cos(phi);
-    *y = r * sin(phi);
+    double r = sqrt(u1), sn, cs;
+    sincos_turns(u2, &sn, &cs);
+    *x = r * cs;
+    *y = r * sn;
 }
 
 void warp_disk_invert(double x, double y, double *u1, double *u2)
@@ -39,8 +40,9 @@ void warp_cosine_hemisphere_invert(vec3 d, double *u1, double *u2)
 
 vec3 warp_uniform_sphere(double u1, double u2)
 {
-    double z = 1.0 - 2.0 * u1, r = sqrt(fmax(0.0, 1.0 - z * z)), phi = 2 * M_PI * u2;
-    return v3(r * cos(phi), r * sin(phi), z);
+    double z = 1.0 - 2.0 * u1, r = sqrt(fmax(0.0, 1.0 - z * z)), sn, cs;
+    sincos_turns(u2, &sn, &cs);
+    return v3(r * cs, r * sn, z);
 }
 
 double warp_uniform_sphere_pdf(void) { return 1.0 / (4 * M_PI); }
