@@ -246,8 +246,8 @@ bool emitter_invert_pos(const struct scene *sc, int prim, const struct emitter_p
         double b1, b2;
         if (!solve2(vsub(b, a), vsub(c, a), vsub(pos->p, a), &b1, &b2)) return false;
         if (b1 < -INV_TOL || b2 < -INV_TOL || b1 + b2 > 1 + INV_TOL) return false;
-        b1 = fmax(b1, 0.0);
-        b2 = fmax(b2, 0.0);
+        b1 = maxd(b1, 0.0);
+        b2 = maxd(b2, 0.0);
         double u1, u2;
         warp_triangle_invert(b1, b2, &u1, &u2);
         sampler_put(w, DIM_DISCRETE, invert_discrete(cdf[i], cdf[i + 1], sampler_fresh(w)));

@@ -19,8 +19,8 @@ static double conductor1(double c, double eta, double k)
 {
     double c2 = c * c, s2 = 1.0 - c2;
     double t0 = eta * eta - k * k - s2;
-    double a2b2 = sqrt(fmax(t0 * t0 + 4.0 * eta * eta * k * k, 0.0));
-    double a = sqrt(fmax(0.5 * (a2b2 + t0), 0.0));
+    double a2b2 = sqrt(maxd(t0 * t0 + 4.0 * eta * eta * k * k, 0.0));
+    double a = sqrt(maxd(0.5 * (a2b2 + t0), 0.0));
     double t1 = a2b2 + c2, t2 = 2.0 * c * a;
     double rs = (t1 - t2) / (t1 + t2);
     double t3 = c2 * a2b2 + s2 * s2, t4 = t2 * s2;

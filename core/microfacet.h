@@ -20,7 +20,7 @@
  * eval, pdf and sample alike, so it changes the material, not the estimator). */
 #define MF_MIN_ALPHA 1e-3
 
-static inline double mf_alpha(double roughness) { return fmax(roughness, MF_MIN_ALPHA); }
+static inline double mf_alpha(double roughness) { return maxd(roughness, MF_MIN_ALPHA); }
 
 /* Tungsten widens the roughness used for SAMPLING rough dielectrics (and rough plastic's coat,
  * which reuses that code) to (1.2 - 0.2 sqrt|cos theta_i|) alpha; eval keeps alpha. */

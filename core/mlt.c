@@ -265,7 +265,7 @@ static void run_worker(int tid, void *p)
             pss_begin(&c->pss, large);
             int tech;
             double f = eval_state(o->method, &pc, &c->pss.base, w, c->k, &prop, &tech);
-            double a = c->f > 0 ? fmin(1.0, f / c->f) : 1.0;
+            double a = c->f > 0 ? mind(f / c->f, 1.0) : 1.0;
             /* expected values: the proposal with weight a, the current state with 1 - a */
             if (f > 0) splat_list_weighted(img, &prop, a * c->scale / f);
             owe_current(c, a);

@@ -28,7 +28,7 @@ vec3 warp_cosine_hemisphere(double u1, double u2)
 {
     double x, y;
     warp_disk(u1, u2, &x, &y);
-    return v3(x, y, sqrt(fmax(0.0, 1.0 - u1)));
+    return v3(x, y, sqrt(maxd(1.0 - u1, 0.0)));
 }
 
 double warp_cosine_hemisphere_pdf(vec3 d) { return d.z > 0 ? d.z * INV_PI : 0.0; }
@@ -40,7 +40,7 @@ void warp_cosine_hemisphere_invert(vec3 d, double *u1, double *u2)
 
 vec3 warp_uniform_sphere(double u1, double u2)
 {
-    double z = 1.0 - 2.0 * u1, r = sqrt(fmax(0.0, 1.0 - z * z)), sn, cs;
+    double z = 1.0 - 2.0 * u1, r = sqrt(maxd(1.0 - z * z, 0.0)), sn, cs;
     sincos_turns(u2, &sn, &cs);
     return v3(r * cs, r * sn, z);
 }
