@@ -15,7 +15,7 @@ else
   OPT := -O2 -g -fno-math-errno
   # Link-time optimisation inlines the small cross-file helpers of the hot paths (edge densities,
   # BSDF dispatch wrappers, ray set-up): 2-5 % on every estimator, images bit-identical.
-  # `make LTO=0` turns it off.
+  # `make clean; make LTO=0` turns it off (objects do not track the flags they were built with).
   ifneq ($(LTO),0)
     OPT += -flto=auto
     AR := gcc-ar
