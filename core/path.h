@@ -86,6 +86,13 @@ vec3 edge_dir(const struct vertex *a, const struct vertex *b, double *dist2);
 /* Radiance emitted by vertex v (an emitter surface reached from its front) toward direction w. */
 rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w);
 
+/* Veach's adjoint correction for shading normals (thesis of Veach 1997, §5.3), a factor on the BSDF
+ * of a vertex of an emitter subpath, which transports importance: with wi toward the previous
+ * vertex (the light side) and wo the outgoing direction, |wi.ns| |wo.ng| / (|wi.ng| |wo.ns|).
+ * Without it light tracing and every s >= 2 technique see a different BSDF than the path tracer.
+ * Exactly 1 where the shading normal is the geometric one. */
+double adjoint_shading_factor(const struct vertex *v, vec3 wi, vec3 wo);
+
 /* Self-intersection offset for rays leaving p. */
 double ray_eps(vec3 p);
 

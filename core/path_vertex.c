@@ -61,6 +61,14 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
     v->pdf_fwd = v->pdf_rev = 0;
 }
 
+double adjoint_shading_factor(const struct vertex *v, vec3 wi, vec3 wo)
+{
+    vec3 ns = v->sh.n, ng = v->ng;
+    if (ns.x == ng.x && ns.y == ng.y && ns.z == ng.z) return 1.0;
+    double den = fabs(vdot(wi, ng)) * fabs(vdot(wo, ns));
+    return den > 0 ? fabs(vdot(wi, ns)) * fabs(vdot(wo, ng)) / den : 0.0;
+}
+
 double edge_pdf(double pdf, const struct vertex *from, const struct vertex *to, vec3 d, double dist2)
 {
     if (to->kind == VK_ENV) return pdf;

@@ -37,6 +37,7 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
         /* A shading normal may disagree with the geometry: such directions would leak light. */
         if ((vdot(wo, cur->ng) > 0) != (bs.wo.z > 0)) break;
         beta = vmul(beta, bs.weight);
+        if (mode == TRANSPORT_IMPORTANCE) beta = vscale(beta, adjoint_shading_factor(cur, cur->wi, wo));
         if (vzero(beta) || !vfinite(beta)) break;
         cur->delta = bs.delta;
         prev->pdf_rev = bs.delta ? 0 : edge_pdf(bsdf_pdf(&cur->bc, bs.wo, wi), cur, prev, d, dist2);
