@@ -36,13 +36,14 @@ static struct image *render_mlt(void *p, uint64_t seed)
     return r.img;
 }
 
-static struct image *render_bdpt(void *p, uint64_t seed)
+static struct image *render_plain(const struct scene *sc, enum method m, int spp, uint64_t seed)
 {
-    const struct scene *sc = p;
-    struct render_opts o = {.method = METHOD_BDPT, .spp = 16, .seed = seed, .threads = 2, .max_length = 8};
+    struct render_opts o = {.method = m, .spp = spp, .seed = seed, .threads = 2, .max_length = 8};
     struct render_stats st;
     return render_mc(sc, &o, &st);
 }
+static struct image *render_bdpt(void *p, uint64_t seed) { return render_plain(p, METHOD_BDPT, 16, seed); }
+static struct image *render_pt(void *p, uint64_t seed) { return render_plain(p, METHOD_PT, 64, seed); }
 
 /* Cornell box at 64x64: 8 BDPT renders of 16 spp against 12 independent MCMC runs of 16 mutations
  * per pixel (each with its own 10k-path seed pass) per configuration; Welch t on 8x8 blocks and on
@@ -216,14 +217,6 @@ Test(stat_mlt, mctls_detailed_balance_on_discrete_toy)
     cr_assert(p > 0.01, "generalised ratio: p = %g", p);
     double q = toy_chain(false);
     cr_assert(q < 1e-6, "plain ratio should be rejected: p = %g", q);
-}
-
-static struct image *render_pt(void *p, uint64_t seed)
-{
-    const struct scene *sc = p;
-    struct render_opts o = {.method = METHOD_PT, .spp = 64, .seed = seed, .threads = 2, .max_length = 8};
-    struct render_stats st;
-    return render_mc(sc, &o, &st);
 }
 
 /* scenes/smooth-sphere (interpolated normals on a coarse mesh): PT, PSSMLT and MMLT against BDPT
