@@ -1,4 +1,5 @@
 #include "cli.h"
+#include "oiio.h"
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -14,6 +15,14 @@ void cli_fail(const char *prog, const char *fmt, ...)
     fputc('\n', stderr);
     va_end(ap);
     exit(2);
+}
+
+void cli_require_image_output(const char *prog)
+{
+    char err[1024];
+    if (oiio_module_present(err, sizeof err)) return;
+    fprintf(stderr, "%s: %s\n", prog, err);
+    exit(1);
 }
 
 long cli_long(const char *prog, const char *opt, const char *val, long lo, long hi)

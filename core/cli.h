@@ -9,6 +9,9 @@ _Noreturn void cli_fail(const char *prog, const char *fmt, ...) __attribute__((f
 long cli_long(const char *prog, const char *opt, const char *val, long lo, long hi);
 double cli_double(const char *prog, const char *opt, const char *val, double lo, double hi);
 uint64_t cli_u64(const char *prog, const char *opt, const char *val);
+/* Tools that write images call this before their run: a missing OpenImageIO module (core/oiio.h)
+ * is reported at once, as "PROG: message" and exit status 1, not after the run. */
+void cli_require_image_output(const char *prog);
 /* The value after option argv[*i]; fails if missing. */
 const char *cli_value(const char *prog, int argc, char **argv, int *i);
 

@@ -1,4 +1,9 @@
-/* The C face of core/oiio.cpp: the only code that talks to OpenImageIO. */
+/* The C face of core/oiio.cpp: the only code that talks to OpenImageIO.
+ *
+ * oiio_write and oiio_read_rgb (core/oiio_load.c) open the module oiio.so, which holds
+ * oiio.cpp, on first use and forward to its oiio_module_* functions. The module is looked for in
+ * the directory of the running executable, where the build puts a copy; if it cannot be opened the
+ * call fails with an error naming the file. */
 #ifndef OIIO_H
 #define OIIO_H
 
@@ -14,6 +19,16 @@ extern "C" {
 bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen);
 /* Reads an image as 3-channel float; *px is malloc'ed. */
 bool oiio_read_rgb(const char *path, int *w, int *h, float **px, char *err, size_t errlen);
+/* Whether the module file is there, without opening it: tools that will write images check this
+ * before a long run rather than fail at its end. */
+bool oiio_module_present(char *err, size_t errlen);
+/* True once the module has been opened in this process (tests check that it is not, before any
+ * image is touched). */
+bool oiio_loaded(void);
+
+/* The module's entry points, same contracts. */
+bool oiio_module_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen);
+bool oiio_module_read_rgb(const char *path, int *w, int *h, float **px, char *err, size_t errlen);
 
 #ifdef __cplusplus
 }

@@ -88,6 +88,7 @@ int main(int argc, char **argv)
     }
     bool paper = !strcmp(scale, "paper");
     if (!paper && strcmp(scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", scale);
+    cli_require_image_output(prog);
     if (seconds < 0) seconds = paper ? 600 : 20;
     if (refspp < 0) refspp = paper ? 16384 : 256;
     char err[1024], defref[256];

@@ -158,6 +158,7 @@ int main(int argc, char **argv)
     struct pss_opts cli_pss = a.mlt.pss;
     parse(argc, argv, &a);
     cli_pss = a.mlt.pss;
+    cli_require_image_output("render");
     char err[1024];
     struct scene *sc = scene_load(a.scene, err, sizeof err);
     if (!sc) {

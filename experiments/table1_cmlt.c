@@ -8,6 +8,7 @@
 #include "cmlt/cmlt_mcmc.h"
 #include "cmlt/cmlt_reference.h"
 #include "cmlt/cmlt_scene.h"
+#include "cli.h"
 #include "image.h"
 #include "util.h"
 #include <errno.h>
@@ -445,6 +446,7 @@ int main(int argc, char **argv)
     }
     signal(SIGINT, on_sigint);
     mkdirs(o.out);
+    cli_require_image_output("table1_cmlt");
     double t_start = now();
     struct cmlt_ref_result rr;
     struct image *ref = get_reference(&o, &rr);

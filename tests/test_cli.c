@@ -22,11 +22,12 @@ static void make_dir(void)
     cr_assert(mkdtemp(dir));
 }
 
-static int run(const char *args, char *err, size_t n)
+/* Runs EXE ARGS --quiet; its stderr goes to err, its exit status is returned. */
+static int run_exe(const char *exe, const char *args, char *err, size_t n)
 {
     char cmd[2048], errfile[128];
     snprintf(errfile, sizeof errfile, "%s/stderr", dir);
-    snprintf(cmd, sizeof cmd, BIN_DIR "/render %s --quiet > /dev/null 2> %s", args, errfile);
+    snprintf(cmd, sizeof cmd, "%s %s --quiet > /dev/null 2> %s", exe, args, errfile);
     int st = system(cmd);
     cr_assert(WIFEXITED(st));
     FILE *f = fopen(errfile, "r");
@@ -35,6 +36,8 @@ static int run(const char *args, char *err, size_t n)
     if (f) fclose(f);
     return WEXITSTATUS(st);
 }
+
+static int run(const char *args, char *err, size_t n) { return run_exe(BIN_DIR "/render", args, err, n); }
 
 static bool exists(const char *name)
 {
@@ -123,4 +126,20 @@ Test(cli, outputs_and_bitwise_reproducibility)
             free(y);
         }
     }
+}
+
+/* Without the OpenImageIO module beside it, bin/render says so before it renders anything. */
+Test(cli, missing_image_module_fails_before_rendering)
+{
+    make_dir();
+    char exe[128], cmd[256], args[256], err[4096];
+    snprintf(exe, sizeof exe, "%s/render", dir);
+    snprintf(cmd, sizeof cmd, "cp " BIN_DIR "/render %s", exe);
+    cr_assert_eq(system(cmd), 0);
+    snprintf(args, sizeof args, "scenes/cornell-box/scene.json --spp 4096 --out %s/x", dir);
+    int rc = run_exe(exe, args, err, sizeof err);
+    cr_assert_eq(rc, 1, "exit %d (%s)", rc, err);
+    cr_assert_eq(lines(err), 1, "expected one error line, got: %s", err);
+    cr_assert(strstr(err, "oiio.so") && strstr(err, "missing"), "message does not name the module: %s", err);
+    cr_assert(!exists("x.exr") && !exists("x.png"));
 }
