@@ -11,6 +11,7 @@ struct image *img_create(int w, int h)
     im->w = w;
     im->h = h;
     im->px = xcalloc((size_t)w * h * 3, sizeof(double));
+    im->tent = false;
     return im;
 }
 

@@ -9,6 +9,7 @@
 struct image {
     int w, h;
     double *px; /* 3 per pixel, row-major, row 0 on top */
+    bool tent;  /* img_splat's reconstruction filter: tent of radius 1, else box */
 };
 
 struct image *img_create(int w, int h);
@@ -20,12 +21,29 @@ static inline void img_add(struct image *im, int x, int y, rgb c)
     p[1] += c.y;
     p[2] += c.z;
 }
-/* Box filter: the contribution lands in the pixel containing raster position (px, py). */
+/* A contribution at raster position (px, py). Box: all of it to the pixel containing the position.
+ * Tent: to the 2x2 pixels whose centres lie within one pixel on each axis, weights
+ * (1 - |dx|)(1 - |dy|), which sum to 1; the position may lie up to a pixel outside the image, and
+ * pixels outside receive nothing (camera.h: the film is larger than the image by that margin). */
 static inline void img_splat(struct image *im, double px, double py, rgb c)
 {
-    int x = (int)px, y = (int)py;
-    if (x < 0 || y < 0 || x >= im->w || y >= im->h) return;
-    img_add(im, x, y, c);
+    if (!im->tent) {
+        if (!(px >= 0 && py >= 0)) return;
+        int x = (int)px, y = (int)py;
+        if (x >= im->w || y >= im->h) return;
+        img_add(im, x, y, c);
+        return;
+    }
+    double fx = px - 0.5, fy = py - 0.5, x0 = floor(fx), y0 = floor(fy);
+    double ax = fx - x0, ay = fy - y0, wx[2] = {1 - ax, ax}, wy[2] = {1 - ay, ay};
+    for (int j = 0; j < 2; j++) {
+        int y = (int)y0 + j;
+        if (y < 0 || y >= im->h) continue;
+        for (int i = 0; i < 2; i++) {
+            int x = (int)x0 + i;
+            if (x >= 0 && x < im->w) img_add(im, x, y, vscale(c, wx[i] * wy[j]));
+        }
+    }
 }
 void img_accumulate(struct image *dst, const struct image *src, double scale);
 rgb img_get(const struct image *im, int x, int y);

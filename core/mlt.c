@@ -1,6 +1,7 @@
 /* PSSMLT and MMLT drivers: seed pass, chain start by resampling, Metropolis iterations with
  * expected-value splatting, statistics. See mlt.h for the method definitions. */
 #include "mlt.h"
+#include "camera.h"
 #include "connect.h"
 #include "integrator.h"
 #include "parallel.h"
@@ -346,7 +347,10 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     rj.img = xcalloc((size_t)T, sizeof(struct image *));
     rj.stats = xcalloc((size_t)T, sizeof(struct mlt_stats));
     rj.done = xcalloc((size_t)T, sizeof(long));
-    for (int i = 0; i < T; i++) rj.img[i] = img_create(W, H);
+    for (int i = 0; i < T; i++) {
+        rj.img[i] = img_create(W, H);
+        rj.img[i]->tent = sc->cam.filter == FILTER_TENT;
+    }
     rj.t0 = now_seconds();
     progress_init(&rj.prog, o.method == MLT_MMLT ? "mmlt" : "pssmlt", o.seconds > 0 ? (long)(1000 * o.seconds) : o.mutations,
                   o.progress);
@@ -357,7 +361,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     for (int i = 0; i < T; i++) r->mutations += rj.done[i];
     r->img = img_create(W, H);
     stats_clear(&r->stats);
-    double scale = r->mutations > 0 ? (double)W * H / (double)r->mutations : 0;
+    double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
     for (int i = 0; i < T; i++) { /* fixed order: reproducible sums */
         img_accumulate(r->img, rj.img[i], scale);
         stats_merge(&r->stats, &rj.stats[i]);

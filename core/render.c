@@ -1,4 +1,5 @@
 #include "render.h"
+#include "camera.h"
 #include "integrator.h"
 #include "parallel.h"
 #include "util.h"
@@ -19,8 +20,9 @@ bool method_parse(const char *s, enum method *m)
     return false;
 }
 
-/* Stratifies camera samples by pixel: the image dims land inside pixel (x, y), every other
- * number is independent. The annotation is what makes this possible without touching path code. */
+/* Stratifies camera samples by film cell: the image dims land inside cell (x, y) of the film
+ * (camera.h; the image's pixels, plus a one-pixel ring for the tent filter), every other number is
+ * independent. The annotation is what makes this possible without touching path code. */
 struct pixel_sampler {
     struct sampler base;
     rng r;
@@ -54,7 +56,7 @@ static void worker(int tid, void *p)
     struct scratch *w = xmalloc(sizeof *w);
     w->nonfinite = 0;
     struct image *img = j->img[tid];
-    int W = sc->cam.width, H = sc->cam.height;
+    int W = camera_film_width(&sc->cam), H = camera_film_height(&sc->cam);
     struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H};
     for (int y = tid; y < H && !interrupted(); y += o->threads) {
         for (int x = 0; x < W; x++) {
@@ -78,8 +80,11 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     struct render_opts opts = *o;
     opts.threads = T;
     struct job j = {sc, &opts, xcalloc((size_t)T, sizeof(struct image *)), xcalloc((size_t)T, sizeof(long)), {0}};
-    for (int i = 0; i < T; i++) j.img[i] = img_create(W, H);
-    progress_init(&j.prog, method_name(o->method), H, o->progress);
+    for (int i = 0; i < T; i++) {
+        j.img[i] = img_create(W, H);
+        j.img[i]->tent = sc->cam.filter == FILTER_TENT;
+    }
+    progress_init(&j.prog, method_name(o->method), camera_film_height(&sc->cam), o->progress);
     double t0 = now_seconds();
     parallel_run(T, worker, &j);
     progress_finish(&j.prog);
@@ -91,7 +96,7 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         img_destroy(j.img[i]);
     }
     st->seconds = now_seconds() - t0;
-    st->samples = atomic_load(&j.prog.done) * (long)W * o->spp; /* rows finished */
+    st->samples = atomic_load(&j.prog.done) * (long)camera_film_width(&sc->cam) * o->spp; /* rows finished */
     st->partial = interrupted();
     free(j.img);
     free(j.nonfinite);

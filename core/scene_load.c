@@ -124,12 +124,13 @@ static bool load_camera(struct loader *L, const cJSON *cam)
     vec3 fwd = v3(m.m[0][2], m.m[1][2], m.m[2][2]), up = v3(m.m[0][1], m.m[1][1], m.m[2][1]);
     if (!(vlen2(fwd) > 0) || !(vlen2(up) > 0)) return jfail(c, "camera.transform", "degenerate camera transform");
     camera_setup(out, pos, vadd(pos, fwd), up, fov, w, h);
-    out->filter = FILTER_BOX;
+    /* Tungsten's default is the tent */
+    out->filter = FILTER_TENT;
     if (!jget_string(c, cam, "camera", "reconstruction_filter", false, &filter)) return false;
-    if (filter && strcmp(filter, "tent") == 0)
-        jwarn(c, "camera.reconstruction_filter", "the tent filter is not implemented; using box");
-    else if (filter && strcmp(filter, "box") != 0)
-        jwarn(c, "camera.reconstruction_filter", "filter \"%s\" is not supported; using box", filter);
+    if (filter && strcmp(filter, "box") == 0)
+        out->filter = FILTER_BOX;
+    else if (filter && strcmp(filter, "tent") != 0)
+        jwarn(c, "camera.reconstruction_filter", "filter \"%s\" is not supported; using tent", filter);
     return true;
 }
 

@@ -186,8 +186,8 @@ int main(int argc, char **argv)
         a.mlt.max_length = a.mc.max_length;
         a.mlt.mutations = (long)a.mc.spp * sc->cam.width * sc->cam.height;
         a.mlt.pss = cli_pss;
-        a.mlt.pss.width = sc->cam.width;
-        a.mlt.pss.height = sc->cam.height;
+        a.mlt.pss.width = camera_film_width(&sc->cam);
+        a.mlt.pss.height = camera_film_height(&sc->cam);
         struct mlt_result r;
         ok = mlt_render(sc, &a.mlt, &r, err, sizeof err);
         if (!ok) {

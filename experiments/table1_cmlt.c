@@ -539,7 +539,7 @@ int main(int argc, char **argv)
     write_text(path, &csv);
     for (int b = 0; b < o.nbudgets; b++)
         for (int a = 0; a < CMLT_NALGO; a++) {
-            struct image im = {o.res, o.res, p.keep[b * CMLT_NALGO + a]};
+            struct image im = {.w = o.res, .h = o.res, .px = p.keep[b * CMLT_NALGO + a]};
             const char *ext[2] = {"exr", "png"};
             for (int e = 0; e < 2; e++) {
                 snprintf(path, sizeof path, "%s/%s_%s.%s", o.out, cmlt_algo_names[a],

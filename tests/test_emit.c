@@ -270,9 +270,11 @@ static void env_roundtrip(enum fx_env kind)
 Test(emit, env_map_roundtrip) { env_roundtrip(FX_ENV_MAP); }
 Test(emit, env_const_roundtrip) { env_roundtrip(FX_ENV_CONST); }
 
-Test(emit, camera_raster_and_roundtrip)
+static void camera_roundtrip(enum recon_filter f)
 {
     struct camera c = fx_camera(v3(1, 2, 3), v3(1, -0.3, 0.5), 35, 320, 200);
+    c.filter = f;
+    int m = camera_margin(&c);
     rng r;
     rng_seed(&r, 21, 0);
     struct rng_sampler s;
@@ -285,7 +287,7 @@ Test(emit, camera_raster_and_roundtrip)
         double ux = rng_uniform(&r2), uy = rng_uniform(&r2);
         sampler_begin(&s.base, STREAM_CAMERA, 0);
         vec3 d = camera_sample_dir(&c, &s.base, &px, &py, &pdf);
-        cr_assert(px == ux * 320 && py == uy * 200);
+        cr_assert(px == ux * (320 + 2 * m) - m && py == uy * (200 + 2 * m) - m);
         double pr = camera_raster(&c, d, &qx, &qy);
         cr_assert(pr > 0 && fabs(pdf - pr) <= 1e-9 * pr, "sampled pdf %g vs raster pdf %g", pdf, pr);
         cr_assert(fabs(qx - px) < 1e-7 * 320 && fabs(qy - py) < 1e-7 * 200, "%g %g vs %g %g", qx, qy, px, py);
@@ -301,6 +303,26 @@ Test(emit, camera_raster_and_roundtrip)
         ok += close_rel(d, camera_sample_dir(&c, &rp.base, &qx, &qy, NULL));
     }
     cr_assert(ok >= RT_MIN_OK * NRT, "%ld", ok);
+}
+Test(emit, camera_raster_and_roundtrip) { camera_roundtrip(FILTER_BOX); }
+Test(emit, camera_raster_and_roundtrip_tent) { camera_roundtrip(FILTER_TENT); }
+
+/* The tent's film reaches one pixel beyond the image: 400 px across a 90 degree fov, so a pixel at
+ * the right edge is tan = 1 + 2/400 at most. */
+Test(emit, camera_tent_film_margin)
+{
+    struct camera c = fx_camera(v3(0, 0, 0), v3(0, 0, 1), 45, 400, 200);
+    c.filter = FILTER_TENT;
+    vec3 sd = c.basis.s, td = c.basis.t, nd = c.basis.n;
+    double px, py;
+    cr_assert(camera_raster(&c, vnorm(vadd(nd, vscale(sd, 1.004))), &px, &py) && px > 400 && px < 401, "%g", px);
+    cr_assert(!camera_raster(&c, vnorm(vadd(nd, vscale(sd, 1.006))), &px, &py));
+    cr_assert(camera_raster(&c, vnorm(vsub(nd, vscale(sd, 1.004))), &px, &py) && px < 0 && px > -1, "%g", px);
+    cr_assert(camera_raster(&c, vnorm(vadd(nd, vscale(td, 0.504))), &px, &py) && py < 0 && py > -1, "%g", py);
+    cr_assert(!camera_raster(&c, vnorm(vadd(nd, vscale(td, 0.506))), &px, &py));
+    /* uniform over a film of 402 x 202 pixels: 1 / (A cos^3) with A grown by that ratio */
+    double a = 4 * 1.0 / 2 * (402.0 * 202) / (400.0 * 200);
+    cr_assert(fabs(camera_pdf_dir(&c, nd) - 1.0 / a) < 1e-12);
 }
 
 /* Tungsten's pinhole facts: horizontal fov, raster y downward, pdf 1/(A cos^3) with the plane area

@@ -290,12 +290,13 @@ Test(stat_emit, env_origin_disc)
     fx_free(&F);
 }
 
-/* ---- camera: angles (alpha, beta) = (atan(x/z), atan(y/z)) over the image, folded; density
- * pdf_dir * dOmega/(dalpha dbeta) * dalpha/du * dbeta/dv. Mass = integral of pdf_dir over the
- * image = over the sphere (pdf_dir is 0 elsewhere). ---- */
+/* ---- camera: angles (alpha, beta) = (atan(x/z), atan(y/z)) over the film (the image, grown by a
+ * pixel on every side for the tent filter), folded; density pdf_dir * dOmega/(dalpha dbeta) *
+ * dalpha/du * dbeta/dv. Mass = integral of pdf_dir over the film = over the sphere (pdf_dir is 0
+ * elsewhere). Box and tent cameras. ---- */
 static struct camera CAM;
-static double amax(void) { return atan(CAM.tan_half_fov); }
-static double bmax(void) { return atan(CAM.tan_half_fov / CAM.aspect); }
+static double amax(void) { return atan(CAM.tan_half_fov * camera_film_width(&CAM) / CAM.width); }
+static double bmax(void) { return atan(CAM.tan_half_fov / CAM.aspect * camera_film_height(&CAM) / CAM.height); }
 static bool cam_sample(void *ctx, rng *r, double *u, double *v)
 {
     (void)ctx;
@@ -320,21 +321,25 @@ static double cam_pdf(void *ctx, double u, double v)
     double domega = (1 + x * x) * (1 + y * y) / (L * L * L);
     return camera_pdf_dir(&CAM, d) * domega * (2 * amax() * ju) * (2 * bmax() * jv);
 }
-Test(stat_emit, camera_direction)
+static void camera_direction(enum recon_filter f, uint64_t seed)
 {
-    CAM = fx_camera(v3(1, 2, 3), v3(1, -0.3, 0.5), 40, 320, 200);
-    struct chi2_result r = chi2_test_2d(cam_sample, cam_pdf, NULL, 32, 32, N, 109);
+    CAM = fx_camera(v3(1, 2, 3), v3(1, -0.3, 0.5), 40, 32, 20); /* small: the tent's margin is 6 % of the film */
+    CAM.filter = f;
+    struct chi2_result r = chi2_test_2d(cam_sample, cam_pdf, NULL, 32, 32, N, seed);
     EXPECT_PASS(r);
     cr_assert(fabs(r.mass - 1) < 1e-4, "integral of pdf_dir = %g", r.mass);
 }
+Test(stat_emit, camera_direction) { camera_direction(FILTER_BOX, 109); }
+Test(stat_emit, camera_direction_tent) { camera_direction(FILTER_TENT, 111); }
 
 /* The integral of camera_pdf_dir over the whole sphere by plain Monte Carlo with uniform
  * directions (N = 1M); tolerance 5 standard errors estimated from the same samples. */
-Test(stat_emit, camera_pdf_integrates_to_one)
+static void camera_pdf_integrates_to_one(enum recon_filter f, uint64_t seed)
 {
-    CAM = fx_camera(v3(0, 0, 0), v3(0.2, 0.1, -1), 50, 300, 240);
+    CAM = fx_camera(v3(0, 0, 0), v3(0.2, 0.1, -1), 50, 30, 24);
+    CAM.filter = f;
     rng r;
-    rng_seed(&r, 110, 0);
+    rng_seed(&r, seed, 0);
     double s = 0, s2 = 0;
     for (int i = 0; i < N; i++) {
         vec3 d = warp_uniform_sphere(rng_uniform(&r), rng_uniform(&r));
@@ -345,6 +350,8 @@ Test(stat_emit, camera_pdf_integrates_to_one)
     double m = s / N, se = sqrt((s2 / N - m * m) / N);
     cr_assert(fabs(m - 1) < 5 * se, "integral %g +- %g", m, se);
 }
+Test(stat_emit, camera_pdf_integrates_to_one) { camera_pdf_integrates_to_one(FILTER_BOX, 110); }
+Test(stat_emit, camera_pdf_integrates_to_one_tent) { camera_pdf_integrates_to_one(FILTER_TENT, 112); }
 
 /* ---- inverted discrete choices are uniform inside the chosen interval (Eq. 5.6): the position
  * of the written number inside [cdf_k, cdf_k+1) for the light pick (mesh) and for the mesh's

@@ -219,19 +219,16 @@ Test(stat_mlt, mctls_detailed_balance_on_discrete_toy)
     cr_assert(q < 1e-6, "plain ratio should be rejected: p = %g", q);
 }
 
-/* scenes/smooth-sphere (interpolated normals on a coarse mesh): PT, PSSMLT and MMLT against BDPT
- * at 64x64, which holds only with the adjoint shading-normal correction in the emitter subpaths
- * that BDPT and the MCMC methods share. 8 BDPT renders of 16 spp, 8 PT renders of 64 spp, 12 runs
- * of 16 mutations per pixel per MCMC method; Welch t on 8x8 blocks and the mean, alpha 0.01 Sidak
- * over the 65 comparisons of all 3 methods. */
-Test(stat_mlt, all_methods_agree_under_shading_normals)
+/* PT (8 renders of 64 spp), PSSMLT and MMLT (12 runs of 16 mutations per pixel each) against BDPT
+ * (8 renders of 16 spp) at 64x64: Welch t on 8x8 blocks and the mean, alpha 0.01 Sidak over the
+ * 65 comparisons of all 3 methods. */
+static void all_methods_agree(struct scene *sc, uint64_t seed)
 {
-    struct scene *sc = test_scene("scenes/smooth-sphere/scene.json");
     camera_resize(&sc->cam, 64, 64);
     static struct stack ref, a;
-    stack_runs(&ref, render_bdpt, sc, 8, 3000, 8);
+    stack_runs(&ref, render_bdpt, sc, 8, seed, 8);
     double pm, worst;
-    stack_runs(&a, render_pt, sc, 8, 3100, 8);
+    stack_runs(&a, render_pt, sc, 8, seed + 100, 8);
     int f = stack_compare(&a, &ref, 3, &pm, &worst);
     cr_assert_eq(f, 0, "pt: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", a.mean, a.mean_se,
                  ref.mean, ref.mean_se, f, pm, worst);
@@ -239,10 +236,28 @@ Test(stat_mlt, all_methods_agree_under_shading_normals)
         struct mlt_ctx c = {sc, {0}};
         opts(&c.o, sc, m == 0 ? MLT_PSSMLT : MLT_MMLT, 16L * 64 * 64);
         c.o.seed_paths = 10000;
-        stack_runs(&a, render_mlt, &c, 12, 3200 + 100 * m, 8);
+        stack_runs(&a, render_mlt, &c, 12, seed + 200 + 100 * m, 8);
         f = stack_compare(&a, &ref, 3, &pm, &worst);
         cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)",
                      m == 0 ? "pssmlt" : "mmlt", a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     }
+}
+
+/* scenes/smooth-sphere (interpolated normals on a coarse mesh): agreement holds only with the
+ * adjoint shading-normal correction in the emitter subpaths that BDPT and the MCMC methods share. */
+Test(stat_mlt, all_methods_agree_under_shading_normals)
+{
+    struct scene *sc = test_scene("scenes/smooth-sphere/scene.json");
+    all_methods_agree(sc, 3000);
+    scene_free(sc);
+}
+
+/* The Cornell box with the tent filter: light tracing splats onto the film ring outside the image
+ * and every technique spreads its splats over 2x2 pixels (camera.h, image.h). */
+Test(stat_mlt, all_methods_agree_with_tent_filter)
+{
+    struct scene *sc = test_scene("scenes/cornell-box/scene.json");
+    sc->cam.filter = FILTER_TENT;
+    all_methods_agree(sc, 7000);
     scene_free(sc);
 }
