@@ -1,6 +1,7 @@
 /* bin/bench: throughput on a committed scene. Embree's raw incoherent ray rate, PT and BDPT camera
  * samples per second on one and two threads (320x180, max length 8 by default), the speed-up, and
- * peak memory with and without image output. Numbers are medians over --runs repetitions. */
+ * peak memory with and without image output; or, given several scenes, a table of the 1-thread
+ * figures. Numbers are medians over --runs repetitions. */
 #include "accel.h"
 #include "camera.h"
 #include "cli.h"
@@ -14,8 +15,14 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-static const char *usage = "usage: bench [SCENE.json] [--runs N] [--seconds S] [--max-length K]\n"
-                           "  SCENE defaults to scenes/cornell-box/scene.json, rendered at 320x180.\n";
+static const char *usage =
+    "usage: bench [SCENE.json ...] [--runs N] [--seconds S] [--max-length K]\n"
+    "  Every scene is rendered at 320x180. One scene (default scenes/cornell-box/scene.json): Embree's\n"
+    "  ray rate, PT/BDPT samples/s and PSSMLT/MMLT mutations/s on 1 and 2 threads, peak memory.\n"
+    "  Several scenes: a Markdown table of the 1-thread figures, one row per scene.\n"
+    "  --runs N      median of N runs of each figure (default 3)\n"
+    "  --seconds S   length of each run (default 3)\n"
+    "  --max-length K  path length cap in segments (default 8)\n";
 
 static int cmp_d(const void *a, const void *b)
 {
@@ -102,49 +109,31 @@ static double mutation_rate(const struct scene *sc, enum mlt_method m, int threa
     return rate;
 }
 
-int main(int argc, char **argv)
+enum { NV = 9 }; /* rays; PT, BDPT, PSSMLT, MMLT on 1 and 2 threads */
+
+/* Medians over `runs` of every figure; with `one_thread`, the 2-thread ones are left at 0. */
+static void measure(const struct scene *sc, int runs, double seconds, int K, bool one_thread, double m[NV])
 {
-    const char *prog = "bench", *path = "scenes/cornell-box/scene.json";
-    int runs = 3, K = 8;
-    double seconds = 3;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (!strcmp(argv[i], "--runs")) {
-            runs = (int)cli_long(prog, argv[i], cli_value(prog, argc, argv, &i), 1, 99);
-        } else if (!strcmp(argv[i], "--seconds")) {
-            seconds = cli_double(prog, argv[i], cli_value(prog, argc, argv, &i), 0.01, 600);
-        } else if (!strcmp(argv[i], "--max-length")) {
-            K = (int)cli_long(prog, argv[i], cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
-        } else if (argv[i][0] == '-') {
-            cli_fail(prog, "unknown option '%s' (see --help)", argv[i]);
-        } else {
-            path = argv[i];
-        }
-    }
-    char err[1024];
-    struct scene *sc = scene_load(path, err, sizeof err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err);
-        return 2;
-    }
-    camera_resize(&sc->cam, 320, 180);
-    enum { NV = 9 };
-    double v[NV][99];
+    double v[NV][99] = {{0}};
     for (int r = 0; r < runs; r++) {
         v[0][r] = ray_rate(sc, seconds);
         v[1][r] = sample_rate(sc, METHOD_PT, 1, K, seconds);
-        v[2][r] = sample_rate(sc, METHOD_PT, 2, K, seconds);
         v[3][r] = sample_rate(sc, METHOD_BDPT, 1, K, seconds);
-        v[4][r] = sample_rate(sc, METHOD_BDPT, 2, K, seconds);
         v[5][r] = mutation_rate(sc, MLT_PSSMLT, 1, K, seconds);
-        v[6][r] = mutation_rate(sc, MLT_PSSMLT, 2, K, seconds);
         v[7][r] = mutation_rate(sc, MLT_MMLT, 1, K, seconds);
+        if (one_thread) continue;
+        v[2][r] = sample_rate(sc, METHOD_PT, 2, K, seconds);
+        v[4][r] = sample_rate(sc, METHOD_BDPT, 2, K, seconds);
+        v[6][r] = mutation_rate(sc, MLT_PSSMLT, 2, K, seconds);
         v[8][r] = mutation_rate(sc, MLT_MMLT, 2, K, seconds);
     }
-    double m[NV];
     for (int i = 0; i < NV; i++) m[i] = median(v[i], runs);
+}
+
+static void report(const char *path, const struct scene *sc, int runs, double seconds, int K)
+{
+    double m[NV];
+    measure(sc, runs, seconds, K, false, m);
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     double io_mb = image_io_peak_mb(sc);
@@ -160,6 +149,60 @@ int main(int argc, char **argv)
     printf("%-34s %12.0f   speed-up %.2fx\n", "mmlt mutations/s (2 threads)", m[8], m[8] / m[7]);
     printf("%-34s %12.1f\n", "peak resident memory (MB)", ru.ru_maxrss / 1024.0);
     printf("%-34s %12.1f   (OpenImageIO loaded)\n", "  after writing EXR + PNG (MB)", io_mb);
-    scene_free(sc);
+}
+
+/* One Markdown row per scene, 1-thread figures only. */
+static void table(char **paths, struct scene **sc, int n, int runs, double seconds, int K)
+{
+    printf("# 320x180, max length %d, 1 thread, median of %d runs of %g s\n", K, runs, seconds);
+    printf("| scene | Embree rays/s | PT samples/s | BDPT samples/s | PSSMLT mutations/s | MMLT mutations/s |\n");
+    printf("| --- | ---: | ---: | ---: | ---: | ---: |\n");
+    for (int i = 0; i < n; i++) {
+        double m[NV];
+        measure(sc[i], runs, seconds, K, true, m);
+        printf("| %s | %.1f M | %.2f M | %.0f k | %.0f k | %.2f M |\n", paths[i], m[0] / 1e6, m[1] / 1e6, m[3] / 1e3,
+               m[5] / 1e3, m[7] / 1e6);
+        fflush(stdout);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    const char *prog = "bench";
+    char *paths[64] = {"scenes/cornell-box/scene.json"};
+    int n = 0, runs = 3, K = 8;
+    double seconds = 3;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "--runs")) {
+            runs = (int)cli_long(prog, argv[i], cli_value(prog, argc, argv, &i), 1, 99);
+        } else if (!strcmp(argv[i], "--seconds")) {
+            seconds = cli_double(prog, argv[i], cli_value(prog, argc, argv, &i), 0.01, 600);
+        } else if (!strcmp(argv[i], "--max-length")) {
+            K = (int)cli_long(prog, argv[i], cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
+        } else if (argv[i][0] == '-') {
+            cli_fail(prog, "unknown option '%s' (see --help)", argv[i]);
+        } else if (n < (int)(sizeof paths / sizeof *paths)) {
+            paths[n++] = argv[i];
+        } else {
+            cli_fail(prog, "at most %d scenes", (int)(sizeof paths / sizeof *paths));
+        }
+    }
+    int nscenes = n ? n : 1;
+    struct scene *sc[64];
+    char err[1024];
+    for (int i = 0; i < nscenes; i++) { /* all loaded first: a bad file fails before any timing */
+        sc[i] = scene_load(paths[i], err, sizeof err);
+        if (!sc[i]) {
+            fprintf(stderr, "%s\n", err);
+            return 2;
+        }
+        camera_resize(&sc[i]->cam, 320, 180);
+    }
+    if (nscenes == 1) report(paths[0], sc[0], runs, seconds, K);
+    else table(paths, sc, nscenes, runs, seconds, K);
+    for (int i = 0; i < nscenes; i++) scene_free(sc[i]);
     return 0;
 }
