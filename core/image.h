@@ -34,6 +34,7 @@ static inline void img_splat(struct image *im, double px, double py, rgb c)
         img_add(im, x, y, c);
         return;
     }
+    if (!(px > -1 && px < im->w + 1 && py > -1 && py < im->h + 1)) return; /* no weight; also NaN */
     double fx = px - 0.5, fy = py - 0.5, x0 = floor(fx), y0 = floor(fy);
     double ax = fx - x0, ay = fy - y0, wx[2] = {1 - ax, ax}, wy[2] = {1 - ay, ay};
     for (int j = 0; j < 2; j++) {
