@@ -293,3 +293,12 @@ Test(stat_mlt, all_methods_agree_on_every_bsdf_family, .timeout = 240)
     all_methods_agree(sc, &b, 5000);
     scene_free(sc);
 }
+
+/* scenes/lights: only a sphere, a cube and a mesh (given by power) emit, with different powers:
+ * each shape's position sampling and density conversions, and light selection by power. */
+Test(stat_mlt, all_methods_agree_with_sphere_cube_and_mesh_lights)
+{
+    struct scene *sc = test_scene("scenes/lights/scene.json");
+    all_methods_agree(sc, &SMALL, 6000);
+    scene_free(sc);
+}
