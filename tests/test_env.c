@@ -10,6 +10,7 @@
 #include "mlt.h"
 #include "render.h"
 #include "scenes.h"
+#include <gsl/gsl_cdf.h>
 
 /* Centre 8x8 pixels of the 32x32 image lie on the sphere: their mean must be 0.5 within 4 standard
  * errors (pixel spread, 64 pixels) and 1 %; 256 spp, seeds 3 and 4. */
@@ -77,6 +78,53 @@ Test(stat_env, textured_sky_all_methods_agree_with_bdpt)
         int f = stack_compare(&a, &ref, 3, &pm, &worst);
         cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", names[i], a.mean,
                      a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    }
+    scene_free(sc);
+}
+
+/* tests/data/specular-furnace.json: a glass sphere and a mirror sphere (albedo 1) under a constant
+ * white sky. Nothing absorbs, so every pixel is 1, up to paths still inside the glass after 16
+ * segments. A path that reaches the sky through a delta bounce has one technique only (escaping:
+ * no light sample or connection can pass a delta vertex), so its MIS weight must be exactly 1.
+ * PT has no other noise: every pixel must be 1 to 1e-6. BDPT (light tracing of the directly seen
+ * sky), PSSMLT and MMLT are noisy: their image mean over 8 runs (BDPT 16 spp, MCMC 64 mutations
+ * per pixel) must contain 1 (t-test, alpha 0.01 Sidak over the 3 methods) and lie within 0.5 %. */
+Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
+{
+    struct scene *sc = test_scene("tests/data/specular-furnace.json");
+    struct render_opts o = {.method = METHOD_PT, .spp = 16, .seed = 1, .threads = 2, .max_length = 16};
+    struct render_stats st;
+    struct image *im = render_mc(sc, &o, &st);
+    for (int i = 0; i < im->w * im->h * 3; i++) cr_assert(fabs(im->px[i] - 1) < 1e-6, "pt: a pixel reads %.9g", im->px[i]);
+    img_destroy(im);
+    double tmax = gsl_cdf_tdist_Qinv((1 - pow(0.99, 1.0 / 3)) / 2, 7);
+    const char *names[] = {"bdpt", "pssmlt", "mmlt"};
+    for (int m = 0; m < 3; m++) {
+        double s = 0, s2 = 0;
+        for (int r = 0; r < 8; r++) {
+            struct image *x;
+            if (m == 0) {
+                o.method = METHOD_BDPT;
+                o.seed = 10 + (uint64_t)r;
+                x = render_mc(sc, &o, &st);
+            } else {
+                struct mlt_opts mo = {.method = m == 1 ? MLT_PSSMLT : MLT_MMLT, .p_large = 0.1,
+                                      .mutations = 64L * sc->cam.width * sc->cam.height, .seed_paths = 10000,
+                                      .seed = 20 + 10 * (uint64_t)m + (uint64_t)r, .threads = 2, .max_length = 16};
+                pss_opts_default(&mo.pss, sc->cam.width, sc->cam.height);
+                struct mlt_result res;
+                char err[256];
+                cr_assert(mlt_render(sc, &mo, &res, err, sizeof err), "%s", err);
+                x = res.img;
+            }
+            double v = image_mean_luminance(x);
+            s += v;
+            s2 += v * v;
+            img_destroy(x);
+        }
+        double mean = s / 8, se = sqrt(fmax(0, s2 / 8 - mean * mean) / 7);
+        cr_assert(fabs(mean - 1) < tmax * se + 1e-12 && fabs(mean - 1) < 0.005, "%s: image mean %.6f +- %.6f, expected 1",
+                  names[m], mean, se);
     }
     scene_free(sc);
 }
