@@ -43,7 +43,7 @@ struct job {
     const struct scene *sc;
     const struct render_opts *o;
     struct image **img;
-    long *nonfinite;
+    long *nonfinite, *samples;
     struct progress prog;
 };
 
@@ -58,19 +58,26 @@ static void worker(int tid, void *p)
     struct image *img = j->img[tid];
     int W = camera_film_width(&sc->cam), H = camera_film_height(&sc->cam);
     struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H};
-    for (int y = tid; y < H && !interrupted(); y += o->threads) {
-        for (int x = 0; x < W; x++) {
+    long done = 0;
+    /* Ctrl-C is honoured within a pixel (every 4096 samples), not only between rows: a row of a
+     * high-spp render can take minutes. */
+    bool stop = false;
+    for (int y = tid; y < H && !stop; y += o->threads) {
+        for (int x = 0; x < W && !stop; x++) {
             s.x0 = x;
             s.y0 = y;
             for (int i = 0; i < o->spp; i++) {
+                if ((i & 4095) == 0 && (stop = interrupted())) break;
                 rng_seed(&s.r, o->seed, ((uint64_t)y * W + x) * (uint64_t)o->spp + (uint64_t)i);
                 if (o->method == METHOD_PT) pt_sample(&pc, &s.base, w, img);
                 else bdpt_sample(&pc, &s.base, w, img);
+                done++;
             }
         }
         progress_add(&j->prog, 1);
     }
     j->nonfinite[tid] = w->nonfinite;
+    j->samples[tid] = done;
     free(w);
 }
 
@@ -79,7 +86,8 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     int W = sc->cam.width, H = sc->cam.height, T = o->threads < 1 ? 1 : o->threads;
     struct render_opts opts = *o;
     opts.threads = T;
-    struct job j = {sc, &opts, xcalloc((size_t)T, sizeof(struct image *)), xcalloc((size_t)T, sizeof(long)), {0}};
+    struct job j = {sc, &opts, xcalloc((size_t)T, sizeof(struct image *)), xcalloc((size_t)T, sizeof(long)),
+                    xcalloc((size_t)T, sizeof(long)), {0}};
     for (int i = 0; i < T; i++) {
         j.img[i] = img_create(W, H);
         j.img[i]->tent = sc->cam.filter == FILTER_TENT;
@@ -90,15 +98,17 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     progress_finish(&j.prog);
     struct image *out = img_create(W, H);
     st->nonfinite = 0;
+    st->samples = 0;
     for (int i = 0; i < T; i++) { /* fixed order: reproducible sums */
         img_accumulate(out, j.img[i], 1.0 / o->spp);
         st->nonfinite += j.nonfinite[i];
+        st->samples += j.samples[i];
         img_destroy(j.img[i]);
     }
     st->seconds = now_seconds() - t0;
-    st->samples = atomic_load(&j.prog.done) * (long)camera_film_width(&sc->cam) * o->spp; /* rows finished */
     st->partial = interrupted();
     free(j.img);
     free(j.nonfinite);
+    free(j.samples);
     return out;
 }

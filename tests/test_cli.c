@@ -22,6 +22,16 @@ static void make_dir(void)
     cr_assert(mkdtemp(dir));
 }
 
+/* Every test of the suite works in its own directory, removed afterwards. */
+static void remove_dir(void)
+{
+    if (!dir[0]) return;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);
+}
+TestSuite(cli, .fini = remove_dir);
+
 /* Runs EXE ARGS --quiet; its stderr goes to err, its exit status is returned. */
 static int run_exe(const char *exe, const char *args, char *err, size_t n)
 {
@@ -142,4 +152,61 @@ Test(cli, missing_image_module_fails_before_rendering)
     cr_assert_eq(lines(err), 1, "expected one error line, got: %s", err);
     cr_assert(strstr(err, "oiio.so") && strstr(err, "missing"), "message does not name the module: %s", err);
     cr_assert(!exists("x.exr") && !exists("x.png"));
+}
+
+/* A number from a "# key value" metadata line of a CSV held in memory. */
+static double csv_meta(const char *csv, const char *key)
+{
+    char pat[64];
+    snprintf(pat, sizeof pat, "# %s ", key);
+    const char *p = strstr(csv, pat);
+    cr_assert(p, "no '%s' line in the CSV", key);
+    return atof(p + strlen(pat));
+}
+
+/* --time stops the chains at the budget, long before the --spp count; SIGINT stops a run and it
+ * still writes its outputs, marked partial: exit status 130, "PARTIAL" in the summary line and,
+ * for the MCMC methods, in the CSV. */
+Test(cli, time_budget_and_interrupt_write_outputs)
+{
+    make_dir();
+    char err[4096], args[1024], path[256], *csv;
+    long n;
+    snprintf(args, sizeof args, "scenes/cornell-box/scene.json --method mmlt --spp 100000 --time 0.3 --resolution 64x48 "
+             "--seed-paths 2000 --out %s/t", dir);
+    cr_assert_eq(run(args, err, sizeof err), 0, "%s", err);
+    snprintf(path, sizeof path, "%s/t.csv", dir);
+    slurp(path, &csv, &n);
+    double secs = csv_meta(csv, "seconds"), muts = csv_meta(csv, "mutations");
+    cr_assert(secs >= 0.3 && secs < 1.5, "--time 0.3 ran the chains for %g s", secs);
+    cr_assert(muts > 0 && muts < 100000.0 * 64 * 48, "%g mutations", muts);
+    free(csv);
+
+    const char *methods[] = {"pt", "pssmlt"};
+    for (int m = 0; m < 2; m++) {
+        char cmd[2048];
+        snprintf(cmd, sizeof cmd,
+                 "cd . && (" BIN_DIR "/render scenes/cornell-box/scene.json --method %s --spp 100000 --resolution 64x48 "
+                 "--seed-paths 2000 --quiet --out %s/i%d > %s/out%d 2>&1 & pid=$!; sleep 1; kill -INT $pid; wait $pid; "
+                 "echo $? > %s/rc%d)",
+                 methods[m], dir, m, dir, m, dir, m);
+        cr_assert_eq(system(cmd), 0);
+        char *rc, *out;
+        snprintf(path, sizeof path, "%s/rc%d", dir, m);
+        slurp(path, &rc, &n);
+        snprintf(path, sizeof path, "%s/out%d", dir, m);
+        slurp(path, &out, &n);
+        cr_assert_eq(atoi(rc), 130, "%s: exit status %s after SIGINT (%s)", methods[m], rc, out);
+        cr_assert(strstr(out, "PARTIAL"), "%s: summary not marked partial: %s", methods[m], out);
+        snprintf(path, sizeof path, "i%d.exr", m);
+        cr_assert(exists(path), "%s: no image after SIGINT", methods[m]);
+        if (m == 1) {
+            snprintf(path, sizeof path, "%s/i1.csv", dir);
+            slurp(path, &csv, &n);
+            cr_assert(strstr(csv, "# PARTIAL"), "CSV not marked partial");
+            free(csv);
+        }
+        free(rc);
+        free(out);
+    }
 }
