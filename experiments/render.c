@@ -46,6 +46,35 @@ struct args {
     int width, height;
 };
 
+/* Options that only some methods read; given to another method they would be silently ignored,
+ * which for --time (an equal-time budget) would quietly change an experiment. */
+static const char *const mcmc_only[] = {"--time", "--p-large", "--kernel", "--sigma", "--rap", "--rap-resolution", "--cdc",
+                                        "--seed-paths", "--large-step", "--hybrid-length", "--uniform-lengths",
+                                        "--max-heuristic", NULL};
+static const char *const mmlt_only[] = {"--large-step", "--hybrid-length", "--uniform-lengths", NULL};
+static const char *const pssmlt_only[] = {"--max-heuristic", NULL};
+
+static bool listed(const char *o, const char *const *list)
+{
+    for (; *list; list++)
+        if (!strcmp(o, *list)) return true;
+    return false;
+}
+
+/* One warning line per option that the chosen method does not read. */
+static void warn_unused(const char *prog, int argc, char **argv, const char *method)
+{
+    bool mcmc = !strcmp(method, "pssmlt") || !strcmp(method, "mmlt");
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        const char *only = !mcmc && listed(o, mcmc_only)                   ? "pssmlt and mmlt"
+                           : !strcmp(method, "pssmlt") && listed(o, mmlt_only) ? "mmlt"
+                           : !strcmp(method, "mmlt") && listed(o, pssmlt_only) ? "pssmlt"
+                                                                              : NULL;
+        if (only) fprintf(stderr, "%s: warning: %s has no effect with --method %s (it applies to %s)\n", prog, o, method, only);
+    }
+}
+
 static void parse(int argc, char **argv, struct args *a)
 {
     const char *prog = "render";
@@ -119,6 +148,7 @@ static void parse(int argc, char **argv, struct args *a)
 #undef VALUE
     }
     if (!a->scene) cli_fail(prog, "no scene given (see --help)");
+    warn_unused(prog, argc, argv, a->method);
 }
 
 static bool write_csv(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)

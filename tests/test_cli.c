@@ -210,3 +210,23 @@ Test(cli, time_budget_and_interrupt_write_outputs)
         free(out);
     }
 }
+
+/* An option the chosen method does not read is named in a warning, not silently dropped: --time
+ * on a PT render would otherwise quietly turn an equal-time comparison into an equal-sample one. */
+Test(cli, options_of_other_methods_warn)
+{
+    make_dir();
+    const char *cases[][3] = {
+        {"pt", "--time 5", "--time has no effect with --method pt"},
+        {"bdpt", "--rap", "--rap has no effect with --method bdpt"},
+        {"pssmlt", "--large-step mctls", "--large-step has no effect with --method pssmlt"},
+        {"mmlt", "--max-heuristic", "--max-heuristic has no effect with --method mmlt"},
+    };
+    char err[4096], args[1024];
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        snprintf(args, sizeof args, "scenes/cornell-box/scene.json --method %s %s --spp 1 --resolution 16x12 "
+                 "--seed-paths 200 --out %s/w", cases[i][0], cases[i][1], dir);
+        cr_assert_eq(run(args, err, sizeof err), 0, "%s", err);
+        cr_assert(strstr(err, cases[i][2]), "%s %s: no warning in: %s", cases[i][0], cases[i][1], err);
+    }
+}
