@@ -20,8 +20,8 @@ enum { PLASTIC_LOBE_COAT = 0, PLASTIC_LOBE_DIFFUSE = 1 };
 
 /* A given wo matches a delta direction when it lies within this distance of it. In a path, wo
  * comes from two hit points that Embree found in single precision (~2e-7 of the scene's size each),
- * so over a segment of length L it is off by ~2e-7 / L: 1e-7 failed 14 % of the camera walks that
- * met a mirror, gold or glass sphere in scenes/materials; 1e-4 covers segments down to ~0.002. */
+ * so over a segment of length L it is off by ~2e-7 / L: 1e-7 failed 15 % of all camera walks in
+ * scenes/materials (its mirror, gold and glass spheres); 1e-4 covers segments down to ~0.002. */
 #define SMOOTH_DELTA_TOL 1e-4
 
 /* Mirror reflection about the local normal (+z). */
