@@ -74,7 +74,7 @@ static double sample_rate(const struct scene *sc, enum method m, int threads, in
 }
 
 /* Peak memory once an image has been written: the first write opens the OpenImageIO module, whose
- * Debian build maps ~250 libraries (core/oiio.h). Until then the figure above is the renderer's. */
+ * Debian build maps ~260 libraries (core/oiio.h). Until then the figure above is the renderer's. */
 static double image_io_peak_mb(const struct scene *sc)
 {
     char dir[] = "/tmp/bench-XXXXXX", prefix[64], err[1024];
