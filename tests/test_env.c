@@ -88,7 +88,7 @@ Test(stat_env, textured_sky_all_methods_agree_with_bdpt)
  * no light sample or connection can pass a delta vertex), so its MIS weight must be exactly 1.
  * PT has no other noise: every pixel must be 1 to 1e-6. BDPT (light tracing of the directly seen
  * sky), PSSMLT and MMLT are noisy: their image mean over 8 runs (BDPT 16 spp, MCMC 64 mutations
- * per pixel) must contain 1 (t-test, alpha 0.01 Sidak over the 3 methods) and lie within 0.5 %. */
+ * per pixel) must contain 1 (t-test, alpha 0.01 Sidak over the 3 methods) and lie within 2 %. */
 Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
 {
     struct scene *sc = test_scene("tests/data/specular-furnace.json");
@@ -123,7 +123,7 @@ Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
             img_destroy(x);
         }
         double mean = s / 8, se = sqrt(fmax(0, s2 / 8 - mean * mean) / 7);
-        cr_assert(fabs(mean - 1) < tmax * se + 1e-12 && fabs(mean - 1) < 0.005, "%s: image mean %.6f +- %.6f, expected 1",
+        cr_assert(fabs(mean - 1) < tmax * se + 1e-12 && fabs(mean - 1) < 0.02, "%s: image mean %.6f +- %.6f, expected 1",
                   names[m], mean, se);
     }
     scene_free(sc);

@@ -302,10 +302,13 @@ Test(stat_mlt, all_methods_agree_on_every_bsdf_family, .timeout = 240)
 }
 
 /* scenes/lights: only a sphere, a cube and a mesh (given by power) emit, with different powers:
- * each shape's position sampling and density conversions, and light selection by power. */
+ * each shape's position sampling and density conversions, and light selection by power. MMLT gets
+ * 256 mutations per pixel per run: with 16 its runs are skewed enough that one seed in three failed
+ * a block (p = 1e-5); with 256, five seeds out of five pass. */
 Test(stat_mlt, all_methods_agree_with_sphere_cube_and_mesh_lights)
 {
     struct scene *sc = test_scene("scenes/lights/scene.json");
-    all_methods_agree(sc, &SMALL, 6000);
+    const struct budget b = {64, 16, 64, 16, 256};
+    all_methods_agree(sc, &b, 6000);
     scene_free(sc);
 }
