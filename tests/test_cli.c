@@ -186,7 +186,7 @@ Test(cli, time_budget_and_interrupt_write_outputs)
     for (int m = 0; m < 2; m++) {
         char cmd[2048];
         snprintf(cmd, sizeof cmd,
-                 "cd . && (" BIN_DIR "/render scenes/cornell-box/scene.json --method %s --spp 100000 --resolution 64x48 "
+                 "(" BIN_DIR "/render scenes/cornell-box/scene.json --method %s --spp 100000 --resolution 64x48 "
                  "--seed-paths 2000 --quiet --out %s/i%d > %s/out%d 2>&1 & pid=$!; sleep 1; kill -INT $pid; wait $pid; "
                  "echo $? > %s/rc%d)",
                  methods[m], dir, m, dir, m, dir, m);
