@@ -4,14 +4,7 @@
 #include "path.h"
 
 /* Self-intersection offset relative to the coordinates' magnitude (Embree works in float). */
-double ray_eps(vec3 p)
-{
-    double m = 1.0, a = fabs(p.x), b = fabs(p.y), c = fabs(p.z); /* not fmax: a libm call per ray */
-    if (a > m) m = a;
-    if (b > m) m = b;
-    if (c > m) m = c;
-    return 2e-5 * m;
-}
+double ray_eps(vec3 p) { return 2e-5 * maxd(fabs(p.z), maxd(fabs(p.y), maxd(fabs(p.x), 1.0))); }
 
 void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *h, struct vertex *v)
 {

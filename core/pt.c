@@ -50,24 +50,20 @@ static int walk(const struct path_ctx *pc, struct sampler *s, struct pt_vertex *
     int n = 1;
     while (n < max_verts) {
         struct pt_vertex *cur = &z[n];
+        cur->ops = NULL;
+        cur->beta = beta;
+        cur->pdf_sa = pdf_sa;
+        cur->after_delta = after_delta;
         struct hit h;
         if (!accel_intersect(sc->accel, o, d, eps, INFINITY, &h)) {
             if (sc->env_prim >= 0) {
                 cur->v.kind = VK_ENV;
                 cur->v.wi = vneg(d);
-                cur->ops = NULL;
-                cur->beta = beta;
-                cur->pdf_sa = pdf_sa;
-                cur->after_delta = after_delta;
                 n++;
             }
             break;
         }
         surface_from_hit(sc, o, d, &h, &cur->v);
-        cur->ops = NULL;
-        cur->beta = beta;
-        cur->pdf_sa = pdf_sa;
-        cur->after_delta = after_delta;
         cur->dist2 = vlen2(vsub(cur->v.p, o));
         n++;
         /* The last vertex takes no light sample (it would exceed max_length). */

@@ -42,8 +42,6 @@ static struct image *render_plain(const struct scene *sc, enum method m, int spp
     struct render_stats st;
     return render_mc(sc, &o, &st);
 }
-static struct image *render_bdpt(void *p, uint64_t seed) { return render_plain(p, METHOD_BDPT, 16, seed); }
-
 struct plain_ctx {
     const struct scene *sc;
     enum method m;
@@ -63,7 +61,8 @@ Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
     camera_resize(&sc->cam, 64, 64);
     static struct stack ref, a;
-    stack_runs(&ref, render_bdpt, sc, 8, 1000, 8);
+    struct plain_ctx bd = {sc, METHOD_BDPT, 16};
+    stack_runs(&ref, render_plain_ctx, &bd, 8, 1000, 8);
     const struct {
         const char *name;
         enum mlt_method m;
