@@ -52,7 +52,7 @@ static int run(const char *args, char *err, size_t n) { return run_exe(BIN_DIR "
 static bool exists(const char *name)
 {
     char p[256];
-    snprintf(p, sizeof p, "%s/%s", dir, name);
+    if (snprintf(p, sizeof p, "%s/%s", dir, name) >= (int)sizeof p) return false;
     return access(p, F_OK) == 0;
 }
 
