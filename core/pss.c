@@ -24,15 +24,18 @@ double pss_small_step(struct pss_sampler *p, enum dim_kind kind, double u)
     double step;
     if (p->o.kernel == KERNEL_KELEMEN) {
         /* Kelemen et al. 2002: |step| = s2 exp(-log(s2/s1) xi) with a random sign. One 32-bit draw
-         * gives the sign (1 bit), xi's table cell (8 bits) and its position f in the cell (23 bits);
-         * exp(y) for |y| <= log(s2/s1)/256 by its series to y^3 (relative error < 1e-9 for the
-         * default s2/s1 = 16, < 4e-7 up to s2/s1 = 1e6), so no libm call in the hot loop. */
+         * gives the sign (1 bit) and xi: a coarse cell (8 bits), a fine cell (8 bits) and the
+         * position m in the fine cell (15 bits). The two cells are table products; the rest,
+         * exp(y) for |y| < log(s2/s1) / 2^16, is 1 + y (relative error < 1e-9 for the default
+         * s2/s1 = 16, < 3e-8 up to s2/s1 = 1e6). Short dependency chains: this number is waited
+         * on by the path code, and the series it replaces made pss_next a fifth of MMLT's time. */
         uint32_t x = rng_u32(&p->r);
-        double f = ((x & 0x7FFFFFu) + 0.5) * (1.0 / 8388608.0);
-        double y = p->kelemen_slope * f;
-        double e = 1 + y * (1 + y * (0.5 + y * (1.0 / 6)));
-        step = p->kelemen[(x >> 23) & 255u] * e;
-        if (x >> 31) step = -step;
+        double a = p->kelemen[(x >> 23) & 255u] * p->kelemen_fine[(x >> 15) & 255u];
+        step = a + a * (p->kelemen_slope * (double)(x & 0x7FFFu));
+        uint64_t bits;
+        memcpy(&bits, &step, sizeof bits);
+        bits ^= (uint64_t)(x >> 31) << 63; /* the sign, without a branch to mispredict */
+        memcpy(&step, &bits, sizeof bits);
     } else {
         /* Box-Muller; one normal per call keeps the stream layout simple. */
         double a = rng_uniform(&p->r), b = rng_uniform(&p->r);
@@ -51,8 +54,12 @@ void pss_init(struct pss_sampler *p, const struct pss_opts *o, uint64_t seed, ui
     p->o = *o;
     rng_seed(&p->r, seed, stream);
     double log_ratio = log(o->s2 / o->s1);
-    for (int j = 0; j < 256; j++) p->kelemen[j] = o->s2 * exp(-log_ratio * j / 256.0);
-    p->kelemen_slope = -log_ratio / 256.0;
+    /* xi = (j + (i + (m + 1/2) / 2^15) / 2^8) / 2^8; the half cell of m is folded into the fine table */
+    for (int j = 0; j < 256; j++) {
+        p->kelemen[j] = o->s2 * exp(-log_ratio * j / 256.0);
+        p->kelemen_fine[j] = exp(-log_ratio * (j + 0.5 / 32768) / 65536.0);
+    }
+    p->kelemen_slope = -log_ratio / 2147483648.0;
     double m = fmin(o->width, o->height);
     p->scale_x = p->scale_y = 1.0;
     if (o->rap) {

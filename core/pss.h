@@ -41,9 +41,10 @@ struct pss_sampler {
     uint64_t iteration, last_large;
     bool large;
     double scale_x, scale_y; /* image-dim step factors */
-    /* Kelemen's kernel: |step| = s2 (s1/s2)^xi. xi's top 8 bits index kelemen[] = s2 (s1/s2)^(j/256);
-     * its low bits scale that by exp(kelemen_slope * f), f in [0, 1), a short series. */
-    double kelemen[256], kelemen_slope;
+    /* Kelemen's kernel: |step| = s2 (s1/s2)^xi. xi's top 8 bits index kelemen[] = s2 (s1/s2)^(j/256),
+     * its next 8 kelemen_fine[] = (s1/s2)^(i/2^16); its low 15 bits m give the factor
+     * 1 + kelemen_slope * m. */
+    double kelemen[256], kelemen_fine[256], kelemen_slope;
     struct pss_dim d[STREAM_COUNT][STREAM_DIMS];
     int ntouched;
     uint16_t touched[STREAM_COUNT * STREAM_DIMS];
