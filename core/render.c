@@ -39,12 +39,17 @@ static double pixel_next(struct sampler *s, enum dim_kind kind)
 }
 static const struct sampler_ops pixel_ops = {pixel_next, NULL, NULL};
 
+/* Time-budgeted runs key their sampler streams as if for this many samples per pixel. */
+#define TIME_MODE_MAX_SPP (1 << 24)
+
 struct job {
     const struct scene *sc;
     const struct render_opts *o;
     struct image **img;
     long *nonfinite, *samples;
     struct progress prog;
+    int first, count; /* samples first .. first + count - 1 of every pixel */
+    uint64_t key;     /* sample i of film cell c draws from stream c * key + i */
 };
 
 static void worker(int tid, void *p)
@@ -66,18 +71,18 @@ static void worker(int tid, void *p)
         for (int x = 0; x < W && !stop; x++) {
             s.x0 = x;
             s.y0 = y;
-            for (int i = 0; i < o->spp; i++) {
-                if ((i & 4095) == 0 && (stop = interrupted())) break;
-                rng_seed(&s.r, o->seed, ((uint64_t)y * W + x) * (uint64_t)o->spp + (uint64_t)i);
+            for (int i = j->first; i < j->first + j->count; i++) {
+                if (((i - j->first) & 4095) == 0 && (stop = interrupted())) break;
+                rng_seed(&s.r, o->seed, ((uint64_t)y * W + x) * j->key + (uint64_t)i);
                 if (o->method == METHOD_PT) pt_sample(&pc, &s.base, w, img);
                 else bdpt_sample(&pc, &s.base, w, img);
                 done++;
             }
         }
-        progress_add(&j->prog, 1);
+        if (o->seconds <= 0) progress_add(&j->prog, 1);
     }
-    j->nonfinite[tid] = w->nonfinite;
-    j->samples[tid] = done;
+    j->nonfinite[tid] += w->nonfinite;
+    j->samples[tid] += done;
     free(w);
 }
 
@@ -86,26 +91,43 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     int W = sc->cam.width, H = sc->cam.height, T = o->threads < 1 ? 1 : o->threads;
     struct render_opts opts = *o;
     opts.threads = T;
-    struct job j = {sc, &opts, xcalloc((size_t)T, sizeof(struct image *)), xcalloc((size_t)T, sizeof(long)),
-                    xcalloc((size_t)T, sizeof(long)), {0}};
+    struct job j = {.sc = sc, .o = &opts, .img = xcalloc((size_t)T, sizeof(struct image *)),
+                    .nonfinite = xcalloc((size_t)T, sizeof(long)), .samples = xcalloc((size_t)T, sizeof(long))};
     for (int i = 0; i < T; i++) {
         j.img[i] = img_create(W, H);
         j.img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
-    progress_init(&j.prog, method_name(o->method), camera_film_height(&sc->cam), o->progress);
     double t0 = now_seconds();
-    parallel_run(T, worker, &j);
+    int spp = o->spp;
+    if (o->seconds > 0) {
+        progress_init(&j.prog, method_name(o->method), (long)(1000 * o->seconds), o->progress);
+        j.count = 1;
+        j.key = TIME_MODE_MAX_SPP;
+        for (spp = 0; spp < TIME_MODE_MAX_SPP;) {
+            j.first = spp++;
+            parallel_run(T, worker, &j);
+            double elapsed = now_seconds() - t0;
+            progress_set(&j.prog, (long)(1000 * elapsed));
+            if (interrupted() || elapsed * (spp + 1) / spp > o->seconds) break;
+        }
+    } else {
+        progress_init(&j.prog, method_name(o->method), camera_film_height(&sc->cam), o->progress);
+        j.count = spp;
+        j.key = (uint64_t)spp;
+        parallel_run(T, worker, &j);
+    }
     progress_finish(&j.prog);
     struct image *out = img_create(W, H);
     st->nonfinite = 0;
     st->samples = 0;
     for (int i = 0; i < T; i++) { /* fixed order: reproducible sums */
-        img_accumulate(out, j.img[i], 1.0 / o->spp);
+        img_accumulate(out, j.img[i], 1.0 / spp);
         st->nonfinite += j.nonfinite[i];
         st->samples += j.samples[i];
         img_destroy(j.img[i]);
     }
     st->seconds = now_seconds() - t0;
+    st->spp = spp;
     st->partial = interrupted();
     free(j.img);
     free(j.nonfinite);

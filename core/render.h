@@ -1,7 +1,10 @@
 /* The Monte Carlo render driver: pixels in rows dealt round-robin to threads, one sampler stream
  * per camera sample, per-thread framebuffers merged in thread order. For a given seed and thread
  * count the image is bitwise reproducible; it also does not depend on the thread count except
- * through the summation order of light-tracing splats. */
+ * through the summation order of light-tracing splats.
+ * With a time budget (equal-time comparisons) the image is rendered in passes of one sample per
+ * pixel, each pass started only if, at the mean pass time so far, it ends within the budget; the
+ * image is then reproducible for the number of passes it reached. */
 #ifndef RENDER_H
 #define RENDER_H
 
@@ -14,6 +17,7 @@ enum method { METHOD_PT, METHOD_BDPT };
 struct render_opts {
     enum method method;
     int spp;
+    double seconds; /* > 0: instead of spp, whole passes of one sample per pixel while they fit */
     uint64_t seed;
     int threads;
     int max_length;
@@ -23,6 +27,7 @@ struct render_opts {
 
 struct render_stats {
     long samples;
+    int spp;      /* samples per pixel taken (the passes of a time-budgeted run) */
     double seconds;
     long nonfinite;
     bool partial; /* interrupted: rows not reached are black */

@@ -65,7 +65,7 @@ static double ray_rate(const struct scene *sc, double seconds)
 
 static double sample_rate(const struct scene *sc, enum method m, int threads, int K, double seconds)
 {
-    struct render_opts o = {m, 1, 1, threads, K, false, 0, 0};
+    struct render_opts o = {.method = m, .spp = 1, .seed = 1, .threads = threads, .max_length = K};
     struct render_stats st;
     img_destroy(render_mc(sc, &o, &st));
     o.spp = (int)fmax(1, seconds / st.seconds);

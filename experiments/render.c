@@ -17,7 +17,8 @@ static const char *usage =
     "  --method pt|bdpt|pssmlt|mmlt  estimator (default bdpt)\n"
     "  --spp N              samples per pixel; for pssmlt/mmlt mutations per pixel\n"
     "                       (default: the scene's renderer.spp, else 16)\n"
-    "  --time SECONDS       pssmlt/mmlt: run for this long instead of --spp mutations\n"
+    "  --time SECONDS       equal-time budget instead of --spp: pssmlt/mmlt stop at it;\n"
+    "                       pt/bdpt render whole passes of 1 spp while the next fits in it\n"
     "  --seed S             random seed (default 1); same seed and threads -> same output\n"
     "  --threads T          worker threads (default: all cores)\n"
     "  --max-length K       maximum path length in segments (default: integrator.max_bounces)\n"
@@ -47,8 +48,8 @@ struct args {
 };
 
 /* Options that only some methods read; given to another method they would be silently ignored,
- * which for --time (an equal-time budget) would quietly change an experiment. */
-static const char *const mcmc_only[] = {"--time", "--p-large", "--kernel", "--sigma", "--rap", "--rap-resolution", "--cdc",
+ * which would quietly change an experiment. */
+static const char *const mcmc_only[] = {"--p-large", "--kernel", "--sigma", "--rap", "--rap-resolution", "--cdc",
                                         "--seed-paths", "--large-step", "--hybrid-length", "--uniform-lengths",
                                         "--max-heuristic", NULL};
 static const char *const mmlt_only[] = {"--large-step", "--hybrid-length", "--uniform-lengths", NULL};
@@ -92,7 +93,7 @@ static void parse(int argc, char **argv, struct args *a)
         } else if (!strcmp(o, "--spp")) {
             a->mc.spp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
         } else if (!strcmp(o, "--time")) {
-            a->mlt.seconds = cli_double(prog, o, VALUE, 1e-3, 1e7);
+            a->mc.seconds = a->mlt.seconds = cli_double(prog, o, VALUE, 1e-3, 1e7);
         } else if (!strcmp(o, "--seed")) {
             a->mc.seed = a->mlt.seed = cli_u64(prog, o, VALUE);
         } else if (!strcmp(o, "--threads")) {
@@ -208,8 +209,9 @@ int main(int argc, char **argv)
         ok = img_write_exr_png(img, a.out, err, sizeof err);
         partial = st.partial;
         if (ok)
-            printf("%s%s: %ld samples in %.2f s, %.0f samples/s (%d threads), %ld non-finite dropped\n", partial ? "PARTIAL (interrupted) " : "",
-                   a.method, st.samples, st.seconds, st.samples / st.seconds, a.mc.threads, st.nonfinite);
+            printf("%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%d threads), %ld non-finite dropped\n",
+                   partial ? "PARTIAL (interrupted) " : "", a.method, st.samples, st.spp, st.seconds, st.samples / st.seconds,
+                   a.mc.threads, st.nonfinite);
         img_destroy(img);
     } else {
         a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : MLT_PSSMLT;

@@ -32,21 +32,30 @@ static void remove_dir(void)
 }
 TestSuite(cli, .fini = remove_dir);
 
-/* Runs EXE ARGS --quiet; its stderr goes to err, its exit status is returned. */
-static int run_exe(const char *exe, const char *args, char *err, size_t n)
+static void read_text(const char *path, char *buf, size_t n)
 {
-    char cmd[2048], errfile[128];
+    FILE *f = fopen(path, "r");
+    size_t got = f ? fread(buf, 1, n - 1, f) : 0;
+    buf[got] = 0;
+    if (f) fclose(f);
+}
+
+/* Runs EXE ARGS --quiet; its stderr goes to err (and its stdout to out, if given), its exit status
+ * is returned. */
+static int run_exe_out(const char *exe, const char *args, char *err, size_t n, char *out, size_t on)
+{
+    char cmd[2048], errfile[128], outfile[128];
     snprintf(errfile, sizeof errfile, "%s/stderr", dir);
-    snprintf(cmd, sizeof cmd, "%s %s --quiet > /dev/null 2> %s", exe, args, errfile);
+    snprintf(outfile, sizeof outfile, "%s/stdout", dir);
+    snprintf(cmd, sizeof cmd, "%s %s --quiet > %s 2> %s", exe, args, outfile, errfile);
     int st = system(cmd);
     cr_assert(WIFEXITED(st));
-    FILE *f = fopen(errfile, "r");
-    size_t got = f ? fread(err, 1, n - 1, f) : 0;
-    err[got] = 0;
-    if (f) fclose(f);
+    read_text(errfile, err, n);
+    if (out) read_text(outfile, out, on);
     return WEXITSTATUS(st);
 }
 
+static int run_exe(const char *exe, const char *args, char *err, size_t n) { return run_exe_out(exe, args, err, n, NULL, 0); }
 static int run(const char *args, char *err, size_t n) { return run_exe(BIN_DIR "/render", args, err, n); }
 
 static bool exists(const char *name)
@@ -164,9 +173,9 @@ static double csv_meta(const char *csv, const char *key)
     return atof(p + strlen(pat));
 }
 
-/* --time stops the chains at the budget, long before the --spp count; SIGINT stops a run and it
- * still writes its outputs, marked partial: exit status 130, "PARTIAL" in the summary line and,
- * for the MCMC methods, in the CSV. */
+/* --time stops the chains at the budget, long before the --spp count, and PT/BDPT before the pass
+ * that would overrun it; SIGINT stops a run and it still writes its outputs, marked partial: exit
+ * status 130, "PARTIAL" in the summary line and, for the MCMC methods, in the CSV. */
 Test(cli, time_budget_and_interrupt_write_outputs)
 {
     make_dir();
@@ -181,6 +190,18 @@ Test(cli, time_budget_and_interrupt_write_outputs)
     cr_assert(secs >= 0.3 && secs < 1.5, "--time 0.3 ran the chains for %g s", secs);
     cr_assert(muts > 0 && muts < 100000.0 * 64 * 48, "%g mutations", muts);
     free(csv);
+    for (int m = 0; m < 2; m++) {
+        snprintf(args, sizeof args, "scenes/cornell-box/scene.json --method %s --spp 100000 --time 0.3 --resolution 64x48 "
+                 "--out %s/p", m ? "bdpt" : "pt", dir);
+        char out[1024];
+        cr_assert_eq(run_exe_out(BIN_DIR "/render", args, err, sizeof err, out, sizeof out), 0, "%s", err);
+        long samples = 0;
+        int spp = 0;
+        double s = 0;
+        cr_assert_eq(sscanf(strchr(out, ':') + 1, " %ld samples (%d spp) in %lf s", &samples, &spp, &s), 3, "summary: %s", out);
+        cr_assert(spp >= 2 && spp < 100000 && samples == (long)spp * 64 * 48, "%s", out);
+        cr_assert(s >= 0.1 && s < 0.3 * (1 + 1.0 / spp) + 0.1, "--time 0.3: %s", out);
+    }
 
     const char *methods[] = {"pt", "pssmlt"};
     for (int m = 0; m < 2; m++) {
@@ -211,13 +232,12 @@ Test(cli, time_budget_and_interrupt_write_outputs)
     }
 }
 
-/* An option the chosen method does not read is named in a warning, not silently dropped: --time
- * on a PT render would otherwise quietly turn an equal-time comparison into an equal-sample one. */
+/* An option the chosen method does not read is named in a warning, not silently dropped. */
 Test(cli, options_of_other_methods_warn)
 {
     make_dir();
     const char *cases[][3] = {
-        {"pt", "--time 5", "--time has no effect with --method pt"},
+        {"pt", "--seed-paths 100", "--seed-paths has no effect with --method pt"},
         {"bdpt", "--rap", "--rap has no effect with --method bdpt"},
         {"pssmlt", "--large-step mctls", "--large-step has no effect with --method pssmlt"},
         {"mmlt", "--max-heuristic", "--max-heuristic has no effect with --method mmlt"},

@@ -10,7 +10,7 @@
 
 static struct image *run(const struct scene *sc, enum method m, int spp, uint64_t seed, int K, int s, int t)
 {
-    struct render_opts o = {m, spp, seed, 2, K, false, s, t};
+    struct render_opts o = {.method = m, .spp = spp, .seed = seed, .threads = 2, .max_length = K, .only_s = s, .only_t = t};
     struct render_stats st;
     struct image *im = render_mc(sc, &o, &st);
     cr_assert_eq(st.nonfinite, 0);
@@ -35,6 +35,30 @@ Test(stat_render, furnace_exact_answer)
                       (int)seed, v, exact);
             img_destroy(im);
         }
+    scene_free(sc);
+}
+
+/* A time budget renders whole passes of one sample per film cell while the next one fits: the
+ * furnace's exact answer within 1 % for PT and BDPT after 0.2 s, every cell with the same number of
+ * samples, and no more time than the budget plus a pass. */
+Test(stat_render, time_budget_passes_are_unbiased_in_furnace)
+{
+    struct scene *sc = test_scene("scenes/furnace/scene.json");
+    camera_resize(&sc->cam, 64, 64);
+    const int K = 6;
+    double exact = 0.5 * (1 - pow(0.5, K)) / (1 - 0.5);
+    long cells = (long)camera_film_width(&sc->cam) * camera_film_height(&sc->cam);
+    for (int m = 0; m < 2; m++) {
+        struct render_opts o = {.method = (enum method)m, .spp = 1, .seconds = 0.2, .seed = 9, .threads = 2, .max_length = K};
+        struct render_stats st;
+        struct image *im = render_mc(sc, &o, &st);
+        double v = image_mean_luminance(im);
+        cr_assert(st.spp >= 2 && st.samples == st.spp * cells, "%s: %ld samples in %d passes of %ld cells",
+                  method_name(o.method), st.samples, st.spp, cells);
+        cr_assert(st.seconds < 0.2 * (1 + 1.0 / st.spp) + 0.05, "%s: %g s for a 0.2 s budget", method_name(o.method), st.seconds);
+        cr_assert(fabs(v / exact - 1) < 0.01, "%s: %g vs exact %g after %d passes", method_name(o.method), v, exact, st.spp);
+        img_destroy(im);
+    }
     scene_free(sc);
 }
 
