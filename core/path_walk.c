@@ -100,6 +100,9 @@ int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
     if (max_verts < 1) return 0;
     sampler_begin(s, STREAM_EMITTER, 0);
     if (!sample_emitter_vertex(sc, s, &v[0])) return 0;
+    /* A lone emitter vertex (s = 1) is only connected to: the direction it would emit along is
+     * never used (as for the camera in walk_camera). */
+    if (max_verts == 1) return 1;
     if (v[0].kind == VK_ENV) {
         /* rays leave the origin disc (area density 1 / (pi R^2), cosine 1) against env_dir */
         double pdf_disc = 1.0 / (M_PI * sqr(env_radius(sc)));
