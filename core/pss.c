@@ -27,8 +27,8 @@ double pss_small_step(struct pss_sampler *p, enum dim_kind kind, double u)
          * gives the sign (1 bit) and xi: a coarse cell (8 bits), a fine cell (8 bits) and the
          * position m in the fine cell (15 bits). The two cells are table products; the rest,
          * exp(y) for |y| < log(s2/s1) / 2^16, is 1 + y (relative error < 1e-9 for the default
-         * s2/s1 = 16, < 3e-8 up to s2/s1 = 1e6). Short dependency chains: this number is waited
-         * on by the path code, and the series it replaces made pss_next a fifth of MMLT's time. */
+         * s2/s1 = 16, < 3e-8 up to s2/s1 = 1e6). The dependency chain is kept short and free of
+         * branches because path code waits on every number it reads. */
         uint32_t x = rng_u32(&p->r);
         double a = p->kelemen[(x >> 23) & 255u] * p->kelemen_fine[(x >> 15) & 255u];
         step = a + a * (p->kelemen_slope * (double)(x & 0x7FFFu));

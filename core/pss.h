@@ -42,8 +42,8 @@ struct pss_sampler {
     bool large;
     double scale_x, scale_y; /* image-dim step factors */
     /* Kelemen's kernel: |step| = s2 (s1/s2)^xi. xi's top 8 bits index kelemen[] = s2 (s1/s2)^(j/256),
-     * its next 8 kelemen_fine[] = (s1/s2)^(i/2^16); its low 15 bits m give the factor
-     * 1 + kelemen_slope * m. */
+     * its next 8 kelemen_fine[] = (s1/s2)^((i + 2^-16) / 2^16) (the offset centres m's cells); its
+     * low 15 bits m give the factor 1 + kelemen_slope * m. */
     double kelemen[256], kelemen_fine[256], kelemen_slope;
     struct pss_dim d[STREAM_COUNT][STREAM_DIMS];
     int ntouched;

@@ -30,7 +30,7 @@ struct render_stats {
     int spp;      /* samples per pixel taken (the passes of a time-budgeted run) */
     double seconds;
     long nonfinite;
-    bool partial; /* interrupted: rows not reached are black */
+    bool partial; /* interrupted: rows not reached (in the last pass, under a time budget) lack samples */
 };
 
 /* Returns the image in final units (average radiance per pixel). */
