@@ -43,10 +43,9 @@ static double centre_mean(const struct image *im, double *se)
 /* PT and BDPT: the centre's mean must be 0.5 within 4 standard errors (pixel spread, 64 pixels)
  * and 1 %; 256 spp, seeds 3 and 4. PSSMLT and MMLT, whose pixels are correlated: the centre's mean
  * over 8 runs of 1024 mutations per pixel (100k seed paths) must contain 0.5 (t-test, alpha 0.01
- * Sidak over the 2 methods) and lie within 4 %. Runs of this length scatter by about 2 % (MMLT),
- * and their 8-run mean has come out between -2.8 % and +0.3 % over four seed sets; with 16x longer
- * runs it is 0.5002 +- 0.0016. MMLT with lengths >= 2 weighted by 0.95 fails it (-4.7 %, t = -4.2
- * against a threshold of 4.0: about the smallest error this budget sees). */
+ * Sidak over the 2 methods) and lie within 4 %. MMLT runs of this length scatter by about 2 %
+ * (40 of them averaged 0.5040 +- 0.0029). MMLT with lengths >= 2 weighted by 0.95 fails it
+ * (0.459 +- 0.005, t = -9.0 against a threshold of 4.0). */
 Test(stat_env, constant_sky_sphere_every_method)
 {
     struct scene *sc = test_scene("scenes/sky-sphere/scene.json");
