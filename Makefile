@@ -5,20 +5,45 @@ SANITIZE ?= 0
 SCALE ?= quick
 export SCALE
 
+PGO ?= 1
+
 ifeq ($(SANITIZE),1)
   BUILD := build-san
   BIN := build-san/bin
   OPT := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
 else
-  BUILD := build
-  BIN := bin
-  OPT := -O2 -g -fno-math-errno
+  OPT := -O3 -g -fno-math-errno
   # Link-time optimisation inlines the small cross-file helpers of the hot paths (edge densities,
   # BSDF dispatch wrappers, ray set-up): 2-5 % on every estimator, images bit-identical.
   # `make clean; make LTO=0` turns it off (objects do not track the flags they were built with).
   ifneq ($(LTO),0)
     OPT += -flto=auto
     AR := gcc-ar
+  endif
+  # Profile-guided optimisation: bin/render is first built instrumented under build/pgo-gen/ and run
+  # on scripts/pgo-train.sh's renders; the release objects are then compiled with those profiles.
+  # With -O3, 5-6 % on PT and MMLT, images bit-identical (the profile steers inlining, layout and
+  # unrolling, never floating-point evaluation). Code the training does not reach is compiled as
+  # without a profile (-fprofile-partial-training). `make PGO=0` skips it: faster edit-build cycles.
+  # Both stages name a source's profile after the source itself (-dumpbase): GCC keys the
+  # profiles of static functions by that name, and would not match them across two object paths.
+  PGO_DIR := $(CURDIR)/build/pgo-profile
+  PGO_AUX = -dumpdir $(PGO_DIR)/ -dumpbase $(subst /,-,$<)
+  ifeq ($(PGO_STAGE),gen)
+    BUILD := build/pgo-gen
+    BIN := build/pgo-gen/bin
+    OPT += -fprofile-generate
+    PGO_CFLAGS = $(PGO_AUX)
+    # A fixed commit string: a new commit does not make the training stale.
+    PGO_COMMIT := pgo-training
+  else
+    BUILD := build
+    BIN := bin
+    ifneq ($(PGO),0)
+      OPT += -fprofile-use -fprofile-partial-training -Wno-missing-profile
+      PGO_CFLAGS = $(PGO_AUX)
+      PGO_STAMP := build/pgo.stamp
+    endif
   endif
 endif
 
@@ -35,7 +60,7 @@ LDLIBS := -lembree3 -lcjson -lgsl -lgslcblas -lm -ldl
 OIIO_LIBS := $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lstdc++
 
 # The commit recorded in every CSV's metadata; version.h is rewritten only when it changes.
-GIT_COMMIT := $(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD 2>/dev/null || echo -dirty)
+GIT_COMMIT := $(or $(PGO_COMMIT),$(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD 2>/dev/null || echo -dirty))
 $(shell mkdir -p $(BUILD) && echo '#define GIT_COMMIT "$(GIT_COMMIT)"' > $(BUILD)/version.h.new && (cmp -s $(BUILD)/version.h.new $(BUILD)/version.h || mv $(BUILD)/version.h.new $(BUILD)/version.h))
 CPPFLAGS += -I$(BUILD)
 
@@ -52,6 +77,9 @@ TEST_OIIO_MODULE := $(BUILD)/tests/oiio.so
 
 EXP_SRC := $(wildcard experiments/*.c)
 EXP_BIN := $(patsubst experiments/%.c,$(BIN)/%,$(EXP_SRC))
+# Kept after linking: make would otherwise delete them as intermediates of the first build, and
+# the next build would recompile and relink (and, with PGO, retrain).
+.SECONDARY: $(patsubst %,$(BUILD)/%.o,$(EXP_SRC))
 
 .PHONY: all deps test test-fast test-san check bench clean help
 SHELL := /bin/bash
@@ -60,13 +88,24 @@ all: $(LIBCORE) $(OIIO_MODULE) $(EXP_BIN) $(TEST_BIN) $(TEST_OIIO_MODULE)
 deps:
 	@bash scripts/install-deps.sh
 
-$(BUILD)/%.c.o: %.c
+$(BUILD)/%.c.o: %.c $(PGO_STAMP)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(PGO_CFLAGS) -c $< -o $@
 
 $(BUILD)/%.cpp.o: %.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
+
+# The sub-make brings the instrumented renderer up to date; only when it changed is it retrained
+# and the stamp touched, which recompiles every release object against the new profiles.
+.PHONY: FORCE
+build/pgo.stamp: FORCE
+	@$(MAKE) --no-print-directory PGO_STAGE=gen build/pgo-gen/bin/render
+	@if [ ! -e $@ ] || [ build/pgo-gen/bin/render -nt $@ ]; then \
+	  set -e; rm -rf $(PGO_DIR); mkdir -p $(PGO_DIR); \
+	  echo "training the profile-guided build (scripts/pgo-train.sh)"; \
+	  bash scripts/pgo-train.sh build/pgo-gen/bin/render build/pgo-gen/train; \
+	  touch $@; fi
 
 $(LIBCORE): $(CORE_OBJ)
 	@rm -f $@
