@@ -14,6 +14,8 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
     v->tri = pr->kind == PRIM_SPHERE ? -1 : h->tri;
     v->b1 = h->b1;
     v->b2 = h->b2;
+    v->bc.b = pr->bsdf >= 0 && sc->bsdfs[pr->bsdf].type != BSDF_NULL ? &sc->bsdfs[pr->bsdf] : NULL;
+    const struct texture *tex = v->bc.b ? v->bc.b->albedo_tex : NULL;
     vec3 ns;
     double uv[2] = {0, 0};
     if (pr->kind == PRIM_SPHERE) {
@@ -33,15 +35,14 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
             if (vlen2(n) > 0) ns = vnorm(n);
             if (vdot(ns, v->ng) < 0) ns = vneg(ns);
         }
-        if (pr->uv)
+        if (pr->uv && tex) /* only textures read them */
             for (int c = 0; c < 2; c++)
                 uv[c] = b0 * pr->uv[2 * t[0] + c] + h->b1 * pr->uv[2 * t[1] + c] + h->b2 * pr->uv[2 * t[2] + c];
     }
     v->wi = vneg(d);
     v->front = vdot(v->ng, v->wi) > 0;
-    v->bc.b = pr->bsdf >= 0 && sc->bsdfs[pr->bsdf].type != BSDF_NULL ? &sc->bsdfs[pr->bsdf] : NULL;
     v->bc.albedo = v->bc.b ? v->bc.b->albedo : v3s(0);
-    if (v->bc.b && v->bc.b->albedo_tex) v->bc.albedo = texture_lookup(v->bc.b->albedo_tex, uv[0], uv[1]);
+    if (tex) v->bc.albedo = texture_lookup(tex, uv[0], uv[1]);
     /* Two-sided shading: opaque surfaces seen from the back shade as if seen from the front. */
     v->flipped = false;
     if (!v->front && v->bc.b && sc->two_sided_shading && !bsdf_ops_for(v->bc.b->type)->transmissive) {

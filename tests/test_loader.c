@@ -2,8 +2,10 @@
  * meshes load, and every malformed input in tests/data/bad gives its one-line message. */
 #include <criterion/criterion.h>
 
+#include "accel.h"
 #include "camera.h"
 #include "image.h"
+#include "path.h"
 #include "scene.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -376,6 +378,42 @@ Test(loader, textures_and_environment, .init = mk_tmp, .fini = rm_tmp)
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) cr_assert(fabs(id.m[i][j] - (i == j)) < 1e-12);
     scene_model_free(s);
+}
+
+/* A hit reads the albedo texture at Tungsten's quad uv = (a, 1 - b), in either of the quad's two
+ * triangles: rays straight down onto the unit quad in the xz-plane, whose corner (a, b) = (0, 0)
+ * is (-0.5, 0, -0.5). */
+Test(loader, textured_hits_read_the_texel_under_them, .init = mk_tmp, .fini = rm_tmp)
+{
+    struct image *im = img_create(2, 2); /* top row red, green; bottom row blue, white */
+    img_add(im, 0, 0, v3(1, 0, 0));
+    img_add(im, 1, 0, v3(0, 1, 0));
+    img_add(im, 0, 1, v3(0, 0, 1));
+    img_add(im, 1, 1, v3(1, 1, 1));
+    char path[512], err[512] = "";
+    snprintf(path, sizeof path, "%s/t.exr", tmpdir);
+    cr_assert(img_write_exr(im, 1.0, path, err, sizeof err), "%s", err);
+    img_destroy(im);
+    scene_model_free(load_tmp_scene("{\"type\": \"quad\", \"bsdf\": {\"type\": \"lambert\", \"albedo\": \"t.exr\"}}"));
+    snprintf(path, sizeof path, "%s/scene.json", tmpdir);
+    struct scene *s = scene_load(path, err, sizeof err);
+    cr_assert(s, "%s", err);
+    static const struct { double x, z; rgb texel; } cases[] = {
+        {-0.25, 0.25, {0, 0, 1}}, /* (a, b) = (0.25, 0.75): uv = (0.25, 0.25), bottom left */
+        {0.25, -0.25, {0, 1, 0}}, /* (0.75, 0.25): uv = (0.75, 0.75), top right */
+        {-0.25, -0.25, {1, 0, 0}}, /* (0.25, 0.25): uv = (0.25, 0.75), top left */
+    };
+    for (int i = 0; i < 3; i++) {
+        vec3 o = v3(cases[i].x, 1, cases[i].z), d = v3(0, -1, 0);
+        struct hit h;
+        cr_assert(accel_intersect(s->accel, o, d, 0, INFINITY, &h));
+        struct vertex v;
+        surface_from_hit(s, o, d, &h, &v);
+        cr_assert(near3(v.p, v3(cases[i].x, 0, cases[i].z), 1e-6));
+        cr_assert(near3(v.bc.albedo, cases[i].texel, 1e-6), "case %d: albedo (%g %g %g)", i, v.bc.albedo.x,
+                  v.bc.albedo.y, v.bc.albedo.z);
+    }
+    scene_free(s);
 }
 
 /* Every prefix of a valid scene either loads or fails with a message; none crashes or leaks. */
