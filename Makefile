@@ -22,8 +22,8 @@ else
   endif
   # Profile-guided optimisation: bin/render is first built instrumented under build/pgo-gen/ and run
   # on scripts/pgo-train.sh's renders; the release objects are then compiled with those profiles.
-  # With -O3, 5-6 % on PT and MMLT, images bit-identical (the profile steers inlining, layout and
-  # unrolling, never floating-point evaluation). Code the training does not reach is compiled as
+  # With -O3, 4-12 % on every estimator (README), images bit-identical (the profile steers inlining,
+  # layout and unrolling, never floating-point evaluation). Code the training does not reach is compiled as
   # without a profile (-fprofile-partial-training). `make PGO=0` skips it: faster edit-build cycles.
   # Both stages name a source's profile after the source itself (-dumpbase): GCC keys the
   # profiles of static functions by that name, and would not match them across two object paths.
@@ -197,5 +197,6 @@ help:
 	@echo "make check      regression-check every statistic against results/baselines/"
 	@echo "make bench      throughput figures"
 	@echo "SCALE=quick|paper selects experiment sizes (default quick)"
+	@echo "PGO=0, LTO=0    build without profile-guided / link-time optimisation (after make clean)"
 
 -include $(CORE_OBJ:.o=.d) $(BUILD)/core/oiio.cpp.d $(TEST_OBJ:.o=.d) $(patsubst %,$(BUILD)/%.d,$(EXP_SRC))
