@@ -10,9 +10,12 @@
  *   light sample at z_i:  1 / (1 + p_bsdf / p_light), same measures.
  * For the environment the origin disc of BDPT's emitter vertex plays no part: only directions.
  *
- * Random numbers are drawn as before (the whole camera walk first, then the light sample at camera
- * vertex i from emitter-stream block i), so images match the generic BDPT-machinery version up to
- * rounding. That order is why the walk is stored and the contributions are added in a second pass. */
+ * One pass: each vertex's emission hit and light sample are evaluated as the walk reaches it, so
+ * no vertex is stored. The numbers come from BDPT's blocks (camera block i for the BSDF sample at
+ * vertex i, emitter block i for its light sample): fed the same number in every dimension (a
+ * replayed vector), the estimator equals the BDPT machinery restricted to s <= 1 sample for
+ * sample (tests/test_pt_twin.c). A sequential sampler hands the numbers out in a different order
+ * than BDPT's walk-first one, which changes which numbers land where, not their distribution. */
 #include "camera.h"
 #include "emitter.h"
 #include "integrator.h"
@@ -28,7 +31,7 @@ void splat_checked(struct image *img, struct scratch *w, double px, double py, r
 
 struct pt_vertex {
     struct vertex v;            /* kind, p, ng, sh, front, prim, bc, wi (world); VK_ENV: wi = -direction */
-    const struct bsdf_ops *ops; /* NULL: no scattering, or vertices where no light sample is taken */
+    const struct bsdf_ops *ops; /* for the light sample; set only where one is taken */
     vec3 wi;                    /* v.wi in the shading frame */
     rgb beta;                   /* throughput arriving at the vertex */
     double pdf_sa;              /* solid-angle density of the direction that reached it */
@@ -36,58 +39,6 @@ struct pt_vertex {
     double dist2;               /* squared length of that segment */
     double eps;                 /* ray_eps(v.p) */
 };
-
-/* The camera walk, as walk_camera draws it; returns the vertex count including the camera. */
-static int walk(const struct path_ctx *pc, struct sampler *s, struct pt_vertex *z, double *px, double *py)
-{
-    const struct scene *sc = pc->sc;
-    int max_verts = pc->max_length + 1;
-    sampler_begin(s, STREAM_CAMERA, 0);
-    vec3 o = sc->cam.pos, d = camera_sample_dir(&sc->cam, s, px, py, NULL);
-    double eps = 0, pdf_sa = 0;
-    bool after_delta = true;
-    rgb beta = v3s(1);
-    int n = 1;
-    while (n < max_verts) {
-        struct pt_vertex *cur = &z[n];
-        cur->ops = NULL;
-        cur->beta = beta;
-        cur->pdf_sa = pdf_sa;
-        cur->after_delta = after_delta;
-        struct hit h;
-        if (!accel_intersect(sc->accel, o, d, eps, INFINITY, &h)) {
-            if (sc->env_prim >= 0) {
-                cur->v.kind = VK_ENV;
-                cur->v.wi = vneg(d);
-                n++;
-            }
-            break;
-        }
-        surface_from_hit(sc, o, d, &h, &cur->v);
-        cur->dist2 = vlen2(vsub(cur->v.p, o));
-        n++;
-        /* The last vertex takes no light sample (it would exceed max_length). */
-        if (!cur->v.bc.b || n >= max_verts) break;
-        const struct bsdf_ops *ops = bsdf_ops_for(cur->v.bc.b->type);
-        cur->wi = frame_to_local(&cur->v.sh, cur->v.wi);
-        cur->eps = ray_eps(cur->v.p);
-        cur->ops = ops->delta_only ? NULL : ops;
-        sampler_begin(s, STREAM_CAMERA, n - 1);
-        struct bsdf_sample bs;
-        if (!ops->sample(&cur->v.bc, cur->wi, s, TRANSPORT_RADIANCE, &bs)) break;
-        vec3 wo = frame_to_world(&cur->v.sh, bs.wo);
-        /* A shading normal may disagree with the geometry: such directions would leak light. */
-        if ((vdot(wo, cur->v.ng) > 0) != (bs.wo.z > 0)) break;
-        beta = vmul(beta, bs.weight);
-        if (vzero(beta) || !vfinite(beta)) break;
-        o = cur->v.p;
-        eps = cur->eps;
-        d = wo;
-        pdf_sa = bs.pdf;
-        after_delta = bs.delta;
-    }
-    return n;
-}
 
 /* Emitted radiance reaching the camera through z, MIS-weighted against light sampling. */
 static rgb emission_hit(const struct scene *sc, const struct pt_vertex *z)
@@ -159,15 +110,49 @@ static void light_sample(const struct scene *sc, struct sampler *s, const struct
 void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct image *img)
 {
     const struct scene *sc = pc->sc;
-    struct pt_vertex z[MAX_SUBPATH_VERTS];
+    int max_verts = pc->max_length + 1;
     double px, py;
-    int n = walk(pc, s, z, &px, &py);
+    sampler_begin(s, STREAM_CAMERA, 0);
+    vec3 o = sc->cam.pos, d = camera_sample_dir(&sc->cam, s, &px, &py, NULL);
+    double eps = 0;
+    struct pt_vertex z = {.beta = v3s(1), .pdf_sa = 0, .after_delta = true};
     rgb sum = v3s(0);
-    for (int i = 1; i < n; i++) {
-        sum = vadd(sum, emission_hit(sc, &z[i]));
-        if (!z[i].ops) continue;
-        sampler_begin(s, STREAM_EMITTER, i);
-        light_sample(sc, s, &z[i], &sum);
+    for (int i = 1; i < max_verts; i++) { /* z becomes vertex i */
+        struct hit h;
+        if (!accel_intersect(sc->accel, o, d, eps, INFINITY, &h)) {
+            if (sc->env_prim >= 0) {
+                z.v.kind = VK_ENV;
+                z.v.wi = vneg(d);
+                sum = vadd(sum, emission_hit(sc, &z));
+            }
+            break;
+        }
+        surface_from_hit(sc, o, d, &h, &z.v);
+        z.dist2 = vlen2(vsub(z.v.p, o));
+        sum = vadd(sum, emission_hit(sc, &z));
+        /* The last vertex takes no light sample (it would exceed max_length). */
+        if (!z.v.bc.b || i + 1 >= max_verts) break;
+        const struct bsdf_ops *ops = bsdf_ops_for(z.v.bc.b->type);
+        z.wi = frame_to_local(&z.v.sh, z.v.wi);
+        z.eps = ray_eps(z.v.p);
+        if (!ops->delta_only) {
+            z.ops = ops;
+            sampler_begin(s, STREAM_EMITTER, i);
+            light_sample(sc, s, &z, &sum);
+        }
+        sampler_begin(s, STREAM_CAMERA, i);
+        struct bsdf_sample bs;
+        if (!ops->sample(&z.v.bc, z.wi, s, TRANSPORT_RADIANCE, &bs)) break;
+        vec3 wo = frame_to_world(&z.v.sh, bs.wo);
+        /* A shading normal may disagree with the geometry: such directions would leak light. */
+        if ((vdot(wo, z.v.ng) > 0) != (bs.wo.z > 0)) break;
+        z.beta = vmul(z.beta, bs.weight);
+        if (vzero(z.beta) || !vfinite(z.beta)) break;
+        o = z.v.p;
+        eps = z.eps;
+        d = wo;
+        z.pdf_sa = bs.pdf;
+        z.after_delta = bs.delta;
     }
     splat_checked(img, w, px, py, sum);
 }

@@ -1,10 +1,13 @@
 /* core/pt.c is a dedicated loop that must stay the BDPT machinery restricted to s <= 1: the same
- * walk, the same random numbers in the same order, the same balance weights (connect_st with
+ * walk, the same random number in every dimension, the same balance weights (connect_st with
  * max_s = 1). This test rebuilds that estimator from walk_camera, sample_emitter_vertex and
  * connect_st and demands the same value for every camera sample, so any drift between the twins
- * (a light-pick probability, a density measure, a number drawn out of order) fails exactly, on
- * every committed scene, whatever its effect on the image mean. Deterministic: no significance
- * level; the tolerance is rounding (1e-9 relative per pixel). */
+ * (a light-pick probability, a density measure, a number read from the wrong dimension) fails
+ * exactly, on every committed scene, whatever its effect on the image mean. Both read one replayed
+ * vector per sample: pt.c draws in a different order from BDPT's walk-first one, and the vector
+ * makes the order irrelevant while the dimension layout still has to match. Dimensions beyond the
+ * blocks a path of max_length can use are NAN, and reading one aborts. Deterministic: no
+ * significance level; the tolerance is rounding (1e-9 relative per pixel). */
 #include <criterion/criterion.h>
 
 #include "connect.h"
@@ -41,13 +44,20 @@ Test(pt_twin, equals_bdpt_machinery_restricted_to_s_le_1, .timeout = 120)
         struct path_ctx pc = {.sc = sc, .max_length = 8};
         int W = sc->cam.width, H = sc->cam.height;
         struct image *a = img_create(W, H), *b = img_create(W, H);
-        struct sampler_independent ind;
+        static double u[STREAM_COUNT][STREAM_DIMS];
+        for (int st = 0; st < STREAM_COUNT; st++)
+            for (int k = 0; k < STREAM_DIMS; k++) u[st][k] = NAN;
+        rng r;
+        rng_seed(&r, 5, 0);
         const int N = 50000;
         for (int i = 0; i < N; i++) {
-            sampler_independent_init(&ind, 5, (uint64_t)i);
-            pt_sample(&pc, &ind.base, &w, a);
-            sampler_independent_init(&ind, 5, (uint64_t)i);
-            generic_pt(&pc, &ind.base, &w, b);
+            for (int st = STREAM_CAMERA; st <= STREAM_EMITTER; st++)
+                for (int k = 0; k < (pc.max_length + 1) * SAMPLER_BLOCK; k++) u[st][k] = rng_uniform(&r);
+            struct sampler_replay rp;
+            sampler_replay_init(&rp, u);
+            pt_sample(&pc, &rp.base, &w, a);
+            sampler_replay_init(&rp, u);
+            generic_pt(&pc, &rp.base, &w, b);
         }
         double worst = 0, total = 0;
         for (long i = 0; i < 3L * W * H; i++) {
