@@ -31,7 +31,6 @@ void splat_checked(struct image *img, struct scratch *w, double px, double py, r
 
 struct pt_vertex {
     struct vertex v;            /* kind, p, ng, sh, front, prim, bc, wi (world); VK_ENV: wi = -direction */
-    const struct bsdf_ops *ops; /* for the light sample; set only where one is taken */
     vec3 wi;                    /* v.wi in the shading frame */
     rgb beta;                   /* throughput arriving at the vertex */
     double pdf_sa;              /* solid-angle density of the direction that reached it */
@@ -61,10 +60,12 @@ static rgb emission_hit(const struct scene *sc, const struct pt_vertex *z)
     return vscale(f, pb / (pb + pl));
 }
 
-/* Adds the MIS-weighted light sample at z (from the current emitter-stream block) to *sum.
+/* Adds the MIS-weighted light sample at z, whose BSDF's operations are ops, to *sum (numbers from
+ * the current emitter-stream block).
  * Contribution times weight, f G / p_light * p_light / (p_light + p_bsdf), is
  * f G / (p_light + p_bsdf): one division instead of three. */
-static void light_sample(const struct scene *sc, struct sampler *s, const struct pt_vertex *z, rgb *sum)
+static void light_sample(const struct scene *sc, struct sampler *s, const struct pt_vertex *z,
+                         const struct bsdf_ops *ops, rgb *sum)
 {
     double pick;
     int prim = emitter_pick(sc, s, &pick);
@@ -79,9 +80,9 @@ static void light_sample(const struct scene *sc, struct sampler *s, const struct
         sampler_next(s, DIM_CONTINUOUS);
         sampler_next(s, DIM_CONTINUOUS);
         vec3 wo = frame_to_local(&v->sh, d);
-        rgb f = vmul(vmul(env_radiance(sc, d), z->ops->eval(&v->bc, z->wi, wo, TRANSPORT_RADIANCE)), z->beta);
+        rgb f = vmul(vmul(env_radiance(sc, d), ops->eval(&v->bc, z->wi, wo, TRANSPORT_RADIANCE)), z->beta);
         if (vzero(f) || accel_occluded(sc->accel, v->p, d, z->eps, INFINITY)) return;
-        double pb = z->ops->pdf(&v->bc, z->wi, wo);
+        double pb = ops->pdf(&v->bc, z->wi, wo);
         *sum = vmad(*sum, f, fabs(wo.z) / (pick * pdf + pb));
         return;
     }
@@ -97,13 +98,13 @@ static void light_sample(const struct scene *sc, struct sampler *s, const struct
     double dist = sqrt(dist2);
     d = vscale(d, 1.0 / dist);
     vec3 wo = frame_to_local(&v->sh, vneg(d));
-    rgb f = vmul(vmul(le, z->ops->eval(&v->bc, z->wi, wo, TRANSPORT_RADIANCE)), z->beta);
+    rgb f = vmul(vmul(le, ops->eval(&v->bc, z->wi, wo, TRANSPORT_RADIANCE)), z->beta);
     if (vzero(f)) return;
     double ey = ray_eps(pos.p);
     if (dist > ey + z->eps && accel_occluded(sc->accel, pos.p, d, ey, dist - z->eps)) return;
     /* Both densities as area densities at the light, times dist2. */
     double cos_y = fabs(vdot(pos.n, d));
-    double pb = z->ops->pdf(&v->bc, z->wi, wo) * cos_y;
+    double pb = ops->pdf(&v->bc, z->wi, wo) * cos_y;
     *sum = vmad(*sum, f, cos_y * fabs(wo.z) / (pick * pos.pdf * dist2 + pb));
 }
 
@@ -136,9 +137,8 @@ void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, 
         z.wi = frame_to_local(&z.v.sh, z.v.wi);
         z.eps = ray_eps(z.v.p);
         if (!ops->delta_only) {
-            z.ops = ops;
             sampler_begin(s, STREAM_EMITTER, i);
-            light_sample(sc, s, &z, &sum);
+            light_sample(sc, s, &z, ops, &sum);
         }
         sampler_begin(s, STREAM_CAMERA, i);
         struct bsdf_sample bs;
