@@ -89,6 +89,10 @@ void accel_free(struct accel *a)
     free(a);
 }
 
+static _Thread_local struct ray_counts counts;
+
+struct ray_counts accel_ray_counts(void) { return counts; }
+
 static void make_ray(struct RTCRay *r, vec3 o, vec3 d, double tmin, double tmax)
 {
     r->org_x = (float)o.x;
@@ -114,6 +118,7 @@ bool accel_intersect(const struct accel *a, vec3 o, vec3 d, double tmin, double 
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(a->scene, &ctx, &rh);
+    counts.closest++;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     h->t = rh.ray.tfar;
     h->prim = (int)rh.hit.geomID;
@@ -130,5 +135,6 @@ bool accel_occluded(const struct accel *a, vec3 o, vec3 d, double tmin, double t
     struct RTCRay r __attribute__((aligned(16)));
     make_ray(&r, o, d, tmin, tmax);
     rtcOccluded1(a->scene, &ctx, &r);
+    counts.shadow++;
     return r.tfar < 0; /* Embree sets tfar = -inf on a hit */
 }

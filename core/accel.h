@@ -17,4 +17,12 @@ bool accel_intersect(const struct accel *a, vec3 o, vec3 d, double tmin, double 
 /* Any hit with t in (tmin, tmax). */
 bool accel_occluded(const struct accel *a, vec3 o, vec3 d, double tmin, double tmax);
 
+/* Rays the calling thread has cast so far, by query kind: what bin/bench divides by the samples of
+ * a 1-thread run (its worker is the calling thread). Per thread, so counting costs the hot paths
+ * one increment and no cache-line sharing. */
+struct ray_counts {
+    unsigned long long closest, shadow;
+};
+struct ray_counts accel_ray_counts(void);
+
 #endif

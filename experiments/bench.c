@@ -38,9 +38,10 @@ static double median(double *v, int n)
 
 /* Random rays from points inside the scene's box in uniform directions: incoherent by design.
  * They are generated before the clock starts (8192 of them, 0.4 MB, reused in turn) so that the
- * figure is Embree's alone. */
+ * figure is Embree's alone. Closest-hit queries, or with `shadow` any-hit queries of the same rays
+ * (unbounded, so they stop at the first surface they cross). */
 enum { NRAYS = 1 << 13 };
-static double ray_rate(const struct scene *sc, double seconds)
+static double ray_rate(const struct scene *sc, double seconds, bool shadow)
 {
     static vec3 org[NRAYS], dir[NRAYS];
     rng r;
@@ -55,7 +56,8 @@ static double ray_rate(const struct scene *sc, double seconds)
     while (now_seconds() - t0 < seconds) {
         for (int i = 0; i < NRAYS; i++) {
             struct hit h;
-            hits += accel_intersect(sc->accel, org[i], dir[i], 0, INFINITY, &h);
+            hits += shadow ? accel_occluded(sc->accel, org[i], dir[i], 0, INFINITY)
+                           : accel_intersect(sc->accel, org[i], dir[i], 0, INFINITY, &h);
         }
         n += NRAYS;
     }
@@ -63,14 +65,62 @@ static double ray_rate(const struct scene *sc, double seconds)
     return n / (now_seconds() - t0);
 }
 
-static double sample_rate(const struct scene *sc, enum method m, int threads, int K, double seconds)
+/* Rays per sample (or mutation), from the calling thread's counters across a 1-thread run. */
+struct rays {
+    double closest, shadow;
+};
+
+static struct rays rays_between(struct ray_counts a, struct ray_counts b, double n)
+{
+    return (struct rays){(double)(b.closest - a.closest) / n, (double)(b.shadow - a.shadow) / n};
+}
+
+/* `per`, when not NULL (1 thread only: the calling thread is then the only worker), receives the
+ * rays per sample. */
+static double sample_rate(const struct scene *sc, enum method m, int threads, int K, double seconds, struct rays *per)
 {
     struct render_opts o = {.method = m, .spp = 1, .seed = 1, .threads = threads, .max_length = K};
     struct render_stats st;
     img_destroy(render_mc(sc, &o, &st));
     o.spp = (int)fmax(1, seconds / st.seconds);
+    struct ray_counts c0 = accel_ray_counts();
     img_destroy(render_mc(sc, &o, &st));
+    if (per) *per = rays_between(c0, accel_ray_counts(), (double)st.samples);
     return st.samples / st.seconds;
+}
+
+/* Mutations per second of the chains alone (the seed pass is excluded), and with `per` (1 thread)
+ * the rays per mutation: the rays of a run without mutations, the same seed pass and chain starts,
+ * are subtracted. */
+static double mutation_rate(const struct scene *sc, enum mlt_method m, int threads, int K, double seconds,
+                            struct rays *per)
+{
+    struct mlt_opts o = {.method = m, .p_large = 0.1, .seconds = seconds, .seed_paths = 20000, .seed = 1,
+                         .threads = threads, .max_length = K};
+    pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+    struct mlt_result r;
+    char err[256];
+    struct ray_counts c0 = accel_ray_counts(), seed = c0;
+    if (per) {
+        struct mlt_opts none = o;
+        none.seconds = 0;
+        none.mutations = 0;
+        if (!mlt_render(sc, &none, &r, err, sizeof err)) return 0;
+        mlt_result_free(&r);
+        seed = accel_ray_counts();
+    }
+    struct ray_counts c1 = accel_ray_counts();
+    if (!mlt_render(sc, &o, &r, err, sizeof err)) return 0;
+    double rate = r.mutations / r.seconds;
+    if (per) {
+        struct ray_counts c2 = accel_ray_counts();
+        /* chain rays = (c2 - c1) - (seed - c0) */
+        c2.closest -= seed.closest - c0.closest;
+        c2.shadow -= seed.shadow - c0.shadow;
+        *per = rays_between(c1, c2, (double)r.mutations);
+    }
+    mlt_result_free(&r);
+    return rate;
 }
 
 /* Peak memory once an image has been written: the first write opens the OpenImageIO module, whose
@@ -95,58 +145,77 @@ static double image_io_peak_mb(const struct scene *sc)
     return ok ? ru.ru_maxrss / 1024.0 : NAN;
 }
 
-/* Mutations per second of the chains alone (the seed pass is excluded). */
-static double mutation_rate(const struct scene *sc, enum mlt_method m, int threads, int K, double seconds)
+enum { PT, BDPT, PSSMLT, MMLT, NM };
+static const char *method_names[NM] = {"pt", "bdpt", "pssmlt", "mmlt"};
+
+struct figures {
+    double closest_rate, shadow_rate; /* Embree's random rays/s */
+    double rate[NM][2];               /* samples or mutations/s on 1 and 2 threads */
+    struct rays per[NM];              /* on 1 thread */
+};
+
+static double method_rate(const struct scene *sc, int m, int threads, int K, double seconds, struct rays *per)
 {
-    struct mlt_opts o = {.method = m, .p_large = 0.1, .seconds = seconds, .seed_paths = 20000, .seed = 1,
-                         .threads = threads, .max_length = K};
-    pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
-    struct mlt_result r;
-    char err[256];
-    if (!mlt_render(sc, &o, &r, err, sizeof err)) return 0;
-    double rate = r.mutations / r.seconds;
-    mlt_result_free(&r);
-    return rate;
+    switch (m) {
+    case PT: return sample_rate(sc, METHOD_PT, threads, K, seconds, per);
+    case BDPT: return sample_rate(sc, METHOD_BDPT, threads, K, seconds, per);
+    case PSSMLT: return mutation_rate(sc, MLT_PSSMLT, threads, K, seconds, per);
+    default: return mutation_rate(sc, MLT_MMLT, threads, K, seconds, per);
+    }
 }
 
-enum { NV = 9 }; /* rays; PT, BDPT, PSSMLT, MMLT on 1 and 2 threads */
-
-/* Medians over `runs` of every figure; with `one_thread`, the 2-thread ones are left at 0. */
-static void measure(const struct scene *sc, int runs, double seconds, int K, bool one_thread, double m[NV])
+/* Medians over `runs` of every figure; with `one_thread`, the 2-thread rates are left at 0. */
+static void measure(const struct scene *sc, int runs, double seconds, int K, bool one_thread, struct figures *f)
 {
+    enum { NV = 2 + 4 * NM };
     double v[NV][99] = {{0}};
     for (int r = 0; r < runs; r++) {
-        v[0][r] = ray_rate(sc, seconds);
-        v[1][r] = sample_rate(sc, METHOD_PT, 1, K, seconds);
-        v[3][r] = sample_rate(sc, METHOD_BDPT, 1, K, seconds);
-        v[5][r] = mutation_rate(sc, MLT_PSSMLT, 1, K, seconds);
-        v[7][r] = mutation_rate(sc, MLT_MMLT, 1, K, seconds);
+        v[0][r] = ray_rate(sc, seconds, false);
+        v[1][r] = ray_rate(sc, seconds, true);
+        for (int m = 0; m < NM; m++) {
+            struct rays per;
+            v[2 + m][r] = method_rate(sc, m, 1, K, seconds, &per);
+            v[2 + 2 * NM + m][r] = per.closest;
+            v[2 + 3 * NM + m][r] = per.shadow;
+        }
         if (one_thread) continue;
-        v[2][r] = sample_rate(sc, METHOD_PT, 2, K, seconds);
-        v[4][r] = sample_rate(sc, METHOD_BDPT, 2, K, seconds);
-        v[6][r] = mutation_rate(sc, MLT_PSSMLT, 2, K, seconds);
-        v[8][r] = mutation_rate(sc, MLT_MMLT, 2, K, seconds);
+        for (int m = 0; m < NM; m++) v[2 + NM + m][r] = method_rate(sc, m, 2, K, seconds, NULL);
     }
-    for (int i = 0; i < NV; i++) m[i] = median(v[i], runs);
+    f->closest_rate = median(v[0], runs);
+    f->shadow_rate = median(v[1], runs);
+    for (int m = 0; m < NM; m++) {
+        f->rate[m][0] = median(v[2 + m], runs);
+        f->rate[m][1] = median(v[2 + NM + m], runs);
+        f->per[m] = (struct rays){median(v[2 + 2 * NM + m], runs), median(v[2 + 3 * NM + m], runs)};
+    }
 }
 
 static void report(const char *path, const struct scene *sc, int runs, double seconds, int K)
 {
-    double m[NV];
-    measure(sc, runs, seconds, K, false, m);
+    struct figures f;
+    measure(sc, runs, seconds, K, false, &f);
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     double io_mb = image_io_peak_mb(sc);
+    const char *unit[NM] = {"samples", "samples", "mutations", "mutations"};
     printf("# %s at 320x180, max length %d, median of %d runs\n", path, K, runs);
-    printf("%-34s %12.0f\n", "embree incoherent rays/s (1 thread)", m[0]);
-    printf("%-34s %12.0f\n", "pt samples/s (1 thread)", m[1]);
-    printf("%-34s %12.0f   speed-up %.2fx\n", "pt samples/s (2 threads)", m[2], m[2] / m[1]);
-    printf("%-34s %12.0f\n", "bdpt samples/s (1 thread)", m[3]);
-    printf("%-34s %12.0f   speed-up %.2fx\n", "bdpt samples/s (2 threads)", m[4], m[4] / m[3]);
-    printf("%-34s %12.0f   per mutation vs bdpt per sample %.2fx\n", "pssmlt mutations/s (1 thread)", m[5], m[5] / m[3]);
-    printf("%-34s %12.0f   speed-up %.2fx\n", "pssmlt mutations/s (2 threads)", m[6], m[6] / m[5]);
-    printf("%-34s %12.0f\n", "mmlt mutations/s (1 thread)", m[7]);
-    printf("%-34s %12.0f   speed-up %.2fx\n", "mmlt mutations/s (2 threads)", m[8], m[8] / m[7]);
+    printf("%-34s %12.0f\n", "embree incoherent rays/s (1 thread)", f.closest_rate);
+    printf("%-34s %12.0f   any hit, same rays\n", "  as shadow rays", f.shadow_rate);
+    for (int m = 0; m < NM; m++) {
+        char label[64];
+        snprintf(label, sizeof label, "%s %s/s (1 thread)", method_names[m], unit[m]);
+        printf("%-34s %12.0f", label, f.rate[m][0]);
+        if (m == PSSMLT) printf("   per mutation vs bdpt per sample %.2fx", f.rate[m][0] / f.rate[BDPT][0]);
+        snprintf(label, sizeof label, "%s %s/s (2 threads)", method_names[m], unit[m]);
+        printf("\n%-34s %12.0f   speed-up %.2fx\n", label, f.rate[m][1], f.rate[m][1] / f.rate[m][0]);
+    }
+    /* What the rays alone would take at the random-ray rates: how far the rest could ever go. */
+    printf("%-34s %8s %8s   %s\n", "rays per sample or mutation", "closest", "shadow", "Embree time at the rates above");
+    for (int m = 0; m < NM; m++) {
+        double us = 1e6 / f.rate[m][0], ray_us = 1e6 * (f.per[m].closest / f.closest_rate + f.per[m].shadow / f.shadow_rate);
+        printf("  %-32s %8.2f %8.2f   %.3f of %.3f us (%.0f %%)\n", method_names[m], f.per[m].closest, f.per[m].shadow,
+               ray_us, us, 100 * ray_us / us);
+    }
     printf("%-34s %12.1f\n", "peak resident memory (MB)", ru.ru_maxrss / 1024.0);
     printf("%-34s %12.1f   (OpenImageIO loaded)\n", "  after writing EXR + PNG (MB)", io_mb);
 }
@@ -158,10 +227,10 @@ static void table(char **paths, struct scene **sc, int n, int runs, double secon
     printf("| scene | Embree rays/s | PT samples/s | BDPT samples/s | PSSMLT mutations/s | MMLT mutations/s |\n");
     printf("| --- | ---: | ---: | ---: | ---: | ---: |\n");
     for (int i = 0; i < n; i++) {
-        double m[NV];
-        measure(sc[i], runs, seconds, K, true, m);
-        printf("| %s | %.1f M | %.2f M | %.0f k | %.0f k | %.2f M |\n", paths[i], m[0] / 1e6, m[1] / 1e6, m[3] / 1e3,
-               m[5] / 1e3, m[7] / 1e6);
+        struct figures f;
+        measure(sc[i], runs, seconds, K, true, &f);
+        printf("| %s | %.1f M | %.2f M | %.0f k | %.0f k | %.2f M |\n", paths[i], f.closest_rate / 1e6, f.rate[PT][0] / 1e6,
+               f.rate[BDPT][0] / 1e3, f.rate[PSSMLT][0] / 1e3, f.rate[MMLT][0] / 1e6);
         fflush(stdout);
     }
 }

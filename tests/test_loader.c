@@ -7,6 +7,7 @@
 #include "image.h"
 #include "path.h"
 #include "scene.h"
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -79,6 +80,35 @@ Test(loader, cornell_box)
     cr_assert(fabs(s->cam.tan_half_fov - tan(22.5 * M_PI / 180)) < EPS);
     cr_assert(near3(s->bbox_min, v3(-1, 0, -1), 1e-9) && near3(s->bbox_max, v3(1, 2, 1), 1e-9));
     scene_model_free(s);
+}
+
+/* bin/bench's rays per sample rest on these counters: every query of the calling thread counts,
+ * by kind, and another thread's queries do not. */
+static void *cast_three(void *sc)
+{
+    const struct scene *s = sc;
+    struct hit h;
+    for (int i = 0; i < 3; i++) accel_intersect(s->accel, v3(0, 1, 0), v3(0, -1, 0), 0, INFINITY, &h);
+    return NULL;
+}
+
+Test(loader, ray_counts_count_the_calling_threads_queries)
+{
+    char err[1024] = "";
+    struct scene *s = scene_load("scenes/cornell-box/scene.json", err, sizeof err);
+    cr_assert(s, "%s", err);
+    struct ray_counts a = accel_ray_counts();
+    struct hit h;
+    cr_assert(accel_intersect(s->accel, v3(0, 1, 0), v3(0, -1, 0), 0, INFINITY, &h));  /* floor */
+    cr_assert(!accel_intersect(s->accel, v3(0, 1, 3), v3(0, 0, 1), 0, INFINITY, &h));  /* out the open front */
+    cr_assert(accel_occluded(s->accel, v3(0, 1, 0), v3(0, -1, 0), 0, INFINITY));
+    pthread_t th;
+    cr_assert(pthread_create(&th, NULL, cast_three, s) == 0);
+    pthread_join(th, NULL);
+    struct ray_counts b = accel_ray_counts();
+    cr_assert_eq(b.closest - a.closest, 2);
+    cr_assert_eq(b.shadow - a.shadow, 1);
+    scene_free(s);
 }
 
 static void check_cube_outward(const struct prim *p, vec3 centre, double area)
