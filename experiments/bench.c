@@ -1,7 +1,8 @@
 /* bin/bench: throughput on a committed scene. Embree's raw incoherent ray rate, PT and BDPT camera
- * samples per second on one and two threads (320x180, max length 8 by default), the speed-up, and
- * peak memory with and without image output; or, given several scenes, a table of the 1-thread
- * figures. Numbers are medians over --runs repetitions. */
+ * samples and PSSMLT and MMLT mutations per second on one and two threads (320x180, max length 8
+ * by default), the speed-up, the rays each sample or mutation casts, and peak memory with and
+ * without image output; or, given several scenes, a table of the 1-thread figures. Numbers are
+ * medians over --runs repetitions. */
 #include "accel.h"
 #include "camera.h"
 #include "cli.h"
@@ -18,7 +19,8 @@
 static const char *usage =
     "usage: bench [SCENE.json ...] [--runs N] [--seconds S] [--max-length K]\n"
     "  Every scene is rendered at 320x180. One scene (default scenes/cornell-box/scene.json): Embree's\n"
-    "  ray rate, PT/BDPT samples/s and PSSMLT/MMLT mutations/s on 1 and 2 threads, peak memory.\n"
+    "  ray rate, PT/BDPT samples/s and PSSMLT/MMLT mutations/s on 1 and 2 threads, rays per sample\n"
+    "  or mutation and the time they take at Embree's rate, peak memory.\n"
     "  Several scenes: a Markdown table of the 1-thread figures, one row per scene.\n"
     "  --runs N      median of N runs of each figure (default 3)\n"
     "  --seconds S   length of each run (default 3)\n"
@@ -164,16 +166,17 @@ static double method_rate(const struct scene *sc, int m, int threads, int K, dou
     }
 }
 
-/* Medians over `runs` of every figure; with `one_thread`, the 2-thread rates are left at 0. */
+/* Medians over `runs` of every figure; with `one_thread` (the table), the 2-thread rates and the
+ * shadow-ray rate are left at 0. */
 static void measure(const struct scene *sc, int runs, double seconds, int K, bool one_thread, struct figures *f)
 {
     enum { NV = 2 + 4 * NM };
     double v[NV][99] = {{0}};
     for (int r = 0; r < runs; r++) {
         v[0][r] = ray_rate(sc, seconds, false);
-        v[1][r] = ray_rate(sc, seconds, true);
+        if (!one_thread) v[1][r] = ray_rate(sc, seconds, true); /* the table does not show it */
         for (int m = 0; m < NM; m++) {
-            struct rays per;
+            struct rays per = {0, 0}; /* stays 0 if a method fails (a scene without light) */
             v[2 + m][r] = method_rate(sc, m, 1, K, seconds, &per);
             v[2 + 2 * NM + m][r] = per.closest;
             v[2 + 3 * NM + m][r] = per.shadow;
