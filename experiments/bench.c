@@ -102,24 +102,23 @@ static double mutation_rate(const struct scene *sc, enum mlt_method m, int threa
     pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
     struct mlt_result r;
     char err[256];
-    struct ray_counts c0 = accel_ray_counts(), seed = c0;
+    /* start - before: the rays of the seed pass and chain starts alone */
+    struct ray_counts before = accel_ray_counts(), start = before;
     if (per) {
         struct mlt_opts none = o;
         none.seconds = 0;
         none.mutations = 0;
         if (!mlt_render(sc, &none, &r, err, sizeof err)) return 0;
         mlt_result_free(&r);
-        seed = accel_ray_counts();
+        start = accel_ray_counts();
     }
-    struct ray_counts c1 = accel_ray_counts();
     if (!mlt_render(sc, &o, &r, err, sizeof err)) return 0;
     double rate = r.mutations / r.seconds;
     if (per) {
-        struct ray_counts c2 = accel_ray_counts();
-        /* chain rays = (c2 - c1) - (seed - c0) */
-        c2.closest -= seed.closest - c0.closest;
-        c2.shadow -= seed.shadow - c0.shadow;
-        *per = rays_between(c1, c2, (double)r.mutations);
+        struct ray_counts end = accel_ray_counts();
+        end.closest -= start.closest - before.closest;
+        end.shadow -= start.shadow - before.shadow;
+        *per = rays_between(start, end, (double)r.mutations);
     }
     mlt_result_free(&r);
     return rate;
