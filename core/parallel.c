@@ -51,6 +51,60 @@ void parallel_run(int threads, void (*fn)(int tid, void *ctx), void *ctx)
     free(jobs);
 }
 
+void pass_barrier_init(struct pass_barrier *b, int threads, bool (*decide)(void *ctx), void *ctx)
+{
+    pthread_mutex_init(&b->lock, NULL);
+    pthread_cond_init(&b->wake, NULL);
+    b->threads = threads < 1 ? 1 : threads;
+    b->waiting = 0;
+    atomic_init(&b->generation, 0);
+    b->more = false;
+    b->decide = decide;
+    b->ctx = ctx;
+}
+
+void pass_barrier_destroy(struct pass_barrier *b)
+{
+    pthread_cond_destroy(&b->wake);
+    pthread_mutex_destroy(&b->lock);
+}
+
+static inline void cpu_relax(void)
+{
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+/* Spin iterations before sleeping: a few tens of microseconds, about the scatter of the threads'
+ * finishing times within a pass. */
+#define PASS_SPIN 2048
+
+bool pass_barrier_arrive(struct pass_barrier *b)
+{
+    pthread_mutex_lock(&b->lock);
+    unsigned gen = atomic_load_explicit(&b->generation, memory_order_relaxed);
+    if (++b->waiting == b->threads) {
+        b->waiting = 0;
+        b->more = b->decide(b->ctx);
+        bool more = b->more;
+        atomic_store_explicit(&b->generation, gen + 1, memory_order_release);
+        pthread_cond_broadcast(&b->wake);
+        pthread_mutex_unlock(&b->lock);
+        return more;
+    }
+    pthread_mutex_unlock(&b->lock);
+    for (int i = 0; i < PASS_SPIN; i++) {
+        if (atomic_load_explicit(&b->generation, memory_order_acquire) != gen) return b->more;
+        cpu_relax();
+    }
+    pthread_mutex_lock(&b->lock);
+    while (atomic_load_explicit(&b->generation, memory_order_relaxed) == gen) pthread_cond_wait(&b->wake, &b->lock);
+    bool more = b->more;
+    pthread_mutex_unlock(&b->lock);
+    return more;
+}
+
 void progress_init(struct progress *p, const char *label, long total, bool enabled)
 {
     p->label = label;

@@ -2,11 +2,30 @@
 #ifndef PARALLEL_H
 #define PARALLEL_H
 
+#include <pthread.h>
 #include <stdatomic.h>
 #include <stdbool.h>
 
 /* Runs fn(tid, ctx) on `threads` threads (tid 0 on the caller's thread) and joins them. */
 void parallel_run(int threads, void (*fn)(int tid, void *ctx), void *ctx);
+
+/* Where the threads of a run made of passes meet after each pass. The last to arrive calls
+ * decide(ctx), alone, which sets up the next pass and returns true, or returns false to end the
+ * run; every thread gets that answer. Threads that work in passes stay alive across them: starting
+ * new ones for every pass cost PT on a 64x36 image with 2 threads 5 % of its samples/s in the
+ * median run and a quarter in the worst of five. A waiting thread spins a little before it sleeps. */
+struct pass_barrier {
+    pthread_mutex_t lock;
+    pthread_cond_t wake;
+    int threads, waiting;
+    atomic_uint generation;
+    bool more;
+    bool (*decide)(void *ctx);
+    void *ctx;
+};
+void pass_barrier_init(struct pass_barrier *b, int threads, bool (*decide)(void *ctx), void *ctx);
+bool pass_barrier_arrive(struct pass_barrier *b);
+void pass_barrier_destroy(struct pass_barrier *b);
 
 /* Progress over `total` units; drawn only after one second and at most ten times a second. */
 struct progress {

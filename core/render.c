@@ -50,6 +50,10 @@ struct job {
     struct progress prog;
     int first, count; /* samples first .. first + count - 1 of every pixel */
     uint64_t key;     /* sample i of film cell c draws from stream c * key + i */
+    /* --time: passes of one sample per pixel until the budget */
+    struct pass_barrier passes;
+    int spp;          /* passes done */
+    double t0;
 };
 
 static void worker(int tid, void *p)
@@ -64,26 +68,41 @@ static void worker(int tid, void *p)
     int W = camera_film_width(&sc->cam), H = camera_film_height(&sc->cam);
     struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H};
     long done = 0;
-    /* Ctrl-C is honoured within a pixel (every 4096 samples), not only between rows: a row of a
-     * high-spp render can take minutes. */
-    bool stop = false;
-    for (int y = tid; y < H && !stop; y += o->threads) {
-        for (int x = 0; x < W && !stop; x++) {
-            s.x0 = x;
-            s.y0 = y;
-            for (int i = j->first; i < j->first + j->count; i++) {
-                if (((i - j->first) & 4095) == 0 && (stop = interrupted())) break;
-                rng_seed(&s.r, o->seed, ((uint64_t)y * W + x) * j->key + (uint64_t)i);
-                if (o->method == METHOD_PT) pt_sample(&pc, &s.base, w, img);
-                else bdpt_sample(&pc, &s.base, w, img);
-                done++;
+    do {
+        /* Ctrl-C is honoured within a pixel (every 4096 samples), not only between rows: a row of
+         * a high-spp render can take minutes. */
+        bool stop = false;
+        for (int y = tid; y < H && !stop; y += o->threads) {
+            for (int x = 0; x < W && !stop; x++) {
+                s.x0 = x;
+                s.y0 = y;
+                for (int i = j->first; i < j->first + j->count; i++) {
+                    if (((i - j->first) & 4095) == 0 && (stop = interrupted())) break;
+                    rng_seed(&s.r, o->seed, ((uint64_t)y * W + x) * j->key + (uint64_t)i);
+                    if (o->method == METHOD_PT) pt_sample(&pc, &s.base, w, img);
+                    else bdpt_sample(&pc, &s.base, w, img);
+                    done++;
+                }
             }
+            if (o->seconds <= 0) progress_add(&j->prog, 1);
         }
-        if (o->seconds <= 0) progress_add(&j->prog, 1);
-    }
+    } while (o->seconds > 0 && pass_barrier_arrive(&j->passes));
     j->nonfinite[tid] += w->nonfinite;
     j->samples[tid] += done;
     free(w);
+}
+
+/* Called between passes by one thread while the others wait: another pass only if it should end
+ * within the budget at the mean pass time so far. */
+static bool next_pass(void *p)
+{
+    struct job *j = p;
+    j->spp++;
+    double elapsed = now_seconds() - j->t0;
+    progress_set(&j->prog, (long)(1000 * elapsed));
+    if (interrupted() || j->spp >= TIME_MODE_MAX_SPP || elapsed * (j->spp + 1) / j->spp > j->o->seconds) return false;
+    j->first = j->spp;
+    return true;
 }
 
 struct image *render_mc(const struct scene *sc, const struct render_opts *o, struct render_stats *st)
@@ -98,18 +117,17 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         j.img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
     double t0 = now_seconds();
+    j.t0 = t0;
     int spp = o->spp;
     if (o->seconds > 0) {
         progress_init(&j.prog, method_name(o->method), (long)(1000 * o->seconds), o->progress);
         j.count = 1;
         j.key = TIME_MODE_MAX_SPP;
-        for (spp = 0; spp < TIME_MODE_MAX_SPP;) {
-            j.first = spp++;
-            parallel_run(T, worker, &j);
-            double elapsed = now_seconds() - t0;
-            progress_set(&j.prog, (long)(1000 * elapsed));
-            if (interrupted() || elapsed * (spp + 1) / spp > o->seconds) break;
-        }
+        j.first = 0;
+        pass_barrier_init(&j.passes, T, next_pass, &j);
+        parallel_run(T, worker, &j);
+        pass_barrier_destroy(&j.passes);
+        spp = j.spp;
     } else {
         progress_init(&j.prog, method_name(o->method), camera_film_height(&sc->cam), o->progress);
         j.count = spp;
