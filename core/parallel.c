@@ -76,8 +76,8 @@ static inline void cpu_relax(void)
 #endif
 }
 
-/* Spin iterations before sleeping: a few tens of microseconds, about the scatter of the threads'
- * finishing times within a pass. */
+/* Spin iterations before sleeping: 27 us on the 2-core Xeon the figures were measured on. Eight
+ * times as many made no difference there (PT at 64x36 on 2 threads: 1.008x, 5 paired runs). */
 #define PASS_SPIN 2048
 
 bool pass_barrier_arrive(struct pass_barrier *b)
