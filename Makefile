@@ -56,12 +56,16 @@ CXX ?= c++
 WARN := -Wall -Wextra $(if $(WERROR),-Werror)
 CPPFLAGS := -Icore -D_DEFAULT_SOURCE -MMD -MP
 CFLAGS := -std=c11 $(OPT) $(WARN) -pthread
-CXXFLAGS := -std=c++17 $(OPT) $(WARN) -pthread -fPIC $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
+# pkg-config is asked when a recipe runs, not when the Makefile is read: on a fresh machine the
+# packages (pkg-config among them) arrive only when `deps` runs, after the Makefile was parsed.
+OIIO_CFLAGS = $(shell pkg-config --cflags OpenImageIO)
+CXXFLAGS = -std=c++17 $(OPT) $(WARN) -pthread -fPIC $(OIIO_CFLAGS)
 LDFLAGS := $(OPT) -pthread
 LDLIBS := -lembree3 -lcjson -lgsl -lgslcblas -lm -ldl
 # OpenImageIO lives in a module of its own, opened on the first image read or write (core/oiio.h):
 # linked in, Debian's build adds 120 MB and 0.2 s of start-up to every process.
-OIIO_LIBS := $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lstdc++
+# --no-undefined: a module linked without the library fails here, not at its first use.
+OIIO_LIBS = $(shell pkg-config --libs OpenImageIO) -lstdc++ -Wl,--no-undefined
 
 # The commit recorded in every CSV's metadata; version.h is rewritten only when it changes.
 GIT_COMMIT := $(or $(PGO_COMMIT),$(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD 2>/dev/null || echo -dirty))
@@ -89,21 +93,31 @@ EXP_BIN := $(patsubst experiments/%.c,$(BIN)/%,$(EXP_SRC))
 SHELL := /bin/bash
 all: $(LIBCORE) $(OIIO_MODULE) $(EXP_BIN) $(TEST_BIN) $(TEST_OIIO_MODULE)
 
+# Every compile waits for it (order-only), so the first `make` of a fresh machine, with any -j and
+# any goal, installs the headers and libraries before it needs them.
 deps:
 	@bash scripts/install-deps.sh
 
-$(BUILD)/%.c.o: %.c $(PGO_STAMP)
+# OpenImageIO's flags as pkg-config gives them now; rewritten only when they change, so the module
+# is rebuilt and relinked when the package appears (or moves) after an earlier build.
+OIIO_FLAGS_FILE := $(BUILD)/oiio-flags
+$(OIIO_FLAGS_FILE): FORCE | deps
+	@mkdir -p $(dir $@)
+	@echo '$(OIIO_CFLAGS) | $(OIIO_LIBS)' > $@.new
+	@cmp -s $@.new $@ && rm $@.new || mv $@.new $@
+
+$(BUILD)/%.c.o: %.c $(PGO_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PGO_CFLAGS) -c $< -o $@
 
-$(BUILD)/%.cpp.o: %.cpp
+$(BUILD)/%.cpp.o: %.cpp $(OIIO_FLAGS_FILE) | deps
 	@mkdir -p $(dir $@)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
 
 # The sub-make brings the instrumented renderer up to date; only when it changed is it retrained
 # and the stamp touched, which recompiles every release object against the new profiles.
 .PHONY: FORCE
-build/pgo.stamp: FORCE
+build/pgo.stamp: FORCE | deps
 	@$(MAKE) --no-print-directory PGO_STAGE=gen build/pgo-gen/bin/render
 	@if [ ! -e $@ ] || [ build/pgo-gen/bin/render -nt $@ ]; then \
 	  set -e; rm -rf $(PGO_DIR); mkdir -p $(PGO_DIR); \
@@ -115,7 +129,7 @@ $(LIBCORE): $(CORE_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
 
-$(OIIO_MODULE): $(BUILD)/core/oiio.cpp.o
+$(OIIO_MODULE): $(BUILD)/core/oiio.cpp.o $(OIIO_FLAGS_FILE)
 	@mkdir -p $(dir $@)
 	$(CXX) -shared $(LDFLAGS) $< $(OIIO_LIBS) -o $@
 

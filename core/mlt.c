@@ -3,6 +3,7 @@
 #include "mlt.h"
 #include "camera.h"
 #include "connect.h"
+#include "emitter.h"
 #include "integrator.h"
 #include "parallel.h"
 #include "util.h"
@@ -339,7 +340,10 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     r->b = total;
     r->seed_seconds = now_seconds() - t0;
     if (!(total > 0)) {
-        snprintf(err, errlen, "%s: the seed pass of %ld paths found no light; raise --seed-paths", sc->file, o.seed_paths);
+        if (emitters_count(sc) == 0)
+            snprintf(err, errlen, "%s: the scene has no emitter: there is no light to sample", sc->file);
+        else
+            snprintf(err, errlen, "%s: the seed pass of %ld paths found no light; raise --seed-paths", sc->file, o.seed_paths);
         for (int kk = 0; kk < nk; kk++) free((void *)rj.cdf[kk]);
         free(sj.f);
         return false;

@@ -2,6 +2,7 @@
  * MCMC methods, PREFIX.csv with acceptance statistics. */
 #include "camera.h"
 #include "cli.h"
+#include "emitter.h"
 #include "mlt.h"
 #include "parallel.h"
 #include "render.h"
@@ -196,6 +197,16 @@ int main(int argc, char **argv)
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
+    }
+    bool mcmc = strcmp(a.method, "pt") && strcmp(a.method, "bdpt");
+    if (emitters_count(sc) == 0) {
+        /* PT and BDPT estimate zero correctly; an MCMC method has no target to sample. */
+        fprintf(stderr, mcmc ? "%s: the scene has no emitter: --method %s has no light to sample\n"
+                             : "%s: warning: the scene has no emitter; the image will be black\n", a.scene, a.method);
+        if (mcmc) {
+            scene_free(sc);
+            return 2;
+        }
     }
     if (a.width) camera_resize(&sc->cam, a.width, a.height);
     if (a.mc.spp < 0) a.mc.spp = sc->spp > 0 ? sc->spp : 16;

@@ -252,3 +252,29 @@ Test(cli, options_of_other_methods_warn)
         cr_assert(strstr(err, cases[i][2]), "%s %s: no warning in: %s", cases[i][0], cases[i][1], err);
     }
 }
+
+/* A scene without an emitter: PT and BDPT render it (black) after one warning line naming the file;
+ * the MCMC methods, which have no target to sample, stop with one line saying why and exit 2. */
+Test(cli, scene_without_emitter)
+{
+    make_dir();
+    const char *scene = "tests/data/no-emitter.json";
+    char err[4096], args[1024];
+    const char *mc[] = {"pt", "bdpt"}, *mcmc[] = {"pssmlt", "mmlt"};
+    for (int i = 0; i < 2; i++) {
+        snprintf(args, sizeof args, "%s --method %s --out %s/x", scene, mc[i], dir);
+        int rc = run(args, err, sizeof err);
+        cr_assert_eq(rc, 0, "%s: exit %d (%s)", mc[i], rc, err);
+        cr_assert_eq(lines(err), 1, "%s: expected one warning line, got: %s", mc[i], err);
+        cr_assert(strstr(err, scene) && strstr(err, "no emitter"), "%s: warning does not say it: %s", mc[i], err);
+        cr_assert(exists("x.exr"), "%s: no image written", mc[i]);
+    }
+    for (int i = 0; i < 2; i++) {
+        snprintf(args, sizeof args, "%s --method %s --out %s/y", scene, mcmc[i], dir);
+        int rc = run(args, err, sizeof err);
+        cr_assert_eq(rc, 2, "%s: exit %d (%s)", mcmc[i], rc, err);
+        cr_assert_eq(lines(err), 1, "%s: expected one error line, got: %s", mcmc[i], err);
+        cr_assert(strstr(err, "no emitter") && !strstr(err, "seed pass"), "%s: wrong message: %s", mcmc[i], err);
+        cr_assert(!exists("y.exr") && !exists("y.csv"), "%s: output written", mcmc[i]);
+    }
+}
