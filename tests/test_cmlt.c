@@ -296,7 +296,7 @@ Test(stat_cmlt, chart_density_chisq)
  * with the reference's within 3%. One seed per algorithm; the margins are wide compared with the
  * seed-to-seed spread seen in the experiment (a few %), so the false-failure rate is far below
  * 0.01. Reference: 16384 spp per pixel, its own noise far below the chains' error at 32 x 32. */
-Test(stat_cmlt, all_algorithms_converge, .timeout = 120)
+Test(stat_cmlt, all_algorithms_converge, .timeout = 600)
 {
     const int W = 32;
     size_t npx = 3 * (size_t)W * W;

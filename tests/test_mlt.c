@@ -295,7 +295,7 @@ Test(stat_mlt, all_methods_agree_with_tent_filter)
  * chains reach some paths through the gold sphere rarely: runs of 1M mutations come out skewed
  * (that block 35 % low in most runs, 50 % high in a few), which the t-test takes for bias; runs
  * of 16M agree there with BDPT within 2 %. */
-Test(stat_mlt, all_methods_agree_on_every_bsdf_family, .timeout = 240)
+Test(stat_mlt, all_methods_agree_on_every_bsdf_family, .timeout = 900)
 {
     struct scene *sc = test_scene("scenes/materials/scene.json");
     const struct budget b = {32, 64, 256, 256, 4096, 0};
@@ -327,7 +327,7 @@ Test(stat_mlt, all_methods_agree_with_sphere_cube_and_mesh_lights)
  * (mean p = 8.6e-6, 1.1e-7, 4.9e-7, 1.7e-5 against alpha = 2.0e-4); with the former 64 spp and
  * 10000 seed paths the same weighting passed or failed only just (p = 1.6e-4). Unweighted, seeds
  * 5000-9000 pass (smallest mean p 0.066). */
-Test(stat_mlt, all_methods_agree_on_door_ajar, .timeout = 240)
+Test(stat_mlt, all_methods_agree_on_door_ajar, .timeout = 900)
 {
     struct scene *sc = test_scene("scenes/ajar/scene.json");
     const struct budget b = {32, 256, 256, 256, 1024, 100000};

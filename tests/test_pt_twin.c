@@ -36,7 +36,7 @@ static void generic_pt(const struct path_ctx *pc, struct sampler *s, struct scra
     img_splat(img, w->cam[0].px, w->cam[0].py, sum);
 }
 
-Test(pt_twin, equals_bdpt_machinery_restricted_to_s_le_1, .timeout = 120)
+Test(pt_twin, equals_bdpt_machinery_restricted_to_s_le_1, .timeout = 600)
 {
     static struct scratch w;
     for (const char **p = test_all_scenes(); *p; p++) {
