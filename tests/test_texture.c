@@ -3,6 +3,7 @@
 #include <criterion/criterion.h>
 
 #include "accel.h"
+#include "mesh_io.h"
 #include "oiio.h"
 #include "path.h"
 #include "scene.h"
@@ -281,4 +282,27 @@ Test(texture, sphere_hit_reads_its_texel, .init = mk_tmp, .fini = rm_tmp)
                   v.bc.albedo.y, v.bc.albedo.z);
     }
     scene_free(s);
+}
+
+/* .obj: vt as written; a corner without vt reads uv (0, 0) while the other corners keep theirs. */
+Test(texture, obj_uv_as_written_and_zero_where_missing, .init = mk_tmp, .fini = rm_tmp)
+{
+    static const char obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                              "vt 0.25 0.5\nvt 0.75 0.125\nvt 1.5 -2\n"
+                              "f 1/1 2/2 3/3\nf 1 3/-1 4\n";
+    char path[512], err[512] = "";
+    snprintf(path, sizeof path, "%s/m.obj", tmpdir);
+    FILE *f = fopen(path, "wb");
+    cr_assert(f);
+    cr_assert_eq(fwrite(obj, 1, sizeof obj - 1, f), sizeof obj - 1);
+    fclose(f);
+    struct raw_mesh m;
+    cr_assert(mesh_load(path, &m, err, sizeof err), "%s", err);
+    cr_assert_eq(m.nverts, 6);
+    cr_assert(m.uv);
+    static const double expect[6][2] = {{0.25, 0.5}, {0.75, 0.125}, {1.5, -2}, {0, 0}, {1.5, -2}, {0, 0}};
+    for (int i = 0; i < 6; i++)
+        cr_assert(m.uv[2 * i] == expect[i][0] && m.uv[2 * i + 1] == expect[i][1], "corner %d: (%g %g)", i, m.uv[2 * i],
+                  m.uv[2 * i + 1]);
+    raw_mesh_free(&m);
 }
