@@ -58,28 +58,38 @@ struct texture *texture_load(const char *path, char *err, size_t errlen)
     return t;
 }
 
-/* x in texel units (texel i spans [i, i+1)) -> the two texels whose centres bracket it, wrapped,
- * and the weight of the second. */
-static inline int bracket(double x, int n, int *i1, double *f)
+/* floor without the libm call that baseline x86-64 makes of it (no SSE4.1 round instruction);
+ * NaN, infinities and huge values take the library's. */
+static inline double floor_fast(double x)
 {
-    double x0 = floor(x - 0.5);
-    *f = x - 0.5 - x0;
-    int i0 = (int)x0; /* x in [0, n) keeps x0 in [-1, n - 1] */
+    if (!(fabs(x) < 0x1p62)) return floor(x);
+    double f = (double)(long long)x;
+    return f > x ? f - 1 : f;
+}
+
+/* s in [0, 1) across n texels -> the two texels whose centres (at +0.5) bracket it, wrapped
+ * around, and the weight of the second. */
+static inline int bracket(double s, int n, int *i1, double *f)
+{
+    double x = s * n - 0.5; /* >= -0.5, so truncating x + 1 floors it */
+    int i0 = (int)(x + 1) - 1;
+    *f = x - i0;
     if (i0 < 0) i0 = n - 1;
-    *i1 = i0 + 1 == n ? 0 : i0 + 1;
-    return i0;
+    *i1 = i0 + 1 >= n ? 0 : i0 + 1;
+    return i0 >= n ? n - 1 : i0;
 }
 
 rgb texture_lookup(const struct texture *t, double u, double v)
 {
-    /* Reduce to one period first: texel coordinates then stay small whatever u and v are. */
-    double s = u - floor(u), r = (1 - v) - floor(1 - v); /* r: from the top row down */
-    if (!(s >= 0 && s < 1)) s = 0;                       /* NaN, infinities, and s rounded to 1 */
+    /* One period first (texel coordinates then stay small whatever u and v are); r runs down from
+     * the top row. */
+    double s = u - floor_fast(u), r = (1 - v) - floor_fast(1 - v);
+    if (!(s >= 0 && s < 1)) s = 0; /* NaN, infinities, and s rounded up to 1 */
     if (!(r >= 0 && r < 1)) r = 0;
     int x1, y1;
     double fx, fy;
-    int x0 = bracket(s * t->w, t->w, &x1, &fx);
-    int y0 = bracket(r * t->h, t->h, &y1, &fy);
+    int x0 = bracket(s, t->w, &x1, &fx);
+    int y0 = bracket(r, t->h, &y1, &fy);
     const float *p00 = t->rgb + 3 * ((size_t)y0 * t->w + x0), *p01 = t->rgb + 3 * ((size_t)y0 * t->w + x1);
     const float *p10 = t->rgb + 3 * ((size_t)y1 * t->w + x0), *p11 = t->rgb + 3 * ((size_t)y1 * t->w + x1);
     double w00 = (1 - fx) * (1 - fy), w01 = fx * (1 - fy), w10 = (1 - fx) * fy, w11 = fx * fy;
