@@ -306,3 +306,17 @@ Test(texture, obj_uv_as_written_and_zero_where_missing, .init = mk_tmp, .fini = 
                   m.uv[2 * i + 1]);
     raw_mesh_free(&m);
 }
+
+/* A PNG's colour is used as stored, not multiplied by its alpha (OpenImageIO's default): texels
+ * (200, 100, 50) at alpha 128 and (30, 60, 254) at alpha 0. */
+Test(texture, png_alpha_is_not_multiplied_in)
+{
+    char err[512] = "";
+    struct texture *t = texture_load("tests/data/texture/rgba8.png", err, sizeof err);
+    cr_assert(t, "%s", err);
+    cr_assert_eq(t->bits, 8);
+    static const int codes[6] = {200, 100, 50, 30, 60, 254};
+    for (int i = 0; i < 6; i++)
+        cr_assert_eq(t->rgb[i], texture_gamma_decode(codes[i]), "texel value %d: %g", i, t->rgb[i] * 255);
+    texture_free(t);
+}
