@@ -85,16 +85,16 @@ bool img_write_exr_png(const struct image *im, const char *prefix, char *err, si
     return img_write_png(im, 1.0, path, err, errlen);
 }
 
-bool img_read_rgb(const char *path, int *w, int *h, float **rgb, char *err, size_t errlen)
+bool img_read_rgb(const char *path, int *w, int *h, float **rgb, int *bits, char *err, size_t errlen)
 {
-    return oiio_read_rgb(path, w, h, rgb, err, errlen);
+    return oiio_read_rgb(path, w, h, rgb, bits, err, errlen);
 }
 
 struct image *img_read(const char *path, char *err, size_t errlen)
 {
     int w, h;
     float *px;
-    if (!oiio_read_rgb(path, &w, &h, &px, err, errlen)) return NULL;
+    if (!oiio_read_rgb(path, &w, &h, &px, NULL, err, errlen)) return NULL;
     struct image *im = img_create(w, h);
     for (size_t i = 0; i < (size_t)w * h * 3; i++) im->px[i] = px[i];
     free(px);

@@ -45,7 +45,7 @@ struct obj_state {
     struct vec_list out_p, out_n, out_uv;
     int *tri;
     int ntri, tricap;
-    bool all_n, all_uv;
+    bool all_n, any_uv;
 };
 
 /* Reads up to `max` numbers after the keyword; needs at least `min`. */
@@ -125,7 +125,7 @@ static bool parse_corner(struct obj_state *st, const char *tok, long line, char 
     list_push(&st->out_n, have[2] ? st->nrm.v + 3 * (size_t)ni : zero);
     list_push(&st->out_uv, have[1] ? st->tex.v + 2 * (size_t)ti : zero);
     st->all_n &= have[2];
-    st->all_uv &= have[1];
+    st->any_uv |= have[1];
     return true;
 }
 
@@ -215,7 +215,7 @@ bool mesh_load_obj(const char *path, struct raw_mesh *m, char *err, size_t errle
         return false;
     }
     struct obj_state st = {.pos.dim = 3, .nrm.dim = 3, .tex.dim = 2, .out_p.dim = 3, .out_n.dim = 3,
-                           .out_uv.dim = 2, .all_n = true, .all_uv = true};
+                           .out_uv.dim = 2, .all_n = true};
     char *buf = NULL;
     size_t cap = 0;
     long line = 0;
@@ -235,7 +235,8 @@ bool mesh_load_obj(const char *path, struct raw_mesh *m, char *err, size_t errle
         m->ntris = st.ntri;
         m->p = to_vec3(&st.out_p);
         m->n = st.all_n && st.out_n.n ? to_vec3(&st.out_n) : NULL;
-        if (st.all_uv && st.out_uv.n) {
+        /* Tungsten: a corner without vt gets uv (0, 0), and the others keep theirs. */
+        if (st.any_uv && st.out_uv.n) {
             m->uv = st.out_uv.v;
             st.out_uv.v = NULL;
         }

@@ -10,7 +10,7 @@ struct raw_mesh {
     int nverts, ntris;
     vec3 *p;
     vec3 *n;    /* NULL when the file has no normals for some vertex */
-    double *uv; /* 2 per vertex; NULL when some vertex has none */
+    double *uv; /* 2 per vertex, (0, 0) for a corner without vt; NULL when no vertex has one */
     int *tri;   /* 3 per triangle, validated against nverts */
 };
 

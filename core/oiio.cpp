@@ -30,9 +30,13 @@ extern "C" bool oiio_module_write(const char *path, int w, int h, int nchan, con
     return true;
 }
 
-extern "C" bool oiio_module_read_rgb(const char *path, int *w, int *h, float **px, char *err, size_t errlen)
+extern "C" bool oiio_module_read_rgb(const char *path, int *w, int *h, float **px, int *bits, char *err,
+                                     size_t errlen)
 {
-    auto in = ImageInput::open(path);
+    // Texels as stored: OpenImageIO would otherwise multiply a PNG's colour by its alpha.
+    ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = ImageInput::open(path, &config);
     if (!in) {
         snprintf(err, errlen, "%s: cannot read image (%s)", path, geterror().c_str());
         return false;
@@ -57,5 +61,11 @@ extern "C" bool oiio_module_read_rgb(const char *path, int *w, int *h, float **p
     *w = spec.width;
     *h = spec.height;
     *px = rgb;
+    if (bits) {
+        TypeDesc::BASETYPE b = (TypeDesc::BASETYPE)spec.format.basetype;
+        bool integer = b == TypeDesc::UINT8 || b == TypeDesc::INT8 || b == TypeDesc::UINT16 || b == TypeDesc::INT16 ||
+                       b == TypeDesc::UINT32 || b == TypeDesc::INT32;
+        *bits = integer ? (int)spec.format.size() * 8 : 0;
+    }
     return true;
 }

@@ -17,8 +17,11 @@ extern "C" {
 /* Writes nchan-channel float pixels (row 0 on top) to `path`; the format follows the extension,
  * 8-bit formats get values quantised from [0, 1]. Not atomic by itself. */
 bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen);
-/* Reads an image as 3-channel float; *px is malloc'ed. */
-bool oiio_read_rgb(const char *path, int *w, int *h, float **px, char *err, size_t errlen);
+/* Reads an image as 3-channel float (an integer format's codes divided by their maximum, no colour
+ * conversion, alpha not multiplied in); *px is malloc'ed. *bits (if not NULL) gets the file's bits
+ * per channel when its format is an integer one (8 for most PNG/JPEG, 16 for 16-bit PNG/TIFF), else 0
+ * (half or float: EXR, HDR, PFM, float TIFF). */
+bool oiio_read_rgb(const char *path, int *w, int *h, float **px, int *bits, char *err, size_t errlen);
 /* Whether the module file is there, without opening it: tools that will write images check this
  * before a long run rather than fail at its end. */
 bool oiio_module_present(char *err, size_t errlen);
@@ -28,7 +31,7 @@ bool oiio_loaded(void);
 
 /* The module's entry points, same contracts. */
 bool oiio_module_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen);
-bool oiio_module_read_rgb(const char *path, int *w, int *h, float **px, char *err, size_t errlen);
+bool oiio_module_read_rgb(const char *path, int *w, int *h, float **px, int *bits, char *err, size_t errlen);
 
 #ifdef __cplusplus
 }

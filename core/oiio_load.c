@@ -10,7 +10,7 @@
 
 static pthread_once_t once = PTHREAD_ONCE_INIT;
 static bool (*module_write)(const char *, int, int, int, const float *, char *, size_t);
-static bool (*module_read_rgb)(const char *, int *, int *, float **, char *, size_t);
+static bool (*module_read_rgb)(const char *, int *, int *, float **, int *, char *, size_t);
 static char load_error[PATH_MAX + 256];
 
 /* oiio.so in the directory of the running executable. */
@@ -76,7 +76,7 @@ bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char
     return ready(path, err, errlen) && module_write(path, w, h, nchan, px, err, errlen);
 }
 
-bool oiio_read_rgb(const char *path, int *w, int *h, float **px, char *err, size_t errlen)
+bool oiio_read_rgb(const char *path, int *w, int *h, float **px, int *bits, char *err, size_t errlen)
 {
-    return ready(path, err, errlen) && module_read_rgb(path, w, h, px, err, errlen);
+    return ready(path, err, errlen) && module_read_rgb(path, w, h, px, bits, err, errlen);
 }

@@ -74,6 +74,8 @@ bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, in
 
 /* Surface vertex from a ray hit; `incoming` is the ray direction. */
 void surface_from_hit(const struct scene *sc, vec3 origin, vec3 dir, const struct hit *h, struct vertex *v);
+/* Texture coordinates of a sphere primitive at the unit world normal n (README, "Textures"). */
+void sphere_uv(const struct prim *pr, vec3 n, double uv[2]);
 
 /* Density of vertex `to` generated from `from` along unit direction d (either orientation) over
  * squared distance dist2: a solid-angle pdf becomes an area density; toward the environment it

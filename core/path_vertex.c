@@ -6,6 +6,15 @@
 /* Self-intersection offset relative to the coordinates' magnitude (Embree works in float). */
 double ray_eps(vec3 p) { return 2e-5 * maxd(fabs(p.z), maxd(fabs(p.y), maxd(fabs(p.x), 1.0))); }
 
+/* Tungsten's sphere parametrisation: poles on the local Z axis, u = atan2(y, x) / 2pi + 0.5,
+ * v = acos(z) / pi of the local unit normal. */
+void sphere_uv(const struct prim *pr, vec3 n, double uv[2])
+{
+    vec3 l = v3(vdot(pr->sphere_axis[0], n), vdot(pr->sphere_axis[1], n), vdot(pr->sphere_axis[2], n));
+    uv[0] = atan2(l.y, l.x) * (0.5 / M_PI) + 0.5;
+    uv[1] = acos(fmin(1.0, fmax(-1.0, l.z))) * (1 / M_PI);
+}
+
 void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *h, struct vertex *v)
 {
     const struct prim *pr = &sc->prims[h->prim];
@@ -23,6 +32,7 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
         v->ng = vnorm(q);
         v->p = vmad(pr->center, v->ng, pr->radius); /* back onto the sphere in double precision */
         ns = v->ng;
+        if (tex) sphere_uv(pr, v->ng, uv);
     } else {
         const int *t = pr->tri + 3 * v->tri;
         vec3 p0 = pr->p[t[0]], p1 = pr->p[t[1]], p2 = pr->p[t[2]];

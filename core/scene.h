@@ -22,13 +22,18 @@ enum bsdf_type {
 
 enum mf_dist { MF_BECKMANN, MF_GGX };
 
-/* RGB float bitmap, row 0 at the top (as OpenImageIO reads it). */
+/* RGB float bitmap, row 0 at the top (as OpenImageIO reads it), Tungsten's BitmapTexture
+ * conventions (README, "Textures"). */
 struct texture {
     int w, h;
-    float *rgb; /* w*h*3 */
+    float *rgb; /* w*h*3, linear */
+    int bits;   /* bits per channel of an integer-format file (gamma-decoded at load), 0 for float */
 };
-/* Nearest-texel lookup with wrap-around; v = 0 is the bottom row (OBJ convention). */
+/* Bilinear lookup with wrap-around: texel (i, j) (row j from the top) has its centre at
+ * u = (i + 0.5) / w, v = 1 - (j + 0.5) / h, so v = 0 is the bottom edge (OBJ convention). */
 rgb texture_lookup(const struct texture *t, double u, double v);
+/* Tungsten's 8-bit gamma table: floor(255 (code/255)^2.2) / 255 (a 2.2 power, not sRGB). */
+float texture_gamma_decode(int code);
 void texture_free(struct texture *t);
 /* Reads an image file (OpenImageIO) into a texture; NULL and a message in err on failure. */
 struct texture *texture_load(const char *path, char *err, size_t errlen);
@@ -68,6 +73,7 @@ struct prim {
     /* PRIM_SPHERE */
     vec3 center;
     double radius;
+    vec3 sphere_axis[3];       /* unit columns of the transform; local normal = (axis[i] . n), for uv */
     /* PRIM_INFINITE_SPHERE: emission map (NULL = constant `emission`) and its frame */
     struct texture *env_tex;   /* owned, lat-long */
     mat4 env_to_world, env_to_local;

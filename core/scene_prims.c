@@ -46,14 +46,16 @@ static void build_quad(struct prim *p, const mat4 *m)
     p->area = vlen(n);
     p->quad_normal = p->area > 0 ? vscale(n, 1 / p->area) : v3(0, 0, 0);
     /* Corners in (a, b) order (0,0) (0,1) (1,1) (1,0): (p1-p0) x (p2-p0) = e1 x e0, the front normal.
-     * uv = (a, 1 - b), the parametrisation of Tungsten's quad intersection. */
+     * uv = (a, b): u along edge0, v along edge1 from the base corner, as Tungsten 0.2.2 renders
+     * (checked against the conformance scene quad-uv-texture; a Quad.cpp in the public repository
+     * writes v = 1 - b, which that render contradicts). */
     static const double ab[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
     static const int tris[6] = {0, 1, 2, 0, 2, 3};
     alloc_tris(p, 4, 2, true);
     for (int i = 0; i < 4; i++) {
         p->p[i] = vadd(base, vadd(vscale(e0, ab[i][0]), vscale(e1, ab[i][1])));
         p->uv[2 * i] = ab[i][0];
-        p->uv[2 * i + 1] = 1 - ab[i][1];
+        p->uv[2 * i + 1] = ab[i][1];
     }
     memcpy(p->tri, tris, sizeof tris);
 }
@@ -98,6 +100,13 @@ static void build_sphere(struct prim *p, const mat4 *m)
     p->kind = PRIM_SPHERE;
     p->center = col(m, 3);
     p->radius = fmax(vlen(col(m, 0)), fmax(vlen(col(m, 1)), vlen(col(m, 2))));
+    /* Tungsten's rotation part (extractRotation): the columns normalised; its inverse is taken as the
+     * transpose, so uv come from dot products with them. */
+    for (int j = 0; j < 3; j++) {
+        vec3 c = col(m, j);
+        double l = vlen(c);
+        p->sphere_axis[j] = l > 0 ? vscale(c, 1 / l) : v3(j == 0, j == 1, j == 2);
+    }
     p->area = 4 * M_PI * p->radius * p->radius;
 }
 

@@ -410,9 +410,9 @@ Test(loader, textures_and_environment, .init = mk_tmp, .fini = rm_tmp)
     scene_model_free(s);
 }
 
-/* A hit reads the albedo texture at Tungsten's quad uv = (a, 1 - b), in either of the quad's two
+/* A hit reads the albedo texture at Tungsten's quad uv = (a, b), in either of the quad's two
  * triangles: rays straight down onto the unit quad in the xz-plane, whose corner (a, b) = (0, 0)
- * is (-0.5, 0, -0.5). */
+ * is (-0.5, 0, -0.5). The points are texel centres, where the bilinear lookup is the texel. */
 Test(loader, textured_hits_read_the_texel_under_them, .init = mk_tmp, .fini = rm_tmp)
 {
     struct image *im = img_create(2, 2); /* top row red, green; bottom row blue, white */
@@ -429,11 +429,12 @@ Test(loader, textured_hits_read_the_texel_under_them, .init = mk_tmp, .fini = rm
     struct scene *s = scene_load(path, err, sizeof err);
     cr_assert(s, "%s", err);
     static const struct { double x, z; rgb texel; } cases[] = {
-        {-0.25, 0.25, {0, 0, 1}}, /* (a, b) = (0.25, 0.75): uv = (0.25, 0.25), bottom left */
-        {0.25, -0.25, {0, 1, 0}}, /* (0.75, 0.25): uv = (0.75, 0.75), top right */
-        {-0.25, -0.25, {1, 0, 0}}, /* (0.25, 0.25): uv = (0.25, 0.75), top left */
+        {-0.25, 0.25, {1, 0, 0}},  /* (a, b) = uv = (0.25, 0.75): top left */
+        {0.25, -0.25, {1, 1, 1}},  /* (0.75, 0.25): bottom right */
+        {-0.25, -0.25, {0, 0, 1}}, /* (0.25, 0.25): bottom left */
+        {0.25, 0.25, {0, 1, 0}},   /* (0.75, 0.75): top right */
     };
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 4; i++) {
         vec3 o = v3(cases[i].x, 1, cases[i].z), d = v3(0, -1, 0);
         struct hit h;
         cr_assert(accel_intersect(s->accel, o, d, 0, INFINITY, &h));
