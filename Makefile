@@ -198,6 +198,7 @@ help:
 	@echo "make            build core, tools (bin/) and tests"
 	@echo "make test       install deps if missing, build, run all tests"
 	@echo "make test-san   fast tests under AddressSanitizer + UBSan"
+	@echo "make fig4.1     thesis Fig. 4.1: isotropic vs resolution-aware small steps, noise shape on a 16:9 wall"
 	@echo "make check      regression-check every statistic against results/baselines/"
 	@echo "make bench      throughput figures"
 	@echo "SCALE=quick|paper selects experiment sizes (default quick)"
