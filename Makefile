@@ -199,6 +199,8 @@ help:
 	@echo "make test       install deps if missing, build, run all tests"
 	@echo "make test-san   fast tests under AddressSanitizer + UBSan"
 	@echo "make fig4.1     thesis Fig. 4.1: isotropic vs resolution-aware small steps, noise shape on a 16:9 wall"
+	@echo "make fig4.2     thesis Fig. 4.2: the wall at 1024², 512², 256² and resolution-scaled steps at 256²"
+	@echo "make fig4.3     thesis Fig. 4.3: BDPT vs PSSMLT vs PSSMLT --cdc, a room reflected in a window"
 	@echo "make check      regression-check every statistic against results/baselines/"
 	@echo "make bench      throughput figures"
 	@echo "SCALE=quick|paper selects experiment sizes (default quick)"

@@ -34,3 +34,47 @@ check-fig4.1: deps $(BIN)/fig4_1 $(CHECK_STATS)
 	$(CHECK_STATS) --key variant,quantity --mean mean --se se --count seeds --alpha 0.01 \
 	  --out results/check-fig4.1/check.md $(CH4_BASE)/fig4.1/fig4.1.csv results/check-fig4.1/fig4.1.csv
 CHECK_TARGETS += check-fig4.1
+
+# Thesis Figure 4.3: a room seen reflected in a window over darkness; BDPT vs PSSMLT vs PSSMLT with
+# constrained discrete choices at equal samples per pixel, against a cached BDPT reference.
+.PHONY: fig4.3 check-fig4.3
+fig4.3: deps $(BIN)/fig4_3
+	$(BIN)/fig4_3 --out results/fig4.3
+	bash scripts/ch4-montage.sh results/fig4.3/fig4.3.png 2 512x288 \
+	  results/fig4.3/reference.png "reference (BDPT)" results/fig4.3/bdpt.png "(a) BDPT" \
+	  results/fig4.3/pssmlt.png "(b) PSSMLT" results/fig4.3/pssmlt-cdc.png "(c) PSSMLT, constrained discrete choices"
+	bash scripts/fig4.3-table.sh results/fig4.3/fig4.3.csv > results/fig4.3/fig4.3.md
+	@echo "results/fig4.3/fig4.3.png: top the reference and BDPT, bottom PSSMLT and PSSMLT --cdc (first seed)"
+	@cat results/fig4.3/fig4.3.md
+
+# Reruns the quick experiment with other seeds (101..106) and compares relMSE and small-step
+# acceptance per method with the baseline (Welch t over seeds, Sidak alpha = 0.01); run times are
+# not compared.
+check-fig4.3: deps $(BIN)/fig4_3 $(CHECK_STATS)
+	$(BIN)/fig4_3 --scale quick --seed 101 --out results/check-fig4.3
+	grep -v ',seconds,' $(CH4_BASE)/fig4.3/fig4.3.csv > results/check-fig4.3/baseline.csv
+	grep -v ',seconds,' results/check-fig4.3/fig4.3.csv > results/check-fig4.3/current.csv
+	$(CHECK_STATS) --key method,quantity --mean mean --se se --count seeds --alpha 0.01 \
+	  --out results/check-fig4.3/check.md results/check-fig4.3/baseline.csv results/check-fig4.3/current.csv
+CHECK_TARGETS += check-fig4.3
+
+# Thesis Figure 4.2: the wall at 1024², 512², 256² and resolution-scaled steps at 256²: correlation
+# length in pixels and relMSE at equal mutations per pixel.
+.PHONY: fig4.2 check-fig4.2
+fig4.2: deps $(BIN)/fig4_2
+	$(BIN)/fig4_2 --out results/fig4.2
+	gnuplot -e "csv='results/fig4.2/fig4.2.csv'; out='results/fig4.2/fig4.2-plot'" scripts/fig4.2.gp
+	bash scripts/ch4-montage.sh results/fig4.2/fig4.2.png 4 384x384 \
+	  results/fig4.2/pssmlt-1024.png "(a) 1024x1024 PSSMLT" results/fig4.2/pssmlt-512.png "(b) 512x512 PSSMLT" \
+	  results/fig4.2/pssmlt-256.png "(c) 256x256 PSSMLT" results/fig4.2/rap-resolution-256.png "(d) 256x256 resolution-aware"
+	bash scripts/fig4.2-table.sh results/fig4.2/fig4.2.csv > results/fig4.2/fig4.2.md
+	@echo "results/fig4.2/fig4.2.png: the four renders (first seed) at one display size; fig4.2-plot.png: lengths and relMSE"
+	@cat results/fig4.2/fig4.2.md
+
+# Reruns the quick experiment with other seeds (101..104) and compares every (configuration,
+# quantity) mean with the baseline: Welch t over the seeds, Sidak-corrected alpha = 0.01.
+check-fig4.2: deps $(BIN)/fig4_2 $(CHECK_STATS)
+	$(BIN)/fig4_2 --scale quick --seed 101 --out results/check-fig4.2
+	$(CHECK_STATS) --key config,quantity --mean mean --se se --count seeds --alpha 0.01 \
+	  --out results/check-fig4.2/check.md $(CH4_BASE)/fig4.2/fig4.2.csv results/check-fig4.2/fig4.2.csv
+CHECK_TARGETS += check-fig4.2
