@@ -37,32 +37,26 @@ static const char *qn[NQ] = {"l_x", "l_y", "l", "rho1", "relmse", "small_accept"
 
 int main(int argc, char **argv)
 {
-    const char *prog = "fig4_2", *scene = "scenes/wall/scene.json", *out = "results/fig4.2";
-    const char *scale = getenv("SCALE") && *getenv("SCALE") ? getenv("SCALE") : "quick";
-    int seeds = -1, refspp = -1, maxlag = 64, threads = cpu_count();
-    double mpp = -1, p_large = 0.1;
-    uint64_t seed = 1;
+    const char *prog = "fig4_2";
+    struct ch4_args a;
+    ch4_args_init(&a, "scenes/wall/scene.json", "results/fig4.2");
+    int maxlag = 64;
+    double mpp = -1;
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i];
-#define VALUE cli_value(prog, argc, argv, &i)
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
             fputs(usage, stdout);
             return 0;
-        } else if (!strcmp(o, "--scene")) scene = VALUE;
-        else if (!strcmp(o, "--scale")) scale = VALUE;
-        else if (!strcmp(o, "--mpp")) mpp = cli_double(prog, o, VALUE, 0.01, 1e6);
-        else if (!strcmp(o, "--seeds")) seeds = (int)cli_long(prog, o, VALUE, 2, 1000);
-        else if (!strcmp(o, "--p-large")) p_large = cli_double(prog, o, VALUE, 0, 1);
-        else if (!strcmp(o, "--max-lag")) maxlag = (int)cli_long(prog, o, VALUE, 2, 255);
-        else if (!strcmp(o, "--reference-spp")) refspp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
-        else if (!strcmp(o, "--seed")) seed = cli_u64(prog, o, VALUE);
-        else if (!strcmp(o, "--threads")) threads = (int)cli_long(prog, o, VALUE, 1, 1024);
-        else if (!strcmp(o, "--out")) out = VALUE;
+        } else if (ch4_option(prog, argc, argv, &i, &a)) continue;
+        else if (!strcmp(o, "--mpp")) mpp = cli_double(prog, o, cli_value(prog, argc, argv, &i), 0.01, 1e6);
+        else if (!strcmp(o, "--max-lag")) maxlag = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 255);
         else cli_fail(prog, "unknown option '%s' (see --help)", o);
-#undef VALUE
     }
-    bool paper = !strcmp(scale, "paper");
-    if (!paper && strcmp(scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", scale);
+    bool paper = ch4_paper(prog, &a);
+    const char *scene = a.scene, *scale = a.scale, *out = a.out;
+    int seeds = a.seeds, refspp = a.refspp, threads = a.threads;
+    double p_large = a.p_large;
+    uint64_t seed = a.seed;
     if (mpp < 0) mpp = paper ? 64 : 4;
     if (seeds < 0) seeds = paper ? 8 : 4;
     if (refspp < 0) refspp = paper ? 1024 : 32;

@@ -48,37 +48,27 @@ static bool write_stats(const struct mlt_stats *st, const char *method, const ch
 
 int main(int argc, char **argv)
 {
-    const char *prog = "fig4_3", *scene = "scenes/window/scene.json", *out = "results/fig4.3", *refpath = NULL;
-    const char *scale = getenv("SCALE") && *getenv("SCALE") ? getenv("SCALE") : "quick";
-    int W = -1, H = -1, spp = 64, seeds = -1, refspp = -1, threads = cpu_count();
-    double p_large = 0.1;
-    uint64_t seed = 1;
+    const char *prog = "fig4_3";
+    struct ch4_args a;
+    ch4_args_init(&a, "scenes/window/scene.json", "results/fig4.3");
+    const char *refpath = NULL;
+    int W = -1, H = -1, spp = 64;
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i];
-#define VALUE cli_value(prog, argc, argv, &i)
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
             fputs(usage, stdout);
             return 0;
-        } else if (!strcmp(o, "--scene")) scene = VALUE;
-        else if (!strcmp(o, "--scale")) scale = VALUE;
-        else if (!strcmp(o, "--resolution")) {
-            const char *v = VALUE;
-            char extra;
-            if (sscanf(v, "%dx%d%c", &W, &H, &extra) != 2 || W < 1 || H < 1 || W > 1 << 14 || H > 1 << 14)
-                cli_fail(prog, "--resolution: expected WxH with integers in 1..16384, got '%s'", v);
-        } else if (!strcmp(o, "--spp")) spp = (int)cli_long(prog, o, VALUE, 1, 1 << 20);
-        else if (!strcmp(o, "--seeds")) seeds = (int)cli_long(prog, o, VALUE, 2, 1000);
-        else if (!strcmp(o, "--p-large")) p_large = cli_double(prog, o, VALUE, 0, 1);
-        else if (!strcmp(o, "--reference")) refpath = VALUE;
-        else if (!strcmp(o, "--reference-spp")) refspp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
-        else if (!strcmp(o, "--seed")) seed = cli_u64(prog, o, VALUE);
-        else if (!strcmp(o, "--threads")) threads = (int)cli_long(prog, o, VALUE, 1, 1024);
-        else if (!strcmp(o, "--out")) out = VALUE;
+        } else if (ch4_option(prog, argc, argv, &i, &a)) continue;
+        else if (!strcmp(o, "--resolution")) ch4_resolution(prog, cli_value(prog, argc, argv, &i), 1, &W, &H);
+        else if (!strcmp(o, "--spp")) spp = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1 << 20);
+        else if (!strcmp(o, "--reference")) refpath = cli_value(prog, argc, argv, &i);
         else cli_fail(prog, "unknown option '%s' (see --help)", o);
-#undef VALUE
     }
-    bool paper = !strcmp(scale, "paper");
-    if (!paper && strcmp(scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", scale);
+    bool paper = ch4_paper(prog, &a);
+    const char *scene = a.scene, *scale = a.scale, *out = a.out;
+    int seeds = a.seeds, refspp = a.refspp, threads = a.threads;
+    double p_large = a.p_large;
+    uint64_t seed = a.seed;
     if (seeds < 0) seeds = paper ? 16 : 6;
     if (refspp < 0) refspp = paper ? 16384 : 1024;
     cli_require_image_output(prog);

@@ -10,19 +10,21 @@ set xrange [180:1450]
 set xtics ("256" 256, "512" 512, "1024" 1024)
 set xlabel "resolution (pixels, square)"
 set key top left box opaque
-sel(c, q, col) = (strcol(1) eq c && strcol(3) eq q) ? column(col) : NaN
-pss(q, col) = (strcol(1) ne "rap-resolution-256" && strcol(3) eq q) ? column(col) : NaN
+# rows of one quantity of the plain PSSMLT configurations, and of the resolution-scaled one
+pss(q) = sprintf("< grep '^pssmlt-[0-9]*,[0-9]*,%s,' '%s'", q, csv)
+rap(q) = sprintf("< grep '^rap-resolution-256,[0-9]*,%s,' '%s'", q, csv)
 do for [fmt in "png pdf"] {
     if (fmt eq "png") { set terminal pngcairo size 1000,420 font ",11" } else { set terminal pdfcairo size 7in,3in font ",9" }
     set output out.".".fmt
     set multiplot layout 1,2 title "PSSMLT on a diffuse wall at three resolutions (thesis Fig. 4.2)"
     set ylabel "error correlation length (pixels)"
     set yrange [0:*]
-    plot csv skip 0 using 2:(pss("l_x", 5)):(pss("l_x", 6)) with yerrorlines lw 2 pt 7 lc rgb "#c0392b" title "PSSMLT, horizontal", \
-         csv skip 0 using 2:(pss("l_y", 5)):(pss("l_y", 6)) with yerrorlines lw 2 pt 5 dt 2 lc rgb "#c0392b" title "PSSMLT, vertical", \
-         csv skip 0 using ($2*1.04):(sel("rap-resolution-256", "l", 5)):(sel("rap-resolution-256", "l", 6)) with yerrorbars pt 9 ps 1.5 lc rgb "#2471a3" title "--rap-resolution (mean of x, y)"
+    plot pss("l_x") using 2:5:6 with yerrorlines lw 2 pt 7 lc rgb "#c0392b" title "PSSMLT, horizontal", \
+         pss("l_y") using 2:5:6 with yerrorlines lw 2 pt 5 dt 2 lc rgb "#c0392b" title "PSSMLT, vertical", \
+         rap("l") using ($2*1.04):5:6 with yerrorbars pt 9 ps 1.5 lc rgb "#2471a3" title "--rap-resolution (mean of x, y)"
     set ylabel "relMSE at equal mutations per pixel"
-    plot csv skip 0 using 2:(pss("relmse", 5)):(pss("relmse", 6)) with yerrorlines lw 2 pt 7 lc rgb "#c0392b" title "PSSMLT", \
-         csv skip 0 using ($2*1.04):(sel("rap-resolution-256", "relmse", 5)):(sel("rap-resolution-256", "relmse", 6)) with yerrorbars pt 9 ps 1.5 lc rgb "#2471a3" title "--rap-resolution"
+    set key bottom left
+    plot pss("relmse") using 2:5:6 with yerrorlines lw 2 pt 7 lc rgb "#c0392b" title "PSSMLT", \
+         rap("relmse") using ($2*1.04):5:6 with yerrorbars pt 9 ps 1.5 lc rgb "#2471a3" title "--rap-resolution"
     unset multiplot
 }

@@ -1,5 +1,7 @@
 /* Shared pieces of the chapter-4 figure tools (ch4_common.h). */
 #include "ch4_common.h"
+#include "cli.h"
+#include "parallel.h"
 #include "util.h"
 #include <errno.h>
 #include <math.h>
@@ -115,4 +117,40 @@ double ch4_pixel_noise_var(const struct image *ref)
             n++;
         }
     return n ? s / n / 2 : 0;
+}
+
+void ch4_args_init(struct ch4_args *a, const char *scene, const char *out)
+{
+    const char *env = getenv("SCALE");
+    *a = (struct ch4_args){.scene = scene, .scale = env && *env ? env : "quick", .out = out, .seeds = -1,
+                           .refspp = -1, .threads = cpu_count(), .p_large = 0.1, .seed = 1};
+}
+
+bool ch4_option(const char *prog, int argc, char **argv, int *i, struct ch4_args *a)
+{
+    const char *o = argv[*i];
+    if (!strcmp(o, "--scene")) a->scene = cli_value(prog, argc, argv, i);
+    else if (!strcmp(o, "--scale")) a->scale = cli_value(prog, argc, argv, i);
+    else if (!strcmp(o, "--out")) a->out = cli_value(prog, argc, argv, i);
+    else if (!strcmp(o, "--seeds")) a->seeds = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 2, 1000);
+    else if (!strcmp(o, "--reference-spp")) a->refspp = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1 << 24);
+    else if (!strcmp(o, "--threads")) a->threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1024);
+    else if (!strcmp(o, "--p-large")) a->p_large = cli_double(prog, o, cli_value(prog, argc, argv, i), 0, 1);
+    else if (!strcmp(o, "--seed")) a->seed = cli_u64(prog, o, cli_value(prog, argc, argv, i));
+    else return false;
+    return true;
+}
+
+bool ch4_paper(const char *prog, const struct ch4_args *a)
+{
+    if (!strcmp(a->scale, "paper")) return true;
+    if (strcmp(a->scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", a->scale);
+    return false;
+}
+
+void ch4_resolution(const char *prog, const char *v, int min, int *w, int *h)
+{
+    char extra;
+    if (sscanf(v, "%dx%d%c", w, h, &extra) != 2 || *w < min || *h < min || *w > 1 << 14 || *h > 1 << 14)
+        cli_fail(prog, "--resolution: expected WxH with integers in %d..16384, got '%s'", min, v);
 }
