@@ -47,12 +47,18 @@ int main(int argc, char **argv)
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
             fputs(usage, stdout);
             return 0;
-        } else if (ch4_option(prog, argc, argv, &i, &a)) continue;
-        else if (!strcmp(o, "--resolution")) ch4_resolution(prog, cli_value(prog, argc, argv, &i), 8, &W, &H);
-        else if (!strcmp(o, "--mpp")) mpp = cli_double(prog, o, cli_value(prog, argc, argv, &i), 0.01, 1e6);
-        else if (!strcmp(o, "--max-lag")) maxlag = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 4096);
-        else if (!strcmp(o, "--reference")) refpath = cli_value(prog, argc, argv, &i);
-        else cli_fail(prog, "unknown option '%s' (see --help)", o);
+        } else if (ch4_option(prog, argc, argv, &i, &a))
+            continue;
+        else if (!strcmp(o, "--resolution"))
+            ch4_resolution(prog, cli_value(prog, argc, argv, &i), 8, &W, &H);
+        else if (!strcmp(o, "--mpp"))
+            mpp = cli_double(prog, o, cli_value(prog, argc, argv, &i), 0.01, 1e6);
+        else if (!strcmp(o, "--max-lag"))
+            maxlag = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 4096);
+        else if (!strcmp(o, "--reference"))
+            refpath = cli_value(prog, argc, argv, &i);
+        else
+            cli_fail(prog, "unknown option '%s' (see --help)", o);
     }
     bool paper = ch4_paper(prog, &a);
     const char *scene = a.scene, *scale = a.scale, *out = a.out;
@@ -86,14 +92,15 @@ int main(int argc, char **argv)
     double ref_var = ch4_pixel_noise_var(ref);
 
     const char *names[NVAR] = {"iso", "rap"};
-    struct wall_cfg cfg = {.p_large = p_large, .mpp = mpp, .seed_paths = paper ? 1000000 : 100000,
-                           .threads = threads, .maxlag = maxlag};
+    struct wall_cfg cfg = {
+        .p_large = p_large, .mpp = mpp, .seed_paths = paper ? 1000000 : 100000, .threads = threads, .maxlag = maxlag};
     int L = maxlag + 1;
     /* per run: the quantities of the summary, then the error variance */
     enum { Q_LX, Q_LY, Q_RATIO, Q_RHO1X, Q_RHO1Y, Q_RELMSE, Q_ACCEPT, NQ };
     const char *qn[NQ] = {"l_x", "l_y", "ratio", "rho1_x", "rho1_y", "relmse", "small_accept"};
     double *q[NQ];
-    for (int i = 0; i < NQ; i++) q[i] = xcalloc((size_t)NVAR * seeds, sizeof(double));
+    for (int i = 0; i < NQ; i++)
+        q[i] = xcalloc((size_t)NVAR * seeds, sizeof(double));
     double *evar = xcalloc((size_t)NVAR * seeds, sizeof *evar);
     double *rx = xcalloc((size_t)NVAR * seeds * L, sizeof *rx), *ry = xcalloc((size_t)NVAR * seeds * L, sizeof *ry);
     double range = 0;
@@ -134,7 +141,8 @@ int main(int argc, char **argv)
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl), *fp = open_memstream(&pb, &pl);
     FILE *all[3] = {fr, fs, fp};
     for (int i = 0; i < 3; i++) {
-        fprintf(all[i], "# fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)\n");
+        fprintf(all[i],
+                "# fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)\n");
         fprintf(all[i], "# scene %s\n# commit %s\n# scale %s\n# resolution %dx%d\n# mutations_per_pixel %g\n", scene,
                 GIT_COMMIT, scale, W, H, mpp);
         fprintf(all[i], "# p_large %g\n# kernel kelemen s1 1/1024 s2 1/64\n# seeds %llu..%llu\n# threads %d\n", p_large,
@@ -144,7 +152,8 @@ int main(int argc, char **argv)
                         " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)\n");
     }
     fprintf(fr, "variant,seed");
-    for (int i = 0; i < NQ; i++) fprintf(fr, ",%s", qn[i]);
+    for (int i = 0; i < NQ; i++)
+        fprintf(fr, ",%s", qn[i]);
     fprintf(fr, ",error_var\n");
     fprintf(fs, "variant,quantity,seeds,mean,se\n");
     fprintf(fp, "variant,lag,rho_x,rho_x_se,rho_y,rho_y_se\n");
@@ -153,7 +162,8 @@ int main(int argc, char **argv)
         for (int s = 0; s < seeds; s++) {
             int k = v * seeds + s;
             fprintf(fr, "%s,%llu", names[v], (unsigned long long)(seed + s));
-            for (int i = 0; i < NQ; i++) fprintf(fr, ",%.6g", q[i][k]);
+            for (int i = 0; i < NQ; i++)
+                fprintf(fr, ",%.6g", q[i][k]);
             fprintf(fr, ",%.6g\n", evar[k]);
         }
         for (int i = 0; i < NQ; i++) {
@@ -163,9 +173,11 @@ int main(int argc, char **argv)
         }
         for (int d = 0; d < L; d++) {
             double mx, sx, my, sy;
-            for (int s = 0; s < seeds; s++) tmp[s] = rx[(size_t)(v * seeds + s) * L + d];
+            for (int s = 0; s < seeds; s++)
+                tmp[s] = rx[(size_t)(v * seeds + s) * L + d];
             ch4_mean_se(tmp, seeds, &mx, &sx);
-            for (int s = 0; s < seeds; s++) tmp[s] = ry[(size_t)(v * seeds + s) * L + d];
+            for (int s = 0; s < seeds; s++)
+                tmp[s] = ry[(size_t)(v * seeds + s) * L + d];
             ch4_mean_se(tmp, seeds, &my, &sy);
             fprintf(fp, "%s,%d,%.6g,%.6g,%.6g,%.6g\n", names[v], d, mx, sx, my, sy);
         }
@@ -178,7 +190,8 @@ int main(int argc, char **argv)
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err) &&
               write_text_atomic(p3, pb, err, sizeof err);
     free(rb), free(sb), free(pb), free(tmp);
-    for (int i = 0; i < NQ; i++) free(q[i]);
+    for (int i = 0; i < NQ; i++)
+        free(q[i]);
     free(evar), free(rx), free(ry);
     img_destroy(ref);
     scene_free(sc);

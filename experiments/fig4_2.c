@@ -47,10 +47,14 @@ int main(int argc, char **argv)
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
             fputs(usage, stdout);
             return 0;
-        } else if (ch4_option(prog, argc, argv, &i, &a)) continue;
-        else if (!strcmp(o, "--mpp")) mpp = cli_double(prog, o, cli_value(prog, argc, argv, &i), 0.01, 1e6);
-        else if (!strcmp(o, "--max-lag")) maxlag = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 255);
-        else cli_fail(prog, "unknown option '%s' (see --help)", o);
+        } else if (ch4_option(prog, argc, argv, &i, &a))
+            continue;
+        else if (!strcmp(o, "--mpp"))
+            mpp = cli_double(prog, o, cli_value(prog, argc, argv, &i), 0.01, 1e6);
+        else if (!strcmp(o, "--max-lag"))
+            maxlag = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 255);
+        else
+            cli_fail(prog, "unknown option '%s' (see --help)", o);
     }
     bool paper = ch4_paper(prog, &a);
     const char *scene = a.scene, *scale = a.scale, *out = a.out;
@@ -73,10 +77,11 @@ int main(int argc, char **argv)
     }
     const char *names[NCONF] = {"pssmlt-1024", "pssmlt-512", "pssmlt-256", "rap-resolution-256"};
     const int res[NCONF] = {1024, 512, 256, 256};
-    struct wall_cfg cfg = {.p_large = p_large, .mpp = mpp, .seed_paths = paper ? 1000000 : 100000,
-                           .threads = threads, .maxlag = maxlag};
+    struct wall_cfg cfg = {
+        .p_large = p_large, .mpp = mpp, .seed_paths = paper ? 1000000 : 100000, .threads = threads, .maxlag = maxlag};
     double *q[NQ];
-    for (int i = 0; i < NQ; i++) q[i] = xcalloc((size_t)NCONF * seeds, sizeof(double));
+    for (int i = 0; i < NQ; i++)
+        q[i] = xcalloc((size_t)NCONF * seeds, sizeof(double));
     double refvar[NCONF], errvar[NCONF] = {0};
     struct image *ref = NULL;
     for (int c = 0; c < NCONF; c++) {
@@ -129,17 +134,20 @@ int main(int argc, char **argv)
         for (int c = 0; c < NCONF; c++)
             fprintf(all[i], "# %s: reference pixel-noise variance %.4g, error variance %.4g\n", names[c], refvar[c],
                     errvar[c]);
-        fprintf(all[i], "# l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
-                        " l = their mean; rho1 = mean lag-1 autocorrelation\n");
+        fprintf(all[i],
+                "# l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
+                " l = their mean; rho1 = mean lag-1 autocorrelation\n");
     }
     fprintf(fr, "config,resolution,seed");
-    for (int i = 0; i < NQ; i++) fprintf(fr, ",%s", qn[i]);
+    for (int i = 0; i < NQ; i++)
+        fprintf(fr, ",%s", qn[i]);
     fprintf(fr, "\n");
     fprintf(fs, "config,resolution,quantity,seeds,mean,se\n");
     for (int c = 0; c < NCONF; c++) {
         for (int s = 0; s < seeds; s++) {
             fprintf(fr, "%s,%d,%llu", names[c], res[c], (unsigned long long)(seed + s));
-            for (int i = 0; i < NQ; i++) fprintf(fr, ",%.6g", q[i][c * seeds + s]);
+            for (int i = 0; i < NQ; i++)
+                fprintf(fr, ",%.6g", q[i][c * seeds + s]);
             fprintf(fr, "\n");
         }
         for (int i = 0; i < NQ; i++) {
@@ -154,7 +162,8 @@ int main(int argc, char **argv)
     snprintf(p2, sizeof p2, "%s/fig4.2.csv", out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err);
     free(rb), free(sb);
-    for (int i = 0; i < NQ; i++) free(q[i]);
+    for (int i = 0; i < NQ; i++)
+        free(q[i]);
     scene_free(sc);
     if (!ok) {
         fprintf(stderr, "%s: %s\n", prog, err);

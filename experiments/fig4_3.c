@@ -3,7 +3,8 @@
  * leave the numbers of discrete decisions, here the dielectric's reflect/refract choice, unchanged)
  * at an equal number of samples per pixel (mutations for the MCMC methods), against a BDPT
  * reference rendered once and cached. Over several seeds: relMSE, and the small-step acceptance of
- * each MCMC variant. Writes OUT/fig4.3.csv (method,quantity,seeds,mean,se), OUT/fig4.3-runs.csv,
+ * each MCMC variant. Writes OUT/fig4.3.csv (method,quantity,seeds,mean,se), OUT/fig4.3-runs.csv
+ * (one row per run, with its wall-clock seconds, which the statistics leave out: they do not reproduce),
  * the first seed's images {bdpt,pssmlt,pssmlt-cdc}.{exr,png}, their acceptance statistics
  * {pssmlt,pssmlt-cdc}-stats.csv (the render tool's CSV rows) and reference.{exr,png}. */
 #include "camera.h"
@@ -58,11 +59,16 @@ int main(int argc, char **argv)
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
             fputs(usage, stdout);
             return 0;
-        } else if (ch4_option(prog, argc, argv, &i, &a)) continue;
-        else if (!strcmp(o, "--resolution")) ch4_resolution(prog, cli_value(prog, argc, argv, &i), 1, &W, &H);
-        else if (!strcmp(o, "--spp")) spp = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1 << 20);
-        else if (!strcmp(o, "--reference")) refpath = cli_value(prog, argc, argv, &i);
-        else cli_fail(prog, "unknown option '%s' (see --help)", o);
+        } else if (ch4_option(prog, argc, argv, &i, &a))
+            continue;
+        else if (!strcmp(o, "--resolution"))
+            ch4_resolution(prog, cli_value(prog, argc, argv, &i), 1, &W, &H);
+        else if (!strcmp(o, "--spp"))
+            spp = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1 << 20);
+        else if (!strcmp(o, "--reference"))
+            refpath = cli_value(prog, argc, argv, &i);
+        else
+            cli_fail(prog, "unknown option '%s' (see --help)", o);
     }
     bool paper = ch4_paper(prog, &a);
     const char *scene = a.scene, *scale = a.scale, *out = a.out;
@@ -99,19 +105,29 @@ int main(int argc, char **argv)
     for (int m = 0; m < NMETH; m++)
         for (int s = 0; s < seeds; s++) {
             int k = m * seeds + s;
-            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[m], (unsigned long long)(seed + s), s + 1, seeds);
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[m], (unsigned long long)(seed + s), s + 1,
+                    seeds);
             struct image *img;
             acc[k] = NAN;
             if (m == 0) {
-                struct render_opts o = {.method = METHOD_BDPT, .spp = spp, .seed = seed + s, .threads = threads,
-                                        .max_length = sc->max_length, .progress = isatty(2)};
+                struct render_opts o = {.method = METHOD_BDPT,
+                                        .spp = spp,
+                                        .seed = seed + s,
+                                        .threads = threads,
+                                        .max_length = sc->max_length,
+                                        .progress = isatty(2)};
                 struct render_stats st;
                 img = render_mc(sc, &o, &st);
                 sec[k] = st.seconds;
             } else {
-                struct mlt_opts o = {.method = MLT_PSSMLT, .p_large = p_large, .mutations = (long)spp * W * H,
-                                     .seed_paths = paper ? 1000000 : 100000, .seed = seed + s, .threads = threads,
-                                     .max_length = sc->max_length, .progress = isatty(2)};
+                struct mlt_opts o = {.method = MLT_PSSMLT,
+                                     .p_large = p_large,
+                                     .mutations = (long)spp * W * H,
+                                     .seed_paths = paper ? 1000000 : 100000,
+                                     .seed = seed + s,
+                                     .threads = threads,
+                                     .max_length = sc->max_length,
+                                     .progress = isatty(2)};
                 pss_opts_default(&o.pss, W, H);
                 o.pss.cdc = m == 2;
                 struct mlt_result r;
@@ -141,7 +157,9 @@ int main(int argc, char **argv)
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
     FILE *all[2] = {fr, fs};
     for (int i = 0; i < 2; i++) {
-        fprintf(all[i], "# fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel\n");
+        fprintf(
+            all[i],
+            "# fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel\n");
         fprintf(all[i], "# scene %s\n# commit %s\n# scale %s\n# resolution %dx%d\n# spp %d\n# p_large %g\n", scene,
                 GIT_COMMIT, scale, W, H, spp, p_large);
         fprintf(all[i], "# seeds %llu..%llu\n# threads %d\n# reference %s (BDPT %d spp)\n", (unsigned long long)seed,
@@ -163,8 +181,6 @@ int main(int argc, char **argv)
             ch4_mean_se(acc + m * seeds, seeds, &mean, &se);
             fprintf(fs, "%s,small_accept,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
         }
-        ch4_mean_se(sec + m * seeds, seeds, &mean, &se);
-        fprintf(fs, "%s,seconds,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
         if (m == 0) {
             /* relMSE(BDPT, R) = V (1/spp + 1/refspp) for BDPT's per-sample variance term V: the
              * reference's own share V / refspp is part of every method's relMSE */

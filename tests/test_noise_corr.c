@@ -23,7 +23,8 @@ static void blur(double *f, int w, int h, double sx, double sy)
         double s = pass ? sy : sx;
         int R = (int)ceil(5 * s);
         double *k = malloc(sizeof(double) * (2 * R + 1)), ks = 0;
-        for (int i = -R; i <= R; i++) ks += k[i + R] = exp(-0.5 * i * i / (s * s));
+        for (int i = -R; i <= R; i++)
+            ks += k[i + R] = exp(-0.5 * i * i / (s * s));
         for (int y = 0; y < h; y++)
             for (int x = 0; x < w; x++) {
                 double a = 0;
@@ -31,7 +32,8 @@ static void blur(double *f, int w, int h, double sx, double sy)
                     a += k[i + R] * (pass ? f[(size_t)((y + i + h) % h) * w + x] : f[(size_t)y * w + (x + i + w) % w]);
                 t[(size_t)y * w + x] = a / ks;
             }
-        for (int i = 0; i < w * h; i++) f[i] = t[i];
+        for (int i = 0; i < w * h; i++)
+            f[i] = t[i];
         free(k);
     }
     free(t);
@@ -43,12 +45,15 @@ static double *synthetic(int w, int h, double sx, double sy, double white, uint6
     rng r;
     rng_seed(&r, seed, 7);
     double *f = malloc(sizeof(double) * w * h), *g = malloc(sizeof(double) * w * h);
-    for (int i = 0; i < w * h; i++) f[i] = gauss(&r);
+    for (int i = 0; i < w * h; i++)
+        f[i] = gauss(&r);
     blur(f, w, h, sx, sy);
     double v = 0;
-    for (int i = 0; i < w * h; i++) v += f[i] * f[i];
+    for (int i = 0; i < w * h; i++)
+        v += f[i] * f[i];
     v /= w * h;
-    for (int i = 0; i < w * h; i++) g[i] = f[i] + sqrt(white * v) * gauss(&r) + 3.0; /* and an offset */
+    for (int i = 0; i < w * h; i++)
+        g[i] = f[i] + sqrt(white * v) * gauss(&r) + 3.0; /* and an offset */
     free(f);
     return g;
 }
@@ -89,11 +94,14 @@ Test(noise_corr, isotropic_noise_gives_ratio_one_and_white_noise_no_length)
     rng g;
     rng_seed(&g, 3, 1);
     double *n = malloc(sizeof(double) * w * h);
-    for (int i = 0; i < w * h; i++) n[i] = gauss(&g);
+    for (int i = 0; i < w * h; i++)
+        n[i] = gauss(&g);
     cr_assert(corr_profiles(n, w, h, L, rx, ry));
-    for (int d = 1; d <= L; d++) cr_assert(fabs(rx[d]) < 0.02 && fabs(ry[d]) < 0.02);
+    for (int d = 1; d <= L; d++)
+        cr_assert(fabs(rx[d]) < 0.02 && fabs(ry[d]) < 0.02);
     /* a constant field has no profile */
-    for (int i = 0; i < w * h; i++) n[i] = 1.5;
+    for (int i = 0; i < w * h; i++)
+        n[i] = 1.5;
     cr_assert(!corr_profiles(n, w, h, L, rx, ry));
     free(n);
 }

@@ -42,8 +42,12 @@ struct image *ch4_reference(const struct scene *sc, enum method method, int spp,
     }
     fprintf(stderr, "%s: rendering the %s reference (%d spp, %dx%d) into %s\n", prog, method_name(method), spp,
             sc->cam.width, sc->cam.height, path);
-    struct render_opts o = {.method = method, .spp = spp, .seed = 12345, .threads = threads,
-                            .max_length = sc->max_length, .progress = isatty(2)};
+    struct render_opts o = {.method = method,
+                            .spp = spp,
+                            .seed = 12345,
+                            .threads = threads,
+                            .max_length = sc->max_length,
+                            .progress = isatty(2)};
     struct render_stats st;
     struct image *ref = render_mc(sc, &o, &st);
     char dir[4096];
@@ -73,9 +77,11 @@ bool ch4_write_pair(const struct image *im, const char *dir, const char *name, c
 void ch4_mean_se(const double *x, int n, double *mean, double *se)
 {
     double m = 0, v = 0;
-    for (int i = 0; i < n; i++) m += x[i];
+    for (int i = 0; i < n; i++)
+        m += x[i];
     m /= n;
-    for (int i = 0; i < n; i++) v += (x[i] - m) * (x[i] - m);
+    for (int i = 0; i < n; i++)
+        v += (x[i] - m) * (x[i] - m);
     *mean = m;
     *se = n > 1 ? sqrt(v / (n - 1) / n) : NAN;
 }
@@ -86,7 +92,8 @@ bool ch4_write_error_png(const double *e, int w, int h, double *range, const cha
     double r = *range;
     if (!(r > 0)) {
         double s2 = 0;
-        for (size_t i = 0; i < n; i++) s2 += e[i] * e[i];
+        for (size_t i = 0; i < n; i++)
+            s2 += e[i] * e[i];
         r = 3 * sqrt(s2 / n);
         if (!(r > 0)) r = 1;
         *range = r;
@@ -122,22 +129,37 @@ double ch4_pixel_noise_var(const struct image *ref)
 void ch4_args_init(struct ch4_args *a, const char *scene, const char *out)
 {
     const char *env = getenv("SCALE");
-    *a = (struct ch4_args){.scene = scene, .scale = env && *env ? env : "quick", .out = out, .seeds = -1,
-                           .refspp = -1, .threads = cpu_count(), .p_large = 0.1, .seed = 1};
+    *a = (struct ch4_args){.scene = scene,
+                           .scale = env && *env ? env : "quick",
+                           .out = out,
+                           .seeds = -1,
+                           .refspp = -1,
+                           .threads = cpu_count(),
+                           .p_large = 0.1,
+                           .seed = 1};
 }
 
 bool ch4_option(const char *prog, int argc, char **argv, int *i, struct ch4_args *a)
 {
     const char *o = argv[*i];
-    if (!strcmp(o, "--scene")) a->scene = cli_value(prog, argc, argv, i);
-    else if (!strcmp(o, "--scale")) a->scale = cli_value(prog, argc, argv, i);
-    else if (!strcmp(o, "--out")) a->out = cli_value(prog, argc, argv, i);
-    else if (!strcmp(o, "--seeds")) a->seeds = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 2, 1000);
-    else if (!strcmp(o, "--reference-spp")) a->refspp = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1 << 24);
-    else if (!strcmp(o, "--threads")) a->threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1024);
-    else if (!strcmp(o, "--p-large")) a->p_large = cli_double(prog, o, cli_value(prog, argc, argv, i), 0, 1);
-    else if (!strcmp(o, "--seed")) a->seed = cli_u64(prog, o, cli_value(prog, argc, argv, i));
-    else return false;
+    if (!strcmp(o, "--scene"))
+        a->scene = cli_value(prog, argc, argv, i);
+    else if (!strcmp(o, "--scale"))
+        a->scale = cli_value(prog, argc, argv, i);
+    else if (!strcmp(o, "--out"))
+        a->out = cli_value(prog, argc, argv, i);
+    else if (!strcmp(o, "--seeds"))
+        a->seeds = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 2, 1000);
+    else if (!strcmp(o, "--reference-spp"))
+        a->refspp = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1 << 24);
+    else if (!strcmp(o, "--threads"))
+        a->threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1024);
+    else if (!strcmp(o, "--p-large"))
+        a->p_large = cli_double(prog, o, cli_value(prog, argc, argv, i), 0, 1);
+    else if (!strcmp(o, "--seed"))
+        a->seed = cli_u64(prog, o, cli_value(prog, argc, argv, i));
+    else
+        return false;
     return true;
 }
 

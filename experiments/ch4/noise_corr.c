@@ -9,7 +9,8 @@ bool corr_profiles(const double *f, int w, int h, int maxlag, double *rho_x, dou
     ASSERT(maxlag >= 0 && maxlag < w && maxlag < h);
     size_t n = (size_t)w * h;
     double mean = 0;
-    for (size_t i = 0; i < n; i++) mean += f[i];
+    for (size_t i = 0; i < n; i++)
+        mean += f[i];
     mean /= (double)n;
     double *e = xmalloc(n * sizeof *e), var = 0;
     for (size_t i = 0; i < n; i++) {
@@ -25,10 +26,12 @@ bool corr_profiles(const double *f, int w, int h, int maxlag, double *rho_x, dou
         double sx = 0, sy = 0;
         for (int y = 0; y < h; y++) {
             const double *r = e + (size_t)y * w;
-            for (int x = 0; x + d < w; x++) sx += r[x] * r[x + d];
+            for (int x = 0; x + d < w; x++)
+                sx += r[x] * r[x + d];
             if (y + d < h) {
                 const double *r2 = e + (size_t)(y + d) * w;
-                for (int x = 0; x < w; x++) sy += r[x] * r2[x];
+                for (int x = 0; x < w; x++)
+                    sy += r[x] * r2[x];
             }
         }
         rho_x[d] = sx / ((double)(w - d) * h) / var;
@@ -67,6 +70,7 @@ double *error_field(const struct image *img, const struct image *ref)
     }
     double s = si > 0 ? sr / si : 1;
     double *e = xmalloc(n * sizeof *e);
-    for (size_t i = 0; i < n; i++) e[i] = s * lum(img->px + 3 * i) - lum(ref->px + 3 * i);
+    for (size_t i = 0; i < n; i++)
+        e[i] = s * lum(img->px + 3 * i) - lum(ref->px + 3 * i);
     return e;
 }

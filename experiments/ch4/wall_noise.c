@@ -10,9 +10,14 @@ struct image *wall_run(const struct scene *sc, const struct wall_cfg *c, uint64_
                        struct wall_meas *m, char *err, size_t errlen)
 {
     int W = sc->cam.width, H = sc->cam.height;
-    struct mlt_opts o = {.method = MLT_PSSMLT, .p_large = c->p_large, .mutations = (long)llround(c->mpp * W * H),
-                         .seed_paths = c->seed_paths, .seed = seed, .threads = c->threads,
-                         .max_length = sc->max_length, .progress = isatty(2)};
+    struct mlt_opts o = {.method = MLT_PSSMLT,
+                         .p_large = c->p_large,
+                         .mutations = (long)llround(c->mpp * W * H),
+                         .seed_paths = c->seed_paths,
+                         .seed = seed,
+                         .threads = c->threads,
+                         .max_length = sc->max_length,
+                         .progress = isatty(2)};
     pss_opts_default(&o.pss, W, H);
     o.pss.rap = c->rap || c->rap_resolution;
     o.pss.rap_resolution = c->rap_resolution;

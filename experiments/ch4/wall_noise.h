@@ -11,10 +11,10 @@
 struct wall_cfg {
     bool rap, rap_resolution;
     double p_large;
-    double mpp;       /* mutations per pixel */
+    double mpp; /* mutations per pixel */
     long seed_paths;
     int threads;
-    int maxlag;       /* profiles cover lags 0..maxlag */
+    int maxlag; /* profiles cover lags 0..maxlag */
 };
 
 struct wall_meas {
