@@ -1,0 +1,178 @@
+/* Shared pieces of the chapter-4 figure tools (ch4_common.h). */
+#include "ch4_common.h"
+#include "cli.h"
+#include "parallel.h"
+#include "util.h"
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+bool ch4_mkdir(const char *dir, char *err, size_t errlen)
+{
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/') continue;
+        *p = 0;
+        mkdir(buf, 0777);
+        *p = '/';
+    }
+    if (mkdir(buf, 0777) && errno != EEXIST) {
+        snprintf(err, errlen, "%s: %s", dir, strerror(errno));
+        return false;
+    }
+    return true;
+}
+
+struct image *ch4_reference(const struct scene *sc, enum method method, int spp, const char *path, int threads,
+                            const char *prog, char *err, size_t errlen)
+{
+    char msg[1024];
+    if (access(path, R_OK) == 0) {
+        struct image *ref = img_read(path, msg, sizeof msg);
+        if (ref && ref->w == sc->cam.width && ref->h == sc->cam.height) {
+            fprintf(stderr, "%s: using cached reference %s\n", prog, path);
+            return ref;
+        }
+        img_destroy(ref);
+    }
+    fprintf(stderr, "%s: rendering the %s reference (%d spp, %dx%d) into %s\n", prog, method_name(method), spp,
+            sc->cam.width, sc->cam.height, path);
+    struct render_opts o = {.method = method,
+                            .spp = spp,
+                            .seed = 12345,
+                            .threads = threads,
+                            .max_length = sc->max_length,
+                            .progress = isatty(2)};
+    struct render_stats st;
+    struct image *ref = render_mc(sc, &o, &st);
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (slash) {
+        *slash = 0;
+        if (!ch4_mkdir(dir, err, errlen)) {
+            img_destroy(ref);
+            return NULL;
+        }
+    }
+    if (!img_write_exr(ref, 1, path, err, errlen)) {
+        img_destroy(ref);
+        return NULL;
+    }
+    return ref;
+}
+
+bool ch4_write_pair(const struct image *im, const char *dir, const char *name, char *err, size_t errlen)
+{
+    char prefix[4096];
+    snprintf(prefix, sizeof prefix, "%s/%s", dir, name);
+    return img_write_exr_png(im, prefix, err, errlen);
+}
+
+void ch4_mean_se(const double *x, int n, double *mean, double *se)
+{
+    double m = 0, v = 0;
+    for (int i = 0; i < n; i++)
+        m += x[i];
+    m /= n;
+    for (int i = 0; i < n; i++)
+        v += (x[i] - m) * (x[i] - m);
+    *mean = m;
+    *se = n > 1 ? sqrt(v / (n - 1) / n) : NAN;
+}
+
+bool ch4_write_error_png(const double *e, int w, int h, double *range, const char *path, char *err, size_t errlen)
+{
+    size_t n = (size_t)w * h;
+    double r = *range;
+    if (!(r > 0)) {
+        double s2 = 0;
+        for (size_t i = 0; i < n; i++)
+            s2 += e[i] * e[i];
+        r = 3 * sqrt(s2 / n);
+        if (!(r > 0)) r = 1;
+        *range = r;
+    }
+    struct image *im = img_create(w, h);
+    for (size_t i = 0; i < n; i++) {
+        /* img_write_png applies the sRGB curve; pre-invert it so mid-grey means zero error */
+        double g = fmin(1, fmax(0, 0.5 + e[i] / (2 * r)));
+        double lin = g <= 0.04045 ? g / 12.92 : pow((g + 0.055) / 1.055, 2.4);
+        im->px[3 * i] = im->px[3 * i + 1] = im->px[3 * i + 2] = lin;
+    }
+    bool ok = img_write_png(im, 1, path, err, errlen);
+    img_destroy(im);
+    return ok;
+}
+
+static double lum(const double *p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+
+double ch4_pixel_noise_var(const struct image *ref)
+{
+    double s = 0;
+    long n = 0;
+    for (int y = 0; y < ref->h; y++)
+        for (int x = 0; x + 1 < ref->w; x++) {
+            const double *p = ref->px + 3 * ((size_t)y * ref->w + x);
+            double d = lum(p + 3) - lum(p);
+            s += d * d;
+            n++;
+        }
+    return n ? s / n / 2 : 0;
+}
+
+void ch4_args_init(struct ch4_args *a, const char *scene, const char *out)
+{
+    const char *env = getenv("SCALE");
+    *a = (struct ch4_args){.scene = scene,
+                           .scale = env && *env ? env : "quick",
+                           .out = out,
+                           .seeds = -1,
+                           .refspp = -1,
+                           .threads = cpu_count(),
+                           .p_large = 0.1,
+                           .seed = 1};
+}
+
+bool ch4_option(const char *prog, int argc, char **argv, int *i, struct ch4_args *a)
+{
+    const char *o = argv[*i];
+    if (!strcmp(o, "--scene"))
+        a->scene = cli_value(prog, argc, argv, i);
+    else if (!strcmp(o, "--scale"))
+        a->scale = cli_value(prog, argc, argv, i);
+    else if (!strcmp(o, "--out"))
+        a->out = cli_value(prog, argc, argv, i);
+    else if (!strcmp(o, "--seeds"))
+        a->seeds = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 2, 1000);
+    else if (!strcmp(o, "--reference-spp"))
+        a->refspp = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1 << 24);
+    else if (!strcmp(o, "--threads"))
+        a->threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1024);
+    else if (!strcmp(o, "--p-large"))
+        a->p_large = cli_double(prog, o, cli_value(prog, argc, argv, i), 0, 1);
+    else if (!strcmp(o, "--seed"))
+        a->seed = cli_u64(prog, o, cli_value(prog, argc, argv, i));
+    else
+        return false;
+    return true;
+}
+
+bool ch4_paper(const char *prog, const struct ch4_args *a)
+{
+    if (!strcmp(a->scale, "paper")) return true;
+    if (strcmp(a->scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", a->scale);
+    return false;
+}
+
+void ch4_resolution(const char *prog, const char *v, int min, int *w, int *h)
+{
+    char extra;
+    if (sscanf(v, "%dx%d%c", w, h, &extra) != 2 || *w < min || *h < min || *w > 1 << 14 || *h > 1 << 14)
+        cli_fail(prog, "--resolution: expected WxH with integers in %d..16384, got '%s'", min, v);
+}

@@ -1,0 +1,45 @@
+/* What the chapter-4 figure tools (fig4_1, fig4_2, fig4_3) share: a Monte Carlo reference rendered
+ * once and cached as EXR, a false-colour-free error image, mean and standard error over seeds. */
+#ifndef CH4_COMMON_H
+#define CH4_COMMON_H
+
+#include "image.h"
+#include "render.h"
+#include "scene.h"
+#include <stdint.h>
+
+/* The options every chapter-4 tool takes; -1 (NULL for strings) means the tool's default. */
+struct ch4_args {
+    const char *scene, *scale, *out;
+    int seeds, refspp, threads;
+    double p_large;
+    uint64_t seed;
+};
+/* Defaults: scale from $SCALE (else quick), p_large 0.1, seed 1, all cores. */
+void ch4_args_init(struct ch4_args *a, const char *scene, const char *out);
+/* Consumes argv[*i] (and its value) when it is --scene, --scale, --seeds, --p-large,
+ * --reference-spp, --seed, --threads or --out; bad values exit 2 (cli.h). */
+bool ch4_option(const char *prog, int argc, char **argv, int *i, struct ch4_args *a);
+/* Checks --scale; true for paper. */
+bool ch4_paper(const char *prog, const struct ch4_args *a);
+/* Parses WxH with both in min..16384 (exit 2 otherwise). */
+void ch4_resolution(const char *prog, const char *v, int min, int *w, int *h);
+
+/* Reads `path` when it holds an image of the scene camera's size; otherwise renders the scene
+ * with `method` at `spp` (fixed seed 12345), writes it to `path` (atomically) and returns it. */
+struct image *ch4_reference(const struct scene *sc, enum method method, int spp, const char *path, int threads,
+                            const char *prog, char *err, size_t errlen);
+/* DIR/NAME.exr and DIR/NAME.png. */
+bool ch4_write_pair(const struct image *im, const char *dir, const char *name, char *err, size_t errlen);
+/* A grey PNG of an error field: 0.5 + e / (2 range), clamped (range = 3 standard deviations unless
+ * given > 0); returns the range used. */
+bool ch4_write_error_png(const double *e, int w, int h, double *range, const char *path, char *err, size_t errlen);
+/* Mean and standard error of the mean of x[0..n-1] (se NAN when n < 2). */
+void ch4_mean_se(const double *x, int n, double *mean, double *se);
+/* Variance of a reference's pixel noise (luminance), from neighbouring-pixel differences:
+ * mean((R(x+1,y) - R(x,y))^2) / 2, which the smooth image itself barely raises. */
+double ch4_pixel_noise_var(const struct image *ref);
+/* mkdir -p for one or two levels; false with a message on failure. */
+bool ch4_mkdir(const char *dir, char *err, size_t errlen);
+
+#endif

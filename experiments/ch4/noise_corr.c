@@ -1,0 +1,76 @@
+/* Autocorrelation profiles and correlation lengths of an error field (noise_corr.h). */
+#include "noise_corr.h"
+#include "util.h"
+#include <math.h>
+#include <stdlib.h>
+
+bool corr_profiles(const double *f, int w, int h, int maxlag, double *rho_x, double *rho_y)
+{
+    ASSERT(maxlag >= 0 && maxlag < w && maxlag < h);
+    size_t n = (size_t)w * h;
+    double mean = 0;
+    for (size_t i = 0; i < n; i++)
+        mean += f[i];
+    mean /= (double)n;
+    double *e = xmalloc(n * sizeof *e), var = 0;
+    for (size_t i = 0; i < n; i++) {
+        e[i] = f[i] - mean;
+        var += e[i] * e[i];
+    }
+    var /= (double)n;
+    if (!(var > 0)) {
+        free(e);
+        return false;
+    }
+    for (int d = 0; d <= maxlag; d++) {
+        double sx = 0, sy = 0;
+        for (int y = 0; y < h; y++) {
+            const double *r = e + (size_t)y * w;
+            for (int x = 0; x + d < w; x++)
+                sx += r[x] * r[x + d];
+            if (y + d < h) {
+                const double *r2 = e + (size_t)(y + d) * w;
+                for (int x = 0; x < w; x++)
+                    sy += r[x] * r2[x];
+            }
+        }
+        rho_x[d] = sx / ((double)(w - d) * h) / var;
+        rho_y[d] = sy / ((double)(h - d) * w) / var;
+    }
+    free(e);
+    return true;
+}
+
+double corr_length(const double *rho, int n, double level)
+{
+    for (int d = 1; d < n; d++)
+        if (rho[d] < level) return d - 1 + (rho[d - 1] - level) / (rho[d - 1] - rho[d]);
+    return n - 1;
+}
+
+double corr_length_lag1(const double *rho, int n)
+{
+    if (n < 2 || !(rho[1] > 0)) return NAN;
+    double lv = rho[1] * exp(-1.0);
+    for (int d = 2; d < n; d++)
+        if (rho[d] < lv) return d - 1 + (rho[d - 1] - lv) / (rho[d - 1] - rho[d]);
+    return n - 1;
+}
+
+static double lum(const double *p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+
+double *error_field(const struct image *img, const struct image *ref)
+{
+    ASSERT(img->w == ref->w && img->h == ref->h);
+    size_t n = (size_t)img->w * img->h;
+    double si = 0, sr = 0;
+    for (size_t i = 0; i < n; i++) {
+        si += lum(img->px + 3 * i);
+        sr += lum(ref->px + 3 * i);
+    }
+    double s = si > 0 ? sr / si : 1;
+    double *e = xmalloc(n * sizeof *e);
+    for (size_t i = 0; i < n; i++)
+        e[i] = s * lum(img->px + 3 * i) - lum(ref->px + 3 * i);
+    return e;
+}

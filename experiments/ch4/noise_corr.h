@@ -1,0 +1,31 @@
+/* The shape of an image's noise: normalised autocorrelation profiles of an error field along the
+ * two image axes, and correlation lengths read off them (thesis §4.1, Figures 4.1-4.2).
+ * rho(d) = [sum over pairs at lag d of e(p) e(p + d) / pairs(d)] / [sum e^2 / N], e with its mean
+ * removed. A correlation length is the lag at which a profile first falls below a level, linearly
+ * interpolated between the two integer lags around the crossing.
+ * An MCMC render's error has two parts: each splat's own (pixel-sized, white: it adds to rho(0)
+ * only) and the correlation between the splats of one chain excursion, whose shape is what the
+ * proposals set. corr_length_lag1 therefore reads the length off the profile normalised at lag 1:
+ * the lag where rho(d) / rho(1) falls below 1/e. For noise made of white noise plus noise with the
+ * Gaussian autocorrelation exp(-d^2 / (4 s^2)) (white noise blurred by a Gaussian of standard
+ * deviation s), that is sqrt(1 + 4 s^2), whatever the white part's share. */
+#ifndef NOISE_CORR_H
+#define NOISE_CORR_H
+
+#include "image.h"
+
+/* rho_x[d], rho_y[d] for d = 0..maxlag (horizontal and vertical lags); f is w*h, row-major.
+ * maxlag must be below w and h. Returns false when the field is constant (no variance). */
+bool corr_profiles(const double *f, int w, int h, int maxlag, double *rho_x, double *rho_y);
+/* The first lag at which rho[0..n-1] falls below level, interpolated; n - 1 when it never does. */
+double corr_length(const double *rho, int n, double level);
+/* 1 + the first lag d >= 1 at which rho[d] / rho[1] falls below 1/e, interpolated (n >= 2); NAN when
+ * rho[1] <= 0 (no correlated part to measure). */
+double corr_length_lag1(const double *rho, int n);
+/* The luminance error field of an MCMC render against a reference, after scaling the render to the
+ * reference's mean: e = lum(s I - R), s = mean lum R / mean lum I. The scale removes the error of
+ * the chain's normalisation (one number for the whole image, which would correlate every pair of
+ * pixels); w*h values, caller frees. */
+double *error_field(const struct image *img, const struct image *ref);
+
+#endif

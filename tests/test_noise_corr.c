@@ -1,0 +1,120 @@
+/* experiments/ch4/noise_corr: autocorrelation profiles and correlation lengths (thesis Figures
+ * 4.1-4.2), on synthetic noise whose correlation lengths are known: white noise plus white noise
+ * blurred by an anisotropic Gaussian (standard deviations sx, sy) has the autocorrelation
+ * exp(-dx^2 / (4 sx^2)) along x, so corr_length_lag1 must return sqrt(1 + 4 sx^2). */
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "noise_corr.h"
+#include "rng.h"
+
+static double gauss(rng *r)
+{
+    double u = 1 - rng_uniform(r), v = rng_uniform(r);
+    return sqrt(-2 * log(u)) * cos(2 * M_PI * v);
+}
+
+/* Periodic separable Gaussian blur of standard deviations sx, sy (kernel cut at 5 s). */
+static void blur(double *f, int w, int h, double sx, double sy)
+{
+    double *t = malloc(sizeof(double) * w * h);
+    for (int pass = 0; pass < 2; pass++) {
+        double s = pass ? sy : sx;
+        int R = (int)ceil(5 * s);
+        double *k = malloc(sizeof(double) * (2 * R + 1)), ks = 0;
+        for (int i = -R; i <= R; i++)
+            ks += k[i + R] = exp(-0.5 * i * i / (s * s));
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                double a = 0;
+                for (int i = -R; i <= R; i++)
+                    a += k[i + R] * (pass ? f[(size_t)((y + i + h) % h) * w + x] : f[(size_t)y * w + (x + i + w) % w]);
+                t[(size_t)y * w + x] = a / ks;
+            }
+        for (int i = 0; i < w * h; i++)
+            f[i] = t[i];
+        free(k);
+    }
+    free(t);
+}
+
+/* white part of variance `white` (relative to the blurred part's) on top of blurred noise */
+static double *synthetic(int w, int h, double sx, double sy, double white, uint64_t seed)
+{
+    rng r;
+    rng_seed(&r, seed, 7);
+    double *f = malloc(sizeof(double) * w * h), *g = malloc(sizeof(double) * w * h);
+    for (int i = 0; i < w * h; i++)
+        f[i] = gauss(&r);
+    blur(f, w, h, sx, sy);
+    double v = 0;
+    for (int i = 0; i < w * h; i++)
+        v += f[i] * f[i];
+    v /= w * h;
+    for (int i = 0; i < w * h; i++)
+        g[i] = f[i] + sqrt(white * v) * gauss(&r) + 3.0; /* and an offset */
+    free(f);
+    return g;
+}
+
+Test(noise_corr, lengths_of_blurred_noise_under_white_noise)
+{
+    const int w = 512, h = 384, L = 30;
+    const double sx = 3.0, sy = 1.5;
+    double rx[31], ry[31];
+    double *f = synthetic(w, h, sx, sy, 3.0, 1);
+    cr_assert(corr_profiles(f, w, h, L, rx, ry));
+    cr_assert_float_eq(rx[0], 1.0, 1e-12);
+    cr_assert_float_eq(ry[0], 1.0, 1e-12);
+    /* white part 3x the blurred part: rho(1) = exp(-1 / (4 s^2)) / 4 */
+    cr_assert(fabs(rx[1] - 0.25 * exp(-1 / (4 * sx * sx))) < 0.02, "rho_x(1) = %g", rx[1]);
+    cr_assert(fabs(ry[1] - 0.25 * exp(-1 / (4 * sy * sy))) < 0.02, "rho_y(1) = %g", ry[1]);
+    double lx = corr_length_lag1(rx, L + 1), ly = corr_length_lag1(ry, L + 1);
+    double ex = sqrt(1 + 4 * sx * sx), ey = sqrt(1 + 4 * sy * sy);
+    /* the estimate's scatter over seeds is about 2 % here; 8 % fails a length off by a tenth */
+    cr_assert(fabs(lx / ex - 1) < 0.08, "l_x = %g, expected %g", lx, ex);
+    cr_assert(fabs(ly / ey - 1) < 0.08, "l_y = %g, expected %g", ly, ey);
+    cr_assert(fabs(lx / ly / (ex / ey) - 1) < 0.1, "ratio %g, expected %g", lx / ly, ex / ey);
+    /* the plain 1/e crossing of rho is pulled below one pixel by the white part */
+    cr_assert(corr_length(rx, L + 1, exp(-1)) < 1);
+    free(f);
+}
+
+Test(noise_corr, isotropic_noise_gives_ratio_one_and_white_noise_no_length)
+{
+    const int w = 400, h = 300, L = 20;
+    double rx[21], ry[21];
+    double *f = synthetic(w, h, 2.0, 2.0, 1.0, 2);
+    cr_assert(corr_profiles(f, w, h, L, rx, ry));
+    double r = corr_length_lag1(rx, L + 1) / corr_length_lag1(ry, L + 1);
+    cr_assert(fabs(r - 1) < 0.1, "ratio %g", r);
+    free(f);
+    /* pure white noise: rho(d >= 1) near 0 */
+    rng g;
+    rng_seed(&g, 3, 1);
+    double *n = malloc(sizeof(double) * w * h);
+    for (int i = 0; i < w * h; i++)
+        n[i] = gauss(&g);
+    cr_assert(corr_profiles(n, w, h, L, rx, ry));
+    for (int d = 1; d <= L; d++)
+        cr_assert(fabs(rx[d]) < 0.02 && fabs(ry[d]) < 0.02);
+    /* a constant field has no profile */
+    for (int i = 0; i < w * h; i++)
+        n[i] = 1.5;
+    cr_assert(!corr_profiles(n, w, h, L, rx, ry));
+    free(n);
+}
+
+Test(noise_corr, length_interpolates_between_lags)
+{
+    double rho[6] = {1, 0.8, 0.6, 0.2, 0.1, 0.05};
+    /* 1/e = 0.3679 between lag 2 (0.6) and 3 (0.2) */
+    cr_assert_float_eq(corr_length(rho, 6, exp(-1)), 2 + (0.6 - exp(-1)) / 0.4, 1e-12);
+    /* rho(1) / e = 0.2943 between lag 2 and 3 */
+    cr_assert_float_eq(corr_length_lag1(rho, 6), 2 + (0.6 - 0.8 * exp(-1)) / 0.4, 1e-12);
+    double flat[4] = {1, 0.9, 0.9, 0.9};
+    cr_assert_float_eq(corr_length_lag1(flat, 4), 3, 1e-12);
+    double neg[3] = {1, -0.1, 0};
+    cr_assert(isnan(corr_length_lag1(neg, 3)));
+}
