@@ -25,6 +25,7 @@
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define DIR "tests/data/tungsten/"
@@ -56,6 +57,37 @@ static const char *const known_failing_on_tex[] = {
     "quad-uv-texture", "cube-uv-texture", "sphere-uv-texture", "mesh-obj-wo3", "bsdf-plastic",
 };
 /* ===== end of the known-failing table ===== */
+
+/* ===== A CONVENTION OF TUNGSTEN'S NOT FOLLOWED (README: Tungsten conformance, the tent filter) =====
+ * Tungsten's tent differs between its techniques and at the image border (camera rays sample a
+ * tabulated staircase shifted one bin outward, light-tracing splats use the table itself, and
+ * border pixels take light from the film margin differently); here one exact tent serves every
+ * technique. Away from the border the two agree at the t16 budget; the outermost 8-pixel ring
+ * differs (at the reference budget the border columns by 5 to 36 %), so for this scene the
+ * comparison covers the image without that ring. */
+static const struct {
+    const char *name;
+    int border; /* pixels left out on every side */
+} not_followed[] = {
+    {"filter-tent", BLK},
+};
+/* ===== end ===== */
+
+static int border_of(const char *name)
+{
+    for (size_t i = 0; i < sizeof not_followed / sizeof *not_followed; i++)
+        if (!strcmp(name, not_followed[i].name)) return not_followed[i].border;
+    return 0;
+}
+
+/* The image without a ring of b pixels (b = 0: a copy). */
+static struct image *crop(const struct image *im, int b)
+{
+    struct image *o = img_create(im->w - 2 * b, im->h - 2 * b);
+    for (int y = 0; y < o->h; y++)
+        for (int x = 0; x < o->w; x++) img_add(o, x, y, img_get(im, x + b, y + b));
+    return o;
+}
 
 static bool known_failing(const char *name)
 {
@@ -115,16 +147,27 @@ ParameterizedTestParameters(stat_conformance, tungsten_scene)
 ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
 {
     const struct conf_scene *cs = &conf_scenes[*param];
+    const char *only = getenv("CONFORMANCE_SCENE"); /* run one scene: CONFORMANCE_SCENE=rot-y */
+    if (only && strcmp(only, cs->name)) cr_skip_test("CONFORMANCE_SCENE=%s", only);
     int comparisons = 0;
-    for (int i = 0; i < NSCENES; i++) comparisons += nblocks(conf_scenes[i].w, conf_scenes[i].h) + 1;
+    for (int i = 0; i < NSCENES; i++) {
+        int b = border_of(conf_scenes[i].name);
+        comparisons += nblocks(conf_scenes[i].w - 2 * b, conf_scenes[i].h - 2 * b) + 1;
+    }
     double alpha = 1 - pow(1 - 0.01, 1.0 / comparisons);
 
     char path[256];
     snprintf(path, sizeof path, DIR "%s.json", cs->name);
     struct scene *sc = test_scene(path);
-    struct image *ref = read_exr(cs->name, "ref"), *t16 = read_exr(cs->name, "t16");
+    struct image *ref_full = read_exr(cs->name, "ref"), *t16_full = read_exr(cs->name, "t16");
+    cr_assert(sc->cam.width == ref_full->w && sc->cam.height == ref_full->h && cs->w == ref_full->w &&
+              cs->h == ref_full->h);
+    int border = border_of(cs->name);
+    struct image *ref = crop(ref_full, border), *t16 = crop(t16_full, border);
+    img_destroy(ref_full);
+    img_destroy(t16_full);
     int w = ref->w, h = ref->h, nb = nblocks(w, h);
-    cr_assert(sc->cam.width == w && sc->cam.height == h && cs->w == w && cs->h == h && nb <= MAX_BLOCKS);
+    cr_assert(nb <= MAX_BLOCKS);
     cr_assert(sc->spp % (16 * BATCHES) == 0, "%s: reference spp %d", cs->name, sc->spp);
     int spp = sc->spp / 16 / BATCHES;
 
@@ -137,8 +180,10 @@ ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
         struct render_opts o = {.method = METHOD_BDPT, .spp = spp, .seed = 1000 * (uint64_t)(*param + 1) + b,
                                 .threads = 2, .max_length = sc->max_length};
         struct render_stats st;
-        struct image *im = render_mc(sc, &o, &st);
+        struct image *full = render_mc(sc, &o, &st);
         cr_assert_eq(st.nonfinite, 0, "%s: %ld non-finite samples", cs->name, st.nonfinite);
+        struct image *im = crop(full, border);
+        img_destroy(full);
         block_means(im, bm);
         for (int i = 0; i < nb; i++) {
             bsum[i] += bm[i];
@@ -172,6 +217,13 @@ ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
         if (p < worst) worst = p, worst_i = i;
         fails += p < alpha;
     }
+    char list[512] = "";
+    for (int i = 0, n = 0, listed = 0; i < nb && fails; i++) { /* the first 10 failing blocks */
+        double sd = sqrt(vc[i] * (1 + k / 16)), p = t_p(bm[i] - rb[i], vc[i] * (1 + k / 16), ref_mean);
+        if (p >= alpha || listed++ >= 10) continue;
+        n += snprintf(list + n, sizeof list - n, " (x%d y%d: %+.1f%%, t %.1f)", i % ((w + BLK - 1) / BLK),
+                      i / ((w + BLK - 1) / BLK), 100 * (bm[i] / rb[i] - 1), (bm[i] - rb[i]) / sd);
+    }
     double cm = msum / BATCHES, vm = fmax(0, msum2 - BATCHES * cm * cm) / (BATCHES - 1) / BATCHES;
     double pmean = t_p(cm - ref_mean, vm * (1 + k / 16), ref_mean);
     double rel = conf_relmse(cand, ref), rel_t16 = conf_relmse(t16, ref);
@@ -179,10 +231,11 @@ ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
     int bw = (w + BLK - 1) / BLK;
     fprintf(stderr,
             "conformance %-17s relMSE %.3e  Tungsten t16 %.3e  (%.2fx)  blocks %s: %d of %d fail (worst p %.1e at "
-            "block x%d y%d)  mean ratio %.4f +- %.4f (p %.2g)  k %.2f  alpha %.2e%s\n",
+            "block x%d y%d)  mean ratio %.4f +- %.4f (p %.2g)  k %.2f  alpha %.2e%s%s%s\n",
             cs->name, rel, rel_t16, rel / rel_t16, fails ? "FAIL" : "pass", fails, nb, worst, worst_i % bw,
             worst_i / bw, cm / ref_mean, sqrt(vm * (1 + k / 16)) / ref_mean, pmean, k, alpha,
-            known ? "  [known failing, fixed on branch tex]" : "");
+            known ? "  [known failing, fixed on branch tex]" : "", border ? "  [border ring left out]" : "",
+            list);
     img_destroy(cand);
     img_destroy(ref);
     img_destroy(t16);
