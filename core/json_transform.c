@@ -47,8 +47,8 @@ static bool rotation_angles(struct jctx *c, const cJSON *v, const char *path, ve
         char p[JPATH_MAX], pi[JPATH_MAX];
         jpath_key(p, path, "rotation");
         if (cJSON_IsArray(r)) jpath_idx(pi, p, i);
-        return jfail(c, cJSON_IsArray(r) ? pi : p, "expected an angle within +-1e6 degrees (got %g: it has lost all precision)",
-                     a[i]);
+        return jfail(c, cJSON_IsArray(r) ? pi : p,
+                     "expected an angle within +-1e6 degrees (got %g: it has lost all precision)", a[i]);
     }
     return true;
 }

@@ -39,14 +39,30 @@ struct conf_scene {
 };
 
 static const struct conf_scene conf_scenes[] = {
-    {"rot-x", 80, 60},           {"rot-y", 80, 60},           {"rot-z", 80, 60},
-    {"rot-xyz", 80, 60},         {"transform-matrix", 80, 60}, {"camera-lookat-up", 112, 70},
-    {"camera-matrix", 80, 60},   {"quad-emit-side", 80, 60},  {"quad-uv-texture", 96, 72},
-    {"cube-uv-texture", 96, 72}, {"sphere-uv-texture", 96, 72}, {"mesh-obj-wo3", 96, 72},
-    {"env-textured", 80, 60},    {"env-constant", 80, 60},    {"power-quad", 80, 60},
-    {"power-sphere", 80, 60},    {"power-mesh", 80, 60},      {"bsdf-metals", 80, 60},
-    {"bsdf-specular", 80, 60},   {"bsdf-plastic", 80, 60},    {"filter-box", 64, 64},
-    {"filter-tent", 64, 64},     {"bounces-2", 80, 60},       {"bounces-3", 80, 60},
+    {"rot-x", 80, 60},
+    {"rot-y", 80, 60},
+    {"rot-z", 80, 60},
+    {"rot-xyz", 80, 60},
+    {"transform-matrix", 80, 60},
+    {"camera-lookat-up", 112, 70},
+    {"camera-matrix", 80, 60},
+    {"quad-emit-side", 80, 60},
+    {"quad-uv-texture", 96, 72},
+    {"cube-uv-texture", 96, 72},
+    {"sphere-uv-texture", 96, 72},
+    {"mesh-obj-wo3", 96, 72},
+    {"env-textured", 80, 60},
+    {"env-constant", 80, 60},
+    {"power-quad", 80, 60},
+    {"power-sphere", 80, 60},
+    {"power-mesh", 80, 60},
+    {"bsdf-metals", 80, 60},
+    {"bsdf-specular", 80, 60},
+    {"bsdf-plastic", 80, 60},
+    {"filter-box", 64, 64},
+    {"filter-tent", 64, 64},
+    {"bounces-2", 80, 60},
+    {"bounces-3", 80, 60},
 };
 #define NSCENES (int)(sizeof conf_scenes / sizeof conf_scenes[0])
 
@@ -85,7 +101,8 @@ static struct image *crop(const struct image *im, int b)
 {
     struct image *o = img_create(im->w - 2 * b, im->h - 2 * b);
     for (int y = 0; y < o->h; y++)
-        for (int x = 0; x < o->w; x++) img_add(o, x, y, img_get(im, x + b, y + b));
+        for (int x = 0; x < o->w; x++)
+            img_add(o, x, y, img_get(im, x + b, y + b));
     return o;
 }
 
@@ -104,14 +121,16 @@ static void block_means(const struct image *im, double *out)
     int bw = (im->w + BLK - 1) / BLK, n = nblocks(im->w, im->h);
     static double cnt[MAX_BLOCKS];
     memset(cnt, 0, sizeof cnt);
-    for (int i = 0; i < n; i++) out[i] = 0;
+    for (int i = 0; i < n; i++)
+        out[i] = 0;
     for (int y = 0; y < im->h; y++)
         for (int x = 0; x < im->w; x++) {
             int b = (y / BLK) * bw + x / BLK;
             out[b] += luminance(img_get(im, x, y));
             cnt[b]++;
         }
-    for (int i = 0; i < n; i++) out[i] /= cnt[i];
+    for (int i = 0; i < n; i++)
+        out[i] /= cnt[i];
 }
 
 /* The README's relMSE: eps = (0.1 * mean reference luminance)^2. */
@@ -140,7 +159,8 @@ static double t_p(double d, double v, double scale)
 ParameterizedTestParameters(stat_conformance, tungsten_scene)
 {
     static int idx[NSCENES];
-    for (int i = 0; i < NSCENES; i++) idx[i] = i;
+    for (int i = 0; i < NSCENES; i++)
+        idx[i] = i;
     return cr_make_param_array(int, idx, NSCENES);
 }
 
@@ -177,8 +197,11 @@ ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
     double msum = 0, msum2 = 0;
     struct image *cand = img_create(w, h);
     for (int b = 0; b < BATCHES; b++) {
-        struct render_opts o = {.method = METHOD_BDPT, .spp = spp, .seed = 1000 * (uint64_t)(*param + 1) + b,
-                                .threads = 2, .max_length = sc->max_length};
+        struct render_opts o = {.method = METHOD_BDPT,
+                                .spp = spp,
+                                .seed = 1000 * (uint64_t)(*param + 1) + b,
+                                .threads = 2,
+                                .max_length = sc->max_length};
         struct render_stats st;
         struct image *full = render_mc(sc, &o, &st);
         cr_assert_eq(st.nonfinite, 0, "%s: %ld non-finite samples", cs->name, st.nonfinite);
@@ -234,16 +257,14 @@ ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
             "block x%d y%d)  mean ratio %.4f +- %.4f (p %.2g)  k %.2f  alpha %.2e%s%s%s\n",
             cs->name, rel, rel_t16, rel / rel_t16, fails ? "FAIL" : "pass", fails, nb, worst, worst_i % bw,
             worst_i / bw, cm / ref_mean, sqrt(vm * (1 + k / 16)) / ref_mean, pmean, k, alpha,
-            known ? "  [known failing, fixed on branch tex]" : "", border ? "  [border ring left out]" : "",
-            list);
+            known ? "  [known failing, fixed on branch tex]" : "", border ? "  [border ring left out]" : "", list);
     img_destroy(cand);
     img_destroy(ref);
     img_destroy(t16);
     scene_free(sc);
     if (known) return;
     cr_expect(rel <= 1.5 * rel_t16, "%s: relMSE %.3e > 1.5 x Tungsten's t16 %.3e", cs->name, rel, rel_t16);
-    cr_expect(fails == 0, "%s: %d of %d blocks differ from the reference (worst p %.2e < alpha %.2e)", cs->name,
-              fails, nb, worst, alpha);
-    cr_expect(pmean >= alpha, "%s: image mean ratio %.4f, p %.2e < alpha %.2e", cs->name, cm / ref_mean, pmean,
-              alpha);
+    cr_expect(fails == 0, "%s: %d of %d blocks differ from the reference (worst p %.2e < alpha %.2e)", cs->name, fails,
+              nb, worst, alpha);
+    cr_expect(pmean >= alpha, "%s: image mean ratio %.4f, p %.2e < alpha %.2e", cs->name, cm / ref_mean, pmean, alpha);
 }
