@@ -33,6 +33,26 @@ static bool matrix_form(struct jctx *c, const cJSON *v, const char *path, mat4 *
     return true;
 }
 
+/* Beyond a million degrees an angle has lost all precision: Tungsten reads it as a float, whose
+ * spacing there is 1/16 degree (and a whole degree at 1.6e7), so the scene cannot mean what it says. */
+#define MAX_ANGLE_DEG 1e6
+
+static bool rotation_angles(struct jctx *c, const cJSON *v, const char *path, vec3 *rot)
+{
+    if (!jget_vec3(c, v, path, "rotation", false, rot)) return false;
+    const cJSON *r = cJSON_GetObjectItemCaseSensitive(v, "rotation");
+    double a[3] = {rot->x, rot->y, rot->z};
+    for (int i = 0; i < 3; i++) {
+        if (fabs(a[i]) <= MAX_ANGLE_DEG) continue;
+        char p[JPATH_MAX], pi[JPATH_MAX];
+        jpath_key(p, path, "rotation");
+        if (cJSON_IsArray(r)) jpath_idx(pi, p, i);
+        return jfail(c, cJSON_IsArray(r) ? pi : p,
+                     "expected an angle within +-1e6 degrees (got %g: it has lost all precision)", a[i]);
+    }
+    return true;
+}
+
 bool jval_transform(struct jctx *c, const cJSON *v, const char *path, mat4 *out)
 {
     if (cJSON_IsArray(v)) return matrix_form(c, v, path, out);
@@ -75,8 +95,7 @@ bool jval_transform(struct jctx *c, const cJSON *v, const char *path, mat4 *out)
             z = vneg(z);
     }
     vec3 sc = v3s(1), rot = v3s(0);
-    if (!jget_vec3(c, v, path, "scale", false, &sc) || !jget_vec3(c, v, path, "rotation", false, &rot))
-        return false;
+    if (!jget_vec3(c, v, path, "scale", false, &sc) || !rotation_angles(c, v, path, &rot)) return false;
     mat4 r = mat4_rot_yxz(rot);
     x = mat4_vector(&r, vscale(x, sc.x));
     y = mat4_vector(&r, vscale(y, sc.y));

@@ -102,9 +102,11 @@ static mat4 rot_axis(int axis, double deg)
     return m;
 }
 
+/* Tungsten's Y angle turns the other way from the textbook's: rows [c,0,-s],[0,1,0],[s,0,c], so +x
+ * turns towards +z. Hence Ry(-y) here; X and Z are textbook. */
 mat4 mat4_rot_yxz(vec3 deg)
 {
-    mat4 ry = rot_axis(1, deg.y), rx = rot_axis(0, deg.x), rz = rot_axis(2, deg.z);
+    mat4 ry = rot_axis(1, -deg.y), rx = rot_axis(0, deg.x), rz = rot_axis(2, deg.z);
     mat4 yx = mat4_mul(&ry, &rx);
     return mat4_mul(&yx, &rz);
 }

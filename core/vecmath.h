@@ -94,7 +94,8 @@ vec3 mat4_vector(const mat4 *m, vec3 v);
 /* Transforms a normal by the inverse transpose of the upper 3x3 (not normalised). */
 vec3 mat4_normal(const mat4 *m, vec3 n);
 bool mat4_invert(const mat4 *m, mat4 *out);
-/* Tungsten's rotYXZ: rotation by Euler angles in degrees, applied Z first, then X, then Y. */
+/* Tungsten's rotYXZ: rotation by Euler angles in degrees, applied Z first, then X, then Y, equal to
+ * Ry(-y) * Rx(x) * Rz(z) in textbook right-handed matrices (a +y angle turns +x towards +z). */
 mat4 mat4_rot_yxz(vec3 degrees);
 /* M = T * R * S, as Tungsten builds transforms from position/rotation/scale. */
 mat4 mat4_trs(vec3 position, vec3 rotation_deg, vec3 scale);

@@ -78,6 +78,7 @@ Test(cli, bad_inputs_exit_2_with_one_line_and_no_output)
     const char *cases[][2] = {
         {"tests/data/bad/undefined_bsdf.json", "undefined_bsdf.json"},
         {"tests/data/bad/scale_string.json", "transform.scale"},
+        {"tests/data/bad/rotation_huge.json", "primitives[3].transform.rotation[1]"},
         {"scenes/does-not-exist.json", "does-not-exist"},
         {"scenes/cornell-box/scene.json --spp 0", "--spp"},
         {"scenes/cornell-box/scene.json --method foo", "--method"},

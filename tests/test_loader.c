@@ -195,14 +195,15 @@ Test(loader, transforms_sphere_camera, .init = mk_tmp, .fini = rm_tmp)
     struct scene *s = load_tmp_scene(
         "{\"type\": \"quad\", \"bsdf\": \"m\", \"transform\": {\"position\": [1, 2, 3], \"scale\": [2, 1, 3], "
         "\"rotation\": [0, 90, 0]}},"
-        "{\"type\": \"quad\", \"bsdf\": \"m\", \"transform\": [0, 0, 3, 1,  0, 1, 0, 2,  -2, 0, 0, 3,  0, 0, 0, 1]},"
+        "{\"type\": \"quad\", \"bsdf\": \"m\", \"transform\": [0, 0, -3, 1,  0, 1, 0, 2,  2, 0, 0, 3,  0, 0, 0, 1]},"
         "{\"type\": \"sphere\", \"bsdf\": {\"type\": \"plastic\"}, \"power\": 100, "
         "\"transform\": {\"position\": [4, 5, 6], \"scale\": [1, 3, 2]}}");
-    /* rotYXZ(0, 90, 0) maps x to -z and z to x: edge0 = (0, 0, -2), edge1 = (3, 0, 0), normal +y */
+    /* rotYXZ(0, 90, 0) maps x to +z and z to -x (Tungsten's Y sign): edge0 = (0, 0, 2),
+     * edge1 = (-3, 0, 0), normal edge1 x edge0 = +y */
     for (int i = 0; i < 2; i++) {
         const struct prim *p = &s->prims[i];
-        cr_assert(near3(p->quad_edge0, v3(0, 0, -2), 1e-12) && near3(p->quad_edge1, v3(3, 0, 0), 1e-12));
-        cr_assert(near3(p->quad_base, v3(-0.5, 2, 4), 1e-12));
+        cr_assert(near3(p->quad_edge0, v3(0, 0, 2), 1e-12) && near3(p->quad_edge1, v3(-3, 0, 0), 1e-12));
+        cr_assert(near3(p->quad_base, v3(2.5, 2, 2), 1e-12));
         check_quad(p, v3(0, 1, 0), 6);
     }
     const struct prim *sp = &s->prims[2];
@@ -357,6 +358,7 @@ static const struct bad_case bad_cases[] = {
     {"bsdf_array_two.json", ": primitives[0].bsdf: per-triangle bsdf arrays are not supported"},
     {"prim_not_object.json", ": primitives[0]: expected a primitive object"},
     {"prim_no_type.json", ": primitives[0].type: missing required field"},
+    {"rotation_huge.json", ": primitives[3].transform.rotation[1]: expected an angle within +-1e6 degrees"},
 };
 
 Test(loader, bad_inputs)
@@ -402,8 +404,8 @@ Test(loader, textures_and_environment, .init = mk_tmp, .fini = rm_tmp)
     cr_assert_eq(s->env_prim, 2);
     const struct prim *e = &s->prims[2];
     cr_assert(e->env_tex && e->emissive && e->bsdf == -1);
-    vec3 x = mat4_vector(&e->env_to_world, v3(1, 0, 0));
-    cr_assert(near3(x, v3(0, 0, -1), 1e-12));
+    vec3 x = mat4_vector(&e->env_to_world, v3(1, 0, 0)); /* Tungsten's +90 about y: +x to +z */
+    cr_assert(near3(x, v3(0, 0, 1), 1e-12));
     mat4 id = mat4_mul(&e->env_to_world, &e->env_to_local);
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) cr_assert(fabs(id.m[i][j] - (i == j)) < 1e-12);

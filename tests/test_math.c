@@ -36,14 +36,27 @@ Test(math, mat4_invert_and_trs)
 
 Test(math, rot_yxz_single_axes)
 {
-    /* 90 degrees about y maps +z to +x (right-handed rotation). */
+    /* Tungsten's Y angle: rows [c,0,-s],[0,1,0],[s,0,c], so 90 degrees maps +x to +z and +z to -x
+     * (the textbook's Ry turns the other way). X and Z alone are textbook. */
     mat4 ry = mat4_rot_yxz(v3(0, 90, 0));
-    vec3 z = mat4_vector(&ry, v3(0, 0, 1));
-    cr_assert(fabs(z.x - 1) < 1e-12 && fabs(z.z) < 1e-12);
+    vec3 z = mat4_vector(&ry, v3(0, 0, 1)), xy = mat4_vector(&ry, v3(1, 0, 0));
+    cr_assert(fabs(z.x + 1) < 1e-12 && fabs(z.z) < 1e-12, "got %g %g %g", z.x, z.y, z.z);
+    cr_assert(fabs(xy.z - 1) < 1e-12 && fabs(xy.x) < 1e-12, "got %g %g %g", xy.x, xy.y, xy.z);
+    mat4 r30 = mat4_rot_yxz(v3(0, 30, 0));
+    double c = cos(M_PI / 6), s = sin(M_PI / 6), want[3][3] = {{c, 0, -s}, {0, 1, 0}, {s, 0, c}};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) cr_assert(fabs(r30.m[i][j] - want[i][j]) < 1e-12);
+    mat4 rx = mat4_rot_yxz(v3(90, 0, 0)), rz = mat4_rot_yxz(v3(0, 0, 90));
+    vec3 yx = mat4_vector(&rx, v3(0, 1, 0)), xz = mat4_vector(&rz, v3(1, 0, 0));
+    cr_assert(fabs(yx.z - 1) < 1e-12 && fabs(xz.y - 1) < 1e-12);
     /* Z is applied first, then X: rotYXZ(90,0,90) maps +x to +y by Z, then +y to +z by X. */
     mat4 m = mat4_rot_yxz(v3(90, 0, 90));
     vec3 x = mat4_vector(&m, v3(1, 0, 0));
     cr_assert(fabs(x.z - 1) < 1e-12, "got %g %g %g", x.x, x.y, x.z);
+    /* then Y: rotYXZ(90,90,90) takes that +z on to -x */
+    mat4 m3 = mat4_rot_yxz(v3(90, 90, 90));
+    x = mat4_vector(&m3, v3(1, 0, 0));
+    cr_assert(fabs(x.x + 1) < 1e-12, "got %g %g %g", x.x, x.y, x.z);
 }
 
 Test(math, rng_streams_differ_and_repeat)
