@@ -43,7 +43,8 @@ const char *const *accel_isas(void);
 /* The ISA of every accel_build from now on; NULL restores the default. Returns false, changing
  * nothing, for a name not in accel_isas(). Process-wide and not thread-safe: call between builds. */
 bool accel_set_isa(const char *isa);
-/* The ISA accel_build uses: a name from accel_isas(), or NULL for Embree's own choice. */
+/* The ISA accel_build uses: a name from accel_isas(), or NULL for Embree's own choice (or a
+ * PSS_EMBREE_ISA this machine cannot run, which accel_build then reports). */
 const char *accel_isa(void);
 
 #endif
