@@ -4,8 +4,10 @@
 #include "util.h"
 #include <embree3/rtcore.h>
 #include <float.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 struct accel {
     RTCDevice device;
@@ -50,9 +52,109 @@ static void add_sphere(RTCDevice dev, RTCScene scn, const struct prim *p, unsign
     rtcReleaseGeometry(g);
 }
 
+/* Embree's "isa=" names, lowest first, with the native packet width Embree reports for each. */
+static const struct {
+    const char *name;
+    int width;
+} isa_table[] = {{"sse2", 4}, {"sse4.2", 4}, {"avx", 8}, {"avx2", 8}, {"avx512", 16}};
+enum { ISA_COUNT = sizeof isa_table / sizeof isa_table[0] };
+
+/* The CPU features Embree's kernels of each ISA use (its own CPU check wants the same). */
+static bool cpu_runs(int i)
+{
+    __builtin_cpu_init();
+    switch (i) {
+    case 0: return __builtin_cpu_supports("sse2");
+    case 1: return __builtin_cpu_supports("sse4.2") && __builtin_cpu_supports("popcnt");
+    case 2: return __builtin_cpu_supports("avx");
+    case 3:
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
+               __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("lzcnt");
+    default:
+        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+               __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512bw") &&
+               __builtin_cpu_supports("avx512vl");
+    }
+}
+
+static RTCDevice new_device(const char *isa)
+{
+    char cfg[32];
+    if (isa) snprintf(cfg, sizeof cfg, "isa=%s", isa);
+    return rtcNewDevice(isa ? cfg : NULL);
+}
+
+/* Embree takes any name and falls back silently to SSE2 on one it does not know or was not built
+ * with; the widths it then reports tell sse2/sse4.2 from avx/avx2 from avx512. */
+static bool embree_runs(int i)
+{
+    RTCDevice d = new_device(isa_table[i].name);
+    if (!d) return false;
+    bool ok = rtcGetDeviceError(d) == RTC_ERROR_NONE;
+    int w = rtcGetDeviceProperty(d, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)  ? 16
+            : rtcGetDeviceProperty(d, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) ? 8
+                                                                                   : 4;
+    rtcReleaseDevice(d);
+    return ok && w == isa_table[i].width;
+}
+
+static const char *isas[ISA_COUNT + 1];
+static pthread_once_t isas_once = PTHREAD_ONCE_INIT;
+
+static void find_isas(void)
+{
+    int n = 0;
+    for (int i = 0; i < ISA_COUNT; i++)
+        if (cpu_runs(i) && embree_runs(i)) isas[n++] = isa_table[i].name;
+    isas[n] = NULL;
+}
+
+const char *const *accel_isas(void)
+{
+    pthread_once(&isas_once, find_isas);
+    return isas;
+}
+
+/* The entry of accel_isas() spelled `name`, or NULL. */
+static const char *supported(const char *name)
+{
+    for (const char *const *s = accel_isas(); *s; s++)
+        if (!strcmp(*s, name)) return *s;
+    return NULL;
+}
+
+static const char *isa_set;
+static bool isa_is_set;
+
+bool accel_set_isa(const char *isa)
+{
+    const char *s = isa ? supported(isa) : NULL;
+    if (isa && !s) return false;
+    isa_set = s;
+    isa_is_set = isa != NULL;
+    return true;
+}
+
+const char *accel_isa(void)
+{
+    if (isa_is_set) return isa_set;
+    const char *env = getenv("PSS_EMBREE_ISA");
+    if (!env || !*env) return NULL;
+    const char *s = supported(env);
+    return s ? s : env; /* accel_build reports a name this machine cannot run */
+}
+
 struct accel *accel_build(const struct scene *sc, char *err, size_t errlen)
 {
-    RTCDevice dev = rtcNewDevice(NULL);
+    const char *isa = accel_isa();
+    if (isa && !supported(isa)) {
+        char list[64] = "";
+        for (const char *const *s = accel_isas(); *s; s++)
+            snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", s == accel_isas() ? "" : " ", *s);
+        snprintf(err, errlen, "PSS_EMBREE_ISA=%s: this CPU and Embree run only: %s", isa, list);
+        return NULL;
+    }
+    RTCDevice dev = new_device(isa);
     if (!dev) {
         snprintf(err, errlen, "%s: cannot create Embree device (error %d)", sc->file, (int)rtcGetDeviceError(NULL));
         return NULL;

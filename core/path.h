@@ -68,9 +68,19 @@ bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, 
 
 /* Thesis Alg. 2: write the numbers that make walk_* reproduce the subpath's vertices from vertex
  * `from` on (from = 0: the whole subpath; from > 0: partial inversion of a suffix, keeping the
- * numbers of the earlier blocks). Returns false when a step is not invertible. */
+ * numbers of the earlier blocks). Returns false when a step is not invertible.
+ * Closed loop (path_invert.c): each block is inverted at the vertex the walk will reach, found by
+ * replaying the block and tracing its ray (one ray per block), so the walk's rounding does not
+ * build up along the subpath. v[from] must therefore be the vertex the walk reaches with the
+ * numbers kept (for an MCMC state, its current subpath); v[i].wi is the direction the walk
+ * arrived along. */
 bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w);
 bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w);
+
+/* The surface vertex a walk reaches from `prev` along unit d (Alg. 1 line 8: the ray, its
+ * self-intersection offset and the surface set-up); false on a miss. Inversion retraces through the
+ * same function, so it knows the walk's hit points bit for bit. */
+bool walk_hit(const struct scene *sc, const struct vertex *prev, vec3 d, struct vertex *out);
 
 /* Surface vertex from a ray hit; `incoming` is the ray direction. */
 void surface_from_hit(const struct scene *sc, vec3 origin, vec3 dir, const struct hit *h, struct vertex *v);

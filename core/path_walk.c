@@ -3,6 +3,15 @@
 #include "emitter.h"
 #include "path.h"
 
+bool walk_hit(const struct scene *sc, const struct vertex *prev, vec3 d, struct vertex *out)
+{
+    struct hit h;
+    double eps = prev->kind == VK_CAMERA ? 0 : ray_eps(prev->p);
+    if (!accel_intersect(sc->accel, prev->p, d, eps, INFINITY, &h)) return false;
+    surface_from_hit(sc, prev->p, d, &h, out);
+    return true;
+}
+
 /* Extends a subpath whose last vertex v[n-1] emits direction d with solid-angle density pdf_sa
  * (0 for a delta lobe); beta is the throughput the next vertex receives. */
 static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts,
@@ -11,9 +20,7 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
     const struct scene *sc = pc->sc;
     while (n < max_verts) {
         struct vertex *prev = &v[n - 1], *cur = &v[n];
-        struct hit h;
-        double eps = prev->kind == VK_CAMERA ? 0 : ray_eps(prev->p);
-        if (!accel_intersect(sc->accel, prev->p, d, eps, INFINITY, &h)) {
+        if (!walk_hit(sc, prev, d, cur)) {
             /* A camera subpath that leaves the scene ends on the environment. */
             if (stream == STREAM_CAMERA && sc->env_prim >= 0) {
                 *cur = (struct vertex){.kind = VK_ENV, .p = prev->p, .ng = vneg(d), .sh = frame_from_normal(vneg(d)),
@@ -23,7 +30,6 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
             }
             break;
         }
-        surface_from_hit(sc, prev->p, d, &h, cur);
         double dist2 = vlen2(vsub(cur->p, prev->p));
         cur->beta = beta;
         cur->pdf_fwd = pdf_sa > 0 ? edge_pdf(pdf_sa, prev, cur, d, dist2) : 0;

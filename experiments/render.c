@@ -1,5 +1,6 @@
 /* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
  * MCMC methods, PREFIX.csv with acceptance statistics. */
+#include "accel.h"
 #include "camera.h"
 #include "cli.h"
 #include "emitter.h"
@@ -27,6 +28,9 @@ static const char *usage =
     "  --resolution WxH     override the camera resolution (same horizontal fov)\n"
     "  --out PREFIX         output prefix (default out)\n"
     "  --quiet              no progress bar\n"
+    "  --embree-isa ISA     Embree's kernels: sse2, sse4.2, avx, avx2 or avx512 (those this CPU\n"
+    "                       runs; default: the best, or the environment's PSS_EMBREE_ISA): hit\n"
+    "                       points, so images, differ in the last bits between kernels\n"
     "MCMC options (pssmlt, mmlt):\n"
     "  --p-large P          large-step probability (default 0.1)\n"
     "  --kernel kelemen|gaussian  small-step kernel (default kelemen: s1 = 1/1024, s2 = 1/64)\n"
@@ -112,6 +116,14 @@ static void parse(int argc, char **argv, struct args *a)
             a->out = VALUE;
         } else if (!strcmp(o, "--quiet")) {
             a->mc.progress = a->mlt.progress = false;
+        } else if (!strcmp(o, "--embree-isa")) {
+            const char *v = VALUE;
+            if (!accel_set_isa(v)) {
+                char list[64] = "";
+                for (const char *const *i = accel_isas(); *i; i++)
+                    snprintf(list + strlen(list), sizeof list - strlen(list), " %s", *i);
+                cli_fail(prog, "--embree-isa: this CPU and Embree run only:%s; got '%s'", list, v);
+            }
         } else if (!strcmp(o, "--p-large")) {
             a->mlt.p_large = cli_double(prog, o, VALUE, 0, 1);
         } else if (!strcmp(o, "--kernel")) {
