@@ -144,6 +144,15 @@ void pss_reject(struct pss_sampler *p)
     p->iteration--;
 }
 
+double pss_current(struct pss_sampler *p, int stream, int index)
+{
+    const struct pss_dim *d = &p->d[stream][index];
+    if (d->modified == p->iteration || (d->modified >= p->last_large && d->modified > 0)) return d->value;
+    double u = rng_uniform(&p->r);
+    pss_set(p, stream, index, u);
+    return u;
+}
+
 void pss_export(const struct pss_sampler *p, double (*u)[STREAM_DIMS])
 {
     for (int st = 0; st < STREAM_COUNT; st++)
