@@ -17,7 +17,7 @@ double angle_subpath(const struct vertex *a, const struct vertex *b, int n)
 bool angle_change(const struct ctrl_path *cur, const struct vertex *cam, const struct vertex *emi, double *dpsi)
 {
     int edges = (cur->t > 1 ? cur->t - 1 : 0) + (cur->s > 1 ? cur->s - 1 : 0);
-    if (edges == 0) return false;
+    if (edges == 0 || cur->t + cur->s - 1 < 2) return false; /* paths of length 1 are ignored */
     *dpsi = (angle_subpath(cur->cam, cam, cur->t) + angle_subpath(cur->emi, emi, cur->s)) / edges;
     return true;
 }

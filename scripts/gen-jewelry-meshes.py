@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Writes the meshes of scenes/jewelry (and the faceted test sphere of tests/data) as OBJ files.
+"""Writes the meshes of scenes/jewelry as OBJ files.
 
 Geometry is baked at its final place (no rotations in the scene file, whose Y-rotation convention
 is being changed on another branch). Flat-shaded meshes carry no vertex normals, so every facet
 boundary is a shading discontinuity; the smooth ring carries analytic normals.
-Usage: gen-jewelry-meshes.py OUTDIR TESTDIR  (deterministic output; rerun after editing)."""
+Usage: gen-jewelry-meshes.py scenes/jewelry  (deterministic output; rerun after editing)."""
 import math
 import os
 import sys
@@ -116,30 +116,8 @@ def light_quad(centre, target, size):
     return verts, [(0, 1, 2), (0, 2, 3)]
 
 
-def uv_sphere(r, nu, nv):
-    verts, faces = [(0.0, r, 0.0)], []
-    for j in range(1, nv):
-        b = math.pi * j / nv
-        for i in range(nu):
-            a = 2 * math.pi * i / nu
-            verts.append((r * math.sin(b) * math.cos(a), r * math.cos(b), r * math.sin(b) * math.sin(a)))
-    verts.append((0.0, -r, 0.0))
-    last = len(verts) - 1
-    for i in range(nu):
-        faces.append((0, 1 + (i + 1) % nu, 1 + i))
-    for j in range(nv - 2):
-        for i in range(nu):
-            a, b = 1 + j * nu + i, 1 + j * nu + (i + 1) % nu
-            c, d = 1 + (j + 1) * nu + (i + 1) % nu, 1 + (j + 1) * nu + i
-            faces += [(a, b, c), (a, c, d)]
-    base = 1 + (nv - 2) * nu
-    for i in range(nu):
-        faces.append((last, base + i, base + (i + 1) % nu))
-    return verts, faces
-
-
 def main():
-    out, test = sys.argv[1], sys.argv[2]
+    out = sys.argv[1]
     v, n, f = torus(0.42, 0.07, 48, 12, math.radians(62), math.radians(18), (-0.55, 0.36, 0.1))
     write_obj(os.path.join(out, "ring-smooth.obj"), v, f, n)
     v, _, f = torus(0.36, 0.085, 20, 6, math.radians(-55), math.radians(-25), (0.5, 0.3, -0.35))
@@ -152,8 +130,6 @@ def main():
     write_obj(os.path.join(out, "light-key.obj"), v, f)
     v, f = light_quad((1.7, 1.1, 0.9), (0.0, 0.3, 0.0), 0.5)
     write_obj(os.path.join(out, "light-fill.obj"), v, f)
-    v, f = uv_sphere(0.5, 10, 6)
-    write_obj(os.path.join(test, "faceted-sphere.obj"), v, f)
 
 
 main()
