@@ -105,11 +105,12 @@ static void build_block(struct ctrl_sampler *cs, int st, int i)
 
 static double ctrl_next(struct sampler *s, enum dim_kind kind)
 {
-    (void)kind;
     struct ctrl_sampler *cs = (struct ctrl_sampler *)s;
     int st = s->stream, i = s->vertex;
-    /* the technique number is kept; the root blocks were perturbed by ctrl_begin */
-    if (st == STREAM_TECHNIQUE || i == 0) return pss_current(cs->pss, st, sampler_index(s));
+    /* the technique number is kept; the root's numbers take the ordinary lazy small step (Alg. 4
+     * line 1), symmetric, so that its density cancels */
+    if (st == STREAM_TECHNIQUE) return pss_current(cs->pss, st, 0);
+    if (i == 0) return pss_read(cs->pss, st, sampler_index(s), kind);
     if (s->offset == 0 && cs->fail == CTRL_OK) build_block(cs, st, i);
     if (cs->fail != CTRL_OK || s->offset >= cs->blk[st][i].nv) {
         cs->fail = CTRL_FAIL_FORWARD; /* the walk goes on with a dummy number; the proposal is void */
@@ -132,11 +133,6 @@ void ctrl_begin(struct ctrl_sampler *cs, struct pss_sampler *p, const struct ctr
     cs->fail = CTRL_OK;
     cs->log_fwd = 0;
     for (int st = STREAM_CAMERA; st <= STREAM_EMITTER; st++) {
-        /* Alg. 4 line 1: the root's numbers take an ordinary (symmetric) small step, all of them */
-        for (int d = 0; d < SAMPLER_BLOCK; d++) {
-            enum dim_kind k = st == STREAM_CAMERA && d == 0 ? DIM_IMAGE_X : st == STREAM_CAMERA && d == 1 ? DIM_IMAGE_Y : DIM_CONTINUOUS;
-            pss_set(p, st, d, pss_small_step(p, k, pss_current(p, st, d)));
-        }
         /* u_i of every later scattering vertex, before the proposal overwrites them */
         const struct vertex *x;
         int n;

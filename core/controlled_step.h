@@ -3,9 +3,8 @@
  *
  * The current state u traced the subpaths x (camera x_0..x_{t-1}, emitter x_0..x_{s-1}). For each
  * subpath the proposal v is built while the walk traces it (Alg. 4):
- *  - root (block 0): all SAMPLER_BLOCK numbers get one ordinary small step (the chain's kernel,
- *    symmetric, so its density cancels; numbers the current path never read are revealed as fresh
- *    uniforms first: they are independent uniforms under the target);
+ *  - root (block 0): its numbers take the ordinary small step of core/pss.c when the walk reads
+ *    them (lazy, as in MMLT; a symmetric kernel, so its density cancels);
  *  - block i >= 1, when the walk reaches the proposal's vertex y_i: u'_i = the numbers that make
  *    y_i scatter toward w'_i = dir(x_i -> x_{i+1}) (inversion at y_i with y_i's incoming
  *    direction), v_i = u'_i + one wrapped-Gaussian step (sigma = the chain's --sigma) on every
@@ -68,7 +67,7 @@ struct ctrl_sampler {
 };
 
 /* Starts a proposal from the current state (pss after pss_begin(p, false), cur its subpaths):
- * perturbs both root blocks and binds the vertex arrays the walk will fill. */
+ * keeps the current numbers of the later blocks and binds the vertex arrays the walk will fill. */
 void ctrl_begin(struct ctrl_sampler *cs, struct pss_sampler *p, const struct ctrl_path *cur, const struct vertex *cam,
                 const struct vertex *emi, enum small_step kind);
 /* After the walk traced the proposal into the bound arrays with `complete` subpaths (cur->t and

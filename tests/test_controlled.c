@@ -37,7 +37,8 @@ Test(controlled, wrapped_gaussian_density_is_normalised)
  * lies on the same plane, material and shading frame as the current one, and the Lambertian
  * sampler ignores the incoming direction, so (four points of block 1): u'_1 = u_1, v'_1 = v_1,
  * the ratio T(v->u) / T(u->v) is 1, and v_1 is exactly what an ordinary Gaussian small step of
- * u_1 proposes with the same generator draws (replayed on a copy of the state). 2000 seeds, all
+ * u_1 proposes with the same generator draws (replayed on a copy of the state), after the same
+ * root step. 2000 seeds, all
  * proposals that stay on the plane (the plane is 200 units wide: nearly all). Tolerance 1e-9:
  * the cosine-hemisphere map's round trip. */
 Test(controlled, four_points_reduce_to_an_ordinary_step_on_a_diffuse_plane)
@@ -67,13 +68,9 @@ Test(controlled, four_points_reduce_to_an_ordinary_step_on_a_diffuse_plane)
         const struct ctrl_block *b = &cs.blk[STREAM_CAMERA][1];
         cr_assert(cs.fail == CTRL_OK && b->nu == 2 && b->nv == 2, "seed %d: fail %d, nu %d, nv %d", (int)seed, cs.fail,
                   b->nu, b->nv);
-        /* the ordinary step: the same root steps in the same order, then one step of each u_1 */
-        for (int st = STREAM_CAMERA; st <= STREAM_EMITTER; st++)
-            for (int d = 0; d < SAMPLER_BLOCK; d++) {
-                enum dim_kind k = st == STREAM_CAMERA && d == 0 ? DIM_IMAGE_X : st == STREAM_CAMERA && d == 1 ? DIM_IMAGE_Y : DIM_CONTINUOUS;
-                double v = pss_small_step(&replay, k, pss_current(&replay, st, d));
-                cr_assert_eq(v, pss_current(&p, st, d), "root number %d/%d differs", st, d);
-            }
+        /* the ordinary step: the same lazy root reads, then one step of each u_1 */
+        cr_assert_eq(pss_read(&replay, STREAM_CAMERA, 0, DIM_IMAGE_X), pss_current(&p, STREAM_CAMERA, 0));
+        cr_assert_eq(pss_read(&replay, STREAM_CAMERA, 1, DIM_IMAGE_Y), pss_current(&p, STREAM_CAMERA, 1));
         for (int d = 0; d < 2; d++) {
             double ordinary = pss_small_step(&replay, DIM_CONTINUOUS, b->u[d]);
             cr_assert(wdist(b->up[d], b->u[d]) < 1e-9, "seed %d: u'_1 %.12f != u_1 %.12f", (int)seed, b->up[d], b->u[d]);
@@ -225,9 +222,13 @@ static double flat_target_chain(bool unit_ratio, long n, uint64_t seed)
 }
 
 /* 2M steps each (40k thinned draws, 625 expected per cell, chi-square with 63 dof): the chain with
- * the ratio of Eq. 5.37 must pass at alpha = 0.01 (seed 5: p = 0.74 with 4M steps), the same chain
- * with T(v->u) / T(u->v) replaced by 1 must fail (p = 3e-175 with 4M steps; asserted < 1e-6): it
- * drifts toward directions that the moving frame makes grazing. */
+ * the ratio of Eq. 5.37 must pass at alpha = 0.01 (seed 5: p = 0.082), the same chain with
+ * T(v->u) / T(u->v) replaced by 1 must fail (p = 1.9e-93; asserted < 1e-6). On rendered images
+ * the missing ratio is much harder to see: on scenes/sky-sphere, scenes/smooth-sphere, a 32x32
+ * scene of two faceted spheres under a side light and one of alternating lambert / rough-plastic
+ * stripes (12 runs against 8 BDPT renders, 4x4 blocks) the chain without it passed as the correct
+ * one did: the pixel a path lands on comes from the symmetric root step, the bias sits in the
+ * directions, and large steps rebalance what small steps get wrong. */
 Test(stat_controlled, flat_target_stays_uniform_only_with_the_kernel_ratio)
 {
     double p = flat_target_chain(false, 2000000, 5);
