@@ -11,8 +11,8 @@ END {
     if (fig != 5) exit
     print "| small step | mean Δψ (rad), all pixels | within 2 px of an edge | elsewhere | edge / elsewhere |"
     print "| --- | ---: | ---: | ---: | ---: |"
-    split("mmlt controlled", k, " ")
-    for (i = 1; i <= 2; i++)
+    nk = split("mmlt controlled root", k, " ")
+    for (i = 1; i <= nk; i++) if ((k[i], "all") in m)
         printf "| %s | %.4f ± %.4f | %.4f ± %.4f | %.4f ± %.4f | %.3f ± %.3f |\n", k[i], m[k[i], "all"], s[k[i], "all"],
             m[k[i], "edge"], s[k[i], "edge"], m[k[i], "elsewhere"], s[k[i], "elsewhere"], m[k[i], "ratio"], s[k[i], "ratio"]
     print ""

@@ -1,9 +1,10 @@
 /* bin/fig5_5: thesis Figure 5.5. The mean angle change (Eq. 5.38-5.39, core/angle_change.h) that
- * MMLT small steps and controlled small steps (Alg. 4) introduce, per pixel of the current path, on
+ * MMLT small steps and controlled small steps (Alg. 4) introduce, per pixel of the current path,
+ * and for the analysis the root perturbation alone (Alg. 3, whose chain is not unbiased), on
  * scenes/jewelry: same mutation count, same Gaussian kernel (sigma 1/64), p_large 0.1, `seeds`
  * independent runs of each. Writes to OUT:
- *   mmlt.angle.exr, controlled.angle.exr   mean over seeds of each run's per-pixel mean (radians)
- *   mmlt.angle.png, controlled.angle.png   grey linear in it, black 0, white >= 0.5 rad
+ *   mmlt/controlled/root.angle.exr         mean over seeds of each run's per-pixel mean (radians)
+ *   mmlt/controlled/root.angle.png         grey linear in it, black 0, white >= 0.5 rad
  *   edges.png                              the edge mask (white: within 2 px of an edge)
  *   fig5.5.csv   kind,region,mean,stderr,seeds  (region all / edge / elsewhere: mean over the
  *                pixels of the region that saw a step; ratio: edge / elsewhere; stderr over seeds)
@@ -25,6 +26,7 @@ static const char *usage =
     "  --out DIR            (default results/fig5.5)\n";
 
 enum { R_ALL, R_EDGE, R_ELSE, R_RATIO, REGIONS };
+enum { NK = 3 }; /* small-step kinds, in enum small_step's order: MMLT's, controlled, root */
 static const char *const region_name[REGIONS] = {"all", "edge", "elsewhere", "ratio"};
 
 static void mean_se(const double *x, int n, double *m, double *se)
@@ -51,14 +53,14 @@ int main(int argc, char **argv)
     if (!fig5_write_linear_png(mi, 1, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
     img_destroy(mi);
 
-    double *reg = xcalloc((size_t)2 * REGIONS * c.seeds, sizeof *reg);
-    double (*len_mean)[MAX_PATH_LENGTH + 1] = xcalloc((size_t)2 * c.seeds, sizeof *len_mean);
-    long len_steps[2][MAX_PATH_LENGTH + 1] = {{0}};
-    for (int kind = 0; kind < 2; kind++) {
+    double *reg = xcalloc((size_t)NK * REGIONS * c.seeds, sizeof *reg);
+    double (*len_mean)[MAX_PATH_LENGTH + 1] = xcalloc((size_t)NK * c.seeds, sizeof *len_mean);
+    long len_steps[NK][MAX_PATH_LENGTH + 1] = {{0}};
+    for (int kind = 0; kind < NK; kind++) {
         struct image *avg = img_create(W, H);
         for (int s = 0; s < c.seeds; s++) {
             struct mlt_result r;
-            fig5_run(sc, &c, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, c.seed + (uint64_t)s, true, &r);
+            fig5_run(sc, &c, (enum small_step)kind, c.seed + (uint64_t)s, true, &r);
             struct image *a = angle_acc_image(r.angle);
             img_accumulate(avg, a, 1.0 / c.seeds);
             double sum[3] = {0}, n[3] = {0};
@@ -92,7 +94,7 @@ int main(int argc, char **argv)
                "# seeds %d from %llu\n# threads %d\n",
             c.scene, GIT_COMMIT, c.scale, W, H, c.mpp, c.p_large, c.seeds, (unsigned long long)c.seed, c.threads);
     fprintf(f, "kind,region,mean,stderr,seeds\n");
-    for (int kind = 0; kind < 2; kind++)
+    for (int kind = 0; kind < NK; kind++)
         for (int g = 0; g < REGIONS; g++) {
             double m, se;
             mean_se(reg + ((size_t)kind * REGIONS + g) * c.seeds, c.seeds, &m, &se);
@@ -103,7 +105,7 @@ int main(int argc, char **argv)
     free(buf);
     f = open_memstream(&buf, &len);
     fprintf(f, "kind,length,steps,mean_dpsi,stderr\n");
-    for (int kind = 0; kind < 2; kind++)
+    for (int kind = 0; kind < NK; kind++)
         for (int k = 2; k <= c.max_length; k++) {
             double x[1000], m, se;
             int n = 0;
