@@ -11,6 +11,9 @@
 #include "render.h"
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 /* Wrapped distance on [0, 1). */
 static double wdist(double a, double b)
@@ -248,4 +251,37 @@ Test(stat_controlled, agrees_with_bdpt_on_every_bsdf_family, .timeout = 600)
     int f = ctrl_vs_bdpt("scenes/materials/scene.json", 32, 64, 1024, 10000, 12, 8500, &pm, &worst, &m, &r);
     cr_assert_eq(f, 0, "controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
     cr_log_info("materials: mean p = %g, worst block p = %g\n", pm, worst);
+}
+
+/* bin/render: --small-step controlled with --angle-stats writes the image, the statistics (with the
+ * small-step kind and the impossible-inversion counts) and PREFIX.angle.exr / .angle.csv; the
+ * Kelemen kernel is refused (exit status 2); and two runs with the same seed give the same image
+ * and the same angle statistics, bit for bit. */
+Test(controlled, render_writes_angle_outputs_refuses_kelemen_and_reproduces)
+{
+    char dir[] = "/tmp/ctrl-test-XXXXXX", cmd[1024], path[256];
+    cr_assert(mkdtemp(dir));
+    const char *base = BIN_DIR "/render scenes/cornell-box/scene.json --method mmlt --small-step controlled --spp 4 "
+                       "--resolution 16x16 --seed-paths 2000 --threads 2 --quiet";
+    for (int r = 0; r < 2; r++) {
+        snprintf(cmd, sizeof cmd, "%s --angle-stats --out %s/r%d > /dev/null", base, dir, r);
+        cr_assert_eq(system(cmd), 0, "%s", cmd);
+    }
+    const char *ext[] = {".exr", ".csv", ".angle.exr", ".angle.csv"};
+    for (int i = 0; i < 4; i++) {
+        snprintf(path, sizeof path, "%s/r0%s", dir, ext[i]);
+        cr_assert(access(path, R_OK) == 0, "%s missing", path);
+    }
+    snprintf(cmd, sizeof cmd, "grep -q '^# small_step controlled' %s/r0.csv && grep -q '^# controlled_failed_reverse' %s/r0.csv", dir, dir);
+    cr_assert_eq(system(cmd), 0, "statistics CSV lacks the small-step lines");
+    snprintf(cmd, sizeof cmd, "cmp -s %s/r0.exr %s/r1.exr && diff -q <(grep -v '^#' %s/r0.angle.csv) <(grep -v '^#' %s/r1.angle.csv) > /dev/null",
+             dir, dir, dir, dir);
+    char bash[1200];
+    snprintf(bash, sizeof bash, "bash -c \"%s\"", cmd);
+    cr_assert_eq(system(bash), 0, "two runs with the same seed differ");
+    snprintf(cmd, sizeof cmd, "%s --kernel kelemen --out %s/k > /dev/null 2>&1", base, dir);
+    int st = system(cmd);
+    cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2, "kelemen with controlled steps: status %d", st);
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    cr_assert_eq(system(cmd), 0);
 }
