@@ -254,6 +254,27 @@ Test(stat_controlled, agrees_with_bdpt_on_every_bsdf_family, .timeout = 600)
     cr_log_info("materials: mean p = %g, worst block p = %g\n", pm, worst);
 }
 
+/* scenes/smooth-sphere (a coarse mesh with interpolated shading normals: frames turn continuously
+ * across each triangle, so u'_i != u_i at almost every vertex), 64x64: 12 runs of 64 mutations per
+ * pixel vs 8 BDPT renders of 16 spp. */
+Test(stat_controlled, agrees_with_bdpt_under_shading_normals, .timeout = 300)
+{
+    double pm, worst, m, r;
+    int f = ctrl_vs_bdpt("scenes/smooth-sphere/scene.json", 64, 16, 64, 10000, 12, 8700, &pm, &worst, &m, &r);
+    cr_assert_eq(f, 0, "controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
+    cr_log_info("smooth sphere: mean p = %g, worst block p = %g\n", pm, worst);
+}
+
+/* scenes/lights (sphere, cube and mesh emitters: the emitter root's numbers change meaning with the
+ * light chosen), 64x64: 12 runs of 256 mutations per pixel vs 8 BDPT renders of 16 spp. */
+Test(stat_controlled, agrees_with_bdpt_with_sphere_cube_and_mesh_lights, .timeout = 400)
+{
+    double pm, worst, m, r;
+    int f = ctrl_vs_bdpt("scenes/lights/scene.json", 64, 16, 256, 10000, 12, 8900, &pm, &worst, &m, &r);
+    cr_assert_eq(f, 0, "controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
+    cr_log_info("lights: mean p = %g, worst block p = %g\n", pm, worst);
+}
+
 /* bin/render: --small-step controlled with --angle-stats writes the image, the statistics (with the
  * small-step kind and the impossible-inversion counts) and PREFIX.angle.exr / .angle.csv; the
  * Kelemen kernel is refused (exit status 2); and two runs with the same seed give the same image
