@@ -13,7 +13,7 @@ all: $(BIN)/fig5_5 $(BIN)/fig5_6
 # Angle-change images (MMLT vs controlled small steps) with the edge/elsewhere table.
 fig5.5: deps $(BIN)/fig5_5
 	$(BIN)/fig5_5 --out results/fig5.5
-	bash scripts/fig5-montage.sh results/fig5.5 mmlt.angle.png "MMLT small steps" controlled.angle.png "controlled small steps" root.angle.png "root perturbation (Alg. 3)" edges.png "edge mask (2 px)"
+	bash scripts/fig5-montage.sh results/fig5.5 mmlt.angle.png "MMLT small steps" controlled.angle.png "controlled small steps" root.angle.png "root only (Alg. 3)" edges.png "edge mask (2 px)"
 	bash scripts/fig5-table.sh results/fig5.5/fig5.5.csv > results/fig5.5/fig5.5.md
 	@cat results/fig5.5/fig5.5.md
 
