@@ -13,10 +13,11 @@
 /* Evaluates the state the sampler describes; returns the scalar target (0 for no contribution).
  * For MMLT, *tech receives the camera vertex count t. */
 static double eval_state(enum mlt_method m, const struct path_ctx *pc, struct sampler *s, struct scratch *w, int k,
-                         struct splat_list *out, int *tech)
+                         struct splat_list *out, int *tech, bool *complete)
 {
     out->n = 0;
     *tech = 0;
+    *complete = false;
     if (m == MLT_PSSMLT) {
         bdpt_splats(pc, s, w, out);
     } else {
@@ -28,7 +29,8 @@ static double eval_state(enum mlt_method m, const struct path_ctx *pc, struct sa
         int nz = walk_camera(pc, s, w->cam, t);
         int ny = sv > 0 ? walk_emitter(pc, s, w->emi, sv) : 0;
         struct connection c;
-        if (nz == t && ny == sv && connect_st(pc, w->emi, sv, w->cam, t, k, &c, NULL)) {
+        *complete = nz == t && ny == sv;
+        if (*complete && connect_st(pc, w->emi, sv, w->cam, t, k, &c, NULL)) {
             rgb v = vscale(c.f, c.w * (k + 1));
             if (vfinite(v)) splat_push(out, c.px, c.py, v);
             else w->nonfinite++;
@@ -82,10 +84,11 @@ static void seed_worker(int tid, void *p)
     struct sampler_independent s;
     struct splat_list l;
     int tech;
+    bool complete;
     for (long i = tid; i < j->o->seed_paths; i += j->o->threads) {
         for (int kk = 0; kk < j->nk; kk++) {
             sampler_independent_init(&s, j->o->seed, seed_stream(i, j->nk, kk));
-            j->f[i * j->nk + kk] = eval_state(j->o->method, &pc, &s.base, w, kk + 1, &l, &tech);
+            j->f[i * j->nk + kk] = eval_state(j->o->method, &pc, &s.base, w, kk + 1, &l, &tech, &complete);
         }
         if ((i / j->o->threads) % 1024 == 0) progress_add(&j->prog, 1024);
     }
@@ -101,6 +104,7 @@ struct chain {
     double xsum;       /* MCTLS: sum over techniques of the current numbers' targets */
     double pending;    /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
     bool xsum_valid;
+    struct ctrl_path *path; /* controlled steps and angle statistics: the current subpaths */
 };
 
 /* Per-thread MCTLS buffers (k + 2 splat lists each for proposal and current). */
@@ -118,6 +122,8 @@ struct run_job {
     double scale[MAX_PATH_LENGTH + 1];      /* per chain index: b_k / P(k) */
     struct image **img;
     struct mlt_stats *stats;
+    struct angle_acc *angle; /* per thread, with angle_stats */
+    long (*ctrl_fail)[2];    /* per thread: forward, reverse */
     long *done;
     double t0;
     struct progress prog;
@@ -227,6 +233,9 @@ static void run_worker(int tid, void *p)
     struct image *img = j->img[tid];
     rng r;
     rng_seed(&r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)tid);
+    bool track = o->method == MLT_MMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
+    struct ctrl_sampler *cs = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *cs) : NULL;
+    bool complete;
     /* Start every chain from a seed sample resampled in proportion to its target. */
     for (int kk = 0; kk < j->nk; kk++) {
         struct chain *c = &ch[kk];
@@ -235,8 +244,12 @@ static void run_worker(int tid, void *p)
         if (!j->cdf[kk]) continue;
         long i = pick_cdf(j->cdf[kk], o->seed_paths, rng_uniform(&r));
         pss_init(&c->pss, &o->pss, o->seed, seed_stream(i, j->nk, kk));
-        c->f = eval_state(o->method, &pc, &c->pss.base, w, c->k, &c->cur, &c->tech);
+        c->f = eval_state(o->method, &pc, &c->pss.base, w, c->k, &c->cur, &c->tech, &complete);
         pss_accept(&c->pss);
+        if (track) {
+            c->path = xmalloc(sizeof *c->path);
+            ctrl_path_capture(c->path, w->cam, c->tech, w->emi, c->k + 1 - c->tech);
+        }
         /* The seed's stream reproduced its path; the mutations get a stream of their own, so that
          * two threads starting from the same seed sample do not run identical chains. */
         rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)tid << 24) | (uint64_t)kk);
@@ -266,8 +279,23 @@ static void run_worker(int tid, void *p)
         } else {
             pss_begin(&c->pss, large);
             int tech;
-            double f = eval_state(o->method, &pc, &c->pss.base, w, c->k, &prop, &tech);
-            double a = c->f > 0 ? mind(f / c->f, 1.0) : 1.0;
+            /* the one dispatch point of the small-step kind: the proposal is traced through the
+             * controlled sampler, which also yields the kernel's ratio T(v->u) / T(u->v) */
+            bool ctrl = !large && cs;
+            if (ctrl) ctrl_begin(cs, &c->pss, c->path, w->cam, w->emi, o->small_step);
+            double f = eval_state(o->method, &pc, ctrl ? &cs->base : &c->pss.base, w, c->k, &prop, &tech, &complete);
+            double tr = ctrl ? ctrl_finish(cs, complete) : 1;
+            if (ctrl && cs->fail != CTRL_OK) j->ctrl_fail[tid][cs->fail - 1]++;
+            if (o->ctrl_unit_ratio && tr > 0) tr = 1;
+            if (tr == 0) f = 0; /* an impossible inversion: nothing this proposal could splat */
+            if (!large && o->angle_stats) {
+                double dpsi;
+                if (complete && tech == c->tech && angle_change(c->path, w->cam, w->emi, &dpsi))
+                    angle_acc_add(&j->angle[tid], c->cur.s[0].px, c->cur.s[0].py, c->k, dpsi);
+                else
+                    j->angle[tid].skipped++;
+            }
+            double a = c->f > 0 ? mind(f * tr / c->f, 1.0) : 1.0;
             /* expected values: the proposal with weight a, the current state with 1 - a */
             if (f > 0) splat_list_weighted(img, &prop, a * c->scale / f);
             owe_current(c, a);
@@ -276,6 +304,7 @@ static void run_worker(int tid, void *p)
                 pss_accept(&c->pss);
                 move_to(img, c, &prop, f);
                 c->xsum_valid = false;
+                if (track) ctrl_path_capture(c->path, w->cam, tech, w->emi, c->k + 1 - tech);
             } else {
                 pss_reject(&c->pss);
             }
@@ -289,7 +318,11 @@ static void run_worker(int tid, void *p)
             else if (tid == 0) progress_set(&j->prog, (long)(1000 * (now_seconds() - j->t0)));
         }
     }
-    for (int kk = 0; kk < j->nk; kk++) pay_current(img, &ch[kk]);
+    for (int kk = 0; kk < j->nk; kk++) {
+        pay_current(img, &ch[kk]);
+        free(ch[kk].path);
+    }
+    free(cs);
     j->done[tid] = n;
     st->nonfinite += w->nonfinite;
     free(mb);
@@ -304,6 +337,17 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     int W = sc->cam.width, H = sc->cam.height, T = o.threads;
     int nk = o.method == MLT_MMLT ? o.max_length : 1;
     memset(r, 0, sizeof *r);
+    if (o.small_step != SMALL_STEP_PSS &&
+        (o.method != MLT_MMLT || o.large_step != LARGE_MMLT || o.pss.kernel != KERNEL_GAUSSIAN || o.pss.cdc)) {
+        /* the reverse density needs the Gaussian's (controlled_step.h); MCTLS does not keep the
+         * current subpaths; --cdc would make the kernel singular */
+        snprintf(err, errlen, "controlled and root small steps need mmlt, MMLT large steps, the Gaussian kernel and no --cdc");
+        return false;
+    }
+    if (o.angle_stats && (o.method != MLT_MMLT || o.large_step != LARGE_MMLT)) {
+        snprintf(err, errlen, "angle statistics need mmlt with MMLT large steps");
+        return false;
+    }
     double t0 = now_seconds();
 
     struct seed_job sj = {sc, &o, nk, xmalloc((size_t)o.seed_paths * nk * sizeof(double)), {0}};
@@ -351,6 +395,11 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     rj.img = xcalloc((size_t)T, sizeof(struct image *));
     rj.stats = xcalloc((size_t)T, sizeof(struct mlt_stats));
     rj.done = xcalloc((size_t)T, sizeof(long));
+    rj.ctrl_fail = xcalloc((size_t)T, sizeof *rj.ctrl_fail);
+    if (o.angle_stats) {
+        rj.angle = xcalloc((size_t)T, sizeof *rj.angle);
+        for (int i = 0; i < T; i++) angle_acc_init(&rj.angle[i], W, H);
+    }
     for (int i = 0; i < T; i++) {
         rj.img[i] = img_create(W, H);
         rj.img[i]->tent = sc->cam.filter == FILTER_TENT;
@@ -370,7 +419,19 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         img_accumulate(r->img, rj.img[i], scale);
         stats_merge(&r->stats, &rj.stats[i]);
         img_destroy(rj.img[i]);
+        r->ctrl_fail_forward += rj.ctrl_fail[i][0];
+        r->ctrl_fail_reverse += rj.ctrl_fail[i][1];
     }
+    if (o.angle_stats) {
+        r->angle = xmalloc(sizeof *r->angle);
+        angle_acc_init(r->angle, W, H);
+        for (int i = 0; i < T; i++) {
+            angle_acc_merge(r->angle, &rj.angle[i]);
+            angle_acc_free(&rj.angle[i]);
+        }
+        free(rj.angle);
+    }
+    free(rj.ctrl_fail);
     r->nonfinite = r->stats.nonfinite;
     for (int kk = 0; kk < nk; kk++) free((void *)rj.cdf[kk]);
     free(rj.img);
@@ -384,4 +445,7 @@ void mlt_result_free(struct mlt_result *r)
 {
     img_destroy(r->img);
     r->img = NULL;
+    if (r->angle) angle_acc_free(r->angle);
+    free(r->angle);
+    r->angle = NULL;
 }

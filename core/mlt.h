@@ -15,6 +15,8 @@
 #ifndef MLT_H
 #define MLT_H
 
+#include "angle_change.h"
+#include "controlled_step.h"
 #include "image.h"
 #include "mlt_stats.h"
 #include "pss.h"
@@ -44,6 +46,12 @@ struct mlt_opts {
     bool uniform_lengths;        /* MMLT: every length gets the same share of mutations, not b_k */
     bool time_proposals;         /* record each proposal's time in the statistics (two clock reads) */
     bool max_heuristic;          /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */
+    /* MMLT's small step: the lazy primary-sample-space step, or thesis §5.3's controlled step
+     * (Alg. 4) or root perturbation (Alg. 3), see controlled_step.h. Controlled and root need the
+     * Gaussian kernel without --cdc, and MMLT large steps. */
+    enum small_step small_step;
+    bool angle_stats;            /* MMLT: angle change of every small step (angle_change.h) */
+    bool ctrl_unit_ratio;        /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
 };
 
 struct mlt_result {
@@ -55,6 +63,8 @@ struct mlt_result {
     double seconds, seed_seconds;
     long nonfinite;
     bool partial;          /* interrupted: fewer mutations than asked (the image stays unbiased) */
+    struct angle_acc *angle; /* with angle_stats */
+    long ctrl_fail_forward, ctrl_fail_reverse; /* controlled steps: impossible inversions */
 };
 
 /* Returns false (with a message) when the seed pass finds no light at all. */

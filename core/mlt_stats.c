@@ -10,11 +10,15 @@ void stats_clear(struct mlt_stats *s) { memset(s, 0, sizeof *s); }
 
 static void record(struct accept_cell *c, double a, bool accepted, bool nonzero, double seconds)
 {
-    double m = a < 1 ? a : 1;
-    c->attempts++;
     c->accepted += accepted;
     c->nonzero += nonzero;
     c->seconds += seconds;
+    cell_add(c, a < 1 ? a : 1);
+}
+
+void cell_add(struct accept_cell *c, double m)
+{
+    c->attempts++;
     c->sum_a += m;
     c->batch_sum += m;
     if (++c->batch_n == STATS_BATCH) {
@@ -36,7 +40,7 @@ void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool
     record(&s->total[kind], a, accepted, nonzero, seconds);
 }
 
-static void merge_cell(struct accept_cell *d, const struct accept_cell *s)
+void cell_merge(struct accept_cell *d, const struct accept_cell *s)
 {
     d->attempts += s->attempts;
     d->accepted += s->accepted;
@@ -53,10 +57,10 @@ void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src)
 {
     for (int k = 0; k < PROPOSAL_KINDS; k++) {
         for (int l = 0; l < STATS_LENGTHS; l++) {
-            for (int c = 0; c < 2; c++) merge_cell(&dst->cell[k][l][c], &src->cell[k][l][c]);
-            merge_cell(&dst->any[k][l], &src->any[k][l]);
+            for (int c = 0; c < 2; c++) cell_merge(&dst->cell[k][l][c], &src->cell[k][l][c]);
+            cell_merge(&dst->any[k][l], &src->any[k][l]);
         }
-        merge_cell(&dst->total[k], &src->total[k]);
+        cell_merge(&dst->total[k], &src->total[k]);
     }
     dst->nonfinite += src->nonfinite;
 }

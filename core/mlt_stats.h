@@ -35,6 +35,10 @@ void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool
                   bool accepted, bool nonzero, double seconds);
 /* Adds src into dst (threads are merged in a fixed order). */
 void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src);
+/* One value into a cell's mean and batches (also for other per-proposal statistics, such as the
+ * angle change of angle_change.h), and a cell added into another. */
+void cell_add(struct accept_cell *c, double x);
+void cell_merge(struct accept_cell *dst, const struct accept_cell *src);
 /* Mean acceptance, its batch-means standard error (NAN with fewer than 2 batches). */
 double cell_mean(const struct accept_cell *c);
 double cell_stderr(const struct accept_cell *c);

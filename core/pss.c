@@ -102,13 +102,11 @@ void pss_set(struct pss_sampler *p, int stream, int index, double u)
 /* Outside a proposal (after accept or reject) reads describe the current state: a number never
  * read since the last accepted large step is fresh, any other catches up on the small steps of
  * the accepted iterations it was not read in (which an eager implementation would have applied). */
-static double pss_next(struct sampler *s, enum dim_kind kind)
+double pss_read(struct pss_sampler *p, int stream, int idx, enum dim_kind kind)
 {
-    struct pss_sampler *p = (struct pss_sampler *)s;
-    int idx = sampler_index(s);
-    struct pss_dim *d = &p->d[s->stream][idx];
+    struct pss_dim *d = &p->d[stream][idx];
     if (d->modified == p->iteration) return d->value; /* already brought up to date */
-    touch(p, s->stream, idx);
+    touch(p, stream, idx);
     if (p->large || d->modified < p->last_large) {
         /* never read since the last large step (or this is one): a fresh number */
         d->value = rng_uniform(&p->r);
@@ -119,6 +117,11 @@ static double pss_next(struct sampler *s, enum dim_kind kind)
     }
     d->modified = p->iteration;
     return d->value;
+}
+
+static double pss_next(struct sampler *s, enum dim_kind kind)
+{
+    return pss_read((struct pss_sampler *)s, s->stream, sampler_index(s), kind);
 }
 
 void pss_accept(struct pss_sampler *p)
@@ -142,6 +145,15 @@ void pss_reject(struct pss_sampler *p)
     /* The rejected proposal did not happen: the next one reuses its iteration number, so lazy
      * catch-up counts only accepted iterations. */
     p->iteration--;
+}
+
+double pss_current(struct pss_sampler *p, int stream, int index)
+{
+    const struct pss_dim *d = &p->d[stream][index];
+    if (d->modified == p->iteration || (d->modified >= p->last_large && d->modified > 0)) return d->value;
+    double u = rng_uniform(&p->r);
+    pss_set(p, stream, index, u);
+    return u;
 }
 
 void pss_export(const struct pss_sampler *p, double (*u)[STREAM_DIMS])

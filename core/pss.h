@@ -62,6 +62,13 @@ void pss_set(struct pss_sampler *p, int stream, int index, double u);
 void pss_export(const struct pss_sampler *p, double (*u)[STREAM_DIMS]);
 /* Replaces the state by u (used to start a chain from a seed path); NAN entries stay fresh. */
 void pss_import(struct pss_sampler *p, const double (*u)[STREAM_DIMS]);
+/* The current state's value of a number, for proposals that compute their numbers themselves
+ * (controlled small steps): a number not read since the last accepted large step is an independent
+ * uniform under the target, so it is revealed now as a fresh draw, recorded in the proposal. */
+double pss_current(struct pss_sampler *p, int stream, int index);
+/* The lazy read path code goes through (sampler_next), for one number named directly: fresh after a
+ * large step, else the small steps it missed, once per proposal. */
+double pss_read(struct pss_sampler *p, int stream, int index, enum dim_kind kind);
 /* One small step of value u for a number of the given kind (exposed for tests). */
 double pss_small_step(struct pss_sampler *p, enum dim_kind kind, double u);
 

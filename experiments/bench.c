@@ -94,12 +94,13 @@ static double sample_rate(const struct scene *sc, enum method m, int threads, in
 /* Mutations per second of the chains alone (the seed pass is excluded), and with `per` (1 thread)
  * the rays per mutation: the rays of a run without mutations, the same seed pass and chain starts,
  * are subtracted. */
-static double mutation_rate(const struct scene *sc, enum mlt_method m, int threads, int K, double seconds,
-                            struct rays *per)
+static double mutation_rate(const struct scene *sc, enum mlt_method m, enum small_step ss, int threads, int K,
+                            double seconds, struct rays *per)
 {
     struct mlt_opts o = {.method = m, .p_large = 0.1, .seconds = seconds, .seed_paths = 20000, .seed = 1,
-                         .threads = threads, .max_length = K};
+                         .threads = threads, .max_length = K, .small_step = ss};
     pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+    if (ss != SMALL_STEP_PSS) o.pss.kernel = KERNEL_GAUSSIAN; /* controlled steps' density (controlled_step.h) */
     struct mlt_result r;
     char err[256];
     /* start - before: the rays of the seed pass and chain starts alone */
@@ -146,8 +147,8 @@ static double image_io_peak_mb(const struct scene *sc)
     return ok ? ru.ru_maxrss / 1024.0 : NAN;
 }
 
-enum { PT, BDPT, PSSMLT, MMLT, NM };
-static const char *method_names[NM] = {"pt", "bdpt", "pssmlt", "mmlt"};
+enum { PT, BDPT, PSSMLT, MMLT, CTRL, NM };
+static const char *method_names[NM] = {"pt", "bdpt", "pssmlt", "mmlt", "mmlt --small-step controlled"};
 
 struct figures {
     double closest_rate, shadow_rate; /* Embree's random rays/s */
@@ -160,8 +161,9 @@ static double method_rate(const struct scene *sc, int m, int threads, int K, dou
     switch (m) {
     case PT: return sample_rate(sc, METHOD_PT, threads, K, seconds, per);
     case BDPT: return sample_rate(sc, METHOD_BDPT, threads, K, seconds, per);
-    case PSSMLT: return mutation_rate(sc, MLT_PSSMLT, threads, K, seconds, per);
-    default: return mutation_rate(sc, MLT_MMLT, threads, K, seconds, per);
+    case PSSMLT: return mutation_rate(sc, MLT_PSSMLT, SMALL_STEP_PSS, threads, K, seconds, per);
+    case CTRL: return mutation_rate(sc, MLT_MMLT, SMALL_STEP_CONTROLLED, threads, K, seconds, per);
+    default: return mutation_rate(sc, MLT_MMLT, SMALL_STEP_PSS, threads, K, seconds, per);
     }
 }
 
@@ -199,40 +201,41 @@ static void report(const char *path, const struct scene *sc, int runs, double se
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     double io_mb = image_io_peak_mb(sc);
-    const char *unit[NM] = {"samples", "samples", "mutations", "mutations"};
+    const char *unit[NM] = {"samples", "samples", "mutations", "mutations", "mutations"};
     printf("# %s at 320x180, max length %d, median of %d runs\n", path, K, runs);
-    printf("%-34s %12.0f\n", "embree incoherent rays/s (1 thread)", f.closest_rate);
-    printf("%-34s %12.0f   any hit, same rays\n", "  as shadow rays", f.shadow_rate);
+    printf("%-44s %12.0f\n", "embree incoherent rays/s (1 thread)", f.closest_rate);
+    printf("%-44s %12.0f   any hit, same rays\n", "  as shadow rays", f.shadow_rate);
     for (int m = 0; m < NM; m++) {
         char label[64];
         snprintf(label, sizeof label, "%s %s/s (1 thread)", method_names[m], unit[m]);
-        printf("%-34s %12.0f", label, f.rate[m][0]);
+        printf("%-44s %12.0f", label, f.rate[m][0]);
         if (m == PSSMLT) printf("   per mutation vs bdpt per sample %.2fx", f.rate[m][0] / f.rate[BDPT][0]);
+        if (m == CTRL) printf("   %.2fx mmlt's", f.rate[m][0] / f.rate[MMLT][0]);
         snprintf(label, sizeof label, "%s %s/s (2 threads)", method_names[m], unit[m]);
-        printf("\n%-34s %12.0f   speed-up %.2fx\n", label, f.rate[m][1], f.rate[m][1] / f.rate[m][0]);
+        printf("\n%-44s %12.0f   speed-up %.2fx\n", label, f.rate[m][1], f.rate[m][1] / f.rate[m][0]);
     }
     /* What the rays alone would take at the random-ray rates: how far the rest could ever go. */
-    printf("%-34s %8s %8s   %s\n", "rays per sample or mutation", "closest", "shadow", "Embree time at the rates above");
+    printf("%-44s %8s %8s   %s\n", "rays per sample or mutation", "closest", "shadow", "Embree time at the rates above");
     for (int m = 0; m < NM; m++) {
         double us = 1e6 / f.rate[m][0], ray_us = 1e6 * (f.per[m].closest / f.closest_rate + f.per[m].shadow / f.shadow_rate);
-        printf("  %-32s %8.2f %8.2f   %.3f of %.3f us (%.0f %%)\n", method_names[m], f.per[m].closest, f.per[m].shadow,
+        printf("  %-42s %8.2f %8.2f   %.3f of %.3f us (%.0f %%)\n", method_names[m], f.per[m].closest, f.per[m].shadow,
                ray_us, us, 100 * ray_us / us);
     }
-    printf("%-34s %12.1f\n", "peak resident memory (MB)", ru.ru_maxrss / 1024.0);
-    printf("%-34s %12.1f   (OpenImageIO loaded)\n", "  after writing EXR + PNG (MB)", io_mb);
+    printf("%-44s %12.1f\n", "peak resident memory (MB)", ru.ru_maxrss / 1024.0);
+    printf("%-44s %12.1f   (OpenImageIO loaded)\n", "  after writing EXR + PNG (MB)", io_mb);
 }
 
 /* One Markdown row per scene, 1-thread figures only. */
 static void table(char **paths, struct scene **sc, int n, int runs, double seconds, int K)
 {
     printf("# 320x180, max length %d, 1 thread, median of %d runs of %g s\n", K, runs, seconds);
-    printf("| scene | Embree rays/s | PT samples/s | BDPT samples/s | PSSMLT mutations/s | MMLT mutations/s |\n");
-    printf("| --- | ---: | ---: | ---: | ---: | ---: |\n");
+    printf("| scene | Embree rays/s | PT samples/s | BDPT samples/s | PSSMLT mutations/s | MMLT mutations/s | MMLT controlled mutations/s |\n");
+    printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (int i = 0; i < n; i++) {
         struct figures f;
         measure(sc[i], runs, seconds, K, true, &f);
-        printf("| %s | %.1f M | %.2f M | %.0f k | %.0f k | %.2f M |\n", paths[i], f.closest_rate / 1e6, f.rate[PT][0] / 1e6,
-               f.rate[BDPT][0] / 1e3, f.rate[PSSMLT][0] / 1e3, f.rate[MMLT][0] / 1e6);
+        printf("| %s | %.1f M | %.2f M | %.0f k | %.0f k | %.2f M | %.2f M |\n", paths[i], f.closest_rate / 1e6,
+               f.rate[PT][0] / 1e6, f.rate[BDPT][0] / 1e3, f.rate[PSSMLT][0] / 1e3, f.rate[MMLT][0] / 1e6, f.rate[CTRL][0] / 1e6);
         fflush(stdout);
     }
 }

@@ -43,6 +43,9 @@ static const char *usage =
     "  --hybrid-length K    hybrid: MCTLS from path length K on, MMLT large steps below (default 6)\n"
     "  --uniform-lengths    mmlt: equal mutations per path length instead of in proportion to b_k\n"
     "  --max-heuristic      pssmlt: Kelemen's maximum heuristic instead of the balance heuristic\n"
+    "  --small-step pss|controlled|root  mmlt's small step (default pss; controlled: thesis 5.3\n"
+    "                       Alg. 4, root: Alg. 3, analysis only); the latter two use the Gaussian kernel\n"
+    "  --angle-stats        mmlt: angle change of every small step, PREFIX.angle.exr and .angle.csv\n"
     "Prints one summary line: method, samples, seconds, samples/s.\n";
 
 struct args {
@@ -51,14 +54,16 @@ struct args {
     struct render_opts mc;
     struct mlt_opts mlt;
     int width, height;
+    bool kernel_given;
 };
 
 /* Options that only some methods read; given to another method they would be silently ignored,
  * which would quietly change an experiment. */
 static const char *const mcmc_only[] = {"--p-large", "--kernel", "--sigma", "--rap", "--rap-resolution", "--cdc",
                                         "--seed-paths", "--large-step", "--hybrid-length", "--uniform-lengths",
-                                        "--max-heuristic", NULL};
-static const char *const mmlt_only[] = {"--large-step", "--hybrid-length", "--uniform-lengths", NULL};
+                                        "--max-heuristic", "--small-step", "--angle-stats", NULL};
+static const char *const mmlt_only[] = {"--large-step", "--hybrid-length", "--uniform-lengths", "--small-step",
+                                        "--angle-stats", NULL};
 static const char *const pssmlt_only[] = {"--max-heuristic", NULL};
 
 static bool listed(const char *o, const char *const *list)
@@ -128,6 +133,7 @@ static void parse(int argc, char **argv, struct args *a)
             a->mlt.p_large = cli_double(prog, o, VALUE, 0, 1);
         } else if (!strcmp(o, "--kernel")) {
             const char *v = VALUE;
+            a->kernel_given = true;
             if (!strcmp(v, "kelemen")) a->mlt.pss.kernel = KERNEL_KELEMEN;
             else if (!strcmp(v, "gaussian")) a->mlt.pss.kernel = KERNEL_GAUSSIAN;
             else cli_fail(prog, "--kernel: expected kelemen or gaussian, got '%s'", v);
@@ -149,6 +155,14 @@ static void parse(int argc, char **argv, struct args *a)
             a->mlt.hybrid_length = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
         } else if (!strcmp(o, "--max-heuristic")) {
             a->mlt.max_heuristic = true;
+        } else if (!strcmp(o, "--small-step")) {
+            const char *v = VALUE;
+            if (!strcmp(v, "pss")) a->mlt.small_step = SMALL_STEP_PSS;
+            else if (!strcmp(v, "controlled")) a->mlt.small_step = SMALL_STEP_CONTROLLED;
+            else if (!strcmp(v, "root")) a->mlt.small_step = SMALL_STEP_ROOT;
+            else cli_fail(prog, "--small-step: expected pss, controlled or root, got '%s'", v);
+        } else if (!strcmp(o, "--angle-stats")) {
+            a->mlt.angle_stats = true;
         } else if (!strcmp(o, "--uniform-lengths")) {
             a->mlt.uniform_lengths = true;
         } else if (!strcmp(o, "--seed-paths")) {
@@ -163,7 +177,34 @@ static void parse(int argc, char **argv, struct args *a)
 #undef VALUE
     }
     if (!a->scene) cli_fail(prog, "no scene given (see --help)");
+    /* controlled steps need the Gaussian's density (core/controlled_step.h) */
+    if (a->mlt.small_step != SMALL_STEP_PSS) {
+        if (a->kernel_given && a->mlt.pss.kernel != KERNEL_GAUSSIAN)
+            cli_fail(prog, "--small-step %s: needs --kernel gaussian", a->mlt.small_step == SMALL_STEP_ROOT ? "root" : "controlled");
+        a->mlt.pss.kernel = KERNEL_GAUSSIAN;
+    }
     warn_unused(prog, argc, argv, a->method);
+}
+
+/* PREFIX.angle.exr (mean angle change per pixel, radians) and PREFIX.angle.csv (per length). */
+static bool write_angle(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
+{
+    char path[4096], *buf = NULL;
+    size_t len = 0;
+    struct image *im = angle_acc_image(r->angle);
+    snprintf(path, sizeof path, "%s.angle.exr", a->out);
+    bool ok = img_write_exr(im, 1.0, path, err, errlen);
+    img_destroy(im);
+    FILE *f = open_memstream(&buf, &len);
+    fprintf(f, "# render %s --method %s --small-step %s\n# commit %s\n# seed %llu\n# skipped_steps %ld\n", a->scene,
+            a->method, (const char *[]){"pss", "controlled", "root"}[a->mlt.small_step], GIT_COMMIT,
+            (unsigned long long)a->mlt.seed, r->angle->skipped);
+    angle_acc_write_csv(f, r->angle);
+    fclose(f);
+    snprintf(path, sizeof path, "%s.angle.csv", a->out);
+    ok = ok && write_text_atomic(path, buf, err, errlen);
+    free(buf);
+    return ok;
 }
 
 static bool write_csv(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
@@ -176,6 +217,10 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     fprintf(f, "# large_step %s\n# hybrid_length %d\n# uniform_lengths %d\n",
             (const char *[]){"mmlt", "mctls", "hybrid"}[a->mlt.large_step], a->mlt.hybrid_length, a->mlt.uniform_lengths);
     fprintf(f, "# mis %s\n", a->mlt.max_heuristic ? "maximum" : "balance");
+    fprintf(f, "# small_step %s\n# sigma %g\n", (const char *[]){"pss", "controlled", "root"}[a->mlt.small_step], a->mlt.pss.sigma);
+    if (a->mlt.small_step != SMALL_STEP_PSS)
+        fprintf(f, "# controlled_failed_forward %ld\n# controlled_failed_reverse %ld\n", r->ctrl_fail_forward,
+                r->ctrl_fail_reverse);
     fprintf(f, "# p_large %g\n# kernel %s\n# rap %d\n# rap_resolution %d\n# cdc %d\n# seed_paths %ld\n", a->mlt.p_large,
             a->mlt.pss.kernel == KERNEL_KELEMEN ? "kelemen" : "gaussian", a->mlt.pss.rap, a->mlt.pss.rap_resolution,
             a->mlt.pss.cdc, a->mlt.seed_paths);
@@ -252,7 +297,8 @@ int main(int argc, char **argv)
             return 1;
         }
         partial = r.partial;
-        ok = img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err);
+        ok = img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
+             (!r.angle || write_angle(&a, &r, err, sizeof err));
         if (ok)
             printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%d threads), %ld non-finite "
                    "dropped\n",
