@@ -287,14 +287,25 @@ static void run_worker(int tid, void *p)
             if (pitp && !large) {
                 /* PITP: the always-accepted technique perturbation, then MMLT's small step from there */
                 int sj;
-                enum pitp_outcome po = pitp_perturb(&pc, &c->pss, c->x, ps, rng_uniform(&r), &sj);
+                double pa;
+                struct connection cn;
+                bool c_new;
+                enum pitp_outcome po = pitp_perturb(&pc, &c->pss, c->x, ps, rng_uniform(&r), c->f, &sj, &pa, &cn, &c_new);
                 int dt = abs(sj - c->x->s);
                 if (po == PITP_MOVED) {
                     dt = abs(c->k + 1 - sj - c->tech);
                     c->tech = c->x->t;
                     c->xsum_valid = false;
+                    if (c_new) {
+                        /* f changed with the technique (refraction): the state's splat and target follow */
+                        struct splat_list l;
+                        l.n = 0;
+                        splat_push(&l, cn.px, cn.py, vscale(cn.f, cn.w * (c->k + 1)));
+                        move_to(img, c, &l, splat_luminance(&l));
+                    }
                 }
-                stats_record_dt(st, PROPOSAL_PITP, c->k, dt != 0, dt, po != PITP_FAILED, po != PITP_FAILED, true, 0);
+                stats_record_dt(st, PROPOSAL_PITP, c->k, dt != 0, dt, po == PITP_FAILED, pa, po == PITP_SAME || po == PITP_MOVED,
+                                true, 0);
             }
             pss_begin(&c->pss, large);
             int tech;
@@ -317,7 +328,7 @@ static void run_worker(int tid, void *p)
                 pss_reject(&c->pss);
             }
             stats_record_dt(st, large ? PROPOSAL_LARGE : PROPOSAL_SMALL, multiplexed ? c->k : 0, multiplexed && tech != tech0,
-                            multiplexed ? abs(tech - tech0) : 0, a, acc, f > 0, o->time_proposals ? now_seconds() - t_start : 0);
+                            multiplexed ? abs(tech - tech0) : 0, false, a, acc, f > 0, o->time_proposals ? now_seconds() - t_start : 0);
             if (acc) c->tech = tech;
         }
         if ((n & 4095) == 4095) {

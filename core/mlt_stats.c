@@ -8,10 +8,11 @@ const char *proposal_name(enum proposal_kind k) { return kind_names[k]; }
 
 void stats_clear(struct mlt_stats *s) { memset(s, 0, sizeof *s); }
 
-static void record(struct accept_cell *c, double a, bool accepted, bool nonzero, double seconds, int dtech)
+static void record(struct accept_cell *c, double a, bool accepted, bool nonzero, double seconds, int dtech, bool failed)
 {
     double m = a < 1 ? a : 1;
     c->attempts++;
+    c->failed += failed;
     c->sum_dtech += dtech;
     c->accepted += accepted;
     c->nonzero += nonzero;
@@ -28,19 +29,19 @@ static void record(struct accept_cell *c, double a, bool accepted, bool nonzero,
     }
 }
 
-void stats_record_dt(struct mlt_stats *s, enum proposal_kind kind, int length, bool changed, int dtech, double a,
-                     bool accepted, bool nonzero, double seconds)
+void stats_record_dt(struct mlt_stats *s, enum proposal_kind kind, int length, bool changed, int dtech, bool failed,
+                     double a, bool accepted, bool nonzero, double seconds)
 {
     if (length < 0 || length >= STATS_LENGTHS) length = 0;
-    record(&s->cell[kind][length][changed], a, accepted, nonzero, seconds, dtech);
-    record(&s->any[kind][length], a, accepted, nonzero, seconds, dtech);
-    record(&s->total[kind], a, accepted, nonzero, seconds, dtech);
+    record(&s->cell[kind][length][changed], a, accepted, nonzero, seconds, dtech, failed);
+    record(&s->any[kind][length], a, accepted, nonzero, seconds, dtech, failed);
+    record(&s->total[kind], a, accepted, nonzero, seconds, dtech, failed);
 }
 
 void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool changed, double a, bool accepted,
                   bool nonzero, double seconds)
 {
-    stats_record_dt(s, kind, length, changed, 0, a, accepted, nonzero, seconds);
+    stats_record_dt(s, kind, length, changed, 0, false, a, accepted, nonzero, seconds);
 }
 
 static void merge_cell(struct accept_cell *d, const struct accept_cell *s)
@@ -51,6 +52,7 @@ static void merge_cell(struct accept_cell *d, const struct accept_cell *s)
     d->seconds += s->seconds;
     d->sum_a += s->sum_a;
     d->sum_dtech += s->sum_dtech;
+    d->failed += s->failed;
     d->nbatches += s->nbatches;
     d->bsum += s->bsum;
     d->bsum2 += s->bsum2;
@@ -82,14 +84,14 @@ double cell_stderr(const struct accept_cell *c)
 static void row(FILE *f, const char *method, const char *kind, const char *len, const char *changed,
                 const struct accept_cell *c)
 {
-    fprintf(f, "%s,%s,%s,%s,%ld,%.9g,%.9g,%.9g,%ld,%.9g\n", method, kind, len, changed, c->attempts, cell_mean(c),
+    fprintf(f, "%s,%s,%s,%s,%ld,%.9g,%.9g,%.9g,%ld,%.9g,%ld\n", method, kind, len, changed, c->attempts, cell_mean(c),
             cell_stderr(c), c->attempts ? (double)c->accepted / c->attempts : NAN, c->nonzero,
-            c->attempts ? c->sum_dtech / c->attempts : NAN);
+            c->attempts ? c->sum_dtech / c->attempts : NAN, c->failed);
 }
 
 void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, bool header)
 {
-    if (header) fprintf(f, "method,kind,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,nonzero,mean_dtech\n");
+    if (header) fprintf(f, "method,kind,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,nonzero,mean_dtech,failed\n");
     char len[16];
     for (int k = 0; k < PROPOSAL_KINDS; k++) {
         for (int l = 0; l < STATS_LENGTHS; l++) {

@@ -8,7 +8,8 @@
 #include <stdio.h>
 
 /* PROPOSAL_PITP records PITP's technique perturbations (core/pitp.c): "accepted" means carried
- * out (a = 1), a failed inversion or retrace is a rejection (a = 0); technique_changed is j != i. */
+ * out; a is 1, or min(1, f_j / f_i) on paths with refraction, and 0 for a failed inversion or
+ * retrace (counted in `failed`); technique_changed is j != i. */
 enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_KINDS };
 #define STATS_LENGTHS (MAX_PATH_LENGTH + 1) /* index 0 = all lengths (PSSMLT states) */
 #define STATS_BATCH 2048 /* proposals per batch: long enough for chains stuck ~1/acceptance steps */
@@ -20,6 +21,7 @@ struct accept_cell {
     long batch_n;
     long nbatches;
     double bsum, bsum2;          /* sums of batch means and their squares */
+    long failed;                 /* proposals that could not be constructed (PITP: inversion or retrace) */
     double sum_dtech;            /* sum of |t' - t|: how far proposals move the technique */
     double seconds;              /* time spent on these proposals (not in the CSV rows: they reproduce exactly) */
 };
@@ -36,9 +38,10 @@ struct mlt_stats {
 void stats_clear(struct mlt_stats *s);
 void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool technique_changed, double a,
                   bool accepted, bool nonzero, double seconds);
-/* The same with the technique distance |t' - t| of the proposal (0 when stats_record is used). */
+/* The same with the technique distance |t' - t| of the proposal and whether it failed to be
+ * constructed (stats_record: 0 and false). */
 void stats_record_dt(struct mlt_stats *s, enum proposal_kind kind, int length, bool technique_changed, int dtech,
-                     double a, bool accepted, bool nonzero, double seconds);
+                     bool failed, double a, bool accepted, bool nonzero, double seconds);
 /* Adds src into dst (threads are merged in a fixed order). */
 void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src);
 /* Mean acceptance, its batch-means standard error (NAN with fewer than 2 batches). */

@@ -114,10 +114,16 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
             take = n == 0;
             y[0] = n == 0 ? as_emitter_origin(&tgt[c]) : v[0];
             len = 1;
-            if (c + take < m) {
+            /* From no vertex, y_0 alone first: the direction is inverted in the frame of the normal
+             * the emitter's own sampler gives y_0 (a camera hit's normal can differ from it in the
+             * sign of a zero component, which turns the frame), by the next pass with n = 1. */
+            if (n == 1 && c + take < m) {
                 y[1] = tgt[c + take];
                 take++;
                 len = 2;
+                /* the environment's origin is a point of the disc on the line through y_1 (for
+                 * s = 1 it was any point: a lone y_0 is only connected to along its direction) */
+                if (y[0].kind == VK_ENV) y[0].p = y[1].p;
             }
             ok = invert_emitter(pc, y, len, 0, &b->base) && walk_emitter(pc, &b->base, v, len) == len && !b->bad &&
                  same_vertex(&v[0], &y[0], tol) && (len < 2 || same_vertex(&v[1], &y[1], tol));
@@ -169,12 +175,32 @@ static double technique_number(int t, int k, rng *r)
     return u;
 }
 
+/* Whether the target of the path can depend on the technique, so that Eq. 5.20's r = 1 needs
+ * checking: a refracting BSDF (its eta^2 factor is applied in radiance mode only, so moving a
+ * vertex between subpaths changes f), or a delta vertex (scenes/materials: on paths through a
+ * mirror or a smooth conductor this code's (k + 1) w_j C_j differs between light tracing and the
+ * camera techniques by up to 14x, measured by tests/test_pitp.c; the exact ratio keeps PITP's
+ * target MMLT's whatever the cause). Other paths keep f / sum_l p_l exactly. */
+static bool technique_dependent_f(const struct pitp_path *x)
+{
+    for (int i = 0; i < x->t + x->s; i++) {
+        const struct vertex *v = i < x->t ? &x->cam[i] : &x->emi[i - x->t];
+        if (!v->bc.b) continue;
+        enum bsdf_type ty = v->bc.b->type;
+        if (ty == BSDF_DIELECTRIC || ty == BSDF_ROUGH_DIELECTRIC || v->delta || bsdf_ops_for(ty)->delta_only) return true;
+    }
+    return false;
+}
+
 enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct pitp_path *x,
-                               struct pitp_scratch *w, double u_pick, int *j)
+                               struct pitp_scratch *w, double u_pick, double f_cur, int *j, double *a,
+                               struct connection *c, bool *c_new)
 {
     int k = x->k, si = x->s;
     int sj = mctls_pick(x->ratios, k + 1, u_pick); /* w_j = ratio_j / sum of ratios (Eq. 5.22-5.25) */
     *j = sj;
+    *a = 1;
+    *c_new = false;
     if (sj == si) return PITP_SAME;
     int tj = k + 1 - sj;
     bool to_emitter = sj > si; /* the emitter subpath gains vertices, the camera subpath loses them */
@@ -199,17 +225,37 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
         struct block_rec rrec[MAX_SUBPATH_VERTS];
         ok = extend(pc, ss, w->rev, ns_new, w->tgt, d, &b, rrec, &nrev, w->tol);
     }
+    enum pitp_outcome fail = PITP_FAILED;
+    if (ok && technique_dependent_f(x)) {
+        /* Eq. 5.18 with f not cancelling: r = f_j / f_i; the new form's connection gives f_j */
+        /* evaluated in place: grow holds j's form, and shrink's prefix is j's */
+        const struct vertex *ye = to_emitter ? grow : shrink, *yc = to_emitter ? shrink : grow;
+        double f = 0;
+        if (connect_st(pc, ye, sj, yc, tj, k, c, w->ratios)) f = luminance(vscale(c->f, c->w * (k + 1)));
+        *a = f_cur > 0 ? mind(1.0, f / f_cur) : 1.0;
+        *c_new = true;
+        if (!(isfinite(f) && f > 0 && rng_uniform(&p->r) < *a)) {
+            ok = false;
+            fail = PITP_REJECTED;
+            *c_new = false;
+        }
+    }
     if (!ok) {
         for (int i = lo; i < ng; i++) grow[i] = w->save[i - lo];
-        return PITP_FAILED;
+        if (fail == PITP_FAILED) *a = 0;
+        return fail;
     }
     /* the move is taken: the gained blocks' numbers, fresh dropped numbers, the technique number */
     for (int r = 0; r < nrec; r++)
         for (int i = 0; i < rec[r].n; i++) pss_replace(p, rec[r].stream, rec[r].vertex * SAMPLER_BLOCK + i, rec[r].u[i]);
     forget_dropped(pc, p, ss, ns, ns_new);
     pss_replace(p, STREAM_TECHNIQUE, 0, technique_number(tj, k, &p->r));
-    double rj = x->ratios[sj];
-    for (int i = 0; i <= k; i++) x->ratios[i] /= rj;
+    if (*c_new) {
+        for (int i = 0; i <= k; i++) x->ratios[i] = w->ratios[i];
+    } else {
+        double rj = x->ratios[sj];
+        for (int i = 0; i <= k; i++) x->ratios[i] /= rj;
+    }
     x->s = sj;
     x->t = tj;
     return PITP_MOVED;

@@ -32,17 +32,23 @@ bool mmlt_eval(const struct path_ctx *pc, struct sampler *s, int k, struct pitp_
 /* Per-thread scratch of the perturbation (no allocation in the chain loop). */
 struct pitp_scratch {
     struct vertex tgt[MAX_SUBPATH_VERTS], rev[MAX_SUBPATH_VERTS], save[2];
+    double ratios[MAX_PATH_LENGTH + 2];
     double tol; /* retrace tolerance: 1e-4 of the scene's size, as the inverse-walk tests use */
 };
 void pitp_scratch_init(struct pitp_scratch *w, const struct scene *sc);
 
-enum pitp_outcome { PITP_SAME, PITP_MOVED, PITP_FAILED };
+/* PITP_REJECTED: a path with refraction whose f changed with the technique, rejected by
+ * min(1, f_j / f_i); PITP_FAILED: an inversion or retrace (forward or reverse) failed. */
+enum pitp_outcome { PITP_SAME, PITP_MOVED, PITP_REJECTED, PITP_FAILED };
 
-/* One technique perturbation of the chain state (p, x): u_pick chooses j in proportion to
- * x->ratios; fresh numbers of discrete inversions come from p's own stream. On PITP_MOVED the
- * current numbers of p and x (now in j's form) describe (j, v); otherwise both are unchanged.
- * *j receives the technique chosen (emitter vertex count). */
+/* One technique perturbation of the chain state (p, x) whose target is f_cur: u_pick chooses j in
+ * proportion to x->ratios; fresh numbers of discrete inversions come from p's own stream. On
+ * PITP_MOVED the current numbers of p and x (now in j's form) describe (j, v); otherwise both are
+ * unchanged. *j receives the technique chosen (emitter vertex count), *a the acceptance
+ * probability. When the target was re-evaluated (*c_new set true), *c holds the new state's
+ * connection (its target is (k + 1) w f of it), which the caller's splats must then use. */
 enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct pitp_path *x,
-                               struct pitp_scratch *w, double u_pick, int *j);
+                               struct pitp_scratch *w, double u_pick, double f_cur, int *j, double *a,
+                               struct connection *c, bool *c_new);
 
 #endif

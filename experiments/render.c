@@ -174,7 +174,7 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     if (a->mlt.method == MLT_PITP) {
         const struct accept_cell *pc = &r->stats.total[PROPOSAL_PITP];
         fprintf(f, "# pitp_perturbations %ld\n# pitp_failures %ld\n# pitp_failure_fraction %.9g\n", pc->attempts,
-                pc->attempts - pc->accepted, pc->attempts ? (double)(pc->attempts - pc->accepted) / pc->attempts : 0.0);
+                pc->failed, pc->attempts ? (double)pc->failed / pc->attempts : 0.0);
     }
     fprintf(f, "# b %.9g\n", r->b);
     for (int k = 1; k <= a->mlt.max_length && a->mlt.method != MLT_PSSMLT; k++) fprintf(f, "# b_%d %.9g\n", k, r->b_k[k]);
