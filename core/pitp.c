@@ -177,10 +177,11 @@ static double technique_number(int t, int k, rng *r)
 
 /* Whether the target of the path can depend on the technique, so that Eq. 5.20's r = 1 needs
  * checking: a refracting BSDF (its eta^2 factor is applied in radiance mode only, so moving a
- * vertex between subpaths changes f), or a delta vertex (scenes/materials: on paths through a
- * mirror or a smooth conductor this code's (k + 1) w_j C_j differs between light tracing and the
- * camera techniques by up to 14x, measured by tests/test_pitp.c; the exact ratio keeps PITP's
- * target MMLT's whatever the cause). Other paths keep f / sum_l p_l exactly. */
+ * vertex between subpaths changes f), or a delta vertex (the MIS code counts a Dirac density as 1,
+ * but the light side's Dirac sits on the vertex after it and the camera side's on the vertex before
+ * it, with different area conversions: the weights sum to one but are not p_j / sum p, and
+ * w_j C_j varies with j, by up to 14x on scenes/materials, measured by tests/test_pitp.c). Other
+ * paths keep (k + 1) f / sum_l p_l exactly. */
 static bool technique_dependent_f(const struct pitp_path *x)
 {
     for (int i = 0; i < x->t + x->s; i++) {

@@ -1,0 +1,120 @@
+/* bin/fig6_1: thesis Figure 6.1. Average acceptance probability of small steps per path length for
+ * MMLT and for MMLT with the path-invariant technique perturbation (PITP), each split into small
+ * steps whose proposal uses a different technique than the chain had before the iteration (for
+ * PITP: before the perturbation) and those that do not. p_large = 0.1, the same seed for both,
+ * equal expected mutations per length (acceptance is a property of each length's chain).
+ * Writes OUT/fig6.1.csv: method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction
+ * (cells with fewer than 2 batches of STATS_BATCH proposals, which have no standard error, are left
+ * out), and OUT/fig6.1-pitp.csv: per length, PITP's perturbations, the fraction with j != i, the
+ * inversion failures and the mean |j - i|. */
+#include "cli.h"
+#include "mlt.h"
+#include "parallel.h"
+#include "util.h"
+#include "version.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static const char *usage =
+    "usage: fig6_1 [options]\n"
+    "  --scene FILE         (default scenes/ajar/scene.json)\n"
+    "  --scale quick|paper  budgets (default: $SCALE, else quick)\n"
+    "  --mutations N        mutations per method, over all lengths (quick 8000000, paper 100000000)\n"
+    "  --max-length K       longest path length (default 12)\n"
+    "  --seed S             (default 1)\n"
+    "  --threads T          (default: all cores)\n"
+    "  --out DIR            (default results/fig6.1)\n";
+
+static bool write_file(const char *dir, const char *name, const char *text)
+{
+    char path[4096], err[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (!write_text_atomic(path, text, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        return false;
+    }
+    fprintf(stderr, "fig6.1: wrote %s\n", path);
+    return true;
+}
+
+int main(int argc, char **argv)
+{
+    const char *prog = "fig6_1", *scene = "scenes/ajar/scene.json", *out = "results/fig6.1";
+    const char *scale = getenv("SCALE") && *getenv("SCALE") ? getenv("SCALE") : "quick";
+    long mutations = -1;
+    int K = 12, threads = cpu_count();
+    uint64_t seed = 1;
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (!strcmp(o, "--scene")) scene = cli_value(prog, argc, argv, &i);
+        else if (!strcmp(o, "--scale")) scale = cli_value(prog, argc, argv, &i);
+        else if (!strcmp(o, "--mutations")) mutations = cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1L << 40);
+        else if (!strcmp(o, "--max-length")) K = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
+        else if (!strcmp(o, "--seed")) seed = cli_u64(prog, o, cli_value(prog, argc, argv, &i));
+        else if (!strcmp(o, "--threads")) threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1024);
+        else if (!strcmp(o, "--out")) out = cli_value(prog, argc, argv, &i);
+        else cli_fail(prog, "unknown option '%s' (see --help)", o);
+    }
+    bool paper = !strcmp(scale, "paper");
+    if (!paper && strcmp(scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", scale);
+    if (mutations < 0) mutations = paper ? 100000000 : 8000000;
+    char err[1024];
+    struct scene *sc = scene_load(scene, err, sizeof err);
+    if (!sc) {
+        fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    mkdir(out, 0777);
+    char *buf = NULL, *pbuf = NULL;
+    size_t len = 0, plen = 0;
+    FILE *f = open_memstream(&buf, &len), *pf = open_memstream(&pbuf, &plen);
+    const char *head = "# fig6.1: small-step acceptance, MMLT vs PITP, p_large = 0.1, uniform length budgets\n";
+    for (int q = 0; q < 2; q++) {
+        FILE *g = q ? pf : f;
+        fputs(head, g);
+        fprintf(g, "# scene %s\n# commit %s\n# scale %s\n# seed %llu\n# threads %d\n# mutations_per_method %ld\n# seed_paths %ld\n",
+                scene, GIT_COMMIT, scale, (unsigned long long)seed, threads, mutations, paper ? 1000000L : 100000L);
+    }
+    fprintf(f, "method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction\n");
+    fprintf(pf, "length,perturbations,changed_fraction,failures,failure_fraction,mean_dtech\n");
+    const char *names[2] = {"mmlt", "pitp"};
+    for (int m = 0; m < 2; m++) {
+        struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT, .p_large = 0.1, .mutations = mutations,
+                             .seed_paths = paper ? 1000000 : 100000, .seed = seed, .threads = threads, .max_length = K,
+                             .progress = isatty(2), .large_step = LARGE_MMLT, .uniform_lengths = true};
+        pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+        fprintf(stderr, "fig6.1: %s, %ld mutations over lengths 1..%d\n", names[m], mutations, K);
+        struct mlt_result r;
+        if (!mlt_render(sc, &o, &r, err, sizeof err)) {
+            fprintf(stderr, "%s\n", err);
+            return 1;
+        }
+        for (int k = 1; k <= K; k++) {
+            for (int ch = 0; ch < 2; ch++) {
+                const struct accept_cell *c = &r.stats.cell[PROPOSAL_SMALL][k][ch];
+                if (c->nbatches < 2) continue; /* no standard error: too few proposals of this kind */
+                fprintf(f, "%s,%d,%s,%ld,%.9g,%.9g,%.9g\n", names[m], k, ch ? "yes" : "no", c->attempts, cell_mean(c),
+                        cell_stderr(c), (double)c->accepted / c->attempts);
+            }
+            const struct accept_cell *p = &r.stats.any[PROPOSAL_PITP][k];
+            if (m && p->attempts)
+                fprintf(pf, "%d,%ld,%.9g,%ld,%.9g,%.9g\n", k, p->attempts,
+                        (double)r.stats.cell[PROPOSAL_PITP][k][1].attempts / p->attempts, p->failed,
+                        (double)p->failed / p->attempts, p->sum_dtech / p->attempts);
+        }
+        mlt_result_free(&r);
+    }
+    fclose(f);
+    fclose(pf);
+    bool ok = write_file(out, "fig6.1.csv", buf) && write_file(out, "fig6.1-pitp.csv", pbuf);
+    free(buf);
+    free(pbuf);
+    scene_free(sc);
+    return ok ? 0 : 1;
+}
