@@ -2,6 +2,7 @@
 #ifndef CLI_H
 #define CLI_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 /* Prints "PROG: message" to stderr and exits with status 2. */
@@ -14,5 +15,18 @@ uint64_t cli_u64(const char *prog, const char *opt, const char *val);
 void cli_require_image_output(const char *prog);
 /* The value after option argv[*i]; fails if missing. */
 const char *cli_value(const char *prog, int argc, char **argv, int *i);
+
+/* The options of the acceptance figure tools: --scene, --scale quick|paper (default $SCALE, else
+ * quick), --mutations, --max-length (default 12), --seed (default 1), --threads (default: all
+ * cores), --out, --help (prints usage). The caller sets scene and out to its defaults first;
+ * mutations stays -1 unless given. */
+struct cli_figure {
+    const char *scene, *scale, *out;
+    long mutations;
+    int max_length, threads;
+    uint64_t seed;
+    bool paper;
+};
+void cli_figure_parse(const char *prog, const char *usage, int argc, char **argv, struct cli_figure *f);
 
 #endif
