@@ -110,7 +110,7 @@ Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
     scene_free(sc);
 }
 
-/* Furnace: the exact value Le (1 - a^K) / (1 - a) with K = 6, 32x32 pixels, 16 mutations per pixel,
+/* Furnace: the exact value Le (1 - a^K) / (1 - a) with K = 6, 32x32 pixels, 64 mutations per pixel,
  * 6 runs per case; PSSMLT, MMLT and PITP each plain, with --rap and with --cdc (issue 3 names both
  * options on this scene). The run-to-run mean must contain the exact value: t-test with 5 degrees
  * of freedom, alpha 0.01 Sidak over the 9 cases, and within 1 %. */
@@ -124,7 +124,7 @@ Test(stat_mlt, furnace_exact_answer)
     for (int i = 0; i < ncases; i++) {
         int m = i % 3, opt = i / 3; /* m: enum mlt_method; opt: 0 plain, 1 --rap, 2 --cdc */
         struct mlt_ctx c = {sc, {0}};
-        opts(&c.o, sc, (enum mlt_method)m, 16L * 32 * 32);
+        opts(&c.o, sc, (enum mlt_method)m, 64L * 32 * 32);
         c.o.max_length = 6;
         c.o.pss.rap = opt == 1;
         c.o.pss.cdc = opt == 2;
