@@ -290,14 +290,15 @@ static void run_worker(int tid, void *p)
                 double pa;
                 struct connection cn;
                 bool c_new;
-                enum pitp_outcome po = pitp_perturb(&pc, &c->pss, c->x, ps, rng_uniform(&r), c->f, &sj, &pa, &cn, &c_new);
+                enum pitp_outcome po = pitp_perturb(&pc, &c->pss, c->x, ps, rng_uniform(&r), &sj, &pa, &cn, &c_new);
                 int dt = abs(sj - c->x->s);
                 if (po == PITP_MOVED) {
                     dt = abs(c->k + 1 - sj - c->tech);
                     c->tech = c->x->t;
                     c->xsum_valid = false;
                     if (c_new) {
-                        /* f changed with the technique (refraction): the state's splat and target follow */
+                        /* the target changed with the technique (refraction, delta vertices): the
+                         * state's splat and target follow */
                         struct splat_list l;
                         l.n = 0;
                         splat_push(&l, cn.px, cn.py, vscale(cn.f, cn.w * (c->k + 1)));

@@ -8,8 +8,8 @@
 #include <stdio.h>
 
 /* PROPOSAL_PITP records PITP's technique perturbations (core/pitp.c): "accepted" means carried
- * out; a is 1, or min(1, f_j / f_i) on paths with refraction, and 0 for a failed inversion or
- * retrace (counted in `failed`); technique_changed is j != i. */
+ * out; a is 1, or min(1, f_j / f_i) on paths refracting between the connections, and 0 for a
+ * failed inversion or retrace (counted in `failed`); technique_changed is j != i. */
 enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_KINDS };
 #define STATS_LENGTHS (MAX_PATH_LENGTH + 1) /* index 0 = all lengths (PSSMLT states) */
 #define STATS_BATCH 2048 /* proposals per batch: long enough for chains stuck ~1/acceptance steps */

@@ -175,14 +175,13 @@ static double technique_number(int t, int k, rng *r)
     return u;
 }
 
-/* Whether the target of the path can depend on the technique, so that Eq. 5.20's r = 1 needs
- * checking: a refracting BSDF (its eta^2 factor is applied in radiance mode only, so moving a
- * vertex between subpaths changes f), or a delta vertex (the MIS code counts a Dirac density as 1,
- * but the light side's Dirac sits on the vertex after it and the camera side's on the vertex before
- * it, with different area conversions: the weights sum to one but are not p_j / sum p, and
- * w_j C_j varies with j, by up to 14x on scenes/materials, measured by tests/test_pitp.c). Other
- * paths keep (k + 1) f / sum_l p_l exactly. */
-static bool technique_dependent_f(const struct pitp_path *x)
+/* Whether the target of the path can change with the technique: through a refracting BSDF (its
+ * eta^2 factor is applied in radiance mode only, so f changes when the vertex changes subpath), or
+ * a delta vertex (the MIS code counts a Dirac density as 1, but the light side's Dirac sits on the
+ * vertex after it and the camera side's on the vertex before it, with different area conversions:
+ * the weights sum to one but are not p_j / sum p, and w_j C_j varies with j, by up to 14x on
+ * scenes/materials, measured by tests/test_pitp.c). Other paths keep (k + 1) f / sum_l p_l. */
+static bool target_may_change(const struct pitp_path *x)
 {
     for (int i = 0; i < x->t + x->s; i++) {
         const struct vertex *v = i < x->t ? &x->cam[i] : &x->emi[i - x->t];
@@ -193,8 +192,42 @@ static bool technique_dependent_f(const struct pitp_path *x)
     return false;
 }
 
+/* The factor a refracting vertex carries in radiance mode, (eta on the camera side / eta on the
+ * light side)^2 (bsdf_dielectric.c, bsdf_rough_dielectric.c), 1 in importance mode and wherever it
+ * does not refract. wc, wl: unit directions toward its camera-side and light-side neighbours. */
+static double radiance_factor(const struct vertex *v, vec3 wc, vec3 wl)
+{
+    if (v->kind != VK_SURFACE || !v->bc.b) return 1;
+    enum bsdf_type ty = v->bc.b->type;
+    if (ty != BSDF_DIELECTRIC && ty != BSDF_ROUGH_DIELECTRIC) return 1;
+    bool out_c = vdot(wc, v->sh.n) > 0, out_l = vdot(wl, v->sh.n) > 0; /* transmissive: never flipped */
+    if (out_c == out_l) return 1;
+    double ec = out_c ? 1 : v->bc.b->ior, el = out_l ? 1 : v->bc.b->ior;
+    return sqr(ec / el);
+}
+
+/* f_j / f_i for the path x in technique i's form: the vertices x_l between the two connections
+ * change transport mode (l = i..j-1 from radiance to importance when j > i, the reverse when
+ * j < i), and only a refraction's factor depends on the mode. With T(i -> j) = w_j, the MIS
+ * weights cancel against the Jacobian p_j / p_i (in whatever convention the weights were computed,
+ * as long as both moves use the same one), so this is Eq. 5.18's whole ratio. */
+static double f_ratio(const struct pitp_path *x, int sj)
+{
+    const struct vertex *pv[2 * MAX_SUBPATH_VERTS];
+    int k = x->k, si = x->s;
+    for (int l = 0; l <= k; l++) pv[l] = l < si ? &x->emi[l] : &x->cam[k - l];
+    double r = 1;
+    int lo = si < sj ? si : sj, hi = si < sj ? sj : si;
+    for (int l = lo > 1 ? lo : 1; l < hi; l++) {
+        double d2;
+        double fl = radiance_factor(pv[l], edge_dir(pv[l], pv[l + 1], &d2), edge_dir(pv[l], pv[l - 1], &d2));
+        r = sj > si ? r / fl : r * fl;
+    }
+    return r;
+}
+
 enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct pitp_path *x,
-                               struct pitp_scratch *w, double u_pick, double f_cur, int *j, double *a,
+                               struct pitp_scratch *w, double u_pick, int *j, double *a,
                                struct connection *c, bool *c_new)
 {
     int k = x->k, si = x->s;
@@ -213,6 +246,11 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
     struct block_rec rec[MAX_SUBPATH_VERTS];
     int nrec, nrev;
 
+    /* Eq. 5.18: r = f_j / f_i, 1 unless the path refracts between the two connections; decided
+     * first, on the path in i's form, so that a rejection costs no ray */
+    *a = mind(1.0, f_ratio(x, sj));
+    if (*a < 1 && !(rng_uniform(&p->r) < *a)) return PITP_REJECTED;
+    bool may_change = target_may_change(x);
     /* forward: the vertices the shrinking subpath loses, in the growing subpath's order */
     for (int m = 0; m < d; m++) w->tgt[m] = shrink[ns - 1 - m];
     int lo = ng >= 2 ? ng - 2 : 0;
@@ -226,25 +264,18 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
         struct block_rec rrec[MAX_SUBPATH_VERTS];
         ok = extend(pc, ss, w->rev, ns_new, w->tgt, d, &b, rrec, &nrev, w->tol);
     }
-    enum pitp_outcome fail = PITP_FAILED;
-    if (ok && technique_dependent_f(x)) {
-        /* Eq. 5.18 with f not cancelling: r = f_j / f_i; the new form's connection gives f_j */
-        /* evaluated in place: grow holds j's form, and shrink's prefix is j's */
+    if (ok && may_change) {
+        /* the new state's target: the same path, but (k + 1) w_j C_j need not equal the old one */
         const struct vertex *ye = to_emitter ? grow : shrink, *yc = to_emitter ? shrink : grow;
         double f = 0;
         if (connect_st(pc, ye, sj, yc, tj, k, c, w->ratios)) f = luminance(vscale(c->f, c->w * (k + 1)));
-        *a = f_cur > 0 ? mind(1.0, f / f_cur) : 1.0;
-        *c_new = true;
-        if (!(isfinite(f) && f > 0 && rng_uniform(&p->r) < *a)) {
-            ok = false;
-            fail = PITP_REJECTED;
-            *c_new = false;
-        }
+        *c_new = isfinite(f) && f > 0;
+        if (!*c_new) ok = false; /* the retraced connection lost the path (occluded in float) */
     }
     if (!ok) {
         for (int i = lo; i < ng; i++) grow[i] = w->save[i - lo];
-        if (fail == PITP_FAILED) *a = 0;
-        return fail;
+        *a = 0;
+        return PITP_FAILED;
     }
     /* the move is taken: the gained blocks' numbers, fresh dropped numbers, the technique number */
     for (int r = 0; r < nrec; r++)

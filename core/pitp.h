@@ -37,18 +37,18 @@ struct pitp_scratch {
 };
 void pitp_scratch_init(struct pitp_scratch *w, const struct scene *sc);
 
-/* PITP_REJECTED: a path with refraction whose f changed with the technique, rejected by
- * min(1, f_j / f_i); PITP_FAILED: an inversion or retrace (forward or reverse) failed. */
+/* PITP_REJECTED: a path refracting between the two connections, rejected by min(1, f_j / f_i);
+ * PITP_FAILED: an inversion or retrace (forward or reverse) failed. */
 enum pitp_outcome { PITP_SAME, PITP_MOVED, PITP_REJECTED, PITP_FAILED };
 
-/* One technique perturbation of the chain state (p, x) whose target is f_cur: u_pick chooses j in
- * proportion to x->ratios; fresh numbers of discrete inversions come from p's own stream. On
+/* One technique perturbation of the chain state (p, x): u_pick chooses j in proportion to
+ * x->ratios; fresh numbers of discrete inversions come from p's own stream. On
  * PITP_MOVED the current numbers of p and x (now in j's form) describe (j, v); otherwise both are
  * unchanged. *j receives the technique chosen (emitter vertex count), *a the acceptance
  * probability. When the target was re-evaluated (*c_new set true), *c holds the new state's
  * connection (its target is (k + 1) w f of it), which the caller's splats must then use. */
 enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct pitp_path *x,
-                               struct pitp_scratch *w, double u_pick, double f_cur, int *j, double *a,
+                               struct pitp_scratch *w, double u_pick, int *j, double *a,
                                struct connection *c, bool *c_new);
 
 #endif
