@@ -3,9 +3,10 @@
  * steps whose proposal uses a different technique than the chain had before the iteration (for
  * PITP: before the perturbation) and those that do not. p_large = 0.1, the same seed for both,
  * equal expected mutations per length (acceptance is a property of each length's chain).
- * Writes OUT/fig6.1.csv: method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction
- * (cells with fewer than 2 batches of STATS_BATCH proposals, which have no standard error, are left
- * out), and OUT/fig6.1-pitp.csv: per length, PITP's perturbations, the fraction with j != i, the
+ * The budget is split over 4 independent runs. Writes OUT/fig6.1.csv:
+ * method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,runs,run_se
+ * (stderr: batch-means over the merged runs; run_se: standard error of the runs' means; cells with
+ * fewer than 2 batches of STATS_BATCH proposals or 2 runs are left out), and OUT/fig6.1-pitp.csv: per length, PITP's perturbations, the fraction with j != i, the
  * inversion failures and the mean |j - i|. */
 #include "cli.h"
 #include "mlt.h"
@@ -16,7 +17,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <math.h>
 #include <unistd.h>
+
+enum { RUNS = 4 }; /* independent runs per method */
 
 static const char *usage =
     "usage: fig6_1 [options]\n"
@@ -66,34 +70,57 @@ int main(int argc, char **argv)
         fprintf(g, "# scene %s\n# commit %s\n# scale %s\n# seed %llu\n# threads %d\n# mutations_per_method %ld\n# seed_paths %ld\n",
                 scene, GIT_COMMIT, scale, (unsigned long long)seed, threads, mutations, paper ? 1000000L : 100000L);
     }
-    fprintf(f, "method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction\n");
+    fprintf(f, "method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,runs,run_se\n");
     fprintf(pf, "length,perturbations,changed_fraction,failures,failure_fraction,mean_dtech\n");
     const char *names[2] = {"mmlt", "pitp"};
     for (int m = 0; m < 2; m++) {
-        struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT, .p_large = 0.1, .mutations = mutations,
-                             .seed_paths = paper ? 1000000 : 100000, .seed = seed, .threads = threads, .max_length = K,
-                             .progress = isatty(2), .large_step = LARGE_MMLT, .uniform_lengths = true};
-        pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
-        fprintf(stderr, "fig6.1: %s, %ld mutations over lengths 1..%d\n", names[m], mutations, K);
-        struct mlt_result r;
-        if (!mlt_render(sc, &o, &r, err, sizeof err)) {
-            fprintf(stderr, "%s\n", err);
-            return 1;
+        /* R independent runs (seeds seed * 1000 + r, each with its own seed pass), merged: a chain
+         * that rarely changes technique keeps its acceptance level for longer than a batch, so the
+         * batch-means error (plotted, as the thesis does) understates the run-to-run scatter, which
+         * run_se (over the runs' means) measures for check-fig6.1. */
+        static struct mlt_stats all, run[RUNS];
+        stats_clear(&all);
+        for (int rr = 0; rr < RUNS; rr++) {
+            struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT, .p_large = 0.1, .mutations = mutations / RUNS,
+                                 .seed_paths = paper ? 1000000 : 100000, .seed = seed * 1000 + (uint64_t)rr,
+                                 .threads = threads, .max_length = K, .progress = isatty(2), .large_step = LARGE_MMLT,
+                                 .uniform_lengths = true};
+            pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+            fprintf(stderr, "fig6.1: %s run %d of %d, %ld mutations over lengths 1..%d\n", names[m], rr + 1, RUNS,
+                    o.mutations, K);
+            struct mlt_result r;
+            if (!mlt_render(sc, &o, &r, err, sizeof err)) {
+                fprintf(stderr, "%s\n", err);
+                return 1;
+            }
+            run[rr] = r.stats;
+            stats_merge(&all, &r.stats);
+            mlt_result_free(&r);
         }
         for (int k = 1; k <= K; k++) {
             for (int ch = 0; ch < 2; ch++) {
-                const struct accept_cell *c = &r.stats.cell[PROPOSAL_SMALL][k][ch];
-                if (c->nbatches < 2) continue; /* no standard error: too few proposals of this kind */
-                fprintf(f, "%s,%d,%s,%ld,%.9g,%.9g,%.9g\n", names[m], k, ch ? "yes" : "no", c->attempts, cell_mean(c),
-                        cell_stderr(c), (double)c->accepted / c->attempts);
+                const struct accept_cell *c = &all.cell[PROPOSAL_SMALL][k][ch];
+                double s1 = 0, s2 = 0;
+                int n = 0;
+                for (int rr = 0; rr < RUNS; rr++) {
+                    const struct accept_cell *q = &run[rr].cell[PROPOSAL_SMALL][k][ch];
+                    if (!q->attempts) continue;
+                    s1 += cell_mean(q);
+                    s2 += cell_mean(q) * cell_mean(q);
+                    n++;
+                }
+                /* no standard error without 2 batches, or 2 runs with such proposals */
+                if (c->nbatches < 2 || n < 2) continue;
+                double rm = s1 / n, run_se = sqrt(fmax(0, (s2 - n * rm * rm) / (n - 1)) / n);
+                fprintf(f, "%s,%d,%s,%ld,%.9g,%.9g,%.9g,%d,%.9g\n", names[m], k, ch ? "yes" : "no", c->attempts,
+                        cell_mean(c), cell_stderr(c), (double)c->accepted / c->attempts, n, run_se);
             }
-            const struct accept_cell *p = &r.stats.any[PROPOSAL_PITP][k];
+            const struct accept_cell *p = &all.any[PROPOSAL_PITP][k];
             if (m && p->attempts)
                 fprintf(pf, "%d,%ld,%.9g,%ld,%.9g,%.9g\n", k, p->attempts,
-                        (double)r.stats.cell[PROPOSAL_PITP][k][1].attempts / p->attempts, p->failed,
+                        (double)all.cell[PROPOSAL_PITP][k][1].attempts / p->attempts, p->failed,
                         (double)p->failed / p->attempts, p->sum_dtech / p->attempts);
         }
-        mlt_result_free(&r);
     }
     fclose(f);
     fclose(pf);
