@@ -5,6 +5,8 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+struct scene;
+
 /* Prints "PROG: message" to stderr and exits with status 2. */
 _Noreturn void cli_fail(const char *prog, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 long cli_long(const char *prog, const char *opt, const char *val, long lo, long hi);
@@ -28,5 +30,7 @@ struct cli_figure {
     bool paper;
 };
 void cli_figure_parse(const char *prog, const char *usage, int argc, char **argv, struct cli_figure *f);
+/* The figure's scene (a load error is one line and exit status 2), with its output folder created. */
+struct scene *cli_figure_scene(const struct cli_figure *f);
 
 #endif

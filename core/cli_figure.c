@@ -1,9 +1,11 @@
 /* The options every acceptance figure tool shares (fig4_5, fig6_1): see cli.h. */
 #include "cli.h"
 #include "parallel.h"
+#include "scene.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 void cli_figure_parse(const char *prog, const char *usage, int argc, char **argv, struct cli_figure *f)
 {
@@ -29,4 +31,16 @@ void cli_figure_parse(const char *prog, const char *usage, int argc, char **argv
     }
     f->paper = !strcmp(f->scale, "paper");
     if (!f->paper && strcmp(f->scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", f->scale);
+}
+
+struct scene *cli_figure_scene(const struct cli_figure *f)
+{
+    char err[1024];
+    struct scene *sc = scene_load(f->scene, err, sizeof err);
+    if (!sc) {
+        fprintf(stderr, "%s\n", err);
+        exit(2);
+    }
+    mkdir(f->out, 0777);
+    return sc;
 }

@@ -12,7 +12,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 static const char *usage =
     "usage: fig4_5 [options]\n"
@@ -28,18 +27,13 @@ int main(int argc, char **argv)
 {
     struct cli_figure fo = {.scene = "scenes/ajar/scene.json", .out = "results/fig4.5"};
     cli_figure_parse("fig4_5", usage, argc, argv, &fo);
+    struct scene *sc = cli_figure_scene(&fo);
     const char *scene = fo.scene, *out = fo.out, *scale = fo.scale;
     bool paper = fo.paper;
     long mutations = fo.mutations >= 0 ? fo.mutations : paper ? 100000000 : 3000000;
     int K = fo.max_length, threads = fo.threads;
     uint64_t seed = fo.seed;
     char err[1024];
-    struct scene *sc = scene_load(scene, err, sizeof err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err);
-        return 2;
-    }
-    mkdir(out, 0777);
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);

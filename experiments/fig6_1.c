@@ -16,7 +16,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <math.h>
 #include <unistd.h>
 
@@ -49,18 +48,13 @@ int main(int argc, char **argv)
 {
     struct cli_figure fo = {.scene = "scenes/ajar/scene.json", .out = "results/fig6.1"};
     cli_figure_parse("fig6_1", usage, argc, argv, &fo);
+    struct scene *sc = cli_figure_scene(&fo);
     const char *scene = fo.scene, *out = fo.out, *scale = fo.scale;
     bool paper = fo.paper;
     long mutations = fo.mutations >= 0 ? fo.mutations : paper ? 100000000 : 8000000;
     int K = fo.max_length, threads = fo.threads;
     uint64_t seed = fo.seed;
     char err[1024];
-    struct scene *sc = scene_load(scene, err, sizeof err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err);
-        return 2;
-    }
-    mkdir(out, 0777);
     char *buf = NULL, *pbuf = NULL;
     size_t len = 0, plen = 0;
     FILE *f = open_memstream(&buf, &len), *pf = open_memstream(&pbuf, &plen);
