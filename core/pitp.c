@@ -100,7 +100,7 @@ static struct vertex as_emitter_origin(const struct vertex *z)
  * invert the block of the last vertex toward the next target, then step the walk with exactly
  * those numbers and require that it reaches the target. An emitter subpath of at most one vertex
  * re-inverts its block 0 whole (light choice, position and direction are one block). */
-static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, const struct vertex *tgt, int m,
+static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, const struct vertex *const *tgt, int m,
                    struct block_sampler *b, struct block_rec *rec, int *nrec, double tol)
 {
     *nrec = 0;
@@ -112,13 +112,13 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
         if (st == STREAM_EMITTER && n <= 1) {
             struct vertex y[2];
             take = n == 0;
-            y[0] = n == 0 ? as_emitter_origin(&tgt[c]) : v[0];
+            y[0] = n == 0 ? as_emitter_origin(tgt[c]) : v[0];
             len = 1;
             /* From no vertex, y_0 alone first: the direction is inverted in the frame of the normal
              * the emitter's own sampler gives y_0 (a camera hit's normal can differ from it in the
              * sign of a zero component, which turns the frame), by the next pass with n = 1. */
             if (n == 1 && c + take < m) {
-                y[1] = tgt[c + take];
+                y[1] = *tgt[c + take];
                 take++;
                 len = 2;
                 /* the environment's origin is a point of the disc on the line through y_1 (for
@@ -128,9 +128,9 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
             ok = invert_emitter(pc, y, len, 0, &b->base) && walk_emitter(pc, &b->base, v, len) == len && !b->bad &&
                  same_vertex(&v[0], &y[0], tol) && (len < 2 || same_vertex(&v[1], &y[1], tol));
         } else {
-            v[n] = tgt[c]; /* the inversion reads the direction toward it */
+            v[n] = *tgt[c]; /* the inversion reads the direction toward it */
             ok = st == STREAM_CAMERA ? invert_camera(pc, v, n + 1, n - 1, &b->base) : invert_emitter(pc, v, n + 1, n - 1, &b->base);
-            ok = ok && walk_extend(pc, &b->base, v, n, n + 1, st) == n + 1 && !b->bad && same_vertex(&v[n], &tgt[c], tol);
+            ok = ok && walk_extend(pc, &b->base, v, n, n + 1, st) == n + 1 && !b->bad && same_vertex(&v[n], tgt[c], tol);
             take = 1;
             len = n + 1;
         }
@@ -252,15 +252,19 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
     if (*a < 1 && !(rng_uniform(&p->r) < *a)) return PITP_REJECTED;
     bool may_change = target_may_change(x);
     /* forward: the vertices the shrinking subpath loses, in the growing subpath's order */
-    for (int m = 0; m < d; m++) w->tgt[m] = shrink[ns - 1 - m];
-    int lo = ng >= 2 ? ng - 2 : 0;
-    for (int i = lo; i < ng; i++) w->save[i - lo] = grow[i]; /* the extension rewrites these fields */
+    for (int m = 0; m < d; m++) w->tgt[m] = &shrink[ns - 1 - m];
+    /* what the extension rewrites of the growing subpath: from fewer than 2 vertices it walks
+     * afresh, else it sets the last vertex's delta and the one before's reverse density */
+    bool afresh = ng < 2;
+    bool last_delta = afresh ? false : grow[ng - 1].delta;
+    double before_pdf_rev = afresh ? 0 : grow[ng - 2].pdf_rev;
+    for (int i = 0; afresh && i < ng; i++) w->save[i] = grow[i];
     bool ok = extend(pc, gs, grow, ng, w->tgt, d, &b, rec, &nrec, w->tol);
     if (ok) {
         /* reverse: from (j, v) the move back to i must succeed as well, or the pair is not symmetric */
         int rlo = ns_new >= 2 ? ns_new - 2 : 0;
         for (int i = rlo; i < ns_new; i++) w->rev[i] = shrink[i];
-        for (int m = 0; m < d; m++) w->tgt[m] = grow[ng + d - 1 - m];
+        for (int m = 0; m < d; m++) w->tgt[m] = &grow[ng + d - 1 - m]; /* rev is written, grow only read */
         struct block_rec rrec[MAX_SUBPATH_VERTS];
         ok = extend(pc, ss, w->rev, ns_new, w->tgt, d, &b, rrec, &nrev, w->tol);
     }
@@ -273,7 +277,11 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
         if (!*c_new) ok = false; /* the retraced connection lost the path (occluded in float) */
     }
     if (!ok) {
-        for (int i = lo; i < ng; i++) grow[i] = w->save[i - lo];
+        for (int i = 0; afresh && i < ng; i++) grow[i] = w->save[i];
+        if (!afresh) {
+            grow[ng - 1].delta = last_delta;
+            grow[ng - 2].pdf_rev = before_pdf_rev;
+        }
         *a = 0;
         return PITP_FAILED;
     }

@@ -31,7 +31,8 @@ bool mmlt_eval(const struct path_ctx *pc, struct sampler *s, int k, struct pitp_
 
 /* Per-thread scratch of the perturbation (no allocation in the chain loop). */
 struct pitp_scratch {
-    struct vertex tgt[MAX_SUBPATH_VERTS], rev[MAX_SUBPATH_VERTS], save[2];
+    const struct vertex *tgt[MAX_SUBPATH_VERTS]; /* the vertices an extension must reach, in order */
+    struct vertex rev[MAX_SUBPATH_VERTS], save[2];
     double ratios[MAX_PATH_LENGTH + 2];
     double tol; /* retrace tolerance: 1e-4 of the scene's size, as the inverse-walk tests use */
 };
