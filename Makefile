@@ -186,6 +186,22 @@ check-fig4.5: deps $(BIN)/fig4_5 $(CHECK_STATS)
 	  --out results/check-fig4.5/check.md results/baselines/fig4.5/fig4.5.csv results/check-fig4.5/fig4.5.csv
 CHECK_TARGETS += check-fig4.5
 
+# Thesis Figure 6.1: small-step acceptance per path length, MMLT vs PITP, split by technique change.
+.PHONY: fig6.1 check-fig6.1
+fig6.1: deps $(BIN)/fig6_1
+	$(BIN)/fig6_1 --out results/fig6.1
+	gnuplot -e "csv='results/fig6.1/fig6.1.csv'; out='results/fig6.1/fig6.1'" scripts/fig6.1.gp
+	bash scripts/fig6.1-table.sh results/fig6.1/fig6.1.csv > results/fig6.1/fig6.1.md
+	@cat results/fig6.1/fig6.1.md
+
+# Reruns the quick experiment with its own seed and compares every (method, length, technique
+# changed) acceptance with the baseline: Welch t over the 4 runs of each, Sidak-corrected alpha = 0.01.
+check-fig6.1: deps $(BIN)/fig6_1 $(CHECK_STATS)
+	$(BIN)/fig6_1 --scale quick --seed 2 --out results/check-fig6.1
+	$(CHECK_STATS) --key method,length,technique_changed --mean mean_accept --se run_se --count runs --alpha 0.01 \
+	  --out results/check-fig6.1/check.md results/baselines/fig6.1/fig6.1.csv results/check-fig6.1/fig6.1.csv
+CHECK_TARGETS += check-fig6.1
+
 # Thesis Figure 4.6: equal-time renders, MMLT large steps vs MCTLS vs the hybrid, relMSE vs BDPT.
 .PHONY: fig4.6
 fig4.6: deps $(BIN)/fig4_6
@@ -219,7 +235,9 @@ help:
 	@echo "make fig4.3     thesis Fig. 4.3: BDPT vs PSSMLT vs PSSMLT --cdc, a room reflected in a window"
 	@echo "make check      regression-check every statistic against results/baselines/"
 	@echo "make bench      throughput figures"
+	@echo "make fig4.5, fig4.6, fig6.1, table1-cmlt   thesis figures (check-<target> against the baselines)"
 	@echo "SCALE=quick|paper selects experiment sizes (default quick)"
 	@echo "PGO=0, LTO=0    build without profile-guided / link-time optimisation (after make clean)"
 
--include $(CORE_OBJ:.o=.d) $(BUILD)/core/oiio.cpp.d $(TEST_OBJ:.o=.d) $(patsubst %,$(BUILD)/%.d,$(EXP_SRC))
+# Every object's header dependencies, the experiments' subfolders (ch4/, cmlt/, fig5/, ...) included.
+-include $(CORE_OBJ:.o=.d) $(BUILD)/core/oiio.cpp.d $(TEST_OBJ:.o=.d) $(patsubst %,$(BUILD)/%.d,$(EXP_SRC) $(wildcard experiments/*/*.c))

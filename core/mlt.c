@@ -6,14 +6,15 @@
 #include "emitter.h"
 #include "integrator.h"
 #include "parallel.h"
+#include "pitp.h"
 #include "util.h"
 #include <stdlib.h>
 #include <string.h>
 
 /* Evaluates the state the sampler describes; returns the scalar target (0 for no contribution).
- * For MMLT, *tech receives the camera vertex count t. */
+ * For MMLT and PITP, *tech receives the camera vertex count t and x the path in t's form. */
 static double eval_state(enum mlt_method m, const struct path_ctx *pc, struct sampler *s, struct scratch *w, int k,
-                         struct splat_list *out, int *tech, bool *complete)
+                         struct pitp_path *x, struct splat_list *out, int *tech, bool *complete)
 {
     out->n = 0;
     *tech = 0;
@@ -21,16 +22,11 @@ static double eval_state(enum mlt_method m, const struct path_ctx *pc, struct sa
     if (m == MLT_PSSMLT) {
         bdpt_splats(pc, s, w, out);
     } else {
-        sampler_begin(s, STREAM_TECHNIQUE, 0);
-        int t = 1 + (int)((k + 1) * sampler_next(s, DIM_TECHNIQUE));
-        if (t > k + 1) t = k + 1;
-        int sv = k + 1 - t;
-        *tech = t;
-        int nz = walk_camera(pc, s, w->cam, t);
-        int ny = sv > 0 ? walk_emitter(pc, s, w->emi, sv) : 0;
         struct connection c;
-        *complete = nz == t && ny == sv;
-        if (*complete && connect_st(pc, w->emi, sv, w->cam, t, k, &c, NULL)) {
+        bool ok = mmlt_eval(pc, s, k, x, &c);
+        *tech = x->t;
+        *complete = x->complete;
+        if (ok) {
             rgb v = vscale(c.f, c.w * (k + 1));
             if (vfinite(v)) splat_push(out, c.px, c.py, v);
             else w->nonfinite++;
@@ -81,6 +77,7 @@ static void seed_worker(int tid, void *p)
     struct seed_job *j = p;
     struct path_ctx pc = {.sc = j->sc, .max_length = j->o->max_length, .max_heuristic = j->o->max_heuristic};
     struct scratch *w = xmalloc(sizeof *w);
+    struct pitp_path *x = xmalloc(sizeof *x);
     struct sampler_independent s;
     struct splat_list l;
     int tech;
@@ -88,10 +85,11 @@ static void seed_worker(int tid, void *p)
     for (long i = tid; i < j->o->seed_paths; i += j->o->threads) {
         for (int kk = 0; kk < j->nk; kk++) {
             sampler_independent_init(&s, j->o->seed, seed_stream(i, j->nk, kk));
-            j->f[i * j->nk + kk] = eval_state(j->o->method, &pc, &s.base, w, kk + 1, &l, &tech, &complete);
+            j->f[i * j->nk + kk] = eval_state(j->o->method, &pc, &s.base, w, kk + 1, x, &l, &tech, &complete);
         }
         if ((i / j->o->threads) % 1024 == 0) progress_add(&j->prog, 1024);
     }
+    free(x);
     free(w);
 }
 
@@ -105,6 +103,7 @@ struct chain {
     double pending;    /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
     bool xsum_valid;
     struct ctrl_path *path; /* controlled steps and angle statistics: the current subpaths */
+    struct pitp_path *x;    /* PITP: the current path in its technique's form (swapped with a spare on accept) */
 };
 
 /* Per-thread MCTLS buffers (k + 2 splat lists each for proposal and current). */
@@ -185,8 +184,21 @@ double mctls_accept(double ysum, double xsum) { return xsum > 0 ? fmin(1.0, ysum
 
 static bool use_mctls(const struct mlt_opts *o, int k)
 {
-    if (o->method != MLT_MMLT) return false;
+    if (o->method == MLT_PSSMLT) return false;
     return o->large_step == LARGE_MCTLS || (o->large_step == LARGE_HYBRID && k >= o->hybrid_length);
+}
+
+/* PITP after an accepted MCTLS step: the chosen technique's subpaths are prefixes of the ones MCTLS
+ * traced to full length; one more connection gives their density ratios. */
+static void mctls_keep_path(const struct path_ctx *pc, struct pitp_path *x, const struct scratch *w, int k, int t)
+{
+    x->k = k;
+    x->t = t;
+    x->s = k + 1 - t;
+    memcpy(x->cam, w->cam, (size_t)t * sizeof *x->cam);
+    memcpy(x->emi, w->emi, (size_t)x->s * sizeof *x->emi);
+    struct connection c;
+    connect_st(pc, x->emi, x->s, x->cam, t, k, &c, x->ratios);
 }
 
 /* One MCTLS proposal for chain c; returns the acceptance probability and fills *acc. */
@@ -214,6 +226,7 @@ static double mctls_step(const struct path_ctx *pc, struct chain *c, struct scra
         move_to(img, c, &b->sp[j], b->pi[j]);
         c->tech = j;
         c->xsum = ysum;
+        if (c->x) mctls_keep_path(pc, c->x, w, k, j);
     } else {
         pss_reject(&c->pss);
     }
@@ -231,6 +244,11 @@ static void run_worker(int tid, void *p)
     struct mctls_buf *mb = xmalloc(sizeof *mb);
     struct mlt_stats *st = &j->stats[tid];
     struct image *img = j->img[tid];
+    bool pitp = o->method == MLT_PITP, multiplexed = o->method != MLT_PSSMLT;
+    /* the proposal's path; under PITP swapped with the chain's on accept (no copy, no allocation) */
+    struct pitp_path *spare = xmalloc(sizeof *spare);
+    struct pitp_scratch *ps = pitp ? xmalloc(sizeof *ps) : NULL;
+    if (ps) pitp_scratch_init(ps, j->sc);
     rng r;
     rng_seed(&r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)tid);
     bool track = o->method == MLT_MMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
@@ -244,11 +262,13 @@ static void run_worker(int tid, void *p)
         if (!j->cdf[kk]) continue;
         long i = pick_cdf(j->cdf[kk], o->seed_paths, rng_uniform(&r));
         pss_init(&c->pss, &o->pss, o->seed, seed_stream(i, j->nk, kk));
-        c->f = eval_state(o->method, &pc, &c->pss.base, w, c->k, &c->cur, &c->tech, &complete);
+        if (pitp) c->x = xmalloc(sizeof *c->x);
+        struct pitp_path *x0 = pitp ? c->x : spare;
+        c->f = eval_state(o->method, &pc, &c->pss.base, w, c->k, x0, &c->cur, &c->tech, &complete);
         pss_accept(&c->pss);
         if (track) {
             c->path = xmalloc(sizeof *c->path);
-            ctrl_path_capture(c->path, w->cam, c->tech, w->emi, c->k + 1 - c->tech);
+            ctrl_path_capture(c->path, x0->cam, c->tech, x0->emi, c->k + 1 - c->tech);
         }
         /* The seed's stream reproduced its path; the mutations get a stream of their own, so that
          * two threads starting from the same seed sample do not run identical chains. */
@@ -277,20 +297,46 @@ static void run_worker(int tid, void *p)
             double a = mctls_step(&pc, c, w, mb, &r, img, &acc, &changed, &nonzero);
             stats_record(st, PROPOSAL_MCTLS, c->k, changed, a, acc, nonzero, o->time_proposals ? now_seconds() - t_start : 0);
         } else {
+            /* the technique before this iteration: small steps are split by whether they change it */
+            int tech0 = c->tech;
+            if (pitp && !large) {
+                /* PITP: the always-accepted technique perturbation, then MMLT's small step from there */
+                int sj;
+                double pa;
+                struct connection cn;
+                bool c_new;
+                enum pitp_outcome po = pitp_perturb(&pc, &c->pss, c->x, ps, rng_uniform(&r), &sj, &pa, &cn, &c_new);
+                int dt = abs(sj - c->x->s);
+                if (po == PITP_MOVED) {
+                    dt = abs(c->k + 1 - sj - c->tech);
+                    c->tech = c->x->t;
+                    c->xsum_valid = false;
+                    if (c_new) {
+                        /* the target changed with the technique (refraction, delta vertices): the
+                         * state's splat and target follow */
+                        struct splat_list l;
+                        l.n = 0;
+                        splat_push(&l, cn.px, cn.py, vscale(cn.f, cn.w * (c->k + 1)));
+                        move_to(img, c, &l, splat_luminance(&l));
+                    }
+                }
+                stats_record_dt(st, PROPOSAL_PITP, c->k, dt != 0, dt, po == PITP_FAILED, pa, po == PITP_SAME || po == PITP_MOVED,
+                                true, 0);
+            }
             pss_begin(&c->pss, large);
             int tech;
             /* the one dispatch point of the small-step kind: the proposal is traced through the
              * controlled sampler, which also yields the kernel's ratio T(v->u) / T(u->v) */
             bool ctrl = !large && cs;
-            if (ctrl) ctrl_begin(cs, &c->pss, c->path, w->cam, w->emi, o->small_step);
-            double f = eval_state(o->method, &pc, ctrl ? &cs->base : &c->pss.base, w, c->k, &prop, &tech, &complete);
+            if (ctrl) ctrl_begin(cs, &c->pss, c->path, spare->cam, spare->emi, o->small_step);
+            double f = eval_state(o->method, &pc, ctrl ? &cs->base : &c->pss.base, w, c->k, spare, &prop, &tech, &complete);
             double tr = ctrl ? ctrl_finish(cs, complete) : 1;
             if (ctrl && cs->fail != CTRL_OK) j->ctrl_fail[tid][cs->fail - 1]++;
             if (o->ctrl_unit_ratio && tr > 0) tr = 1;
             if (tr == 0) f = 0; /* an impossible inversion: nothing this proposal could splat */
             if (!large && o->angle_stats) {
                 double dpsi;
-                if (complete && tech == c->tech && angle_change(c->path, w->cam, w->emi, &dpsi))
+                if (complete && tech == c->tech && angle_change(c->path, spare->cam, spare->emi, &dpsi))
                     angle_acc_add(&j->angle[tid], c->cur.s[0].px, c->cur.s[0].py, c->k, dpsi);
                 else
                     j->angle[tid].skipped++;
@@ -304,13 +350,17 @@ static void run_worker(int tid, void *p)
                 pss_accept(&c->pss);
                 move_to(img, c, &prop, f);
                 c->xsum_valid = false;
-                if (track) ctrl_path_capture(c->path, w->cam, tech, w->emi, c->k + 1 - tech);
+                if (track) ctrl_path_capture(c->path, spare->cam, tech, spare->emi, c->k + 1 - tech);
+                if (pitp) {
+                    struct pitp_path *t = c->x;
+                    c->x = spare;
+                    spare = t;
+                }
             } else {
                 pss_reject(&c->pss);
             }
-            stats_record(st, large ? PROPOSAL_LARGE : PROPOSAL_SMALL, o->method == MLT_MMLT ? c->k : 0,
-                         o->method == MLT_MMLT && tech != c->tech, a, acc, f > 0,
-                         o->time_proposals ? now_seconds() - t_start : 0);
+            stats_record_dt(st, large ? PROPOSAL_LARGE : PROPOSAL_SMALL, multiplexed ? c->k : 0, multiplexed && tech != tech0,
+                            multiplexed ? abs(tech - tech0) : 0, false, a, acc, f > 0, o->time_proposals ? now_seconds() - t_start : 0);
             if (acc) c->tech = tech;
         }
         if ((n & 4095) == 4095) {
@@ -321,10 +371,13 @@ static void run_worker(int tid, void *p)
     for (int kk = 0; kk < j->nk; kk++) {
         pay_current(img, &ch[kk]);
         free(ch[kk].path);
+        free(ch[kk].x);
     }
     free(cs);
     j->done[tid] = n;
     st->nonfinite += w->nonfinite;
+    free(ps);
+    free(spare);
     free(mb);
     free(ch);
     free(w);
@@ -335,7 +388,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     struct mlt_opts o = *o_in;
     if (o.threads < 1) o.threads = 1;
     int W = sc->cam.width, H = sc->cam.height, T = o.threads;
-    int nk = o.method == MLT_MMLT ? o.max_length : 1;
+    int nk = o.method != MLT_PSSMLT ? o.max_length : 1;
     memset(r, 0, sizeof *r);
     if (o.small_step != SMALL_STEP_PSS &&
         (o.method != MLT_MMLT || o.large_step != LARGE_MMLT || o.pss.kernel != KERNEL_GAUSSIAN || o.pss.cdc)) {
@@ -405,7 +458,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         rj.img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
     rj.t0 = now_seconds();
-    progress_init(&rj.prog, o.method == MLT_MMLT ? "mmlt" : "pssmlt", o.seconds > 0 ? (long)(1000 * o.seconds) : o.mutations,
+    progress_init(&rj.prog, (const char *[]){"pssmlt", "mmlt", "pitp"}[o.method], o.seconds > 0 ? (long)(1000 * o.seconds) : o.mutations,
                   o.progress);
     parallel_run(T, run_worker, &rj);
     progress_finish(&rj.prog);

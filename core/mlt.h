@@ -22,7 +22,9 @@
 #include "pss.h"
 #include "scene.h"
 
-enum mlt_method { MLT_PSSMLT, MLT_MMLT };
+/* MLT_PITP: MMLT with the path-invariant technique perturbation before every small step (thesis
+ * §5.2, core/pitp.h); every MMLT option applies. */
+enum mlt_method { MLT_PSSMLT, MLT_MMLT, MLT_PITP };
 
 /* MMLT's large step: fresh numbers (MMLT), the multiple correlated-try large step of thesis §4.3
  * (Eq. 4.2-4.7: trace both subpaths to length k, pick one of the k + 1 connections in proportion to

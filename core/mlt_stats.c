@@ -3,13 +3,15 @@
 #include <math.h>
 #include <string.h>
 
-static const char *kind_names[] = {"small", "large", "mctls"};
+static const char *kind_names[] = {"small", "large", "mctls", "pitp"};
 const char *proposal_name(enum proposal_kind k) { return kind_names[k]; }
 
 void stats_clear(struct mlt_stats *s) { memset(s, 0, sizeof *s); }
 
-static void record(struct accept_cell *c, double a, bool accepted, bool nonzero, double seconds)
+static void record(struct accept_cell *c, double a, bool accepted, bool nonzero, double seconds, int dtech, bool failed)
 {
+    c->failed += failed;
+    c->sum_dtech += dtech;
     c->accepted += accepted;
     c->nonzero += nonzero;
     c->seconds += seconds;
@@ -31,13 +33,19 @@ void cell_add(struct accept_cell *c, double m)
     }
 }
 
+void stats_record_dt(struct mlt_stats *s, enum proposal_kind kind, int length, bool changed, int dtech, bool failed,
+                     double a, bool accepted, bool nonzero, double seconds)
+{
+    if (length < 0 || length >= STATS_LENGTHS) length = 0;
+    record(&s->cell[kind][length][changed], a, accepted, nonzero, seconds, dtech, failed);
+    record(&s->any[kind][length], a, accepted, nonzero, seconds, dtech, failed);
+    record(&s->total[kind], a, accepted, nonzero, seconds, dtech, failed);
+}
+
 void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool changed, double a, bool accepted,
                   bool nonzero, double seconds)
 {
-    if (length < 0 || length >= STATS_LENGTHS) length = 0;
-    record(&s->cell[kind][length][changed], a, accepted, nonzero, seconds);
-    record(&s->any[kind][length], a, accepted, nonzero, seconds);
-    record(&s->total[kind], a, accepted, nonzero, seconds);
+    stats_record_dt(s, kind, length, changed, 0, false, a, accepted, nonzero, seconds);
 }
 
 void cell_merge(struct accept_cell *d, const struct accept_cell *s)
@@ -47,6 +55,8 @@ void cell_merge(struct accept_cell *d, const struct accept_cell *s)
     d->nonzero += s->nonzero;
     d->seconds += s->seconds;
     d->sum_a += s->sum_a;
+    d->sum_dtech += s->sum_dtech;
+    d->failed += s->failed;
     d->nbatches += s->nbatches;
     d->bsum += s->bsum;
     d->bsum2 += s->bsum2;
@@ -78,13 +88,14 @@ double cell_stderr(const struct accept_cell *c)
 static void row(FILE *f, const char *method, const char *kind, const char *len, const char *changed,
                 const struct accept_cell *c)
 {
-    fprintf(f, "%s,%s,%s,%s,%ld,%.9g,%.9g,%.9g,%ld\n", method, kind, len, changed, c->attempts, cell_mean(c), cell_stderr(c),
-            c->attempts ? (double)c->accepted / c->attempts : NAN, c->nonzero);
+    fprintf(f, "%s,%s,%s,%s,%ld,%.9g,%.9g,%.9g,%ld,%.9g,%ld\n", method, kind, len, changed, c->attempts, cell_mean(c),
+            cell_stderr(c), c->attempts ? (double)c->accepted / c->attempts : NAN, c->nonzero,
+            c->attempts ? c->sum_dtech / c->attempts : NAN, c->failed);
 }
 
 void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, bool header)
 {
-    if (header) fprintf(f, "method,kind,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,nonzero\n");
+    if (header) fprintf(f, "method,kind,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,nonzero,mean_dtech,failed\n");
     char len[16];
     for (int k = 0; k < PROPOSAL_KINDS; k++) {
         for (int l = 0; l < STATS_LENGTHS; l++) {

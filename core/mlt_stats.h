@@ -7,7 +7,10 @@
 #include <stdbool.h>
 #include <stdio.h>
 
-enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_KINDS };
+/* PROPOSAL_PITP records PITP's technique perturbations (core/pitp.c): "accepted" means carried
+ * out; a is 1, or min(1, f_j / f_i) on paths refracting between the connections, and 0 for a
+ * failed inversion or retrace (counted in `failed`); technique_changed is j != i. */
+enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_KINDS };
 #define STATS_LENGTHS (MAX_PATH_LENGTH + 1) /* index 0 = all lengths (PSSMLT states) */
 #define STATS_BATCH 2048 /* proposals per batch: long enough for chains stuck ~1/acceptance steps */
 
@@ -18,6 +21,8 @@ struct accept_cell {
     long batch_n;
     long nbatches;
     double bsum, bsum2;          /* sums of batch means and their squares */
+    long failed;                 /* proposals that could not be constructed (PITP: inversion or retrace) */
+    double sum_dtech;            /* sum of |t' - t|: how far proposals move the technique */
     double seconds;              /* time spent on these proposals (not in the CSV rows: they reproduce exactly) */
 };
 
@@ -33,6 +38,10 @@ struct mlt_stats {
 void stats_clear(struct mlt_stats *s);
 void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool technique_changed, double a,
                   bool accepted, bool nonzero, double seconds);
+/* The same with the technique distance |t' - t| of the proposal and whether it failed to be
+ * constructed (stats_record: 0 and false). */
+void stats_record_dt(struct mlt_stats *s, enum proposal_kind kind, int length, bool technique_changed, int dtech,
+                     bool failed, double a, bool accepted, bool nonzero, double seconds);
 /* Adds src into dst (threads are merged in a fixed order). */
 void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src);
 /* One value into a cell's mean and batches (also for other per-proposal statistics, such as the

@@ -57,6 +57,11 @@ struct path_ctx {
  * Camera walks stop after max_verts vertices, at a miss, or at a null/absorbing surface. */
 int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts);
 int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts);
+/* Continues a subpath of n vertices (stream STREAM_CAMERA or STREAM_EMITTER) to at most max_verts,
+ * reading blocks n - 1 on: the vertices it adds are those a whole walk would add with the same
+ * numbers (v[n-1].delta and v[n-2].pdf_rev are set as the walk sets them). n < 2 walks afresh.
+ * PITP's retrace of the vertices a subpath gains (core/pitp.c). */
+int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream);
 
 /* The emitter vertex y_0 from the current block (light choice, then position or environment
  * direction and origin). */

@@ -12,6 +12,33 @@ bool walk_hit(const struct scene *sc, const struct vertex *prev, vec3 d, struct 
     return true;
 }
 
+/* Samples the direction leaving v[n-1] (n >= 2, a surface with a BSDF) from its block: the
+ * outgoing direction *d, its solid-angle density *pdf_sa (0 for a delta lobe) and the throughput
+ * *beta the next vertex receives; sets v[n-1].delta and v[n-2].pdf_rev. False ends the walk. The
+ * incoming direction is -v[n-1].wi, bit for bit the ray that reached it. */
+static inline bool scatter_at(struct sampler *s, struct vertex *v, int n, enum transport mode, int stream, vec3 *d,
+                              double *pdf_sa, rgb *beta)
+{
+    struct vertex *prev = &v[n - 2], *cur = &v[n - 1];
+    sampler_begin(s, stream, n - 1);
+    vec3 wi = frame_to_local(&cur->sh, cur->wi);
+    struct bsdf_sample bs;
+    if (!bsdf_sample(&cur->bc, wi, s, mode, &bs)) return false;
+    vec3 wo = frame_to_world(&cur->sh, bs.wo);
+    /* A shading normal may disagree with the geometry: such directions would leak light. */
+    if ((vdot(wo, cur->ng) > 0) != (bs.wo.z > 0)) return false;
+    rgb b = vmul(cur->beta, bs.weight);
+    if (mode == TRANSPORT_IMPORTANCE) b = vscale(b, adjoint_shading_factor(cur, cur->wi, wo));
+    if (vzero(b) || !vfinite(b)) return false;
+    cur->delta = bs.delta;
+    double dist2 = vlen2(vsub(cur->p, prev->p));
+    prev->pdf_rev = bs.delta ? 0 : edge_pdf(bsdf_pdf(&cur->bc, bs.wo, wi), cur, prev, vneg(cur->wi), dist2);
+    *d = wo;
+    *pdf_sa = bs.delta ? 0 : bs.pdf;
+    *beta = b;
+    return true;
+}
+
 /* Extends a subpath whose last vertex v[n-1] emits direction d with solid-angle density pdf_sa
  * (0 for a delta lobe); beta is the throughput the next vertex receives. */
 static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts,
@@ -35,22 +62,21 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
         cur->pdf_fwd = pdf_sa > 0 ? edge_pdf(pdf_sa, prev, cur, d, dist2) : 0;
         n++;
         if (!cur->bc.b || n >= max_verts) break;
-        sampler_begin(s, stream, n - 1);
-        vec3 wi = frame_to_local(&cur->sh, cur->wi);
-        struct bsdf_sample bs;
-        if (!bsdf_sample(&cur->bc, wi, s, mode, &bs)) break;
-        vec3 wo = frame_to_world(&cur->sh, bs.wo);
-        /* A shading normal may disagree with the geometry: such directions would leak light. */
-        if ((vdot(wo, cur->ng) > 0) != (bs.wo.z > 0)) break;
-        beta = vmul(beta, bs.weight);
-        if (mode == TRANSPORT_IMPORTANCE) beta = vscale(beta, adjoint_shading_factor(cur, cur->wi, wo));
-        if (vzero(beta) || !vfinite(beta)) break;
-        cur->delta = bs.delta;
-        prev->pdf_rev = bs.delta ? 0 : edge_pdf(bsdf_pdf(&cur->bc, bs.wo, wi), cur, prev, d, dist2);
-        d = wo;
-        pdf_sa = bs.delta ? 0 : bs.pdf;
+        if (!scatter_at(s, v, n, mode, stream, &d, &pdf_sa, &beta)) break;
     }
     return n;
+}
+
+int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream)
+{
+    if (n < 2) return stream == STREAM_CAMERA ? walk_camera(pc, s, v, max_verts) : walk_emitter(pc, s, v, max_verts);
+    if (n >= max_verts || !v[n - 1].bc.b) return n;
+    enum transport mode = stream == STREAM_CAMERA ? TRANSPORT_RADIANCE : TRANSPORT_IMPORTANCE;
+    vec3 d;
+    double pdf_sa;
+    rgb beta;
+    if (!scatter_at(s, v, n, mode, stream, &d, &pdf_sa, &beta)) return n;
+    return trace(pc, s, v, n, max_verts, d, pdf_sa, beta, mode, stream);
 }
 
 int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts)

@@ -99,6 +99,15 @@ void pss_set(struct pss_sampler *p, int stream, int index, double u)
     d->modified = p->iteration;
 }
 
+void pss_replace(struct pss_sampler *p, int stream, int index, double u)
+{
+    struct pss_dim *d = &p->d[stream][index];
+    d->value = u;
+    d->modified = p->iteration;
+}
+
+void pss_forget(struct pss_sampler *p, int stream, int index) { p->d[stream][index].modified = 0; }
+
 /* Outside a proposal (after accept or reject) reads describe the current state: a number never
  * read since the last accepted large step is fresh, any other catches up on the small steps of
  * the accepted iterations it was not read in (which an eager implementation would have applied). */

@@ -58,6 +58,13 @@ void pss_reject(struct pss_sampler *p);
 /* Sets a number as part of the current proposal (restored by pss_reject), e.g. the technique
  * number an MCTLS step selected. */
 void pss_set(struct pss_sampler *p, int stream, int index, double u);
+/* Outside a proposal: changes the current state itself, as an always-accepted move does (PITP's
+ * technique perturbation, core/pitp.c). pss_replace sets a number of the current state; pss_forget
+ * makes one fresh (uniform, drawn when next read), as if never read since the last large step:
+ * the numbers a path stops using are redrawn from their uniform conditional. Neither counts as an
+ * iteration, so the lazy catch-up of other numbers is unaffected. */
+void pss_replace(struct pss_sampler *p, int stream, int index, double u);
+void pss_forget(struct pss_sampler *p, int stream, int index);
 /* Copies the current numbers of all dims read so far into u (NAN where never read). */
 void pss_export(const struct pss_sampler *p, double (*u)[STREAM_DIMS]);
 /* Replaces the state by u (used to start a chain from a seed path); NAN entries stay fresh. */

@@ -1,5 +1,5 @@
 /* bin/bench: throughput on a committed scene. Embree's raw incoherent ray rate, PT and BDPT camera
- * samples and PSSMLT and MMLT mutations per second on one and two threads (320x180, max length 8
+ * samples and PSSMLT, MMLT and PITP mutations per second on one and two threads (320x180, max length 8
  * by default), the speed-up, the rays each sample or mutation casts, and peak memory with and
  * without image output; or, given several scenes, a table of the 1-thread figures. Numbers are
  * medians over --runs repetitions. */
@@ -19,7 +19,7 @@
 static const char *usage =
     "usage: bench [SCENE.json ...] [--runs N] [--seconds S] [--max-length K]\n"
     "  Every scene is rendered at 320x180. One scene (default scenes/cornell-box/scene.json): Embree's\n"
-    "  ray rate, PT/BDPT samples/s and PSSMLT/MMLT mutations/s on 1 and 2 threads, rays per sample\n"
+    "  ray rate, PT/BDPT samples/s and PSSMLT/MMLT/PITP mutations/s on 1 and 2 threads, rays per sample\n"
     "  or mutation and the time they take at Embree's rate, peak memory.\n"
     "  Several scenes: a Markdown table of the 1-thread figures, one row per scene.\n"
     "  --runs N      median of N runs of each figure (default 3)\n"
@@ -147,8 +147,8 @@ static double image_io_peak_mb(const struct scene *sc)
     return ok ? ru.ru_maxrss / 1024.0 : NAN;
 }
 
-enum { PT, BDPT, PSSMLT, MMLT, CTRL, NM };
-static const char *method_names[NM] = {"pt", "bdpt", "pssmlt", "mmlt", "mmlt --small-step controlled"};
+enum { PT, BDPT, PSSMLT, MMLT, PITP, CTRL, NM };
+static const char *method_names[NM] = {"pt", "bdpt", "pssmlt", "mmlt", "pitp", "mmlt --small-step controlled"};
 
 struct figures {
     double closest_rate, shadow_rate; /* Embree's random rays/s */
@@ -162,6 +162,7 @@ static double method_rate(const struct scene *sc, int m, int threads, int K, dou
     case PT: return sample_rate(sc, METHOD_PT, threads, K, seconds, per);
     case BDPT: return sample_rate(sc, METHOD_BDPT, threads, K, seconds, per);
     case PSSMLT: return mutation_rate(sc, MLT_PSSMLT, SMALL_STEP_PSS, threads, K, seconds, per);
+    case PITP: return mutation_rate(sc, MLT_PITP, SMALL_STEP_PSS, threads, K, seconds, per);
     case CTRL: return mutation_rate(sc, MLT_MMLT, SMALL_STEP_CONTROLLED, threads, K, seconds, per);
     default: return mutation_rate(sc, MLT_MMLT, SMALL_STEP_PSS, threads, K, seconds, per);
     }
@@ -210,6 +211,7 @@ static void report(const char *path, const struct scene *sc, int runs, double se
         snprintf(label, sizeof label, "%s %s/s (1 thread)", method_names[m], unit[m]);
         printf("%-44s %12.0f", label, f.rate[m][0]);
         if (m == PSSMLT) printf("   per mutation vs bdpt per sample %.2fx", f.rate[m][0] / f.rate[BDPT][0]);
+        if (m == PITP) printf("   time per mutation vs mmlt %.2fx", f.rate[MMLT][0] / f.rate[m][0]);
         if (m == CTRL) printf("   %.2fx mmlt's", f.rate[m][0] / f.rate[MMLT][0]);
         snprintf(label, sizeof label, "%s %s/s (2 threads)", method_names[m], unit[m]);
         printf("\n%-44s %12.0f   speed-up %.2fx\n", label, f.rate[m][1], f.rate[m][1] / f.rate[m][0]);
@@ -229,13 +231,15 @@ static void report(const char *path, const struct scene *sc, int runs, double se
 static void table(char **paths, struct scene **sc, int n, int runs, double seconds, int K)
 {
     printf("# 320x180, max length %d, 1 thread, median of %d runs of %g s\n", K, runs, seconds);
-    printf("| scene | Embree rays/s | PT samples/s | BDPT samples/s | PSSMLT mutations/s | MMLT mutations/s | MMLT controlled mutations/s |\n");
-    printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    printf("| scene | Embree rays/s | PT samples/s | BDPT samples/s | PSSMLT mutations/s | MMLT mutations/s | PITP mutations/s | "
+           "PITP time / MMLT | MMLT controlled mutations/s |\n");
+    printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (int i = 0; i < n; i++) {
         struct figures f;
         measure(sc[i], runs, seconds, K, true, &f);
-        printf("| %s | %.1f M | %.2f M | %.0f k | %.0f k | %.2f M | %.2f M |\n", paths[i], f.closest_rate / 1e6,
-               f.rate[PT][0] / 1e6, f.rate[BDPT][0] / 1e3, f.rate[PSSMLT][0] / 1e3, f.rate[MMLT][0] / 1e6, f.rate[CTRL][0] / 1e6);
+        printf("| %s | %.1f M | %.2f M | %.0f k | %.0f k | %.2f M | %.2f M | %.2fx | %.2f M |\n", paths[i],
+               f.closest_rate / 1e6, f.rate[PT][0] / 1e6, f.rate[BDPT][0] / 1e3, f.rate[PSSMLT][0] / 1e3,
+               f.rate[MMLT][0] / 1e6, f.rate[PITP][0] / 1e6, f.rate[MMLT][0] / f.rate[PITP][0], f.rate[CTRL][0] / 1e6);
         fflush(stdout);
     }
 }

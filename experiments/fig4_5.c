@@ -12,7 +12,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 static const char *usage =
     "usage: fig4_5 [options]\n"
@@ -26,35 +25,15 @@ static const char *usage =
 
 int main(int argc, char **argv)
 {
-    const char *prog = "fig4_5", *scene = "scenes/ajar/scene.json", *out = "results/fig4.5";
-    const char *scale = getenv("SCALE") && *getenv("SCALE") ? getenv("SCALE") : "quick";
-    long mutations = -1;
-    int K = 12, threads = cpu_count();
-    uint64_t seed = 1;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (!strcmp(o, "--scene")) scene = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--scale")) scale = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--mutations")) mutations = cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1L << 40);
-        else if (!strcmp(o, "--max-length")) K = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
-        else if (!strcmp(o, "--seed")) seed = cli_u64(prog, o, cli_value(prog, argc, argv, &i));
-        else if (!strcmp(o, "--threads")) threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1024);
-        else if (!strcmp(o, "--out")) out = cli_value(prog, argc, argv, &i);
-        else cli_fail(prog, "unknown option '%s' (see --help)", o);
-    }
-    bool paper = !strcmp(scale, "paper");
-    if (!paper && strcmp(scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", scale);
-    if (mutations < 0) mutations = paper ? 100000000 : 3000000;
+    struct cli_figure fo = {.scene = "scenes/ajar/scene.json", .out = "results/fig4.5"};
+    cli_figure_parse("fig4_5", usage, argc, argv, &fo);
+    struct scene *sc = cli_figure_scene(&fo);
+    const char *scene = fo.scene, *out = fo.out, *scale = fo.scale;
+    bool paper = fo.paper;
+    long mutations = fo.mutations >= 0 ? fo.mutations : paper ? 100000000 : 3000000;
+    int K = fo.max_length, threads = fo.threads;
+    uint64_t seed = fo.seed;
     char err[1024];
-    struct scene *sc = scene_load(scene, err, sizeof err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err);
-        return 2;
-    }
-    mkdir(out, 0777);
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);

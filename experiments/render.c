@@ -16,8 +16,9 @@
 
 static const char *usage =
     "usage: render SCENE.json [options]\n"
-    "  --method pt|bdpt|pssmlt|mmlt  estimator (default bdpt)\n"
-    "  --spp N              samples per pixel; for pssmlt/mmlt mutations per pixel\n"
+    "  --method pt|bdpt|pssmlt|mmlt|pitp  estimator (default bdpt; pitp: MMLT with the\n"
+    "                       path-invariant technique perturbation, thesis 5.2)\n"
+    "  --spp N              samples per pixel; for pssmlt/mmlt/pitp mutations per pixel\n"
     "                       (default: the scene's renderer.spp, else 16)\n"
     "  --time SECONDS       equal-time budget instead of --spp: pssmlt/mmlt chains stop at it\n"
     "                       (the seed pass comes on top); pt/bdpt render whole passes of\n"
@@ -31,7 +32,7 @@ static const char *usage =
     "  --embree-isa ISA     Embree's kernels: sse2, sse4.2, avx, avx2 or avx512 (those this CPU\n"
     "                       runs; default: the best, or the environment's PSS_EMBREE_ISA): hit\n"
     "                       points, so images, differ in the last bits between kernels\n"
-    "MCMC options (pssmlt, mmlt):\n"
+    "MCMC options (pssmlt, mmlt, pitp; the mmlt options apply to pitp too):\n"
     "  --p-large P          large-step probability (default 0.1)\n"
     "  --kernel kelemen|gaussian  small-step kernel (default kelemen: s1 = 1/1024, s2 = 1/64)\n"
     "  --sigma S            gaussian small-step standard deviation (default 1/64)\n"
@@ -76,12 +77,13 @@ static bool listed(const char *o, const char *const *list)
 /* One warning line per option that the chosen method does not read. */
 static void warn_unused(const char *prog, int argc, char **argv, const char *method)
 {
-    bool mcmc = !strcmp(method, "pssmlt") || !strcmp(method, "mmlt");
+    bool mcmc = !strcmp(method, "pssmlt") || !strcmp(method, "mmlt") || !strcmp(method, "pitp");
+    bool multiplexed = !strcmp(method, "mmlt") || !strcmp(method, "pitp");
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i];
         const char *only = !mcmc && listed(o, mcmc_only)                   ? "pssmlt and mmlt"
                            : !strcmp(method, "pssmlt") && listed(o, mmlt_only) ? "mmlt"
-                           : !strcmp(method, "mmlt") && listed(o, pssmlt_only) ? "pssmlt"
+                           : multiplexed && listed(o, pssmlt_only) ? "pssmlt"
                                                                               : NULL;
         if (only) fprintf(stderr, "%s: warning: %s has no effect with --method %s (it applies to %s)\n", prog, o, method, only);
     }
@@ -98,8 +100,8 @@ static void parse(int argc, char **argv, struct args *a)
             exit(0);
         } else if (!strcmp(o, "--method")) {
             const char *v = VALUE;
-            if (strcmp(v, "pt") && strcmp(v, "bdpt") && strcmp(v, "pssmlt") && strcmp(v, "mmlt"))
-                cli_fail(prog, "--method: expected pt, bdpt, pssmlt or mmlt, got '%s'", v);
+            if (strcmp(v, "pt") && strcmp(v, "bdpt") && strcmp(v, "pssmlt") && strcmp(v, "mmlt") && strcmp(v, "pitp"))
+                cli_fail(prog, "--method: expected pt, bdpt, pssmlt, mmlt or pitp, got '%s'", v);
             snprintf(a->method, sizeof a->method, "%s", v);
         } else if (!strcmp(o, "--spp")) {
             a->mc.spp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
@@ -227,8 +229,13 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     if (r->partial) fprintf(f, "# PARTIAL: interrupted after %ld mutations\n", r->mutations);
     fprintf(f, "# mutations %ld\n# seconds %.3f\n# seed_seconds %.3f\n# mutations_per_second %.0f\n# nonfinite %ld\n",
             r->mutations, r->seconds, r->seed_seconds, r->mutations / r->seconds, r->nonfinite);
+    if (a->mlt.method == MLT_PITP) {
+        const struct accept_cell *pc = &r->stats.total[PROPOSAL_PITP];
+        fprintf(f, "# pitp_perturbations %ld\n# pitp_failures %ld\n# pitp_failure_fraction %.9g\n", pc->attempts,
+                pc->failed, pc->attempts ? (double)pc->failed / pc->attempts : 0.0);
+    }
     fprintf(f, "# b %.9g\n", r->b);
-    for (int k = 1; k <= a->mlt.max_length && a->mlt.method == MLT_MMLT; k++) fprintf(f, "# b_%d %.9g\n", k, r->b_k[k]);
+    for (int k = 1; k <= a->mlt.max_length && a->mlt.method != MLT_PSSMLT; k++) fprintf(f, "# b_%d %.9g\n", k, r->b_k[k]);
     stats_write_csv(f, a->method, &r->stats, true);
     fclose(f);
     char path[4096];
@@ -283,7 +290,7 @@ int main(int argc, char **argv)
                    a.mc.threads, st.nonfinite);
         img_destroy(img);
     } else {
-        a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : MLT_PSSMLT;
+        a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : !strcmp(a.method, "pitp") ? MLT_PITP : MLT_PSSMLT;
         a.mlt.max_length = a.mc.max_length;
         a.mlt.mutations = (long)a.mc.spp * sc->cam.width * sc->cam.height;
         a.mlt.pss = cli_pss;

@@ -1,8 +1,8 @@
 /* Environment emitters in every method. scenes/sky-sphere: a convex lambert sphere (albedo 0.5)
  * under a constant white sky has radiance exactly 0.5, which holds only if escaping paths, light
  * samples toward the sky and (for BDPT) emitter subpaths started from the sky are weighted
- * consistently. scenes/sky-courtyard: a textured sky plus an area light, where PT, PSSMLT and MMLT
- * must agree with BDPT per block. */
+ * consistently. scenes/sky-courtyard: a textured sky plus an area light, where PT, PSSMLT, MMLT and
+ * PITP must agree with BDPT per block. */
 #include <criterion/criterion.h>
 
 #include "agree.h"
@@ -60,19 +60,21 @@ Test(stat_env, constant_sky_sphere_every_method)
         if (m == METHOD_PT) cr_assert(fabs(img_get(im, 0, 0).x - 1) < 1e-12, "pt: background is not 1");
         img_destroy(im);
     }
-    double tmax = gsl_cdf_tdist_Qinv((1 - pow(0.99, 1.0 / 2)) / 2, 7);
-    for (int m = 0; m < 2; m++) {
+    double tmax = gsl_cdf_tdist_Qinv((1 - pow(0.99, 1.0 / 3)) / 2, 7);
+    for (int m = 0; m < 3; m++) {
         double s = 0, s2 = 0;
         for (int r = 0; r < 8; r++) {
-            struct image *im = mcmc_run(sc, m == 0 ? MLT_PSSMLT : MLT_MMLT, 1024, 100000, 130 + 10 * (uint64_t)m + (uint64_t)r, 4);
+            struct image *im = mcmc_run(sc, (enum mlt_method)m, 1024, 100000, 130 + 10 * (uint64_t)m + (uint64_t)r, 4);
             double v = centre_mean(im, &se);
             s += v;
             s2 += v * v;
             img_destroy(im);
         }
         double mean = s / 8, run_se = sqrt(fmax(0, s2 / 8 - mean * mean) / 7);
+        fprintf(stderr, "sky sphere %s: %.6f +- %.6f, expected 0.5 (t = %.2f, limit %.2f)\n", (const char *[]){"pssmlt", "mmlt", "pitp"}[m],
+                mean, run_se, (mean - 0.5) / run_se, tmax);
         cr_assert(fabs(mean - 0.5) < tmax * run_se + 1e-12 && fabs(mean - 0.5) < 0.04, "%s: sphere radiance %.6f +- %.6f, expected 0.5",
-                  m == 0 ? "pssmlt" : "mmlt", mean, run_se);
+                  (const char *[]){"pssmlt", "mmlt", "pitp"}[m], mean, run_se);
     }
     scene_free(sc);
 }
@@ -94,8 +96,8 @@ static struct image *render_any(void *p, uint64_t seed)
     return mcmc_run(c->sc, (enum mlt_method)c->mlt, 16, 10000, seed, 6);
 }
 
-/* 64x48 pixels; 8 BDPT runs of 16 spp against 8 PT runs (16 spp) and 12 PSSMLT / MMLT runs (16
- * mutations per pixel); Welch t on 8x8 blocks + image mean, alpha 0.01 Sidak over 3 comparisons. */
+/* 64x48 pixels; 8 BDPT runs of 16 spp against 8 PT runs (16 spp) and 12 PSSMLT / MMLT / PITP runs
+ * (16 mutations per pixel); Welch t on 8x8 blocks + image mean, alpha 0.01 Sidak over 4 comparisons. */
 Test(stat_env, textured_sky_all_methods_agree_with_bdpt)
 {
     struct scene *sc = test_scene("scenes/sky-courtyard/scene.json");
@@ -103,13 +105,15 @@ Test(stat_env, textured_sky_all_methods_agree_with_bdpt)
     static struct stack ref, a;
     struct ctx r = {sc, METHOD_BDPT, -1};
     stack_runs(&ref, render_any, &r, 8, 500, 8);
-    const struct ctx cfg[] = {{sc, METHOD_PT, -1}, {sc, METHOD_BDPT, MLT_PSSMLT}, {sc, METHOD_BDPT, MLT_MMLT}};
-    const char *names[] = {"pt", "pssmlt", "mmlt"};
-    for (int i = 0; i < 3; i++) {
+    const struct ctx cfg[] = {{sc, METHOD_PT, -1}, {sc, METHOD_BDPT, MLT_PSSMLT}, {sc, METHOD_BDPT, MLT_MMLT}, {sc, METHOD_BDPT, MLT_PITP}};
+    const char *names[] = {"pt", "pssmlt", "mmlt", "pitp"};
+    for (int i = 0; i < 4; i++) {
         struct ctx c = cfg[i];
         stack_runs(&a, render_any, &c, i ? 12 : 8, 600 + 50 * (uint64_t)i, 8);
         double pm, worst;
-        int f = stack_compare(&a, &ref, 3, &pm, &worst);
+        int f = stack_compare(&a, &ref, 4, &pm, &worst);
+        fprintf(stderr, "sky-courtyard %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", names[i], a.mean,
+                a.mean_se, ref.mean, ref.mean_se, pm, worst);
         cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", names[i], a.mean,
                      a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     }
@@ -121,8 +125,9 @@ Test(stat_env, textured_sky_all_methods_agree_with_bdpt)
  * segments. A path that reaches the sky through a delta bounce has one technique only (escaping:
  * no light sample or connection can pass a delta vertex), so its MIS weight must be exactly 1.
  * PT has no other noise: every pixel must be 1 to 1e-6. BDPT (light tracing of the directly seen
- * sky), PSSMLT and MMLT are noisy: their image mean over 8 runs (BDPT 16 spp, MCMC 64 mutations
- * per pixel) must contain 1 (t-test, alpha 0.01 Sidak over the 3 methods) and lie within 2 %. */
+ * sky), PSSMLT, MMLT and PITP are noisy: their image mean over 8 runs (BDPT 16 spp, MCMC 64
+ * mutations per pixel) must contain 1 (t-test, alpha 0.01 Sidak over the 4 methods) and lie within
+ * 2 %. */
 Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
 {
     struct scene *sc = test_scene("tests/data/specular-furnace.json");
@@ -131,9 +136,9 @@ Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
     struct image *im = render_mc(sc, &o, &st);
     for (int i = 0; i < im->w * im->h * 3; i++) cr_assert(fabs(im->px[i] - 1) < 1e-6, "pt: a pixel reads %.9g", im->px[i]);
     img_destroy(im);
-    double tmax = gsl_cdf_tdist_Qinv((1 - pow(0.99, 1.0 / 3)) / 2, 7);
-    const char *names[] = {"bdpt", "pssmlt", "mmlt"};
-    for (int m = 0; m < 3; m++) {
+    double tmax = gsl_cdf_tdist_Qinv((1 - pow(0.99, 1.0 / 4)) / 2, 7);
+    const char *names[] = {"bdpt", "pssmlt", "mmlt", "pitp"};
+    for (int m = 0; m < 4; m++) {
         double s = 0, s2 = 0;
         for (int r = 0; r < 8; r++) {
             struct image *x;
@@ -142,7 +147,7 @@ Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
                 o.seed = 10 + (uint64_t)r;
                 x = render_mc(sc, &o, &st);
             } else {
-                x = mcmc_run(sc, m == 1 ? MLT_PSSMLT : MLT_MMLT, 64, 10000, 20 + 10 * (uint64_t)m + (uint64_t)r, 16);
+                x = mcmc_run(sc, (enum mlt_method)(m - 1), 64, 10000, 20 + 10 * (uint64_t)m + (uint64_t)r, 16);
             }
             double v = image_mean_luminance(x);
             s += v;
@@ -150,6 +155,7 @@ Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
             img_destroy(x);
         }
         double mean = s / 8, se = sqrt(fmax(0, s2 / 8 - mean * mean) / 7);
+        fprintf(stderr, "specular furnace %s: %.6f +- %.6f, expected 1\n", names[m], mean, se);
         cr_assert(fabs(mean - 1) < tmax * se + 1e-12 && fabs(mean - 1) < 0.02, "%s: image mean %.6f +- %.6f, expected 1",
                   names[m], mean, se);
     }
