@@ -227,7 +227,7 @@ clean:
 	rm -rf build build-san bin
 
 help:
-	@echo "make            build core, tools (bin/) and tests"
+	@echo "make            install deps if missing, build core, tools (bin/) and tests"
 	@echo "make test       install deps if missing, build, run all tests"
 	@echo "make test-san   fast tests under AddressSanitizer + UBSan"
 	@echo "make fig4.1     thesis Fig. 4.1: isotropic vs resolution-aware small steps, noise shape on a 16:9 wall"
@@ -235,7 +235,7 @@ help:
 	@echo "make fig4.3     thesis Fig. 4.3: BDPT vs PSSMLT vs PSSMLT --cdc, a room reflected in a window"
 	@echo "make check      regression-check every statistic against results/baselines/"
 	@echo "make bench      throughput figures"
-	@echo "make fig4.5, fig4.6, fig6.1, table1-cmlt   thesis figures (check-<target> against the baselines)"
+	@echo "make fig4.5, fig4.6, fig5.5, fig5.6, fig6.1, table1-cmlt   thesis figures (check-<target> against the baselines)"
 	@echo "SCALE=quick|paper selects experiment sizes (default quick)"
 	@echo "PGO=0, LTO=0    build without profile-guided / link-time optimisation (after make clean)"
 
