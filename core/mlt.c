@@ -251,7 +251,7 @@ static void run_worker(int tid, void *p)
     if (ps) pitp_scratch_init(ps, j->sc);
     rng r;
     rng_seed(&r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)tid);
-    bool track = o->method == MLT_MMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
+    bool track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     struct ctrl_sampler *cs = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *cs) : NULL;
     bool complete;
     /* Start every chain from a seed sample resampled in proportion to its target. */
@@ -311,6 +311,8 @@ static void run_worker(int tid, void *p)
                     dt = abs(c->k + 1 - sj - c->tech);
                     c->tech = c->x->t;
                     c->xsum_valid = false;
+                    /* controlled steps start from the current path in the new technique's form */
+                    if (track) ctrl_path_capture(c->path, c->x->cam, c->x->t, c->x->emi, c->x->s);
                     if (c_new) {
                         /* the target changed with the technique (refraction, delta vertices): the
                          * state's splat and target follow */
@@ -391,14 +393,14 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     int nk = o.method != MLT_PSSMLT ? o.max_length : 1;
     memset(r, 0, sizeof *r);
     if (o.small_step != SMALL_STEP_PSS &&
-        (o.method != MLT_MMLT || o.large_step != LARGE_MMLT || o.pss.kernel != KERNEL_GAUSSIAN || o.pss.cdc)) {
+        (o.method == MLT_PSSMLT || o.large_step != LARGE_MMLT || o.pss.kernel != KERNEL_GAUSSIAN || o.pss.cdc)) {
         /* the reverse density needs the Gaussian's (controlled_step.h); MCTLS does not keep the
          * current subpaths; --cdc would make the kernel singular */
-        snprintf(err, errlen, "controlled and root small steps need mmlt, MMLT large steps, the Gaussian kernel and no --cdc");
+        snprintf(err, errlen, "controlled and root small steps need mmlt or pitp, MMLT large steps, the Gaussian kernel and no --cdc");
         return false;
     }
-    if (o.angle_stats && (o.method != MLT_MMLT || o.large_step != LARGE_MMLT)) {
-        snprintf(err, errlen, "angle statistics need mmlt with MMLT large steps");
+    if (o.angle_stats && (o.method == MLT_PSSMLT || o.large_step != LARGE_MMLT)) {
+        snprintf(err, errlen, "angle statistics need mmlt or pitp with MMLT large steps");
         return false;
     }
     double t0 = now_seconds();

@@ -44,9 +44,9 @@ static const char *usage =
     "  --hybrid-length K    hybrid: MCTLS from path length K on, MMLT large steps below (default 6)\n"
     "  --uniform-lengths    mmlt: equal mutations per path length instead of in proportion to b_k\n"
     "  --max-heuristic      pssmlt: Kelemen's maximum heuristic instead of the balance heuristic\n"
-    "  --small-step pss|controlled|root  mmlt's small step (default pss; controlled: thesis 5.3\n"
+    "  --small-step pss|controlled|root  mmlt/pitp small step (default pss; controlled: thesis 5.3\n"
     "                       Alg. 4, root: Alg. 3, analysis only); the latter two use the Gaussian kernel\n"
-    "  --angle-stats        mmlt: angle change of every small step, PREFIX.angle.exr and .angle.csv\n"
+    "  --angle-stats        mmlt, pitp: angle change of every small step, PREFIX.angle.exr and .angle.csv\n"
     "Prints one summary line: method, samples, seconds, samples/s.\n";
 
 struct args {

@@ -94,12 +94,13 @@ struct ctrl_ctx {
     int max_length;
     long mpp, seed_paths;
     bool unit_ratio;
+    enum mlt_method method; /* MLT_MMLT, or MLT_PITP: its technique perturbation, then a controlled step */
 };
 
 static struct image *render_ctrl(void *p, uint64_t seed)
 {
     const struct ctrl_ctx *c = p;
-    struct mlt_opts o = {.method = MLT_MMLT, .p_large = 0.1, .seed_paths = c->seed_paths, .threads = 2, .seed = seed,
+    struct mlt_opts o = {.method = c->method, .p_large = 0.1, .seed_paths = c->seed_paths, .threads = 2, .seed = seed,
                          .max_length = c->max_length, .small_step = SMALL_STEP_CONTROLLED,
                          .ctrl_unit_ratio = c->unit_ratio, .mutations = c->mpp * c->sc->cam.width * c->sc->cam.height};
     pss_opts_default(&o.pss, c->sc->cam.width, c->sc->cam.height);
@@ -124,15 +125,15 @@ static struct image *render_bdpt(void *p, uint64_t seed)
 
 /* Controlled-step MMLT against BDPT on 8x8 blocks and the image mean (Welch t, alpha 0.01 Sidak
  * over the blocks and the mean): `reps` runs of `mpp` mutations per pixel against 8 BDPT renders. */
-static int ctrl_vs_bdpt(const char *path, int res, int bdpt_spp, long mpp, long seed_paths, int reps, uint64_t seed,
-                        double *pmean, double *worst, double *mean, double *ref_mean)
+static int method_vs_bdpt(enum mlt_method m, const char *path, int res, int bdpt_spp, long mpp, long seed_paths, int reps,
+                          uint64_t seed, double *pmean, double *worst, double *mean, double *ref_mean)
 {
     struct scene *sc = test_scene(path);
     camera_resize(&sc->cam, res, res);
     static struct stack ref, a;
     struct bdpt_ctx bd = {sc, bdpt_spp, 8};
     stack_runs(&ref, render_bdpt, &bd, 8, seed, 8);
-    struct ctrl_ctx c = {sc, 8, mpp, seed_paths, false};
+    struct ctrl_ctx c = {sc, 8, mpp, seed_paths, false, m};
     stack_runs(&a, render_ctrl, &c, reps, seed + 100, 8);
     int f = stack_compare(&a, &ref, 1, pmean, worst);
     *mean = a.mean;
@@ -146,9 +147,19 @@ static int ctrl_vs_bdpt(const char *path, int res, int bdpt_spp, long mpp, long 
 Test(stat_controlled, agrees_with_bdpt_on_cornell_box, .timeout = 240)
 {
     double pm, worst, m, r;
-    int f = ctrl_vs_bdpt("scenes/cornell-box/scene.json", 64, 16, 16, 10000, 12, 8000, &pm, &worst, &m, &r);
+    int f = method_vs_bdpt(MLT_MMLT, "scenes/cornell-box/scene.json", 64, 16, 16, 10000, 12, 8000, &pm, &worst, &m, &r);
     cr_assert_eq(f, 0, "controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
     cr_log_info("cornell box: mean p = %g, worst block p = %g\n", pm, worst);
+}
+
+/* PITP with controlled small steps (the small step after each technique perturbation starts from
+ * the path in its new technique's form): the same Cornell box test as MMLT's above. */
+Test(stat_controlled, pitp_agrees_with_bdpt_on_cornell_box, .timeout = 600)
+{
+    double pm, worst, m, r;
+    int f = method_vs_bdpt(MLT_PITP, "scenes/cornell-box/scene.json", 64, 16, 16, 10000, 12, 8100, &pm, &worst, &m, &r);
+    cr_assert_eq(f, 0, "pitp controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
+    cr_log_info("pitp, cornell box: mean p = %g, worst block p = %g\n", pm, worst);
 }
 
 /* The furnace's exact answer Le (1 - a^K) / (1 - a), K = 6, 32x32, 8 runs of 64 mutations per
@@ -160,7 +171,7 @@ Test(stat_controlled, furnace_exact_answer)
     struct scene *sc = test_scene("scenes/furnace/scene.json");
     camera_resize(&sc->cam, 32, 32);
     double exact = 0.5 * (1 - pow(0.5, 6)) / 0.5, tmax = gsl_cdf_tdist_Qinv(0.005, 7);
-    struct ctrl_ctx c = {sc, 6, 64, 20000, false};
+    struct ctrl_ctx c = {sc, 6, 64, 20000, false, MLT_MMLT};
     static struct stack a;
     stack_runs(&a, render_ctrl, &c, 8, 70, 32);
     double t = fabs(a.mean - exact) / a.mean_se;
@@ -249,7 +260,7 @@ Test(stat_controlled, flat_target_stays_uniform_only_with_the_kernel_ratio)
 Test(stat_controlled, agrees_with_bdpt_on_every_bsdf_family, .timeout = 600)
 {
     double pm, worst, m, r;
-    int f = ctrl_vs_bdpt("scenes/materials/scene.json", 32, 64, 1024, 10000, 12, 8500, &pm, &worst, &m, &r);
+    int f = method_vs_bdpt(MLT_MMLT, "scenes/materials/scene.json", 32, 64, 1024, 10000, 12, 8500, &pm, &worst, &m, &r);
     cr_assert_eq(f, 0, "controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
     cr_log_info("materials: mean p = %g, worst block p = %g\n", pm, worst);
 }
@@ -260,7 +271,7 @@ Test(stat_controlled, agrees_with_bdpt_on_every_bsdf_family, .timeout = 600)
 Test(stat_controlled, agrees_with_bdpt_under_shading_normals, .timeout = 300)
 {
     double pm, worst, m, r;
-    int f = ctrl_vs_bdpt("scenes/smooth-sphere/scene.json", 64, 16, 64, 10000, 12, 8700, &pm, &worst, &m, &r);
+    int f = method_vs_bdpt(MLT_MMLT, "scenes/smooth-sphere/scene.json", 64, 16, 64, 10000, 12, 8700, &pm, &worst, &m, &r);
     cr_assert_eq(f, 0, "controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
     cr_log_info("smooth sphere: mean p = %g, worst block p = %g\n", pm, worst);
 }
@@ -270,7 +281,7 @@ Test(stat_controlled, agrees_with_bdpt_under_shading_normals, .timeout = 300)
 Test(stat_controlled, agrees_with_bdpt_with_sphere_cube_and_mesh_lights, .timeout = 400)
 {
     double pm, worst, m, r;
-    int f = ctrl_vs_bdpt("scenes/lights/scene.json", 64, 16, 256, 10000, 12, 8900, &pm, &worst, &m, &r);
+    int f = method_vs_bdpt(MLT_MMLT, "scenes/lights/scene.json", 64, 16, 256, 10000, 12, 8900, &pm, &worst, &m, &r);
     cr_assert_eq(f, 0, "controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
     cr_log_info("lights: mean p = %g, worst block p = %g\n", pm, worst);
 }
