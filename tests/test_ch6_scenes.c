@@ -17,18 +17,29 @@ struct ch6_run {
     enum mlt_method mlt;
     long per_pixel; /* samples or mutations per pixel */
     long seed_paths;
+    int min_length;      /* --min-length */
+    int subtract_below;  /* > 0: BDPT with all lengths minus an independent BDPT run of lengths < this */
 };
 
 static struct image *ch6_render(void *p, uint64_t seed)
 {
     const struct ch6_run *c = p;
     if (!c->mcmc) {
-        struct render_opts o = {.method = c->mc, .spp = (int)c->per_pixel, .seed = seed, .threads = 2, .max_length = 8};
+        struct render_opts o = {.method = c->mc, .spp = (int)c->per_pixel, .seed = seed, .threads = 2, .max_length = 8,
+                                .min_length = c->min_length};
         struct render_stats st;
-        return render_mc(c->sc, &o, &st);
+        struct image *im = render_mc(c->sc, &o, &st);
+        if (c->subtract_below > 0) {
+            o.max_length = c->subtract_below - 1;
+            o.seed = seed + 100000;
+            struct image *lo = render_mc(c->sc, &o, &st);
+            img_accumulate(im, lo, -1);
+            img_destroy(lo);
+        }
+        return im;
     }
     struct mlt_opts o = {.method = c->mlt, .p_large = 0.1, .seed_paths = c->seed_paths, .seed = seed, .threads = 2,
-                         .max_length = 8, .mutations = c->per_pixel * c->sc->cam.width * c->sc->cam.height};
+                         .max_length = 8, .min_length = c->min_length, .mutations = c->per_pixel * c->sc->cam.width * c->sc->cam.height};
     pss_opts_default(&o.pss, c->sc->cam.width, c->sc->cam.height);
     struct mlt_result r;
     char err[256];
@@ -72,4 +83,34 @@ Test(stat_ch6, all_methods_agree_on_living_room, .timeout = 600)
 Test(stat_ch6, all_methods_agree_on_staircase, .timeout = 600)
 {
     ch6_agree("scenes/staircase/scene.json", 32, 64, 256, 256, 256, 100000, 6000);
+}
+
+/* --min-length 3 (no direct lighting, as thesis chapter 6 renders) for every method: PT, BDPT, PSSMLT
+ * and MMLT with lengths >= 3 only against BDPT with all lengths minus an independent BDPT run of
+ * lengths 1-2 (an unbiased estimate of the same light), Cornell box at 32x32. */
+Test(stat_ch6, min_length_leaves_out_exactly_the_shorter_paths, .timeout = 600)
+{
+    struct scene *sc = test_scene("scenes/cornell-box/scene.json");
+    camera_resize(&sc->cam, 32, 32);
+    static struct stack ref, a;
+    struct ch6_run diff = {.sc = sc, .mc = METHOD_BDPT, .per_pixel = 64, .subtract_below = 3};
+    stack_runs(&ref, ch6_render, &diff, 8, 9000, 8);
+    const struct ch6_run runs[4] = {
+        {.sc = sc, .mc = METHOD_PT, .per_pixel = 128, .min_length = 3},
+        {.sc = sc, .mc = METHOD_BDPT, .per_pixel = 32, .min_length = 3},
+        {.sc = sc, .mcmc = true, .mlt = MLT_PSSMLT, .per_pixel = 64, .seed_paths = 20000, .min_length = 3},
+        {.sc = sc, .mcmc = true, .mlt = MLT_MMLT, .per_pixel = 64, .seed_paths = 20000, .min_length = 3}};
+    const char *names[4] = {"pt", "bdpt", "pssmlt", "mmlt"};
+    for (int m = 0; m < 4; m++) {
+        double pm, worst;
+        stack_runs(&a, ch6_render, (void *)&runs[m], m < 2 ? 8 : 12, 9100 + 100 * m, 8);
+        int f = stack_compare(&a, &ref, 4, &pm, &worst);
+        cr_assert_eq(f, 0, "%s --min-length 3: %g +- %g vs BDPT difference %g +- %g: %d failing (mean p=%g, worst p=%g)",
+                     names[m], a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    }
+    /* and it is not the full image: the direct light is a large share of the Cornell box */
+    struct ch6_run full = {.sc = sc, .mc = METHOD_BDPT, .per_pixel = 32};
+    stack_runs(&a, ch6_render, &full, 4, 9900, 8);
+    cr_assert_gt(a.mean, 1.5 * ref.mean, "full %g vs lengths >= 3 %g", a.mean, ref.mean);
+    scene_free(sc);
 }

@@ -26,3 +26,46 @@ ch6-assets: deps $(BIN)/ch6_assets
 	rm -f results/ch6-sky-lr.exr results/ch6-sky-st.exr
 	$(BIN)/ch6_assets --wood scenes/living-room/wood.png
 	$(BIN)/ch6_assets --wood scenes/staircase/wood.png
+
+# ---- equal-time figures (thesis Figures 6.2-6.7) ----
+# Quick: budgets 0.5, 1, 2, 4 s per run (separate runs with one seed each, no snapshots), 4 seeds, a
+# 256-spp BDPT reference (cached in results/reference/). Paper: 300 s, 8 seeds, a 40 000-spp reference
+# and 1M seed paths (the thesis's normalisation). The method list defaults to pssmlt,mmlt,pitp; a
+# method bin/render does not know (pitp before its merge) is skipped and named in the table.
+CH6_METHODS ?= pssmlt,mmlt,pitp
+ifeq ($(SCALE),paper)
+  CH6_OPTS := --time 300 --t0 18.75 --seeds 8 --reference-spp 40000 --render-args "--p-large 0.1 --seed-paths 1000000"
+else
+  CH6_OPTS := --time 4 --t0 0.5 --seeds 4 --reference-spp 256 --render-args "--p-large 0.1"
+endif
+CH6_OUT := results/ch6-$(SCALE)
+# scene folder, extra tool options, and the two insets (x,y,w,h in pixels) of each scene
+CH6_living-room_ARGS :=
+CH6_living-room_INSETS := 12,84,64,36 150,40,64,36
+CH6_staircase_ARGS :=
+CH6_staircase_INSETS := 4,10,36,64 60,150,36,64
+CH6_ajar_ARGS := --resolution 256x144
+CH6_ajar_INSETS := 160,70,64,36 40,60,64,36
+
+$(CH6_OUT)/%/summary.csv: $(BIN)/ch6_equal $(BIN)/render scenes/%/scene.json | deps
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CH6_OUT)/$* --methods $(CH6_METHODS) $(CH6_OPTS) $(CH6_$*_ARGS)
+	gnuplot -e "csv='$@'; out='$(CH6_OUT)/$*/time.tmp'; name='$*'" scripts/ch6-time.gp
+	mv -f $(CH6_OUT)/$*/time.tmp.png $(CH6_OUT)/$*/error-vs-time.png
+
+.PHONY: fig6.2 fig6.3 fig6.4 fig6.5 fig6.6 fig6.7 ch6-clean
+define CH6_FIG
+$(1): deps $(CH6_OUT)/$(2)/summary.csv
+	bash scripts/ch6-figure.sh $(3) $(CH6_OUT)/$(2) $(CH6_OUT)/$(2)/$(1).png $(CH6_$(2)_INSETS)
+	@echo "$(CH6_OUT)/$(2)/$(1).png; table $(CH6_OUT)/$(2)/$(2).md, error vs time $(CH6_OUT)/$(2)/error-vs-time.png"
+	@cat $(CH6_OUT)/$(2)/$(2).md
+endef
+$(eval $(call CH6_FIG,fig6.2,living-room,insets))
+$(eval $(call CH6_FIG,fig6.3,staircase,insets))
+$(eval $(call CH6_FIG,fig6.4,ajar,insets))
+$(eval $(call CH6_FIG,fig6.5,living-room,full))
+$(eval $(call CH6_FIG,fig6.6,staircase,full))
+$(eval $(call CH6_FIG,fig6.7,ajar,full))
+
+# Rerun the chapter-6 experiments from scratch (the references stay cached).
+ch6-clean:
+	rm -rf $(CH6_OUT) results/mmlt-ratio results/hybrid-study

@@ -10,7 +10,7 @@ void ch6_mean_se(const double *x, int n, double *mean, double *se);
 /* relMSE of a against ref over blk x blk blocks (partial blocks at the right and bottom edges are
  * dropped); writes up to cap values to out and returns the number of blocks. eps as img_relmse. */
 int ch6_block_relmse(const struct image *a, const struct image *ref, int blk, double eps, double *out, int cap);
-/* Spread of the block errors: the coefficient of variation (standard deviation / mean) of the
+/* Spread of the block errors: the coefficient of variation (sample standard deviation / mean) of the
  * values; 0 for uniform error, nan for n < 2 or a zero mean. */
 double ch6_spread(const double *v, int n);
 /* Least-squares slope of log y against log x over the points with x, y > 0 (nan with fewer than 2). */
