@@ -29,14 +29,15 @@ ch6-assets: deps $(BIN)/ch6_assets
 
 # ---- equal-time figures (thesis Figures 6.2-6.7) ----
 # Quick: budgets 0.5, 1, 2, 4 s per run (separate runs with one seed each, no snapshots), 4 seeds, a
-# 256-spp BDPT reference (cached in results/reference/). Paper: 300 s, 8 seeds, a 40 000-spp reference
+# 256-spp BDPT reference (cached in results/reference/); paths of length >= 3 only, as the thesis
+# (no direct lighting). Paper: 300 s, 8 seeds, a 40 000-spp reference
 # and 1M seed paths (the thesis's normalisation). The method list defaults to pssmlt,mmlt,pitp; a
 # method bin/render does not know (pitp before its merge) is skipped and named in the table.
 CH6_METHODS ?= pssmlt,mmlt,pitp
 ifeq ($(SCALE),paper)
-  CH6_OPTS := --time 300 --t0 18.75 --seeds 8 --reference-spp 40000 --render-args "--p-large 0.1 --seed-paths 1000000"
+  CH6_OPTS := --time 300 --t0 18.75 --seeds 8 --min-length 3 --reference-spp 40000 --render-args "--p-large 0.1 --seed-paths 1000000"
 else
-  CH6_OPTS := --time 4 --t0 0.5 --seeds 4 --reference-spp 256 --render-args "--p-large 0.1"
+  CH6_OPTS := --time 4 --t0 0.5 --seeds 4 --min-length 3 --reference-spp 256 --render-args "--p-large 0.1"
 endif
 CH6_OUT := results/ch6-$(SCALE)
 # scene folder, extra tool options, and the two insets (x,y,w,h in pixels) of each scene
@@ -68,4 +69,35 @@ $(eval $(call CH6_FIG,fig6.7,ajar,full))
 
 # Rerun the chapter-6 experiments from scratch (the references stay cached).
 ch6-clean:
-	rm -rf $(CH6_OUT) results/mmlt-ratio results/hybrid-study
+	rm -rf $(CH6_OUT) results/mmlt-ratio $(HYB_OUT)
+
+# ---- MMLT paper §5: the fraction of proposals with non-zero contribution, PSSMLT vs MMLT (vs PITP) ----
+# Read from the fig6 runs of the three scenes (their render CSVs count every proposal's contribution;
+# paths of length >= 3 as in those runs): all proposals and large steps alone, mean +- standard error
+# over seeds at the largest budget.
+.PHONY: mmlt-ratio
+mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary.csv $(CH6_OUT)/ajar/summary.csv
+	@mkdir -p results/mmlt-ratio
+	bash scripts/ch6-ratio.sh $(filter %summary.csv,$^) > results/mmlt-ratio/mmlt-ratio.md.tmp
+	mv -f results/mmlt-ratio/mmlt-ratio.md.tmp results/mmlt-ratio/mmlt-ratio.md
+	@cat results/mmlt-ratio/mmlt-ratio.md
+
+# ---- thesis §4.3 / §7.1: MMLT large steps vs MCTLS vs hybrid, with small steps (p_large = 0.1) ----
+# Equal time per run, 8 seeds, on ajar and living-room at 128x72 (all path lengths), against cached
+# 256-spp (paper: 16384) BDPT references.
+ifeq ($(SCALE),paper)
+  HYB_OPTS := --time 120 --seeds 8 --reference-spp 16384 --render-args "--p-large 0.1 --seed-paths 1000000"
+else
+  HYB_OPTS := --time 3 --seeds 8 --reference-spp 256 --render-args "--p-large 0.1"
+endif
+HYB_METHODS := mmlt=--method mmlt,mctls=--method mmlt --large-step mctls,hybrid4=--method mmlt --large-step hybrid --hybrid-length 4,hybrid6=--method mmlt --large-step hybrid --hybrid-length 6,hybrid8=--method mmlt --large-step hybrid --hybrid-length 8
+HYB_OUT := results/hybrid-study-$(SCALE)
+
+$(HYB_OUT)/%/summary.csv: $(BIN)/ch6_equal $(BIN)/render scenes/%/scene.json | deps
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(HYB_OUT)/$* --methods '$(HYB_METHODS)' $(HYB_OPTS) --resolution 128x72
+
+.PHONY: hybrid-study
+hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.csv
+	bash scripts/ch6-hybrid.sh $(filter %summary.csv,$^) > $(HYB_OUT)/hybrid-study.md.tmp
+	mv -f $(HYB_OUT)/hybrid-study.md.tmp $(HYB_OUT)/hybrid-study.md
+	@cat $(HYB_OUT)/hybrid-study.md

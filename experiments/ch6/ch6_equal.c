@@ -39,6 +39,8 @@ static const char *usage =
     "  --resolution WxH      override the camera (also for the reference)\n"
     "  --reference FILE      cached BDPT reference EXR (default results/reference/NAME-bdpt-WxH-SPP.exr)\n"
     "  --reference-spp N     BDPT samples per pixel of the reference (default 256)\n"
+    "  --min-length K        paths of K segments or more only, reference and runs (default 1: all;\n"
+    "                        the thesis's chapter 6 uses 3: no direct lighting)\n"
     "  --render-args ARGS    extra bin/render options for every run (default '--p-large 0.1')\n"
     "  --block B             block size of the error spread (default 16)\n"
     "  --threads T           threads per run (default 2)\n"
@@ -134,7 +136,7 @@ int main(int argc, char **argv)
 {
     const char *prog = "ch6_equal", *scene = NULL, *out = NULL, *name = NULL, *refpath = NULL, *res = NULL;
     char methods_s[4096] = "pssmlt,mmlt,pitp", extra_s[1024] = "--p-large 0.1", render[4096] = "";
-    int seeds = 4, refspp = 256, blk = 16, threads = 2;
+    int seeds = 4, refspp = 256, blk = 16, threads = 2, minlen = 1;
     double T = 8, t0 = -1;
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i];
@@ -153,6 +155,7 @@ int main(int argc, char **argv)
         else if (!strcmp(o, "--reference")) refpath = VALUE;
         else if (!strcmp(o, "--reference-spp")) refspp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
         else if (!strcmp(o, "--render-args")) snprintf(extra_s, sizeof extra_s, "%s", VALUE);
+        else if (!strcmp(o, "--min-length")) minlen = (int)cli_long(prog, o, VALUE, 1, 64);
         else if (!strcmp(o, "--block")) blk = (int)cli_long(prog, o, VALUE, 2, 1024);
         else if (!strcmp(o, "--threads")) threads = (int)cli_long(prog, o, VALUE, 1, 1024);
         else if (!strcmp(o, "--render")) snprintf(render, sizeof render, "%s", VALUE);
@@ -231,13 +234,14 @@ int main(int argc, char **argv)
     mkdir(runsdir, 0777);
 
     /* The reference (cached). */
-    char defref[1024], thr[16], spp_s[32];
+    char defref[1024], thr[16], spp_s[32], minlen_s[16];
+    snprintf(minlen_s, sizeof minlen_s, "%d", minlen);
     snprintf(thr, sizeof thr, "%d", threads);
     struct image *probe_ref = NULL;
     if (!refpath) {
         mkdir("results", 0777);
         mkdir("results/reference", 0777);
-        snprintf(defref, sizeof defref, "results/reference/%s-bdpt-%s-%d.exr", name, res ? res : "native", refspp);
+        snprintf(defref, sizeof defref, "results/reference/%s-bdpt-%s-min%d-%d.exr", name, res ? res : "native", minlen, refspp);
         refpath = defref;
     }
     probe_ref = img_read(refpath, err, sizeof err);
@@ -247,7 +251,7 @@ int main(int argc, char **argv)
         snprintf(prefix, sizeof prefix, "%.*s", (int)(strlen(refpath) - 4), refpath);
         snprintf(spp_s, sizeof spp_s, "%d", refspp);
         char *rv[] = {render, (char *)scene, "--method", "bdpt", "--spp", spp_s, "--seed", "12345", "--threads", thr,
-                      "--quiet", "--out", prefix, res ? "--resolution" : NULL, (char *)res, NULL};
+                      "--quiet", "--min-length", minlen_s, "--out", prefix, res ? "--resolution" : NULL, (char *)res, NULL};
         if (run_cmd(rv, NULL) != 0) fail("the reference render failed: ", refpath);
         probe_ref = img_read(refpath, err, sizeof err);
         if (!probe_ref) fail(err, NULL);
@@ -275,7 +279,7 @@ int main(int argc, char **argv)
                 rv[c++] = (char *)scene;
                 for (int k = 0; k < m->argc; k++) rv[c++] = m->argv[k];
                 for (int k = 0; k < extra_c; k++) rv[c++] = extra_argv[k];
-                char *fixed[] = {"--time", time_s, "--seed", seed_s, "--threads", thr, "--quiet", "--out", prefix};
+                char *fixed[] = {"--time", time_s, "--seed", seed_s, "--threads", thr, "--min-length", minlen_s, "--quiet", "--out", prefix};
                 for (size_t k = 0; k < sizeof fixed / sizeof *fixed; k++) rv[c++] = fixed[k];
                 if (res) {
                     rv[c++] = "--resolution";
@@ -319,6 +323,7 @@ int main(int argc, char **argv)
     FILE *f = open_memstream(&buf, &len);
     fprintf(f, "# ch6_equal: equal-time renders of %s\n# commit %s\n# reference %s (%d spp BDPT)\n# render args %s\n",
             scene, GIT_COMMIT, refpath, refspp, extra_s);
+    fprintf(f, "# min_length %d\n", minlen);
     fprintf(f, "# budgets are separate runs with the same seed (no snapshots); wall-clock --time on a shared machine\n");
     for (int mi = 0; mi < nm; mi++)
         if (!ms[mi].available) fprintf(f, "# method %s not available in this build (skipped)\n", ms[mi].name);
@@ -370,8 +375,8 @@ int main(int argc, char **argv)
     /* The Markdown table at the largest budget, with the error-vs-time slope. */
     buf = NULL;
     f = open_memstream(&buf, &len);
-    fprintf(f, "**%s**, %g s per run (wall clock, %d threads), %d seeds, reference %d spp BDPT; mean ± standard error over seeds\n\n",
-            name, T, threads, seeds, refspp);
+    fprintf(f, "**%s**, %g s per run (wall clock, %d threads), %d seeds, paths of length >= %d, reference %d spp BDPT; mean ± standard error over seeds\n\n",
+            name, T, threads, seeds, minlen, refspp);
     fprintf(f, "| method | relMSE | block-relMSE spread (CV, %dx%d) | mutations/s | non-zero proposals | large-step non-zero | relMSE slope vs time |\n",
             blk, blk);
     fprintf(f, "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
