@@ -37,7 +37,8 @@ static const char *usage =
     "  --time T              largest budget in seconds per run (default 8)\n"
     "  --t0 S                smallest budget; budgets double from it up to T (default T: one budget)\n"
     "  --resolution WxH      override the camera (also for the reference)\n"
-    "  --reference FILE      cached BDPT reference EXR (default results/reference/NAME-bdpt-WxH-SPP.exr)\n"
+    "  --reference FILE      cached BDPT reference EXR, re-rendered when older than the scene file\n"
+    "                        (default results/reference/NAME-bdpt-WxH-minK-SPP.exr)\n"
     "  --reference-spp N     BDPT samples per pixel of the reference (default 256)\n"
     "  --min-length K        paths of K segments or more only, reference and runs (default 1: all;\n"
     "                        the thesis's chapter 6 uses 3: no direct lighting)\n"
@@ -124,6 +125,27 @@ static char *slurp(const char *path)
     s[r] = 0;
     fclose(f);
     return s;
+}
+
+/* mkdir -p */
+static void make_dirs(const char *path)
+{
+    char *p = xstrdup(path);
+    for (char *s = p + 1; *s; s++)
+        if (*s == '/') {
+            *s = 0;
+            mkdir(p, 0777);
+            *s = '/';
+        }
+    mkdir(p, 0777);
+    free(p);
+}
+
+/* A cached file older than the scene it was rendered from is stale. */
+static bool older_than(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_mtime < sb.st_mtime;
 }
 
 static void fail(const char *msg1, const char *msg2)
@@ -228,7 +250,7 @@ int main(int argc, char **argv)
     int extra_c = 0;
     split_args(xstrdup(extra_s), extra_argv, &extra_c, MAX_ARGS - 24);
 
-    mkdir(out, 0777);
+    make_dirs(out);
     char runsdir[4096], err[1024];
     snprintf(runsdir, sizeof runsdir, "%s/runs", out);
     mkdir(runsdir, 0777);
@@ -239,12 +261,11 @@ int main(int argc, char **argv)
     snprintf(thr, sizeof thr, "%d", threads);
     struct image *probe_ref = NULL;
     if (!refpath) {
-        mkdir("results", 0777);
-        mkdir("results/reference", 0777);
+        make_dirs("results/reference");
         snprintf(defref, sizeof defref, "results/reference/%s-bdpt-%s-min%d-%d.exr", name, res ? res : "native", minlen, refspp);
         refpath = defref;
     }
-    probe_ref = img_read(refpath, err, sizeof err);
+    probe_ref = older_than(refpath, scene) ? NULL : img_read(refpath, err, sizeof err);
     if (!probe_ref) {
         fprintf(stderr, "ch6_equal: rendering the BDPT reference (%d spp) into %s\n", refspp, refpath);
         char prefix[1100];
