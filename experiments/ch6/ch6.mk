@@ -57,8 +57,10 @@ $(CH6_OUT)/%/summary.csv: $(BIN)/ch6_equal $(BIN)/render scenes/%/scene.json | d
 define CH6_FIG
 $(1): deps $(CH6_OUT)/$(2)/summary.csv
 	bash scripts/ch6-figure.sh $(3) $(CH6_OUT)/$(2) $(CH6_OUT)/$(2)/$(1).png $(CH6_$(2)_INSETS)
+	bash scripts/ch6-claims.sh $(CH6_OUT)/$(2)/summary.csv > $(CH6_OUT)/$(2)/claims.md.tmp
+	mv -f $(CH6_OUT)/$(2)/claims.md.tmp $(CH6_OUT)/$(2)/claims.md
 	@echo "$(CH6_OUT)/$(2)/$(1).png; table $(CH6_OUT)/$(2)/$(2).md, error vs time $(CH6_OUT)/$(2)/error-vs-time.png"
-	@cat $(CH6_OUT)/$(2)/$(2).md
+	@cat $(CH6_OUT)/$(2)/$(2).md $(CH6_OUT)/$(2)/claims.md
 endef
 $(eval $(call CH6_FIG,fig6.2,living-room,insets))
 $(eval $(call CH6_FIG,fig6.3,staircase,insets))
