@@ -103,3 +103,9 @@ hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.cs
 	bash scripts/ch6-hybrid.sh $(filter %summary.csv,$^) > $(HYB_OUT)/hybrid-study.md.tmp
 	mv -f $(HYB_OUT)/hybrid-study.md.tmp $(HYB_OUT)/hybrid-study.md
 	@cat $(HYB_OUT)/hybrid-study.md
+
+# ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----
+.PHONY: report
+report:
+	bash scripts/report.sh $(SCALE)
+	bash scripts/report-check.sh results/report/index.html
