@@ -11,7 +11,7 @@ mode=$1 dir=$2 out=$3
 [ -f "$dir/summary.csv" ] && [ -f "$dir/reference.png" ] || { echo "ch6-figure: $dir has no summary.csv or reference.png (run bin/ch6_equal)" >&2; exit 2; }
 methods=$(awk -F, '!/^#/ && $1 != "scene" && !seen[$2]++ {print $2}' "$dir/summary.csv")
 here=$(cd "$(dirname "$0")" && pwd)
-read -r W H < <(oiiotool --info "$dir/reference.png" | sed -E 's/.* ([0-9]+) x ([0-9]+).*/\1 \2/')
+read -r W H < <(oiiotool --info "$dir/reference.png" | awk '{for (i = 1; i < NF; i++) if ($(i + 1) == "x") {sub(",", "", $(i + 2)); print $i, $(i + 2); exit}}')
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 if [ "$mode" = full ]; then

@@ -42,9 +42,9 @@ endif
 CH6_OUT := results/ch6-$(SCALE)
 # scene folder, extra tool options, and the two insets (x,y,w,h in pixels) of each scene
 CH6_living-room_ARGS :=
-CH6_living-room_INSETS := 12,84,64,36 150,40,64,36
+CH6_living-room_INSETS := 12,50,64,36 50,100,64,36
 CH6_staircase_ARGS :=
-CH6_staircase_INSETS := 4,10,36,64 60,150,36,64
+CH6_staircase_INSETS := 56,0,36,64 55,130,36,64
 CH6_ajar_ARGS := --resolution 256x144
 CH6_ajar_INSETS := 160,70,64,36 40,60,64,36
 

@@ -6,7 +6,9 @@
  * For each method, seed 1..N and budget t0, 2 t0, ..., T seconds: a separate render with that seed
  * and --time budget (the core has no snapshot facility; the doubling budgets are separate runs, not
  * snapshots of one run). Each image is compared with a BDPT reference rendered once and cached:
- * relMSE = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); the spread of the per-block
+ * relMSE = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01 m^2), m the reference's mean
+ * luminance (the relMSE of both images scaled to a mean of 1, so a dark scene is not all epsilon);
+ * PNGs are exposed by 0.5 / m. The spread of the per-block
  * relMSE over B x B blocks (coefficient of variation: 0 = uniform error); mutations/s and the fraction
  * of proposals with non-zero contribution from the render's statistics CSV.
  * Writes OUT/runs.csv (one row per run), OUT/summary.csv (mean +- standard error over seeds per method
@@ -45,7 +47,8 @@ static const char *usage =
     "  --render-args ARGS    extra bin/render options for every run (default '--p-large 0.1')\n"
     "  --block B             block size of the error spread (default 16)\n"
     "  --threads T           threads per run (default 2)\n"
-    "  --render PATH         the renderer (default: bin/render beside this tool)\n";
+    "  --render PATH         the renderer (default: bin/render beside this tool)\n"
+    "  --reuse               keep the run files already in OUT/runs (same names) instead of rendering\n";
 
 #define MAX_METHODS 16
 #define MAX_BUDGETS 16
@@ -160,6 +163,7 @@ int main(int argc, char **argv)
     char methods_s[4096] = "pssmlt,mmlt,pitp", extra_s[1024] = "--p-large 0.1", render[4096] = "";
     int seeds = 4, refspp = 256, blk = 16, threads = 2, minlen = 1;
     double T = 8, t0 = -1;
+    bool reuse = false;
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i];
 #define VALUE cli_value(prog, argc, argv, &i)
@@ -180,6 +184,7 @@ int main(int argc, char **argv)
         else if (!strcmp(o, "--min-length")) minlen = (int)cli_long(prog, o, VALUE, 1, 64);
         else if (!strcmp(o, "--block")) blk = (int)cli_long(prog, o, VALUE, 2, 1024);
         else if (!strcmp(o, "--threads")) threads = (int)cli_long(prog, o, VALUE, 1, 1024);
+        else if (!strcmp(o, "--reuse")) reuse = true;
         else if (!strcmp(o, "--render")) snprintf(render, sizeof render, "%s", VALUE);
         else cli_fail(prog, "unknown option '%s' (see --help)", o);
 #undef VALUE
@@ -278,9 +283,15 @@ int main(int argc, char **argv)
         if (!probe_ref) fail(err, NULL);
     }
     struct image *ref = probe_ref;
+    double mlum = 0;
+    for (int y = 0; y < ref->h; y++)
+        for (int x = 0; x < ref->w; x++) mlum += luminance(img_get(ref, x, y));
+    mlum /= (double)ref->w * ref->h;
+    if (!(mlum > 0)) fail("the reference is black: ", refpath);
+    const double eps = 0.01 * mlum * mlum, expo = 0.5 / mlum;
     char path[4096];
     snprintf(path, sizeof path, "%s/reference.png", out);
-    if (!img_write_png(ref, 1, path, err, sizeof err)) fail(err, NULL);
+    if (!img_write_png(ref, expo, path, err, sizeof err)) fail(err, NULL);
 
     static struct run R[MAX_METHODS][MAX_BUDGETS][MAX_SEEDS];
     int cap = (ref->w / blk) * (ref->h / blk) + 1;
@@ -308,20 +319,22 @@ int main(int argc, char **argv)
                 }
                 rv[c] = NULL;
                 fprintf(stderr, "ch6_equal: %s %s seed %d, %g s\n", name, m->name, s, budgets[bi]);
-                char log[4200];
+                char log[4200], csvp[4200];
                 snprintf(log, sizeof log, "%.4000s.log", prefix);
-                if (run_cmd(rv, log) != 0) fail("a render failed; see ", log);
                 snprintf(path, sizeof path, "%.4000s.exr", prefix);
+                snprintf(csvp, sizeof csvp, "%.4000s.csv", prefix);
+                if (!(reuse && !access(path, R_OK) && !access(csvp, R_OK)) && run_cmd(rv, log) != 0)
+                    fail("a render failed; see ", log);
                 struct image *im = img_read(path, err, sizeof err);
                 if (!im) fail(err, NULL);
                 if (im->w != ref->w || im->h != ref->h) fail("image and reference sizes differ: ", path);
                 struct run *r = &R[mi][bi][s - 1];
-                r->relmse = img_relmse(im, ref, 0.01);
-                int n = ch6_block_relmse(im, ref, blk, 0.01, blocks, cap);
+                r->relmse = img_relmse(im, ref, eps);
+                int n = ch6_block_relmse(im, ref, blk, eps, blocks, cap);
                 r->spread = ch6_spread(blocks, n < cap ? n : cap);
                 if (bi == nb - 1 && s == 1) {
                     snprintf(path, sizeof path, "%.3000s/%.60s.png", out, m->name);
-                    if (!img_write_png(im, 1, path, err, sizeof err)) fail(err, NULL);
+                    if (!img_write_png(im, expo, path, err, sizeof err)) fail(err, NULL);
                     snprintf(path, sizeof path, "%.3000s/%.60s.exr", out, m->name);
                     if (!img_write_exr(im, 1, path, err, sizeof err)) fail(err, NULL);
                 }
@@ -344,7 +357,7 @@ int main(int argc, char **argv)
     FILE *f = open_memstream(&buf, &len);
     fprintf(f, "# ch6_equal: equal-time renders of %s\n# commit %s\n# reference %s (%d spp BDPT)\n# render args %s\n",
             scene, GIT_COMMIT, refpath, refspp, extra_s);
-    fprintf(f, "# min_length %d\n", minlen);
+    fprintf(f, "# min_length %d\n# relmse eps = 0.01 * (reference mean luminance %.6g)^2\n", minlen, mlum);
     fprintf(f, "# budgets are separate runs with the same seed (no snapshots); wall-clock --time on a shared machine\n");
     for (int mi = 0; mi < nm; mi++)
         if (!ms[mi].available) fprintf(f, "# method %s not available in this build (skipped)\n", ms[mi].name);
