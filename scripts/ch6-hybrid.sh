@@ -11,7 +11,7 @@ for f in "$@"; do
     END {
       printf "**%s**, %s s per run, %d seeds\n\n| method | relMSE | mutations/s | vs MMLT large steps (z) | vs MCTLS (z) |\n| --- | ---: | ---: | ---: | ---: |\n", scene, t, seeds
       for (i = 1; i <= n; i++) {
-        k = m[i]; a = "", b = ""
+        k = m[i]; a = ""; b = ""
         if (k ~ /^hybrid/) {
           a = sprintf("%+.4f (%+.1f)", r[k] - r["mmlt"], (r[k] - r["mmlt"]) / sqrt(se[k]^2 + se["mmlt"]^2))
           b = sprintf("%+.4f (%+.1f)", r[k] - r["mctls"], (r[k] - r["mctls"]) / sqrt(se[k]^2 + se["mctls"]^2))
