@@ -234,7 +234,7 @@ int main(int argc, char **argv)
         char *eq = strchr(item, '=');
         if (eq) {
             *eq = 0;
-            split_args(xstrdup(eq + 1), m->argv, &m->argc, MAX_ARGS - 24);
+            split_args(eq + 1, m->argv, &m->argc, MAX_ARGS - 24); /* in place: mdup lives to the end */
         } else {
             m->argv[m->argc++] = "--method";
             m->argv[m->argc++] = item;
@@ -253,7 +253,9 @@ int main(int argc, char **argv)
     }
     char *extra_argv[MAX_ARGS];
     int extra_c = 0;
-    split_args(xstrdup(extra_s), extra_argv, &extra_c, MAX_ARGS - 24);
+    char extra_buf[sizeof extra_s];
+    memcpy(extra_buf, extra_s, sizeof extra_s);
+    split_args(extra_buf, extra_argv, &extra_c, MAX_ARGS - 24);
 
     make_dirs(out);
     char runsdir[4096], err[1024];
@@ -437,6 +439,7 @@ int main(int argc, char **argv)
     fputs(buf, stdout);
     free(buf);
     free(blocks);
+    free(mdup);
     img_destroy(ref);
     return 0;
 }
