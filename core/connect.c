@@ -95,6 +95,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     const struct vertex *zc = &z[t - 1];
     out->px = z[0].px;
     out->py = z[0].py;
+    if (s + t - 1 < pc->min_length) return false; /* --min-length: a whole length left out, weights unchanged */
     vec3 d = v3s(0);
     double dist2 = 0, cam_pdf = 0;
     if (s == 0) {

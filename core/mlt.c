@@ -75,7 +75,7 @@ static uint64_t seed_stream(long i, int nk, int kk) { return (uint64_t)i * (uint
 static void seed_worker(int tid, void *p)
 {
     struct seed_job *j = p;
-    struct path_ctx pc = {.sc = j->sc, .max_length = j->o->max_length, .max_heuristic = j->o->max_heuristic};
+    struct path_ctx pc = {.sc = j->sc, .max_length = j->o->max_length, .min_length = j->o->min_length, .max_heuristic = j->o->max_heuristic};
     struct scratch *w = xmalloc(sizeof *w);
     struct pitp_path *x = xmalloc(sizeof *x);
     struct sampler_independent s;
@@ -237,7 +237,7 @@ static void run_worker(int tid, void *p)
 {
     struct run_job *j = p;
     const struct mlt_opts *o = j->o;
-    struct path_ctx pc = {.sc = j->sc, .max_length = o->max_length, .max_heuristic = o->max_heuristic};
+    struct path_ctx pc = {.sc = j->sc, .max_length = o->max_length, .min_length = o->min_length, .max_heuristic = o->max_heuristic};
     struct scratch *w = xmalloc(sizeof *w);
     w->nonfinite = 0;
     struct chain *ch = xcalloc((size_t)j->nk, sizeof *ch);

@@ -42,6 +42,7 @@ struct mlt_opts {
     uint64_t seed;
     int threads;
     int max_length;
+    int min_length;        /* paths shorter than this (segments) are left out */
     bool progress;
     enum large_step large_step;  /* MMLT only */
     int hybrid_length;

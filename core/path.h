@@ -45,6 +45,7 @@ struct vertex {
 struct path_ctx {
     const struct scene *sc;
     int max_length;     /* segments */
+    int min_length;     /* segments; shorter paths contribute nothing (0 or 1: none excluded) */
     /* BDPT restricted to one technique (s, t), unweighted, when only_t > 0: each technique alone is
      * an unbiased estimator of the paths of length s + t - 1 (tests, per-technique images). */
     int only_s, only_t;

@@ -124,19 +124,19 @@ void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, 
             if (sc->env_prim >= 0) {
                 z.v.kind = VK_ENV;
                 z.v.wi = vneg(d);
-                sum = vadd(sum, emission_hit(sc, &z));
+                if (i >= pc->min_length) sum = vadd(sum, emission_hit(sc, &z));
             }
             break;
         }
         surface_from_hit(sc, o, d, &h, &z.v);
         z.dist2 = vlen2(vsub(z.v.p, o));
-        sum = vadd(sum, emission_hit(sc, &z));
+        if (i >= pc->min_length) sum = vadd(sum, emission_hit(sc, &z)); /* a path of i segments */
         /* The last vertex takes no light sample (it would exceed max_length). */
         if (!z.v.bc.b || i + 1 >= max_verts) break;
         const struct bsdf_ops *ops = bsdf_ops_for(z.v.bc.b->type);
         z.wi = frame_to_local(&z.v.sh, z.v.wi);
         z.eps = ray_eps(z.v.p);
-        if (!ops->delta_only) {
+        if (!ops->delta_only && i + 1 >= pc->min_length) {
             sampler_begin(s, STREAM_EMITTER, i);
             light_sample(sc, s, &z, ops, &sum);
         }

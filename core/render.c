@@ -61,7 +61,7 @@ static void worker(int tid, void *p)
     struct job *j = p;
     const struct scene *sc = j->sc;
     const struct render_opts *o = j->o;
-    struct path_ctx pc = {.sc = sc, .max_length = o->max_length, .only_s = o->only_s, .only_t = o->only_t};
+    struct path_ctx pc = {.sc = sc, .max_length = o->max_length, .min_length = o->min_length, .only_s = o->only_s, .only_t = o->only_t};
     struct scratch *w = xmalloc(sizeof *w);
     w->nonfinite = 0;
     struct image *img = j->img[tid];

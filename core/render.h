@@ -21,6 +21,7 @@ struct render_opts {
     uint64_t seed;
     int threads;
     int max_length;
+    int min_length; /* paths shorter than this (segments) are left out */
     bool progress;
     int only_s, only_t; /* BDPT: one technique, unweighted (only_t > 0) */
 };

@@ -26,6 +26,7 @@ static const char *usage =
     "  --seed S             random seed (default 1); same seed and threads -> same output\n"
     "  --threads T          worker threads (default: all cores)\n"
     "  --max-length K       maximum path length in segments (default: integrator.max_bounces)\n"
+    "  --min-length K       leave out paths shorter than K segments (3: no direct lighting; default 1)\n"
     "  --resolution WxH     override the camera resolution (same horizontal fov)\n"
     "  --out PREFIX         output prefix (default out)\n"
     "  --quiet              no progress bar\n"
@@ -111,6 +112,8 @@ static void parse(int argc, char **argv, struct args *a)
             a->mc.seed = a->mlt.seed = cli_u64(prog, o, VALUE);
         } else if (!strcmp(o, "--threads")) {
             a->mc.threads = a->mlt.threads = (int)cli_long(prog, o, VALUE, 1, 1024);
+        } else if (!strcmp(o, "--min-length")) {
+            a->mc.min_length = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
         } else if (!strcmp(o, "--max-length")) {
             a->mc.max_length = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
         } else if (!strcmp(o, "--resolution")) {
@@ -292,6 +295,7 @@ int main(int argc, char **argv)
     } else {
         a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : !strcmp(a.method, "pitp") ? MLT_PITP : MLT_PSSMLT;
         a.mlt.max_length = a.mc.max_length;
+        a.mlt.min_length = a.mc.min_length;
         a.mlt.mutations = (long)a.mc.spp * sc->cam.width * sc->cam.height;
         a.mlt.pss = cli_pss;
         a.mlt.pss.width = camera_film_width(&sc->cam);

@@ -1,0 +1,113 @@
+# Thesis chapter 6 (equal-time PSSMLT vs MMLT vs PITP), the MMLT paper's §5 ratio and the hybrid-MCTLS
+# study: tools, scene assets, figures and tables. Every run goes through bin/render, so a method that
+# bin/render accepts (pitp once merged) needs no change here.
+CH6_LIB := $(patsubst %,$(BUILD)/%.o,experiments/ch6/ch6_stats.c)
+$(BUILD)/experiments/ch6/%: CPPFLAGS += -Iexperiments/ch6
+.SECONDARY: $(CH6_LIB) $(BUILD)/experiments/ch6/ch6_assets.c.o $(BUILD)/experiments/ch6/ch6_equal.c.o
+
+$(BIN)/ch6_assets $(BIN)/ch6_equal: $(BIN)/%: $(BUILD)/experiments/ch6/%.c.o $(CH6_LIB) $(LIBCORE) | $(OIIO_MODULE)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+all: $(BIN)/ch6_assets $(BIN)/ch6_equal
+
+# tests/test_ch6_stats.c sees the analysis code.
+$(BUILD)/tests/test_ch6_stats.c.o: CPPFLAGS += -Iexperiments/ch6
+TEST_OBJ += $(CH6_LIB)
+$(TEST_BIN): $(CH6_LIB)
+
+# The generated assets are committed (small; the skies stored as half-float EXR by oiiotool);
+# `make ch6-assets` regenerates them.
+.PHONY: ch6-assets
+ch6-assets: deps $(BIN)/ch6_assets
+	$(BIN)/ch6_assets --sky results/ch6-sky-lr.exr --sun 0.25,0.55,0.8
+	oiiotool results/ch6-sky-lr.exr -d half --compression zip -o scenes/living-room/sky.exr
+	$(BIN)/ch6_assets --sky results/ch6-sky-st.exr --sun 0.2,0.9,0.3
+	oiiotool results/ch6-sky-st.exr -d half --compression zip -o scenes/staircase/sky.exr
+	rm -f results/ch6-sky-lr.exr results/ch6-sky-st.exr
+	$(BIN)/ch6_assets --wood scenes/living-room/wood.png
+	$(BIN)/ch6_assets --wood scenes/staircase/wood.png
+
+# ---- equal-time figures (thesis Figures 6.2-6.7) ----
+# Quick: budgets 0.5, 1, 2, 4 s per run (separate runs with one seed each, no snapshots), 4 seeds, a
+# 256-spp BDPT reference (cached in results/reference/); paths of length >= 3 only, as the thesis
+# (no direct lighting). Paper: 300 s, 8 seeds, a 40 000-spp reference
+# and 1M seed paths (the thesis's normalisation). The method list defaults to pssmlt,mmlt,pitp; a
+# method bin/render does not know (pitp before its merge) is skipped and named in the table.
+CH6_METHODS ?= pssmlt,mmlt,pitp
+ifeq ($(SCALE),paper)
+  CH6_OPTS := --time 300 --t0 18.75 --seeds 8 --min-length 3 --reference-spp 40000 --render-args "--p-large 0.1 --seed-paths 1000000"
+else
+  CH6_OPTS := --time 4 --t0 0.5 --seeds 4 --min-length 3 --reference-spp 256 --render-args "--p-large 0.1"
+endif
+CH6_OUT := results/ch6-$(SCALE)
+# scene folder, extra tool options, and the two insets (x,y,w,h in pixels) of each scene
+CH6_living-room_ARGS :=
+CH6_living-room_INSETS := 12,50,64,36 50,100,64,36
+CH6_staircase_ARGS :=
+CH6_staircase_INSETS := 56,0,36,64 55,130,36,64
+CH6_ajar_ARGS := --resolution 256x144
+CH6_ajar_INSETS := 160,70,64,36 40,60,64,36
+
+# The tools are order-only: every commit relinks them (version.h), which must not rerun minutes of
+# renders; a changed scene does. `make ch6-clean` reruns everything.
+$(CH6_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/render
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CH6_OUT)/$* --methods $(CH6_METHODS) $(CH6_OPTS) $(CH6_$*_ARGS)
+	gnuplot -e "csv='$@'; out='$(CH6_OUT)/$*/time.tmp'; name='$*'" scripts/ch6-time.gp
+	mv -f $(CH6_OUT)/$*/time.tmp.png $(CH6_OUT)/$*/error-vs-time.png
+
+.PHONY: fig6.2 fig6.3 fig6.4 fig6.5 fig6.6 fig6.7 ch6-clean
+define CH6_FIG
+$(1): deps $(CH6_OUT)/$(2)/summary.csv
+	bash scripts/ch6-figure.sh $(3) $(CH6_OUT)/$(2) $(CH6_OUT)/$(2)/$(1).png $(CH6_$(2)_INSETS)
+	bash scripts/ch6-claims.sh $(CH6_OUT)/$(2)/summary.csv > $(CH6_OUT)/$(2)/claims.md.tmp
+	mv -f $(CH6_OUT)/$(2)/claims.md.tmp $(CH6_OUT)/$(2)/claims.md
+	@echo "$(CH6_OUT)/$(2)/$(1).png; table $(CH6_OUT)/$(2)/$(2).md, error vs time $(CH6_OUT)/$(2)/error-vs-time.png"
+	@cat $(CH6_OUT)/$(2)/$(2).md $(CH6_OUT)/$(2)/claims.md
+endef
+$(eval $(call CH6_FIG,fig6.2,living-room,insets))
+$(eval $(call CH6_FIG,fig6.3,staircase,insets))
+$(eval $(call CH6_FIG,fig6.4,ajar,insets))
+$(eval $(call CH6_FIG,fig6.5,living-room,full))
+$(eval $(call CH6_FIG,fig6.6,staircase,full))
+$(eval $(call CH6_FIG,fig6.7,ajar,full))
+
+# Rerun the chapter-6 experiments from scratch (the references stay cached).
+ch6-clean:
+	rm -rf $(CH6_OUT) results/mmlt-ratio $(HYB_OUT)
+
+# ---- MMLT paper §5: the fraction of proposals with non-zero contribution, PSSMLT vs MMLT (vs PITP) ----
+# Read from the fig6 runs of the three scenes (their render CSVs count every proposal's contribution;
+# paths of length >= 3 as in those runs): all proposals and large steps alone, mean +- standard error
+# over seeds at the largest budget.
+.PHONY: mmlt-ratio
+mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary.csv $(CH6_OUT)/ajar/summary.csv
+	@mkdir -p results/mmlt-ratio
+	bash scripts/ch6-ratio.sh $(filter %summary.csv,$^) > results/mmlt-ratio/mmlt-ratio.md.tmp
+	mv -f results/mmlt-ratio/mmlt-ratio.md.tmp results/mmlt-ratio/mmlt-ratio.md
+	@cat results/mmlt-ratio/mmlt-ratio.md
+
+# ---- thesis §4.3 / §7.1: MMLT large steps vs MCTLS vs hybrid, with small steps (p_large = 0.1) ----
+# Equal time per run, 8 seeds, on ajar and living-room at 128x72 (all path lengths), against cached
+# 256-spp (paper: 16384) BDPT references.
+ifeq ($(SCALE),paper)
+  HYB_OPTS := --time 120 --seeds 8 --reference-spp 16384 --render-args "--p-large 0.1 --seed-paths 1000000"
+else
+  HYB_OPTS := --time 3 --seeds 8 --reference-spp 256 --render-args "--p-large 0.1"
+endif
+HYB_METHODS := mmlt=--method mmlt,mctls=--method mmlt --large-step mctls,hybrid4=--method mmlt --large-step hybrid --hybrid-length 4,hybrid6=--method mmlt --large-step hybrid --hybrid-length 6,hybrid8=--method mmlt --large-step hybrid --hybrid-length 8
+HYB_OUT := results/hybrid-study-$(SCALE)
+
+$(HYB_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/render
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(HYB_OUT)/$* --methods '$(HYB_METHODS)' $(HYB_OPTS) --resolution 128x72
+
+.PHONY: hybrid-study
+hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.csv
+	bash scripts/ch6-hybrid.sh $(filter %summary.csv,$^) > $(HYB_OUT)/hybrid-study.md.tmp
+	mv -f $(HYB_OUT)/hybrid-study.md.tmp $(HYB_OUT)/hybrid-study.md
+	@cat $(HYB_OUT)/hybrid-study.md
+
+# ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----
+.PHONY: report
+report:
+	bash scripts/report.sh $(SCALE)
+	bash scripts/report-check.sh results/report/index.html

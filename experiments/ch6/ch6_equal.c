@@ -1,0 +1,445 @@
+/* bin/ch6_equal: equal-time comparisons of MCMC methods on one scene (thesis chapter 6, Figures
+ * 6.2-6.7; the MMLT paper's §5 non-zero ratio; the hybrid-MCTLS study). Every run is a bin/render
+ * process, so any method bin/render accepts can be listed; a method it does not accept (probed with
+ * `bin/render --method M --help`) is skipped and named in the outputs.
+ *
+ * For each method, seed 1..N and budget t0, 2 t0, ..., T seconds: a separate render with that seed
+ * and --time budget (the core has no snapshot facility; the doubling budgets are separate runs, not
+ * snapshots of one run). Each image is compared with a BDPT reference rendered once and cached:
+ * relMSE = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01 m^2), m the reference's mean
+ * luminance (the relMSE of both images scaled to a mean of 1, so a dark scene is not all epsilon);
+ * PNGs are exposed by 0.5 / m. The spread of the per-block
+ * relMSE over B x B blocks (coefficient of variation: 0 = uniform error); mutations/s and the fraction
+ * of proposals with non-zero contribution from the render's statistics CSV.
+ * Writes OUT/runs.csv (one row per run), OUT/summary.csv (mean +- standard error over seeds per method
+ * and budget), OUT/NAME.md (the table and the claims), OUT/reference.png and OUT/<method>.png (seed 1,
+ * budget T); all atomically. */
+#include "ch6_stats.h"
+#include "cli.h"
+#include "image.h"
+#include "util.h"
+#include "version.h"
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static const char *usage =
+    "usage: ch6_equal --scene FILE --out DIR [options]\n"
+    "  --scene FILE          scene JSON\n"
+    "  --name NAME           label in the outputs (default: the scene's folder name)\n"
+    "  --out DIR             output folder\n"
+    "  --methods LIST        comma-separated methods (default pssmlt,mmlt,pitp); an item NAME=ARGS runs\n"
+    "                        bin/render with ARGS (spaces separate them), e.g. 'mctls=--method mmlt --large-step mctls'\n"
+    "  --seeds N             seeds 1..N per method and budget (default 4)\n"
+    "  --time T              largest budget in seconds per run (default 8)\n"
+    "  --t0 S                smallest budget; budgets double from it up to T (default T: one budget)\n"
+    "  --resolution WxH      override the camera (also for the reference)\n"
+    "  --reference FILE      cached BDPT reference EXR, re-rendered when older than the scene file\n"
+    "                        (default results/reference/NAME-bdpt-WxH-minK-SPP.exr)\n"
+    "  --reference-spp N     BDPT samples per pixel of the reference (default 256)\n"
+    "  --min-length K        paths of K segments or more only, reference and runs (default 1: all;\n"
+    "                        the thesis's chapter 6 uses 3: no direct lighting)\n"
+    "  --render-args ARGS    extra bin/render options for every run (default '--p-large 0.1')\n"
+    "  --block B             block size of the error spread (default 16)\n"
+    "  --threads T           threads per run (default 2)\n"
+    "  --render PATH         the renderer (default: bin/render beside this tool)\n"
+    "  --reuse               keep the run files already in OUT/runs (same names) instead of rendering\n";
+
+#define MAX_METHODS 16
+#define MAX_BUDGETS 16
+#define MAX_SEEDS 64
+#define MAX_ARGS 64
+
+struct method {
+    char name[64];
+    char *argv[MAX_ARGS];
+    int argc;
+    bool available;
+};
+
+struct run {
+    double seconds, mutations, mps, relmse, spread, nonzero, large_nonzero;
+};
+
+static char *split_args(char *s, char **argv, int *argc, int cap)
+{
+    for (char *tok = strtok(s, " "); tok; tok = strtok(NULL, " "))
+        if (*argc < cap) argv[(*argc)++] = tok;
+    return s;
+}
+
+/* Runs argv (NULL-terminated) with stdout and stderr to `log` (NULL: /dev/null); returns the exit status. */
+static int run_cmd(char *const *argv, const char *log)
+{
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid < 0) return -1;
+    if (pid == 0) {
+        FILE *f = freopen(log ? log : "/dev/null", "w", stdout);
+        (void)f;
+        dup2(1, 2);
+        execv(argv[0], argv);
+        _exit(127);
+    }
+    int st;
+    while (waitpid(pid, &st, 0) < 0)
+        if (errno != EINTR) return -1;
+    return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + (WIFSIGNALED(st) ? WTERMSIG(st) : 0);
+}
+
+/* The '# key value' header line of a render CSV. */
+static double csv_header(const char *text, const char *key)
+{
+    char pat[128];
+    snprintf(pat, sizeof pat, "# %s ", key);
+    const char *p = strstr(text, pat);
+    return p ? strtod(p + strlen(pat), NULL) : NAN;
+}
+
+/* Non-zero fraction of the 'total' rows: all kinds (kind NULL) or one kind. */
+static double csv_nonzero(const char *text, const char *kind)
+{
+    double att = 0, nz = 0;
+    for (const char *l = text; l && *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : NULL) {
+        char m[32], k[32], len[32], tc[32];
+        double a, ma, se, af, n;
+        if (sscanf(l, "%31[^,],%31[^,],%31[^,],%31[^,],%lf,%lf,%lf,%lf,%lf", m, k, len, tc, &a, &ma, &se, &af, &n) != 9) continue;
+        if (strcmp(len, "total") || (kind && strcmp(k, kind))) continue;
+        att += a;
+        nz += n;
+    }
+    return att > 0 ? nz / att : NAN;
+}
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *s = xmalloc((size_t)n + 1);
+    size_t r = fread(s, 1, (size_t)n, f);
+    s[r] = 0;
+    fclose(f);
+    return s;
+}
+
+/* mkdir -p */
+static void make_dirs(const char *path)
+{
+    char *p = xstrdup(path);
+    for (char *s = p + 1; *s; s++)
+        if (*s == '/') {
+            *s = 0;
+            mkdir(p, 0777);
+            *s = '/';
+        }
+    mkdir(p, 0777);
+    free(p);
+}
+
+/* A cached file older than the scene it was rendered from is stale. */
+static bool older_than(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_mtime < sb.st_mtime;
+}
+
+static void fail(const char *msg1, const char *msg2)
+{
+    fprintf(stderr, "ch6_equal: %s%s\n", msg1, msg2 ? msg2 : "");
+    exit(1);
+}
+
+int main(int argc, char **argv)
+{
+    const char *prog = "ch6_equal", *scene = NULL, *out = NULL, *name = NULL, *refpath = NULL, *res = NULL;
+    char methods_s[4096] = "pssmlt,mmlt,pitp", extra_s[1024] = "--p-large 0.1", render[4096] = "";
+    int seeds = 4, refspp = 256, blk = 16, threads = 2, minlen = 1;
+    double T = 8, t0 = -1;
+    bool reuse = false;
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i];
+#define VALUE cli_value(prog, argc, argv, &i)
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (!strcmp(o, "--scene")) scene = VALUE;
+        else if (!strcmp(o, "--name")) name = VALUE;
+        else if (!strcmp(o, "--out")) out = VALUE;
+        else if (!strcmp(o, "--methods")) snprintf(methods_s, sizeof methods_s, "%s", VALUE);
+        else if (!strcmp(o, "--seeds")) seeds = (int)cli_long(prog, o, VALUE, 2, MAX_SEEDS);
+        else if (!strcmp(o, "--time")) T = cli_double(prog, o, VALUE, 0.01, 1e6);
+        else if (!strcmp(o, "--t0")) t0 = cli_double(prog, o, VALUE, 0.01, 1e6);
+        else if (!strcmp(o, "--resolution")) res = VALUE;
+        else if (!strcmp(o, "--reference")) refpath = VALUE;
+        else if (!strcmp(o, "--reference-spp")) refspp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
+        else if (!strcmp(o, "--render-args")) snprintf(extra_s, sizeof extra_s, "%s", VALUE);
+        else if (!strcmp(o, "--min-length")) minlen = (int)cli_long(prog, o, VALUE, 1, 64);
+        else if (!strcmp(o, "--block")) blk = (int)cli_long(prog, o, VALUE, 2, 1024);
+        else if (!strcmp(o, "--threads")) threads = (int)cli_long(prog, o, VALUE, 1, 1024);
+        else if (!strcmp(o, "--reuse")) reuse = true;
+        else if (!strcmp(o, "--render")) snprintf(render, sizeof render, "%s", VALUE);
+        else cli_fail(prog, "unknown option '%s' (see --help)", o);
+#undef VALUE
+    }
+    if (!scene || !out) cli_fail(prog, "--scene and --out are required (see --help)");
+    if (strlen(out) > 2000) cli_fail(prog, "--out: path too long");
+    if (t0 < 0) t0 = T;
+    if (t0 > T) cli_fail(prog, "--t0 %g is larger than --time %g", t0, T);
+    int nb = 0;
+    double budgets[MAX_BUDGETS];
+    for (double b = t0; b <= T * (1 + 1e-9) && nb < MAX_BUDGETS; b *= 2) budgets[nb++] = b;
+    if (fabs(budgets[nb - 1] - T) > 1e-9 * T && nb < MAX_BUDGETS) budgets[nb++] = T;
+    if (res) {
+        int w, h;
+        if (sscanf(res, "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0)
+            cli_fail(prog, "--resolution: expected WxH with positive integers, got '%s'", res);
+    }
+    if (access(scene, R_OK)) cli_fail(prog, "--scene: cannot read '%s'", scene);
+    char sname[256];
+    if (!name) {
+        snprintf(sname, sizeof sname, "%s", scene);
+        char *sl = strrchr(sname, '/');
+        if (sl) *sl = 0;
+        sl = strrchr(sname, '/');
+        name = sl ? sl + 1 : sname;
+    }
+    if (!*render) {
+        char self[2048];
+        ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+        if (n <= 0) fail("cannot find my own path; give --render", NULL);
+        self[n] = 0;
+        char *sl = strrchr(self, '/');
+        *sl = 0;
+        snprintf(render, sizeof render, "%s/render", self);
+    }
+    if (access(render, X_OK)) cli_fail(prog, "--render: '%s' is not executable", render);
+    cli_require_image_output(prog);
+
+    /* Methods: parse and probe. */
+    struct method ms[MAX_METHODS];
+    int nm = 0;
+    char *mdup = xstrdup(methods_s), *save = NULL;
+    for (char *item = strtok_r(mdup, ",", &save); item; item = strtok_r(NULL, ",", &save)) {
+        if (nm == MAX_METHODS) cli_fail(prog, "--methods: at most %d", MAX_METHODS);
+        struct method *m = &ms[nm++];
+        memset(m, 0, sizeof *m);
+        char *eq = strchr(item, '=');
+        if (eq) {
+            *eq = 0;
+            split_args(eq + 1, m->argv, &m->argc, MAX_ARGS - 24); /* in place: mdup lives to the end */
+        } else {
+            m->argv[m->argc++] = "--method";
+            m->argv[m->argc++] = item;
+        }
+        snprintf(m->name, sizeof m->name, "%s", item);
+        if (!*m->name || m->argc == 0) cli_fail(prog, "--methods: empty item in '%s'", methods_s);
+        /* probe: bin/render [method args] --help exits 0 when it accepts them */
+        char *pv[MAX_ARGS + 4];
+        int pc = 0;
+        pv[pc++] = render;
+        for (int k = 0; k < m->argc; k++) pv[pc++] = m->argv[k];
+        pv[pc++] = "--help";
+        pv[pc] = NULL;
+        m->available = run_cmd(pv, NULL) == 0;
+        if (!m->available) fprintf(stderr, "ch6_equal: %s: %s does not accept '%s'; skipped\n", m->name, render, eq ? eq + 1 : item);
+    }
+    char *extra_argv[MAX_ARGS];
+    int extra_c = 0;
+    char extra_buf[sizeof extra_s];
+    memcpy(extra_buf, extra_s, sizeof extra_s);
+    split_args(extra_buf, extra_argv, &extra_c, MAX_ARGS - 24);
+
+    make_dirs(out);
+    char runsdir[4096], err[1024];
+    snprintf(runsdir, sizeof runsdir, "%s/runs", out);
+    mkdir(runsdir, 0777);
+
+    /* The reference (cached). */
+    char defref[1024], thr[16], spp_s[32], minlen_s[16];
+    snprintf(minlen_s, sizeof minlen_s, "%d", minlen);
+    snprintf(thr, sizeof thr, "%d", threads);
+    struct image *probe_ref = NULL;
+    if (!refpath) {
+        make_dirs("results/reference");
+        snprintf(defref, sizeof defref, "results/reference/%s-bdpt-%s-min%d-%d.exr", name, res ? res : "native", minlen, refspp);
+        refpath = defref;
+    }
+    probe_ref = older_than(refpath, scene) ? NULL : img_read(refpath, err, sizeof err);
+    if (!probe_ref) {
+        fprintf(stderr, "ch6_equal: rendering the BDPT reference (%d spp) into %s\n", refspp, refpath);
+        char prefix[1100];
+        snprintf(prefix, sizeof prefix, "%.*s", (int)(strlen(refpath) - 4), refpath);
+        snprintf(spp_s, sizeof spp_s, "%d", refspp);
+        char *rv[] = {render, (char *)scene, "--method", "bdpt", "--spp", spp_s, "--seed", "12345", "--threads", thr,
+                      "--quiet", "--min-length", minlen_s, "--out", prefix, res ? "--resolution" : NULL, (char *)res, NULL};
+        if (run_cmd(rv, NULL) != 0) fail("the reference render failed: ", refpath);
+        probe_ref = img_read(refpath, err, sizeof err);
+        if (!probe_ref) fail(err, NULL);
+    }
+    struct image *ref = probe_ref;
+    double mlum = 0;
+    for (int y = 0; y < ref->h; y++)
+        for (int x = 0; x < ref->w; x++) mlum += luminance(img_get(ref, x, y));
+    mlum /= (double)ref->w * ref->h;
+    if (!(mlum > 0)) fail("the reference is black: ", refpath);
+    const double eps = 0.01 * mlum * mlum, expo = 0.5 / mlum;
+    char path[4096];
+    snprintf(path, sizeof path, "%s/reference.png", out);
+    if (!img_write_png(ref, expo, path, err, sizeof err)) fail(err, NULL);
+
+    static struct run R[MAX_METHODS][MAX_BUDGETS][MAX_SEEDS];
+    int cap = (ref->w / blk) * (ref->h / blk) + 1;
+    double *blocks = xmalloc(sizeof(double) * (size_t)cap);
+    for (int mi = 0; mi < nm; mi++) {
+        struct method *m = &ms[mi];
+        if (!m->available) continue;
+        for (int bi = 0; bi < nb; bi++)
+            for (int s = 1; s <= seeds; s++) {
+                char prefix[4096], seed_s[32], time_s[32];
+                snprintf(prefix, sizeof prefix, "%.3000s/%.60s-s%d-t%g", runsdir, m->name, s, budgets[bi]);
+                snprintf(seed_s, sizeof seed_s, "%d", s);
+                snprintf(time_s, sizeof time_s, "%g", budgets[bi]);
+                char *rv[MAX_ARGS * 2 + 24];
+                int c = 0;
+                rv[c++] = render;
+                rv[c++] = (char *)scene;
+                for (int k = 0; k < m->argc; k++) rv[c++] = m->argv[k];
+                for (int k = 0; k < extra_c; k++) rv[c++] = extra_argv[k];
+                char *fixed[] = {"--time", time_s, "--seed", seed_s, "--threads", thr, "--min-length", minlen_s, "--quiet", "--out", prefix};
+                for (size_t k = 0; k < sizeof fixed / sizeof *fixed; k++) rv[c++] = fixed[k];
+                if (res) {
+                    rv[c++] = "--resolution";
+                    rv[c++] = (char *)res;
+                }
+                rv[c] = NULL;
+                fprintf(stderr, "ch6_equal: %s %s seed %d, %g s\n", name, m->name, s, budgets[bi]);
+                char log[4200], csvp[4200];
+                snprintf(log, sizeof log, "%.4000s.log", prefix);
+                snprintf(path, sizeof path, "%.4000s.exr", prefix);
+                snprintf(csvp, sizeof csvp, "%.4000s.csv", prefix);
+                if (!(reuse && !access(path, R_OK) && !access(csvp, R_OK)) && run_cmd(rv, log) != 0)
+                    fail("a render failed; see ", log);
+                struct image *im = img_read(path, err, sizeof err);
+                if (!im) fail(err, NULL);
+                if (im->w != ref->w || im->h != ref->h) fail("image and reference sizes differ: ", path);
+                struct run *r = &R[mi][bi][s - 1];
+                r->relmse = img_relmse(im, ref, eps);
+                int n = ch6_block_relmse(im, ref, blk, eps, blocks, cap);
+                r->spread = ch6_spread(blocks, n < cap ? n : cap);
+                if (bi == nb - 1 && s == 1) {
+                    snprintf(path, sizeof path, "%.3000s/%.60s.png", out, m->name);
+                    if (!img_write_png(im, expo, path, err, sizeof err)) fail(err, NULL);
+                    snprintf(path, sizeof path, "%.3000s/%.60s.exr", out, m->name);
+                    if (!img_write_exr(im, 1, path, err, sizeof err)) fail(err, NULL);
+                }
+                img_destroy(im);
+                snprintf(path, sizeof path, "%.4000s.csv", prefix);
+                char *csv = slurp(path);
+                if (!csv) fail("cannot read ", path);
+                r->seconds = csv_header(csv, "seconds");
+                r->mutations = csv_header(csv, "mutations");
+                r->mps = csv_header(csv, "mutations_per_second");
+                r->nonzero = csv_nonzero(csv, NULL);
+                r->large_nonzero = csv_nonzero(csv, "large");
+                free(csv);
+            }
+    }
+
+    /* runs.csv and summary.csv */
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    fprintf(f, "# ch6_equal: equal-time renders of %s\n# commit %s\n# reference %s (%d spp BDPT)\n# render args %s\n",
+            scene, GIT_COMMIT, refpath, refspp, extra_s);
+    fprintf(f, "# min_length %d\n# relmse eps = 0.01 * (reference mean luminance %.6g)^2\n", minlen, mlum);
+    fprintf(f, "# budgets are separate runs with the same seed (no snapshots); wall-clock --time on a shared machine\n");
+    for (int mi = 0; mi < nm; mi++)
+        if (!ms[mi].available) fprintf(f, "# method %s not available in this build (skipped)\n", ms[mi].name);
+    fprintf(f, "scene,method,seed,budget,seconds,mutations,mutations_per_s,relmse,block_spread,nonzero,large_nonzero\n");
+    for (int mi = 0; mi < nm; mi++)
+        if (ms[mi].available)
+            for (int bi = 0; bi < nb; bi++)
+                for (int s = 0; s < seeds; s++) {
+                    const struct run *r = &R[mi][bi][s];
+                    fprintf(f, "%s,%s,%d,%g,%.3f,%.0f,%.0f,%.6g,%.6g,%.6g,%.6g\n", name, ms[mi].name, s + 1, budgets[bi],
+                            r->seconds, r->mutations, r->mps, r->relmse, r->spread, r->nonzero, r->large_nonzero);
+                }
+    fclose(f);
+    snprintf(path, sizeof path, "%s/runs.csv", out);
+    if (!write_text_atomic(path, buf, err, sizeof err)) fail(err, NULL);
+    free(buf);
+
+    buf = NULL;
+    f = open_memstream(&buf, &len);
+    fprintf(f, "# mean +- standard error over %d seeds\n", seeds);
+    fprintf(f, "scene,method,budget,seeds,relmse,relmse_se,block_spread,block_spread_se,mutations_per_s,mutations_per_s_se,"
+               "nonzero,nonzero_se,large_nonzero,large_nonzero_se\n");
+    double sum[MAX_METHODS][6][2];
+    for (int mi = 0; mi < nm; mi++) {
+        if (!ms[mi].available) continue;
+        for (int bi = 0; bi < nb; bi++) {
+            double v[6][MAX_SEEDS], mean[6], se[6];
+            for (int s = 0; s < seeds; s++) {
+                const struct run *r = &R[mi][bi][s];
+                v[0][s] = r->relmse;
+                v[1][s] = r->spread;
+                v[2][s] = r->mps;
+                v[3][s] = r->nonzero;
+                v[4][s] = r->large_nonzero;
+                v[5][s] = r->mutations;
+            }
+            for (int q = 0; q < 6; q++) ch6_mean_se(v[q], seeds, &mean[q], &se[q]);
+            fprintf(f, "%s,%s,%g,%d,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g\n", name, ms[mi].name, budgets[bi], seeds,
+                    mean[0], se[0], mean[1], se[1], mean[2], se[2], mean[3], se[3], mean[4], se[4]);
+            if (bi == nb - 1)
+                for (int q = 0; q < 6; q++) sum[mi][q][0] = mean[q], sum[mi][q][1] = se[q];
+        }
+    }
+    fclose(f);
+    snprintf(path, sizeof path, "%s/summary.csv", out);
+    if (!write_text_atomic(path, buf, err, sizeof err)) fail(err, NULL);
+    free(buf);
+
+    /* The Markdown table at the largest budget, with the error-vs-time slope. */
+    buf = NULL;
+    f = open_memstream(&buf, &len);
+    fprintf(f, "**%s**, %g s per run (wall clock, %d threads), %d seeds, paths of length >= %d, reference %d spp BDPT; mean ± standard error over seeds\n\n",
+            name, T, threads, seeds, minlen, refspp);
+    fprintf(f, "| method | relMSE | block-relMSE spread (CV, %dx%d) | mutations/s | non-zero proposals | large-step non-zero | relMSE slope vs time |\n",
+            blk, blk);
+    fprintf(f, "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    for (int mi = 0; mi < nm; mi++) {
+        if (!ms[mi].available) {
+            fprintf(f, "| %s | not available in this build | | | | | |\n", ms[mi].name);
+            continue;
+        }
+        double bx[MAX_BUDGETS], by[MAX_BUDGETS];
+        for (int bi = 0; bi < nb; bi++) {
+            double v[MAX_SEEDS], se;
+            for (int s = 0; s < seeds; s++) v[s] = R[mi][bi][s].relmse;
+            ch6_mean_se(v, seeds, &by[bi], &se);
+            bx[bi] = budgets[bi];
+        }
+        double slope = ch6_loglog_slope(bx, by, nb);
+        fprintf(f, "| %s | %.4g ± %.2g | %.3g ± %.2g | %.0f ± %.0f | %.4f ± %.4f | %.4f ± %.4f | %.2f |\n", ms[mi].name,
+                sum[mi][0][0], sum[mi][0][1], sum[mi][1][0], sum[mi][1][1], sum[mi][2][0], sum[mi][2][1], sum[mi][3][0],
+                sum[mi][3][1], sum[mi][4][0], sum[mi][4][1], slope);
+    }
+    fclose(f);
+    snprintf(path, sizeof path, "%s/%s.md", out, name);
+    if (!write_text_atomic(path, buf, err, sizeof err)) fail(err, NULL);
+    fputs(buf, stdout);
+    free(buf);
+    free(blocks);
+    free(mdup);
+    img_destroy(ref);
+    return 0;
+}

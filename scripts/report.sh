@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# make report: results/report/index.html, one static page with every figure the harness makes. Each
+# entry shows the figure (when it has been run; otherwise the command that makes it), the source's
+# claim, the measured statistics with their uncertainties (the run's own Markdown tables), whether the
+# claim holds, and links to the CSV, tables and images. Paths in the page are relative to it.
+# usage: report.sh [SCALE]   (default quick; the chapter-6 folders are results/ch6-SCALE/...)
+set -euo pipefail
+scale=${1:-quick}
+out=results/report
+mkdir -p "$out"
+tmp="$out/.index.tmp$$.html"
+esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
+ch6=results/ch6-$scale hyb=results/hybrid-study-$scale
+# id | title | make command | images (space-separated) | data files | claim | verdict (README's quick-scale result; '' = see the measured tables)
+entries=(
+"fig4.1|Thesis Fig. 4.1: isotropic vs resolution-aware small steps|make fig4.1|results/fig4.1/fig4.1.png results/fig4.1/fig4.1-profiles.png|results/fig4.1/fig4.1.csv results/fig4.1/fig4.1.md|Isotropic small steps stretch the noise horizontally by about the aspect ratio (1.78); resolution-aware steps make it isotropic.|Holds in direction, not fully in size: l_x/l_y = 1.55 ± 0.03 (isotropic) vs 1.02 ± 0.02 (--rap), README quick scale."
+"fig4.2|Thesis Fig. 4.2: the wall at 1024², 512², 256² and resolution-scaled steps|make fig4.2|results/fig4.2/fig4.2.png results/fig4.2/fig4.2-plot.png|results/fig4.2/fig4.2.csv results/fig4.2/fig4.2.md|Smaller images get smaller steps in pixels and blotchier noise; scaling the step to the resolution removes it.|Holds: correlation length halves with the resolution (19, 8.3, 4.3 px); --rap-resolution at 256² gives 1024²'s relMSE (0.256 ± 0.0003)."
+"fig4.3|Thesis Fig. 4.3: constrained discrete choices, a room reflected in a window|make fig4.3|results/fig4.3/fig4.3.png|results/fig4.3/fig4.3.csv results/fig4.3/fig4.3.md|--cdc keeps the chain on reflected paths: higher acceptance and lower error than PSSMLT; BDPT has difficulty.|Holds for acceptance (0.752 → 0.862) and BDPT (2.4× PSSMLT's relMSE); for the error weakly (−14 % over both seed sets, about 2 standard errors)."
+"fig4.5|Thesis Fig. 4.5: acceptance of MMLT large steps vs MCTLS|make fig4.5|results/fig4.5/fig4.5.png|results/fig4.5/fig4.5.csv results/fig4.5/fig4.5.md|MCTLS is accepted more often than MMLT large steps, by a ratio growing to about 5× at length 11.|Holds in direction: 2.9–3.5× at every length (3.5× at length 11), less than 5×."
+"fig4.6|Thesis Fig. 4.6: equal-time MMLT large steps vs MCTLS vs hybrid (no small steps)|make fig4.6|results/fig4.6/fig4.6.png|results/fig4.6/fig4.6.csv results/fig4.6/fig4.6.md|At equal time MCTLS and the hybrid beat MMLT large steps on ajar.|See the measured table (one seed; compare the relMSE values with each other)."
+"fig5.5|Thesis Fig. 5.5: angle change of MMLT vs controlled small steps|make fig5.5|results/fig5.5/fig5.5.png|results/fig5.5/fig5.5.csv results/fig5.5/fig5.5.md|MMLT's small steps change the path more near edges; controlled steps do not.|Holds: edge/elsewhere 1.73 ± 0.02 (MMLT) vs 1.15 ± 0.03 (controlled)."
+"fig5.6|Thesis Fig. 5.6: rendered images, MMLT vs controlled small steps|make fig5.6|results/fig5.6/fig5.6.png|results/fig5.6/fig5.6.csv results/fig5.6/fig5.6.md|Controlled small steps give streaky, splotchy noise and are not better.|Holds, more strongly: relMSE 0.56 ± 0.13 (controlled) vs 0.082 ± 0.011 (MMLT)."
+"table1-cmlt|CMLT paper Table 1 and Fig. 3: the two-light toy|make table1-cmlt|results/table1-cmlt/fig3.png|results/table1-cmlt/table1.csv results/table1-cmlt/table1_stats.csv results/table1-cmlt/table1.md|CMLT has the lowest RMSE of the six samplers.|See the measured table."
+"fig6.2|Thesis Fig. 6.2: living room, equal time, insets|make fig6.2|$ch6/living-room/fig6.2.png $ch6/living-room/error-vs-time.png|$ch6/living-room/summary.csv $ch6/living-room/runs.csv $ch6/living-room/living-room.md $ch6/living-room/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|"
+"fig6.3|Thesis Fig. 6.3: staircase, equal time, insets|make fig6.3|$ch6/staircase/fig6.3.png $ch6/staircase/error-vs-time.png|$ch6/staircase/summary.csv $ch6/staircase/runs.csv $ch6/staircase/staircase.md $ch6/staircase/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|"
+"fig6.4|Thesis Fig. 6.4: ajar, equal time, insets|make fig6.4|$ch6/ajar/fig6.4.png $ch6/ajar/error-vs-time.png|$ch6/ajar/summary.csv $ch6/ajar/runs.csv $ch6/ajar/ajar.md $ch6/ajar/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|"
+"fig6.5|Thesis Fig. 6.5: living room, full images|make fig6.5|$ch6/living-room/fig6.5.png|$ch6/living-room/summary.csv|Full-resolution images of Fig. 6.2's methods.|"
+"fig6.6|Thesis Fig. 6.6: staircase, full images|make fig6.6|$ch6/staircase/fig6.6.png|$ch6/staircase/summary.csv|Full-resolution images of Fig. 6.3's methods.|"
+"fig6.7|Thesis Fig. 6.7: ajar, full images|make fig6.7|$ch6/ajar/fig6.7.png|$ch6/ajar/summary.csv|Full-resolution images of Fig. 6.4's methods.|"
+"mmlt-ratio|MMLT paper §5: fraction of samples with non-zero contribution|make mmlt-ratio||results/mmlt-ratio/mmlt-ratio.md|11.81 % of PSSMLT's samples vs 29.75 % of MMLT's have non-zero contribution (door scene).|"
+"hybrid-study|Thesis §4.3/§7.1: hybrid MCTLS at equal time, with small steps|make hybrid-study||$hyb/hybrid-study.md $hyb/ajar/summary.csv $hyb/living-room/summary.csv|Open question: do MMLT large steps for short paths plus MCTLS for long ones beat both?|"
+)
+{
+cat <<'HEAD'
+<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>pss-harness report</title>
+<style>
+body { font-family: sans-serif; max-width: 1300px; margin: 1em auto; color: #222; }
+section { border-top: 1px solid #ccc; padding: 0.5em 0 1em; }
+img { max-width: 100%; border: 1px solid #ddd; margin: 4px 0; }
+pre { background: #f6f6f6; padding: 0.5em; overflow-x: auto; font-size: 12px; }
+.missing { color: #a00; } .claim { background: #eef4ff; padding: 0.4em; } .verdict { background: #efe; padding: 0.4em; }
+</style></head><body>
+<h1>pss-harness: every figure</h1>
+HEAD
+echo "<p>Generated $(date -u '+%Y-%m-%d %H:%M UTC') from commit $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown), scale $scale. Quick-scale runs on a shared 2-core machine.</p>"
+echo "<ul>"
+for e in "${entries[@]}"; do IFS='|' read -r id title _ <<<"$e"; echo "<li><a href=\"#$id\">$(printf '%s' "$title" | esc)</a></li>"; done
+echo "</ul>"
+for e in "${entries[@]}"; do
+  IFS='|' read -r id title cmd imgs data claim verdict <<<"$e"
+  echo "<section id=\"$id\"><h2>$(printf '%s' "$title" | esc)</h2>"
+  echo "<p class=\"claim\"><b>Claim:</b> $(printf '%s' "$claim" | esc)</p>"
+  have=0
+  for i in $imgs; do [ -f "$i" ] && have=1; done
+  for d in $data; do [ -f "$d" ] && have=1; done
+  if [ $have = 0 ]; then
+    echo "<p class=\"missing\">Not run yet: <code>$(printf '%s' "$cmd" | esc)</code> makes it.</p></section>"
+    continue
+  fi
+  for i in $imgs; do
+    if [ -f "$i" ]; then echo "<a href=\"../${i#results/}\"><img src=\"../${i#results/}\" alt=\"$id\"></a>"
+    else echo "<p class=\"missing\">$(basename "$i") not made yet: <code>$(printf '%s' "$cmd" | esc)</code></p>"; fi
+  done
+  for d in $data; do
+    case $d in *.md) [ -f "$d" ] && { echo "<pre>"; esc < "$d"; echo "</pre>"; } ;; esac
+  done
+  if [ -n "$verdict" ]; then echo "<p class=\"verdict\"><b>Holds?</b> $(printf '%s' "$verdict" | esc)</p>"
+  else echo "<p class=\"verdict\"><b>Holds?</b> see the claims and tables above (measured on this run).</p>"; fi
+  echo "<p>Data:"
+  for d in $data; do [ -f "$d" ] && echo " <a href=\"../${d#results/}\">$(basename "$d")</a>"; done
+  echo "</p></section>"
+done
+cat <<'TAIL'
+<script>
+window.addEventListener('load', function () {
+  var bad = [], n = 0;
+  document.querySelectorAll('img').forEach(function (im) { n++; if (!(im.complete && im.naturalWidth > 0)) bad.push(im.getAttribute('src')); });
+  document.body.setAttribute('data-imgcheck', bad.length ? 'BROKEN ' + bad.join(' ') : 'OK ' + n);
+});
+</script>
+</body></html>
+TAIL
+} > "$tmp"
+mv -f "$tmp" "$out/index.html"
+echo "report: wrote $out/index.html" >&2
