@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs exactly the Debian packages the harness needs; does nothing when they are all present.
-# Used by the README's set-up, by `make` (deps target) and by .ci/run.
+# Used by the README's set-up, by `make` (deps target), by `make report` (with --report) and by .ci/run.
 set -euo pipefail
 pkgs=(
   build-essential pkg-config
@@ -12,6 +12,9 @@ pkgs=(
   gnuplot-nox              # figures
   fonts-dejavu-core        # labels in oiiotool montages (cmlt-montage.sh)
 )
+# `--report`: also the browser that checks results/report/index.html (make report, CI); large, so
+# only when asked.
+if [ "${1:-}" = "--report" ]; then pkgs+=(chromium); fi
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

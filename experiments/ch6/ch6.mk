@@ -109,5 +109,6 @@ hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.cs
 # ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----
 .PHONY: report
 report:
+	@bash scripts/install-deps.sh --report
 	bash scripts/report.sh $(SCALE)
 	bash scripts/report-check.sh results/report/index.html
