@@ -51,8 +51,8 @@ static struct image *ch6_render(void *p, uint64_t seed)
     return im;
 }
 
-/* 8 BDPT runs as the reference; 8 PT, 12 PSSMLT and 12 MMLT runs, each family tested against it
- * (alpha 0.01, Sidak over the 3 families' blocks and means). */
+/* 8 BDPT runs as the reference; 8 PT and 12 PSSMLT, MMLT and PITP runs, each family tested against it
+ * (alpha 0.01, Sidak over the 4 families' blocks and means). */
 static void ch6_agree(const char *path, int res, int bdpt_spp, int pt_spp, int pss_mpp, int mmlt_mpp, long seed_paths,
                       uint64_t seed)
 {
@@ -61,14 +61,15 @@ static void ch6_agree(const char *path, int res, int bdpt_spp, int pt_spp, int p
     static struct stack ref, a;
     struct ch6_run bd = {.sc = sc, .mc = METHOD_BDPT, .per_pixel = bdpt_spp};
     stack_runs(&ref, ch6_render, &bd, 8, seed, 8);
-    const struct ch6_run runs[3] = {{.sc = sc, .mc = METHOD_PT, .per_pixel = pt_spp},
+    const struct ch6_run runs[4] = {{.sc = sc, .mc = METHOD_PT, .per_pixel = pt_spp},
                                     {.sc = sc, .mcmc = true, .mlt = MLT_PSSMLT, .per_pixel = pss_mpp, .seed_paths = seed_paths},
-                                    {.sc = sc, .mcmc = true, .mlt = MLT_MMLT, .per_pixel = mmlt_mpp, .seed_paths = seed_paths}};
-    const char *names[3] = {"pt", "pssmlt", "mmlt"};
-    for (int m = 0; m < 3; m++) {
+                                    {.sc = sc, .mcmc = true, .mlt = MLT_MMLT, .per_pixel = mmlt_mpp, .seed_paths = seed_paths},
+                                    {.sc = sc, .mcmc = true, .mlt = MLT_PITP, .per_pixel = mmlt_mpp, .seed_paths = seed_paths}};
+    const char *names[4] = {"pt", "pssmlt", "mmlt", "pitp"};
+    for (int m = 0; m < 4; m++) {
         double pm, worst;
         stack_runs(&a, ch6_render, (void *)&runs[m], m == 0 ? 8 : 12, seed + 100 * (m + 1), 8);
-        int f = stack_compare(&a, &ref, 3, &pm, &worst);
+        int f = stack_compare(&a, &ref, 4, &pm, &worst);
         cr_assert_eq(f, 0, "%s on %s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", names[m], path,
                      a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     }
@@ -86,7 +87,7 @@ Test(stat_ch6, all_methods_agree_on_staircase, .timeout = 600)
 }
 
 /* --min-length 3 (no direct lighting, as thesis chapter 6 renders) for every method: PT, BDPT, PSSMLT
- * and MMLT with lengths >= 3 only against BDPT with all lengths minus an independent BDPT run of
+ * MMLT and PITP with lengths >= 3 only against BDPT with all lengths minus an independent BDPT run of
  * lengths 1-2 (an unbiased estimate of the same light), Cornell box at 32x32. */
 Test(stat_ch6, min_length_leaves_out_exactly_the_shorter_paths, .timeout = 600)
 {
@@ -95,16 +96,17 @@ Test(stat_ch6, min_length_leaves_out_exactly_the_shorter_paths, .timeout = 600)
     static struct stack ref, a;
     struct ch6_run diff = {.sc = sc, .mc = METHOD_BDPT, .per_pixel = 64, .subtract_below = 3};
     stack_runs(&ref, ch6_render, &diff, 8, 9000, 8);
-    const struct ch6_run runs[4] = {
+    const struct ch6_run runs[5] = {
         {.sc = sc, .mc = METHOD_PT, .per_pixel = 128, .min_length = 3},
         {.sc = sc, .mc = METHOD_BDPT, .per_pixel = 32, .min_length = 3},
         {.sc = sc, .mcmc = true, .mlt = MLT_PSSMLT, .per_pixel = 64, .seed_paths = 20000, .min_length = 3},
-        {.sc = sc, .mcmc = true, .mlt = MLT_MMLT, .per_pixel = 64, .seed_paths = 20000, .min_length = 3}};
-    const char *names[4] = {"pt", "bdpt", "pssmlt", "mmlt"};
-    for (int m = 0; m < 4; m++) {
+        {.sc = sc, .mcmc = true, .mlt = MLT_MMLT, .per_pixel = 64, .seed_paths = 20000, .min_length = 3},
+        {.sc = sc, .mcmc = true, .mlt = MLT_PITP, .per_pixel = 64, .seed_paths = 20000, .min_length = 3}};
+    const char *names[5] = {"pt", "bdpt", "pssmlt", "mmlt", "pitp"};
+    for (int m = 0; m < 5; m++) {
         double pm, worst;
         stack_runs(&a, ch6_render, (void *)&runs[m], m < 2 ? 8 : 12, 9100 + 100 * m, 8);
-        int f = stack_compare(&a, &ref, 4, &pm, &worst);
+        int f = stack_compare(&a, &ref, 5, &pm, &worst);
         cr_assert_eq(f, 0, "%s --min-length 3: %g +- %g vs BDPT difference %g +- %g: %d failing (mean p=%g, worst p=%g)",
                      names[m], a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     }
