@@ -237,6 +237,7 @@ help:
 	@echo "make mmlt-ratio  MMLT paper §5: fraction of proposals with non-zero contribution, PSSMLT vs MMLT, per scene"
 	@echo "make hybrid-study  thesis §4.3/§7.1: MMLT large steps vs MCTLS vs hybrid at equal time, with small steps"
 	@echo "make ch6-assets  regenerate the living-room and staircase sky and wood texture"
+	@echo "make report     results/report/index.html: every figure made so far beside its claim, checked in Chromium"
 	@echo "make check      regression-check every statistic against results/baselines/"
 	@echo "make bench      throughput figures"
 	@echo "make fig4.5, fig4.6, fig5.5, fig5.6, fig6.1, table1-cmlt   thesis figures (check-<target> against the baselines)"
