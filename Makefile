@@ -159,10 +159,11 @@ test-fast: deps all
 	$(TEST_BIN) --jobs 2 --filter '!(stat_*)/*' $(TEST_ARGS)
 
 # AddressSanitizer + UBSan on the fast tests. Criterion reports a leak but still counts the test
-# as passed, so the log is searched for sanitizer reports as well.
+# as passed, so the log is searched for sanitizer reports as well. Criterion's own runner leaks 48
+# bytes on full runs: tests/lsan.supp says how that is suppressed without hiding the project's leaks.
 test-san: deps
 	$(MAKE) SANITIZE=1 all
-	@set -o pipefail; ASAN_OPTIONS=detect_leaks=1 build-san/tests/run-tests --jobs 2 --filter '!(stat_*)/*' 2>&1 \
+	@set -o pipefail; ASAN_OPTIONS=detect_leaks=1:malloc_context_size=2 LSAN_OPTIONS=suppressions=tests/lsan.supp:print_suppressions=0 build-san/tests/run-tests --jobs 2 --filter '!(stat_*)/*' 2>&1 \
 	  | tee build-san/test-san.log
 	@! grep -q "LeakSanitizer\|runtime error\|AddressSanitizer" build-san/test-san.log \
 	  || (echo "sanitizer reports in build-san/test-san.log" >&2; exit 1)
