@@ -82,8 +82,8 @@ static void warn_unused(const char *prog, int argc, char **argv, const char *met
     bool multiplexed = !strcmp(method, "mmlt") || !strcmp(method, "pitp");
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i];
-        const char *only = !mcmc && listed(o, mcmc_only)                   ? "pssmlt and mmlt"
-                           : !strcmp(method, "pssmlt") && listed(o, mmlt_only) ? "mmlt"
+        const char *only = !mcmc && listed(o, mcmc_only)                   ? "pssmlt, mmlt and pitp"
+                           : !strcmp(method, "pssmlt") && listed(o, mmlt_only) ? "mmlt and pitp"
                            : multiplexed && listed(o, pssmlt_only) ? "pssmlt"
                                                                               : NULL;
         if (only) fprintf(stderr, "%s: warning: %s has no effect with --method %s (it applies to %s)\n", prog, o, method, only);
