@@ -1,6 +1,7 @@
 /* PSSMLT and MMLT drivers: seed pass, chain start by resampling, Metropolis iterations with
  * expected-value splatting, statistics. See mlt.h for the method definitions. */
 #include "mlt.h"
+#include "mlt_chain.h"
 #include "camera.h"
 #include "connect.h"
 #include "emitter.h"
@@ -93,19 +94,6 @@ static void seed_worker(int tid, void *p)
     free(w);
 }
 
-struct chain {
-    struct pss_sampler pss;
-    struct splat_list cur;
-    double f;
-    int k, tech;
-    double scale;      /* b_k / P(k): the chain's splat weight */
-    double xsum;       /* MCTLS: sum over techniques of the current numbers' targets */
-    double pending;    /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
-    bool xsum_valid;
-    struct ctrl_path *path; /* controlled steps and angle statistics: the current subpaths */
-    struct pitp_path *x;    /* PITP: the current path in its technique's form (swapped with a spare on accept) */
-};
-
 /* Per-thread MCTLS buffers (k + 2 splat lists each for proposal and current). */
 struct mctls_buf {
     double pi[MAX_PATH_LENGTH + 2], xpi[MAX_PATH_LENGTH + 2];
@@ -126,6 +114,13 @@ struct run_job {
     long *done;
     double t0;
     struct progress prog;
+    /* checkpoints (o->ckpt): the rendezvous, the run's normalisation, and on resume each thread's
+     * saved state */
+    struct ckpt_sync sync;
+    const struct mlt_result *res;
+    struct ckpt_buf *resume;
+    atomic_bool resume_bad;
+    double elapsed0; /* chain seconds before the resume */
 };
 
 static long pick_cdf(const double *cdf, long n, double u)
@@ -254,11 +249,22 @@ static void run_worker(int tid, void *p)
     bool track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     struct ctrl_sampler *cs = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *cs) : NULL;
     bool complete;
-    /* Start every chain from a seed sample resampled in proportion to its target. */
+    long n = 0;
+    struct ckpt_sync *sync = o->ckpt ? &j->sync : NULL;
+    struct mlt_thread ts = {ch, j->nk, &r, &n, &w->nonfinite, st, j->ctrl_fail[tid], img, j->angle ? &j->angle[tid] : NULL};
+    /* Start every chain from a seed sample resampled in proportion to its target, or from where a
+     * checkpoint left it. */
     for (int kk = 0; kk < j->nk; kk++) {
         struct chain *c = &ch[kk];
         c->k = kk + 1;
         c->scale = j->scale[kk];
+        if (j->resume) {
+            if (!(c->scale > 0)) continue; /* a length without light: never started */
+            pss_init(&c->pss, &o->pss, o->seed, 0);
+            if (pitp) c->x = xmalloc(sizeof *c->x);
+            if (track) c->path = xmalloc(sizeof *c->path);
+            continue;
+        }
         if (!j->cdf[kk]) continue;
         long i = pick_cdf(j->cdf[kk], o->seed_paths, rng_uniform(&r));
         pss_init(&c->pss, &o->pss, o->seed, seed_stream(i, j->nk, kk));
@@ -274,15 +280,22 @@ static void run_worker(int tid, void *p)
          * two threads starting from the same seed sample do not run identical chains. */
         rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)tid << 24) | (uint64_t)kk);
     }
+    bool bad = j->resume && !mlt_thread_load(&j->resume[tid], j->sc, &ts);
+    if (bad) atomic_store(&j->resume_bad, true);
+    if (j->resume && o->seconds <= 0) progress_add(&j->prog, n);
     long budget = o->mutations / o->threads + (tid < o->mutations % o->threads);
-    long n = 0;
     struct splat_list prop;
-    for (;; n++) {
+    for (; !bad; n++) {
         if ((n & 255) == 0 && interrupted()) break;
         if (o->seconds > 0) {
             if ((n & 255) == 0 && now_seconds() - j->t0 >= o->seconds) break;
         } else if (n >= budget) {
             break;
+        }
+        if (sync && (n & 255) == 0 && ckpt_sync_poll(sync)) {
+            sync->slot[tid].len = 0;
+            mlt_thread_save(&sync->slot[tid], j->sc, &ts);
+            ckpt_sync_arrive(sync);
         }
         int kk = 0;
         if (j->nk > 1) {
@@ -370,6 +383,12 @@ static void run_worker(int tid, void *p)
             else if (tid == 0) progress_set(&j->prog, (long)(1000 * (now_seconds() - j->t0)));
         }
     }
+    if (sync) {
+        /* before the final splats: a resumed run makes them itself */
+        sync->slot[tid].len = 0;
+        mlt_thread_save(&sync->slot[tid], j->sc, &ts);
+        ckpt_sync_finish(sync);
+    }
     for (int kk = 0; kk < j->nk; kk++) {
         pay_current(img, &ch[kk]);
         free(ch[kk].path);
@@ -383,6 +402,101 @@ static void run_worker(int tid, void *p)
     free(mb);
     free(ch);
     free(w);
+}
+
+/* A checkpoint: the normalisation, the chains' elapsed time, then every thread's state. Called
+ * by the rendezvous's last thread, or after the workers ended on an interruption. */
+static const char mlt_tag[8] = "MLTRUN1";
+
+static void mlt_save(void *p)
+{
+    struct run_job *j = p;
+    struct ckpt_ctl *ctl = j->o->ckpt;
+    struct ckpt_buf b = {0};
+    double elapsed = now_seconds() - j->t0;
+    ckpt_put(&b, mlt_tag, sizeof mlt_tag);
+    CKPT_PUT(&b, j->res->b_k);
+    CKPT_PUT(&b, j->res->b);
+    CKPT_PUT(&b, j->res->seed_seconds);
+    CKPT_PUT(&b, j->kcdf);
+    CKPT_PUT(&b, j->scale);
+    CKPT_PUT(&b, elapsed);
+    for (int i = 0; i < j->o->threads; i++) ckpt_put_buf(&b, &j->sync.slot[i]);
+    if (ckpt_write_file(ctl->path, &ctl->id, &b, ctl->err, sizeof ctl->err)) ctl->written = true;
+    ckpt_buf_free(&b);
+}
+
+/* The counterpart of mlt_save's header, and each thread's state located for its worker. */
+static bool resume_global(struct run_job *rj, char *err, size_t errlen)
+{
+    struct ckpt_buf *b = rj->o->ckpt->resume;
+    struct mlt_result *r = (struct mlt_result *)rj->res;
+    char tag[sizeof mlt_tag];
+    double elapsed = 0;
+    b->pos = 0;
+    ckpt_get(b, tag, sizeof tag);
+    CKPT_GET(b, r->b_k);
+    CKPT_GET(b, r->b);
+    CKPT_GET(b, r->seed_seconds);
+    CKPT_GET(b, rj->kcdf);
+    CKPT_GET(b, rj->scale);
+    CKPT_GET(b, elapsed);
+    rj->resume = xcalloc((size_t)rj->o->threads, sizeof *rj->resume);
+    for (int i = 0; i < rj->o->threads; i++) ckpt_get_buf(b, &rj->resume[i]);
+    if (b->short_read || memcmp(tag, mlt_tag, sizeof tag) || b->pos != b->len) {
+        snprintf(err, errlen, "the checkpoint's state does not fit this run (not an MCMC run of these options)");
+        free(rj->resume);
+        return false;
+    }
+    rj->elapsed0 = elapsed;
+    return true;
+}
+
+/* The seed pass and what it gives: b_k, the length selection and each length's seed-pool CDF. */
+static bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errlen)
+{
+    const struct mlt_opts *o = rj->o;
+    double t0 = now_seconds();
+
+    struct seed_job sj = {rj->sc, o, rj->nk, xmalloc((size_t)o->seed_paths * rj->nk * sizeof(double)), {0}};
+    progress_init(&sj.prog, "seed pass", o->seed_paths, o->progress);
+    parallel_run(o->threads, seed_worker, &sj);
+    progress_finish(&sj.prog);
+
+    double total = 0;
+    int live = 0;
+    for (int kk = 0; kk < rj->nk; kk++) {
+        double *cdf = xmalloc((size_t)o->seed_paths * sizeof(double)), acc = 0;
+        for (long i = 0; i < o->seed_paths; i++) cdf[i] = acc += sj.f[i * rj->nk + kk];
+        r->b_k[kk + 1] = acc / o->seed_paths;
+        total += r->b_k[kk + 1];
+        if (acc > 0) {
+            rj->cdf[kk] = cdf;
+            live++;
+        } else {
+            free(cdf);
+        }
+    }
+    /* Length k is chosen with probability P(k) (b_k / b, or uniform over the lengths with b_k > 0)
+     * and its splats weigh b_k / P(k), so every length is estimated without bias either way. */
+    for (int kk = 0; kk < rj->nk; kk++) {
+        double pk = !rj->cdf[kk] ? 0 : o->uniform_lengths ? 1.0 / live : r->b_k[kk + 1] / total;
+        rj->kcdf[kk + 1] = rj->kcdf[kk] + pk;
+        rj->scale[kk] = pk > 0 ? r->b_k[kk + 1] / pk : 0;
+    }
+    r->b = total;
+    r->seed_seconds = now_seconds() - t0;
+    if (!(total > 0)) {
+        if (emitters_count(rj->sc) == 0)
+            snprintf(err, errlen, "%s: the scene has no emitter: there is no light to sample", rj->sc->file);
+        else
+            snprintf(err, errlen, "%s: the seed pass of %ld paths found no light; raise --seed-paths", rj->sc->file, o->seed_paths);
+        for (int kk = 0; kk < rj->nk; kk++) free((void *)rj->cdf[kk]);
+        free(sj.f);
+        return false;
+    }
+    free(sj.f);
+    return true;
 }
 
 bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_result *r, char *err, size_t errlen)
@@ -403,50 +517,14 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         snprintf(err, errlen, "angle statistics need mmlt or pitp with MMLT large steps");
         return false;
     }
-    double t0 = now_seconds();
-
-    struct seed_job sj = {sc, &o, nk, xmalloc((size_t)o.seed_paths * nk * sizeof(double)), {0}};
-    progress_init(&sj.prog, "seed pass", o.seed_paths, o.progress);
-    parallel_run(T, seed_worker, &sj);
-    progress_finish(&sj.prog);
-
     struct run_job rj;
     memset(&rj, 0, sizeof rj);
     rj.sc = sc;
     rj.o = &o;
     rj.nk = nk;
-    double total = 0;
-    int live = 0;
-    for (int kk = 0; kk < nk; kk++) {
-        double *cdf = xmalloc((size_t)o.seed_paths * sizeof(double)), acc = 0;
-        for (long i = 0; i < o.seed_paths; i++) cdf[i] = acc += sj.f[i * nk + kk];
-        r->b_k[kk + 1] = acc / o.seed_paths;
-        total += r->b_k[kk + 1];
-        if (acc > 0) {
-            rj.cdf[kk] = cdf;
-            live++;
-        } else {
-            free(cdf);
-        }
-    }
-    /* Length k is chosen with probability P(k) (b_k / b, or uniform over the lengths with b_k > 0)
-     * and its splats weigh b_k / P(k), so every length is estimated without bias either way. */
-    for (int kk = 0; kk < nk; kk++) {
-        double pk = !rj.cdf[kk] ? 0 : o.uniform_lengths ? 1.0 / live : r->b_k[kk + 1] / total;
-        rj.kcdf[kk + 1] = rj.kcdf[kk] + pk;
-        rj.scale[kk] = pk > 0 ? r->b_k[kk + 1] / pk : 0;
-    }
-    r->b = total;
-    r->seed_seconds = now_seconds() - t0;
-    if (!(total > 0)) {
-        if (emitters_count(sc) == 0)
-            snprintf(err, errlen, "%s: the scene has no emitter: there is no light to sample", sc->file);
-        else
-            snprintf(err, errlen, "%s: the seed pass of %ld paths found no light; raise --seed-paths", sc->file, o.seed_paths);
-        for (int kk = 0; kk < nk; kk++) free((void *)rj.cdf[kk]);
-        free(sj.f);
-        return false;
-    }
+    rj.res = r;
+    bool resumed = o.ckpt && o.ckpt->resume;
+    if (resumed ? !resume_global(&rj, err, errlen) : !normalise(&rj, r, err, errlen)) return false;
     rj.img = xcalloc((size_t)T, sizeof(struct image *));
     rj.stats = xcalloc((size_t)T, sizeof(struct mlt_stats));
     rj.done = xcalloc((size_t)T, sizeof(long));
@@ -459,13 +537,31 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         rj.img[i] = img_create(W, H);
         rj.img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
-    rj.t0 = now_seconds();
+    rj.t0 = now_seconds() - rj.elapsed0;
     progress_init(&rj.prog, (const char *[]){"pssmlt", "mmlt", "pitp"}[o.method], o.seconds > 0 ? (long)(1000 * o.seconds) : o.mutations,
                   o.progress);
+    if (o.ckpt) ckpt_sync_init(&rj.sync, T, o.ckpt->every, mlt_save, &rj);
     parallel_run(T, run_worker, &rj);
     progress_finish(&rj.prog);
     r->seconds = now_seconds() - rj.t0;
     r->partial = interrupted();
+    if (o.ckpt) {
+        if (r->partial) mlt_save(&rj); /* Ctrl-C: every thread stored where it stopped */
+        ckpt_sync_destroy(&rj.sync);
+    }
+    free(rj.resume);
+    if (atomic_load(&rj.resume_bad)) {
+        snprintf(err, errlen, "the checkpoint's state does not fit this run's chains");
+        for (int i = 0; i < T; i++) img_destroy(rj.img[i]);
+        free(rj.img);
+        free(rj.stats);
+        free(rj.done);
+        free(rj.ctrl_fail);
+        if (rj.angle)
+            for (int i = 0; i < T; i++) angle_acc_free(&rj.angle[i]);
+        free(rj.angle);
+        return false;
+    }
     for (int i = 0; i < T; i++) r->mutations += rj.done[i];
     r->img = img_create(W, H);
     stats_clear(&r->stats);
@@ -492,7 +588,6 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     free(rj.img);
     free(rj.stats);
     free(rj.done);
-    free(sj.f);
     return true;
 }
 

@@ -16,6 +16,7 @@
 #define MLT_H
 
 #include "angle_change.h"
+#include "checkpoint.h"
 #include "controlled_step.h"
 #include "image.h"
 #include "mlt_stats.h"
@@ -55,6 +56,11 @@ struct mlt_opts {
     enum small_step small_step;
     bool angle_stats;            /* MMLT: angle change of every small step (angle_change.h) */
     bool ctrl_unit_ratio;        /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
+    /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a mutation
+     * budget a resumed run ends bit-identical to an uninterrupted one; with a time budget it runs
+     * for what the checkpointed run had left. The seed pass is not checkpointed (a checkpoint
+     * holds the normalisation it found). */
+    struct ckpt_ctl *ckpt;
 };
 
 struct mlt_result {

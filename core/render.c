@@ -54,7 +54,66 @@ struct job {
     struct pass_barrier passes;
     int spp;          /* passes done */
     double t0;
+    /* checkpoints (o->ckpt): slots and rendezvous; on resume each thread's saved state */
+    struct ckpt_sync sync;
+    struct ckpt_buf *resume;
+    atomic_bool resume_bad;
+    double next_ckpt; /* --time: passes are where checkpoints are taken */
 };
+
+/* Where a thread is: the next sample it takes (row, column, sample index). */
+struct mc_pos {
+    int y, x, i;
+};
+
+static void save_thread(struct ckpt_buf *b, const struct job *j, int tid, struct mc_pos at)
+{
+    b->len = 0;
+    CKPT_PUT(b, at);
+    CKPT_PUT(b, j->samples[tid]);
+    CKPT_PUT(b, j->nonfinite[tid]);
+    ckpt_put_image(b, j->img[tid]);
+}
+
+static bool load_thread(struct ckpt_buf *b, struct job *j, int tid, struct mc_pos *at)
+{
+    CKPT_GET(b, *at);
+    CKPT_GET(b, j->samples[tid]);
+    CKPT_GET(b, j->nonfinite[tid]);
+    ckpt_get_image(b, j->img[tid]);
+    return !b->short_read && b->pos == b->len;
+}
+
+static const char mc_tag[8] = "MCRUN01";
+
+/* A checkpoint: the current pass (= passes completed) and elapsed time, then every thread's slot. */
+static void mc_save(void *p)
+{
+    struct job *j = p;
+    struct ckpt_ctl *ctl = j->o->ckpt;
+    struct ckpt_buf b = {0};
+    double elapsed = now_seconds() - j->t0;
+    ckpt_put(&b, mc_tag, sizeof mc_tag);
+    CKPT_PUT(&b, j->first);
+    CKPT_PUT(&b, elapsed);
+    for (int i = 0; i < j->o->threads; i++) ckpt_put_buf(&b, &j->sync.slot[i]);
+    if (ckpt_write_file(ctl->path, &ctl->id, &b, ctl->err, sizeof ctl->err)) ctl->written = true;
+    ckpt_buf_free(&b);
+}
+
+static bool mc_resume_global(struct job *j, double *elapsed)
+{
+    struct ckpt_buf *b = j->o->ckpt->resume;
+    char tag[sizeof mc_tag];
+    b->pos = 0;
+    ckpt_get(b, tag, sizeof tag);
+    CKPT_GET(b, j->first);
+    j->spp = j->first;
+    CKPT_GET(b, *elapsed);
+    j->resume = xcalloc((size_t)j->o->threads, sizeof *j->resume);
+    for (int i = 0; i < j->o->threads; i++) ckpt_get_buf(b, &j->resume[i]);
+    return !b->short_read && !memcmp(tag, mc_tag, sizeof tag) && b->pos == b->len;
+}
 
 static void worker(int tid, void *p)
 {
@@ -63,37 +122,61 @@ static void worker(int tid, void *p)
     const struct render_opts *o = j->o;
     struct path_ctx pc = {.sc = sc, .max_length = o->max_length, .min_length = o->min_length, .only_s = o->only_s, .only_t = o->only_t};
     struct scratch *w = xmalloc(sizeof *w);
-    w->nonfinite = 0;
     struct image *img = j->img[tid];
-    int W = camera_film_width(&sc->cam), H = camera_film_height(&sc->cam);
+    int W = camera_film_width(&sc->cam), H = camera_film_height(&sc->cam), T = o->threads;
     struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H};
-    long done = 0;
+    struct ckpt_sync *sync = o->ckpt ? &j->sync : NULL;
+    struct mc_pos at = {tid, 0, j->first};
+    bool bad = j->resume && !load_thread(&j->resume[tid], j, tid, &at);
+    if (bad) atomic_store(&j->resume_bad, true);
+    long done = j->samples[tid];
+    w->nonfinite = j->nonfinite[tid];
+    if (o->seconds <= 0) progress_add(&j->prog, (at.y - tid) / T);
     do {
         /* Ctrl-C is honoured within a pixel (every 4096 samples), not only between rows: a row of
          * a high-spp render can take minutes. */
-        bool stop = false;
-        for (int y = tid; y < H && !stop; y += o->threads) {
-            for (int x = 0; x < W && !stop; x++) {
-                s.x0 = x;
-                s.y0 = y;
-                for (int i = j->first; i < j->first + j->count; i++) {
-                    if (((i - j->first) & 4095) == 0 && (stop = interrupted())) break;
-                    rng_seed(&s.r, o->seed, ((uint64_t)y * W + x) * j->key + (uint64_t)i);
+        while (at.y < H && !bad) {
+            while (at.x < W) {
+                s.x0 = at.x;
+                s.y0 = at.y;
+                for (; at.i < j->first + j->count; at.i++) {
+                    if (((at.i - j->first) & 4095) == 0 && interrupted()) goto stopped;
+                    rng_seed(&s.r, o->seed, ((uint64_t)at.y * W + at.x) * j->key + (uint64_t)at.i);
                     if (o->method == METHOD_PT) pt_sample(&pc, &s.base, w, img);
                     else bdpt_sample(&pc, &s.base, w, img);
                     done++;
                 }
+                at.x++;
+                at.i = j->first;
+                if (sync && o->seconds <= 0 && ckpt_sync_poll(sync)) {
+                    j->samples[tid] = done;
+                    j->nonfinite[tid] = w->nonfinite;
+                    save_thread(&sync->slot[tid], j, tid, at);
+                    ckpt_sync_arrive(sync);
+                }
             }
+            at.y += T;
+            at.x = 0;
             if (o->seconds <= 0) progress_add(&j->prog, 1);
         }
-    } while (o->seconds > 0 && pass_barrier_arrive(&j->passes));
-    j->nonfinite[tid] += w->nonfinite;
-    j->samples[tid] += done;
+    stopped:
+        j->samples[tid] = done;
+        j->nonfinite[tid] = w->nonfinite;
+        /* every thread meets the others after a pass, interrupted or not; an interrupted pass
+         * ends the run, and `at` keeps where this thread stopped in it */
+        if (o->seconds <= 0 || !pass_barrier_arrive(&j->passes)) break;
+        at = (struct mc_pos){tid, 0, j->first}; /* next_pass set j->first */
+    } while (true);
+    if (sync) {
+        save_thread(&sync->slot[tid], j, tid, at);
+        ckpt_sync_finish(sync);
+    }
     free(w);
 }
 
 /* Called between passes by one thread while the others wait: another pass only if it should end
- * within the budget at the mean pass time so far. */
+ * within the budget at the mean pass time so far. A due checkpoint is taken here, where every
+ * thread stands at the start of the next pass. */
 static bool next_pass(void *p)
 {
     struct job *j = p;
@@ -102,6 +185,12 @@ static bool next_pass(void *p)
     progress_set(&j->prog, (long)(1000 * elapsed));
     if (interrupted() || j->spp >= TIME_MODE_MAX_SPP || elapsed * (j->spp + 1) / j->spp > j->o->seconds) return false;
     j->first = j->spp;
+    struct ckpt_ctl *ctl = j->o->ckpt;
+    if (ctl && ctl->every > 0 && now_seconds() >= j->next_ckpt) {
+        for (int i = 0; i < j->o->threads; i++) save_thread(&j->sync.slot[i], j, i, (struct mc_pos){i, 0, j->first});
+        mc_save(j);
+        j->next_ckpt = now_seconds() + ctl->every;
+    }
     return true;
 }
 
@@ -116,14 +205,23 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         j.img[i] = img_create(W, H);
         j.img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
-    double t0 = now_seconds();
-    j.t0 = t0;
+    double t0 = now_seconds(), elapsed0 = 0;
+    if (o->ckpt && o->ckpt->resume && !mc_resume_global(&j, &elapsed0)) atomic_store(&j.resume_bad, true);
+    if (o->ckpt) {
+        /* periodic checkpoints poll per pixel with a spp budget, and are taken between passes
+         * with a time budget (next_pass) */
+        ckpt_sync_init(&j.sync, T, o->seconds > 0 ? 0 : o->ckpt->every, mc_save, &j);
+        j.next_ckpt = t0 + o->ckpt->every;
+    }
+    j.t0 = t0 - elapsed0;
     int spp = o->spp;
-    if (o->seconds > 0) {
+    if (atomic_load(&j.resume_bad)) {
+        progress_init(&j.prog, method_name(o->method), 1, false);
+        spp = 1; /* no work: the caller reports the mismatch */
+    } else if (o->seconds > 0) {
         progress_init(&j.prog, method_name(o->method), (long)(1000 * o->seconds), o->progress);
         j.count = 1;
         j.key = TIME_MODE_MAX_SPP;
-        j.first = 0;
         pass_barrier_init(&j.passes, T, next_pass, &j);
         parallel_run(T, worker, &j);
         pass_barrier_destroy(&j.passes);
@@ -135,6 +233,12 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         parallel_run(T, worker, &j);
     }
     progress_finish(&j.prog);
+    st->resume_failed = atomic_load(&j.resume_bad);
+    if (o->ckpt) {
+        if (interrupted()) mc_save(&j); /* Ctrl-C: every thread stored where it stopped */
+        ckpt_sync_destroy(&j.sync);
+    }
+    free(j.resume);
     struct image *out = img_create(W, H);
     st->nonfinite = 0;
     st->samples = 0;
@@ -144,7 +248,7 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         st->samples += j.samples[i];
         img_destroy(j.img[i]);
     }
-    st->seconds = now_seconds() - t0;
+    st->seconds = now_seconds() - j.t0;
     st->spp = spp;
     st->partial = interrupted();
     free(j.img);

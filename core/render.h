@@ -8,6 +8,7 @@
 #ifndef RENDER_H
 #define RENDER_H
 
+#include "checkpoint.h"
 #include "image.h"
 #include "scene.h"
 #include <stdint.h>
@@ -24,6 +25,10 @@ struct render_opts {
     int min_length; /* paths shorter than this (segments) are left out */
     bool progress;
     int only_s, only_t; /* BDPT: one technique, unweighted (only_t > 0) */
+    /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a spp budget
+     * a resumed run ends bit-identical to an uninterrupted one; with a time budget it continues
+     * the passes with what the budget had left. */
+    struct ckpt_ctl *ckpt;
 };
 
 struct render_stats {
@@ -32,6 +37,7 @@ struct render_stats {
     double seconds;
     long nonfinite;
     bool partial; /* interrupted: rows not reached (in the last pass, under a time budget) lack samples */
+    bool resume_failed; /* the checkpoint's state did not fit this run: nothing was rendered */
 };
 
 /* Returns the image in final units (average radiance per pixel). */

@@ -1,6 +1,7 @@
 /* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
  * MCMC methods, PREFIX.csv with acceptance statistics. */
 #include "accel.h"
+#include "checkpoint.h"
 #include "camera.h"
 #include "cli.h"
 #include "emitter.h"
@@ -30,6 +31,12 @@ static const char *usage =
     "  --resolution WxH     override the camera resolution (same horizontal fov)\n"
     "  --out PREFIX         output prefix (default out)\n"
     "  --quiet              no progress bar\n"
+    "  --checkpoint SECONDS write the run's whole state to PREFIX.ckpt every SECONDS (atomically;\n"
+    "                       Ctrl-C always leaves one); the seed pass of pssmlt/mmlt/pitp is not\n"
+    "                       checkpointed\n"
+    "  --resume FILE        continue the run FILE holds; give the same scene and options (it refuses\n"
+    "                       others); with an --spp budget the result is bit-identical to an\n"
+    "                       uninterrupted run, with --time the run gets what its budget had left\n"
     "  --embree-isa ISA     Embree's kernels: sse2, sse4.2, avx, avx2 or avx512 (those this CPU\n"
     "                       runs; default: the best, or the environment's PSS_EMBREE_ISA): hit\n"
     "                       points, so images, differ in the last bits between kernels\n"
@@ -51,7 +58,8 @@ static const char *usage =
     "Prints one summary line: method, samples, seconds, samples/s.\n";
 
 struct args {
-    const char *scene, *out;
+    const char *scene, *out, *resume;
+    double checkpoint;
     char method[16];
     struct render_opts mc;
     struct mlt_opts mlt;
@@ -124,6 +132,10 @@ static void parse(int argc, char **argv, struct args *a)
                 cli_fail(prog, "--resolution: expected WxH with positive integers, got '%s'", v);
         } else if (!strcmp(o, "--out")) {
             a->out = VALUE;
+        } else if (!strcmp(o, "--checkpoint")) {
+            a->checkpoint = cli_double(prog, o, VALUE, 1e-3, 1e9);
+        } else if (!strcmp(o, "--resume")) {
+            a->resume = VALUE;
         } else if (!strcmp(o, "--quiet")) {
             a->mc.progress = a->mlt.progress = false;
         } else if (!strcmp(o, "--embree-isa")) {
@@ -248,6 +260,26 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     return ok;
 }
 
+/* Every option that changes the numbers a run produces, as one line: a checkpoint resumes only
+ * under the same. */
+static void options_text(const struct args *a, const struct scene *sc, char *buf, size_t n)
+{
+    const char *isa = accel_isa();
+    if (!isa) /* Embree's own choice: the best this machine runs */
+        for (const char *const *i = accel_isas(); *i; i++) isa = *i;
+    int len = snprintf(buf, n, "method=%s spp=%d time=%g seed=%llu threads=%d max_length=%d min_length=%d resolution=%dx%d isa=%s",
+                       a->method, a->mc.spp, a->mc.seconds, (unsigned long long)a->mc.seed, a->mc.threads,
+                       a->mc.max_length, a->mc.min_length, sc->cam.width, sc->cam.height, isa ? isa : "?");
+    if (strcmp(a->method, "pt") && strcmp(a->method, "bdpt") && len > 0 && (size_t)len < n) {
+        const struct mlt_opts *m = &a->mlt;
+        snprintf(buf + len, n - (size_t)len,
+                 " p_large=%g kernel=%d sigma=%g rap=%d rap_resolution=%d cdc=%d seed_paths=%ld large_step=%d "
+                 "hybrid_length=%d uniform_lengths=%d max_heuristic=%d small_step=%d angle_stats=%d",
+                 m->p_large, m->pss.kernel, m->pss.sigma, m->pss.rap, m->pss.rap_resolution, m->pss.cdc, m->seed_paths,
+                 m->large_step, m->hybrid_length, m->uniform_lengths, m->max_heuristic, m->small_step, m->angle_stats);
+    }
+}
+
 int main(int argc, char **argv)
 {
     struct args a = {.out = "out", .method = "bdpt"};
@@ -279,12 +311,34 @@ int main(int argc, char **argv)
     if (a.mc.spp < 0) a.mc.spp = sc->spp > 0 ? sc->spp : 16;
     if (a.mc.max_length < 0) a.mc.max_length = sc->max_length;
     if (a.mc.progress && !isatty(2)) a.mc.progress = a.mlt.progress = false;
+    /* Checkpoints are always armed: Ctrl-C leaves one even without --checkpoint. */
+    char ckpt_path[4096], opts[1024];
+    snprintf(ckpt_path, sizeof ckpt_path, "%s.ckpt", a.out);
+    options_text(&a, sc, opts, sizeof opts);
+    struct ckpt_ctl ctl = {.path = ckpt_path, .every = a.checkpoint, .id = {ckpt_build_hash(), ckpt_scene_hash(sc), opts}};
+    struct ckpt_buf resume = {0};
+    if (a.resume) {
+        if (!ckpt_read_file(a.resume, &ctl.id, &resume, err, sizeof err)) {
+            fprintf(stderr, "render: --resume %s\n", err);
+            scene_free(sc);
+            return 2;
+        }
+        ctl.resume = &resume;
+    }
+    a.mc.ckpt = a.mlt.ckpt = &ctl;
     bool ok, partial;
     interrupt_install();
     if (!strcmp(a.method, "pt") || !strcmp(a.method, "bdpt")) {
         method_parse(a.method, &a.mc.method);
         struct render_stats st;
         struct image *img = render_mc(sc, &a.mc, &st);
+        if (st.resume_failed) {
+            fprintf(stderr, "render: --resume %s: the checkpoint's state does not fit this run\n", a.resume);
+            img_destroy(img);
+            ckpt_buf_free(&resume);
+            scene_free(sc);
+            return 2;
+        }
         ok = img_write_exr_png(img, a.out, err, sizeof err);
         partial = st.partial;
         if (ok)
@@ -303,9 +357,10 @@ int main(int argc, char **argv)
         struct mlt_result r;
         ok = mlt_render(sc, &a.mlt, &r, err, sizeof err);
         if (!ok) {
-            fprintf(stderr, "%s\n", err);
+            fprintf(stderr, "%s%s\n", a.resume ? "render: --resume: " : "", err);
+            ckpt_buf_free(&resume);
             scene_free(sc);
-            return 1;
+            return a.resume ? 2 : 1;
         }
         partial = r.partial;
         ok = img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
@@ -317,6 +372,9 @@ int main(int argc, char **argv)
         mlt_result_free(&r);
     }
     if (!ok) fprintf(stderr, "%s\n", err);
+    if (ctl.err[0]) fprintf(stderr, "render: warning: %s\n", ctl.err);
+    else if (partial && ctl.written) fprintf(stderr, "render: interrupted; continue with --resume %s\n", ckpt_path);
+    ckpt_buf_free(&resume);
     scene_free(sc);
     return !ok ? 1 : partial ? 130 : 0;
 }

@@ -3,6 +3,7 @@
 #include <criterion/criterion.h>
 
 #include "image.h"
+#include "tmpdir.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,20 +17,9 @@
 
 static char dir[64];
 
-static void make_dir(void)
-{
-    snprintf(dir, sizeof dir, "/tmp/cli-test-XXXXXX");
-    cr_assert(mkdtemp(dir));
-}
-
+static void make_dir(void) { tmpdir_make(dir, sizeof dir, "cli-test"); }
 /* Every test of the suite works in its own directory, removed afterwards. */
-static void remove_dir(void)
-{
-    if (!dir[0]) return;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);
-}
+static void remove_dir(void) { tmpdir_remove(dir); }
 TestSuite(cli, .fini = remove_dir);
 
 static void read_text(const char *path, char *buf, size_t n)

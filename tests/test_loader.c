@@ -2,6 +2,8 @@
  * meshes load, and every malformed input in tests/data/bad gives its one-line message. */
 #include <criterion/criterion.h>
 
+#include "tmpdir.h"
+
 #include "accel.h"
 #include "camera.h"
 #include "image.h"
@@ -152,18 +154,8 @@ Test(loader, furnace_faces_inward)
 /* A temporary directory holding generated scenes and meshes; removed at teardown. */
 static char tmpdir[256];
 
-static void mk_tmp(void)
-{
-    snprintf(tmpdir, sizeof tmpdir, "/tmp/loader-test-XXXXXX");
-    cr_assert(mkdtemp(tmpdir));
-}
-
-static void rm_tmp(void)
-{
-    char cmd[300];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
-    cr_assert_eq(system(cmd), 0);
-}
+static void mk_tmp(void) { tmpdir_make(tmpdir, sizeof tmpdir, "loader-test"); }
+static void rm_tmp(void) { tmpdir_remove(tmpdir); }
 
 static void write_file(const char *name, const void *data, size_t n)
 {

@@ -2,6 +2,8 @@
  * bilinear lookup with wrap-around, and the uv of quads, cubes and spheres. */
 #include <criterion/criterion.h>
 
+#include "tmpdir.h"
+
 #include "accel.h"
 #include "mesh_io.h"
 #include "oiio.h"
@@ -15,17 +17,8 @@
 static bool near3(vec3 a, vec3 b, double eps) { return vlen(vsub(a, b)) < eps; }
 
 static char tmpdir[256];
-static void mk_tmp(void)
-{
-    snprintf(tmpdir, sizeof tmpdir, "/tmp/texture-test-XXXXXX");
-    cr_assert(mkdtemp(tmpdir));
-}
-static void rm_tmp(void)
-{
-    char cmd[300];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
-    cr_assert_eq(system(cmd), 0);
-}
+static void mk_tmp(void) { tmpdir_make(tmpdir, sizeof tmpdir, "texture-test"); }
+static void rm_tmp(void) { tmpdir_remove(tmpdir); }
 
 /* A scene in tmpdir with the given primitives (bsdf "t": lambert with albedo TEX) and a camera. */
 static struct scene *tmp_scene(const char *tex, const char *prims, bool ready)
