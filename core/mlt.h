@@ -21,6 +21,7 @@
 #include "mlt_stats.h"
 #include "pss.h"
 #include "scene.h"
+#include "tech_image.h"
 
 /* MLT_PITP: MMLT with the path-invariant technique perturbation before every small step (thesis
  * §5.2, core/pitp.h); every MMLT option applies. */
@@ -55,6 +56,7 @@ struct mlt_opts {
     enum small_step small_step;
     bool angle_stats;            /* MMLT: angle change of every small step (angle_change.h) */
     bool ctrl_unit_ratio;        /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
+    int technique_k;             /* > 0: per-technique images of this path length (pssmlt, mmlt; tech_image.h) */
 };
 
 struct mlt_result {
@@ -68,6 +70,7 @@ struct mlt_result {
     bool partial;          /* interrupted: fewer mutations than asked (the image stays unbiased) */
     struct angle_acc *angle; /* with angle_stats */
     long ctrl_fail_forward, ctrl_fail_reverse; /* controlled steps: impossible inversions */
+    struct tech_acc *tech;   /* with technique_k */
 };
 
 /* Returns false (with a message) when the seed pass finds no light at all. */
