@@ -189,13 +189,14 @@ bool tech_acc_write(const struct tech_acc *a, const char *prefix, const char *he
     char path[4200];
     size_t n = (size_t)a->w * a->h;
     struct image *sum = img_create(a->w, a->h), *cnt = img_create(a->w, a->h);
-    double maxc = 0, lum = 0;
+    double mcount = 0, lum = 0;
     for (int t = 1; t <= a->k + 1; t++) {
         img_accumulate(sum, a->contrib[t], 1.0);
-        for (size_t p = 0; p < n; p++) maxc = fmax(maxc, a->count[t][p]);
+        for (size_t p = 0; p < n; p++) mcount += a->count[t][p];
     }
     for (size_t p = 0; p < n; p++) lum += luminance((rgb){sum->px[3 * p], sum->px[3 * p + 1], sum->px[3 * p + 2]});
     lum /= (double)n;
+    mcount /= (double)n;
     bool ok = true;
     for (int t = 1; t <= a->k + 1 && ok; t++) {
         for (size_t p = 0; p < n; p++) cnt->px[3 * p] = cnt->px[3 * p + 1] = cnt->px[3 * p + 2] = a->count[t][p];
@@ -206,7 +207,7 @@ bool tech_acc_write(const struct tech_acc *a, const char *prefix, const char *he
         snprintf(path, sizeof path, "%.4000s.count-t%d.exr", prefix, t);
         ok = ok && img_write_exr(cnt, 1.0, path, err, errlen);
         snprintf(path, sizeof path, "%.4000s.count-t%d.png", prefix, t);
-        ok = ok && img_write_png(cnt, maxc > 0 ? 1.0 / maxc : 1.0, path, err, errlen);
+        ok = ok && img_write_png(cnt, mcount > 0 ? 0.5 / mcount : 1.0, path, err, errlen);
     }
     img_destroy(sum);
     img_destroy(cnt);

@@ -8,7 +8,7 @@
 #                                 mean contribution images of all OTHER runs of both methods (MMLT's
 #                                 own contribution images are its counts times a constant);
 #   OUTDIR/technique-images.png   seed 1: rows MMLT contribution, MMLT samples, PSSMLT contribution,
-#                                 PSSMLT samples; one column per technique (s, t).
+#                                 PSSMLT samples; one column per technique, labelled (s, t).
 # usage: ch6-tech.sh BINDIR SCENE K SEEDS OUTDIR [bin/render options...]   (BINDIR holds render, ch6_tech)
 set -euo pipefail
 [ $# -ge 5 ] || { echo "usage: ch6-tech.sh BINDIR SCENE K SEEDS OUTDIR [bin/render options...]" >&2; exit 2; }
@@ -75,9 +75,9 @@ mv -f "$tmp" "$out/tech.md"
 
 # The montage of seed 1.
 args=()
-for row in "mmlt tech MMLT contribution" "mmlt count MMLT samples" "pssmlt tech PSSMLT contribution" "pssmlt count PSSMLT samples"; do
+for row in "mmlt tech MMLT contrib." "mmlt count MMLT samples" "pssmlt tech PSSMLT contrib." "pssmlt count PSSMLT samples"; do
   read -r m kind label <<<"$row"
-  for t in $(seq 1 $((k + 1))); do args+=("$out/$m-s1.$kind-t$t.png" "$label (s,t)=($((k + 1 - t)),$t)"); done
+  for t in $(seq 1 $((k + 1))); do args+=("$out/$m-s1.$kind-t$t.png" "$label ($((k + 1 - t)),$t)"); done
 done
 read -r W H < <(oiiotool --info "$out/mmlt-s1.png" | awk '{for (i = 1; i < NF; i++) if ($(i + 1) == "x") {sub(",", "", $(i + 2)); print $i, $(i + 2); exit}}')
 bash "$here/ch4-montage.sh" "$out/technique-images.png" $((k + 1)) "${W}x${H}" "${args[@]}"
