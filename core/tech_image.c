@@ -125,7 +125,7 @@ void tech_follow(const struct tech_acc *a, int blk, struct tech_follow *o)
 {
     memset(o, 0, sizeof *o);
     int nt = a->k + 1, bw = (a->w + blk - 1) / blk, bh = (a->h + blk - 1) / blk;
-    double ns = 0, cs = 0, n[TECH_MAX] = {0}, c[TECH_MAX] = {0};
+    double ns = 0, cs = 0, *n = o->samples, *c = o->contrib;
     for (int t = 1; t <= nt; t++) {
         for (size_t p = 0; p < (size_t)a->w * a->h; p++) {
             n[t] += a->count[t][p];
@@ -134,7 +134,6 @@ void tech_follow(const struct tech_acc *a, int blk, struct tech_follow *o)
         ns += n[t];
         cs += c[t];
     }
-    o->tv = 0;
     for (int t = 1; t <= nt; t++) {
         o->sample_share[t] = ns > 0 ? n[t] / ns : NAN;
         o->contrib_share[t] = cs > 0 ? c[t] / cs : NAN;
@@ -174,14 +173,9 @@ void tech_acc_write_csv(FILE *f, const struct tech_acc *a, int blk)
     fprintf(f, "# length %d\n# chain_samples %ld\n# block %d\n# tv %.6g\n# r %.6g\n# r_cells %d\n", a->k, a->samples, blk,
             fo.tv, fo.r, fo.cells);
     fprintf(f, "technique,s,t,samples,sample_share,contribution,contribution_share\n");
-    for (int t = 1; t <= a->k + 1; t++) {
-        double n = 0, c = 0;
-        for (size_t p = 0; p < (size_t)a->w * a->h; p++) {
-            n += a->count[t][p];
-            c += luminance((rgb){a->contrib[t]->px[3 * p], a->contrib[t]->px[3 * p + 1], a->contrib[t]->px[3 * p + 2]});
-        }
-        fprintf(f, "%d,%d,%d,%.0f,%.6g,%.9g,%.6g\n", t, a->k + 1 - t, t, n, fo.sample_share[t], c, fo.contrib_share[t]);
-    }
+    for (int t = 1; t <= a->k + 1; t++)
+        fprintf(f, "%d,%d,%d,%.0f,%.6g,%.9g,%.6g\n", t, a->k + 1 - t, t, fo.samples[t], fo.sample_share[t], fo.contrib[t],
+                fo.contrib_share[t]);
 }
 
 bool tech_acc_write(const struct tech_acc *a, const char *prefix, const char *header, char *err, size_t errlen)

@@ -63,6 +63,7 @@ void tech_acc_step(struct tech_acc *a, double acc_prob, bool accepted, double f,
  * (block of blk x blk pixels, technique) with samples and contribution, of the block's sample share
  * and contribution share of that technique (the paper's RGB visualisation made a number). */
 struct tech_follow {
+    double samples[TECH_MAX], contrib[TECH_MAX]; /* totals over the image (contribution: luminance) */
     double sample_share[TECH_MAX], contrib_share[TECH_MAX];
     double tv, r;
     int cells;
