@@ -406,7 +406,9 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     }
     if (o.technique_k && (o.method == MLT_PITP || o.large_step != LARGE_MMLT || o.technique_k < o.min_length ||
                           o.technique_k > o.max_length)) {
-        snprintf(err, errlen, "technique images need pssmlt or mmlt with MMLT large steps and a length within --min-length..--max-length");
+        snprintf(err, errlen,
+                 "technique images need pssmlt or mmlt with MMLT large steps and a length within "
+                 "--min-length..--max-length");
         return false;
     }
     if (o.angle_stats && (o.method == MLT_PSSMLT || o.large_step != LARGE_MMLT)) {

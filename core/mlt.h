@@ -70,7 +70,7 @@ struct mlt_result {
     bool partial;          /* interrupted: fewer mutations than asked (the image stays unbiased) */
     struct angle_acc *angle; /* with angle_stats */
     long ctrl_fail_forward, ctrl_fail_reverse; /* controlled steps: impossible inversions */
-    struct tech_acc *tech;   /* with technique_k */
+    struct tech_acc *tech;                     /* with technique_k */
 };
 
 /* Returns false (with a message) when the seed pass finds no light at all. */

@@ -32,7 +32,8 @@ void tech_acc_free(struct tech_acc *a)
 struct tech_acc *tech_acc_alloc(int threads, int k, int w, int h, bool tent)
 {
     struct tech_acc *a = xcalloc((size_t)threads, sizeof *a);
-    for (int i = 0; i < threads; i++) tech_acc_init(&a[i], k, w, h, tent);
+    for (int i = 0; i < threads; i++)
+        tech_acc_init(&a[i], k, w, h, tent);
     return a;
 }
 
@@ -44,7 +45,8 @@ struct tech_acc *tech_acc_reduce(struct tech_acc *pt, int threads, double scale)
     for (int i = 0; i < threads; i++) { /* fixed order: reproducible sums */
         for (int t = 1; t <= r->k + 1; t++) {
             img_accumulate(r->contrib[t], pt[i].contrib[t], scale);
-            for (size_t p = 0; p < n; p++) r->count[t][p] += pt[i].count[t][p];
+            for (size_t p = 0; p < n; p++)
+                r->count[t][p] += pt[i].count[t][p];
         }
         r->samples += pt[i].samples;
         tech_acc_free(&pt[i]);
@@ -61,7 +63,8 @@ void tech_acc_destroy(struct tech_acc *a)
 }
 
 /* PSSMLT: the length-k connections of the subpaths in w, as bdpt_splats weights them. */
-static void split_bdpt(const struct tech_acc *a, const struct path_ctx *pc, const struct scratch *w, struct tech_split *sp)
+static void split_bdpt(const struct tech_acc *a, const struct path_ctx *pc, const struct scratch *w,
+                       struct tech_split *sp)
 {
     struct connection c;
     for (int t = 1; t <= a->k + 1; t++) {
@@ -129,7 +132,8 @@ void tech_follow(const struct tech_acc *a, int blk, struct tech_follow *o)
     for (int t = 1; t <= nt; t++) {
         for (size_t p = 0; p < (size_t)a->w * a->h; p++) {
             n[t] += a->count[t][p];
-            c[t] += luminance((rgb){a->contrib[t]->px[3 * p], a->contrib[t]->px[3 * p + 1], a->contrib[t]->px[3 * p + 2]});
+            c[t] +=
+                luminance((rgb){a->contrib[t]->px[3 * p], a->contrib[t]->px[3 * p + 1], a->contrib[t]->px[3 * p + 2]});
         }
         ns += n[t];
         cs += c[t];
@@ -170,12 +174,12 @@ void tech_acc_write_csv(FILE *f, const struct tech_acc *a, int blk)
 {
     struct tech_follow fo;
     tech_follow(a, blk, &fo);
-    fprintf(f, "# length %d\n# chain_samples %ld\n# block %d\n# tv %.6g\n# r %.6g\n# r_cells %d\n", a->k, a->samples, blk,
-            fo.tv, fo.r, fo.cells);
+    fprintf(f, "# length %d\n# chain_samples %ld\n# block %d\n# tv %.6g\n# r %.6g\n# r_cells %d\n", a->k, a->samples,
+            blk, fo.tv, fo.r, fo.cells);
     fprintf(f, "technique,s,t,samples,sample_share,contribution,contribution_share\n");
     for (int t = 1; t <= a->k + 1; t++)
-        fprintf(f, "%d,%d,%d,%.0f,%.6g,%.9g,%.6g\n", t, a->k + 1 - t, t, fo.samples[t], fo.sample_share[t], fo.contrib[t],
-                fo.contrib_share[t]);
+        fprintf(f, "%d,%d,%d,%.0f,%.6g,%.9g,%.6g\n", t, a->k + 1 - t, t, fo.samples[t], fo.sample_share[t],
+                fo.contrib[t], fo.contrib_share[t]);
 }
 
 bool tech_acc_write(const struct tech_acc *a, const char *prefix, const char *header, char *err, size_t errlen)
@@ -186,14 +190,17 @@ bool tech_acc_write(const struct tech_acc *a, const char *prefix, const char *he
     double mcount = 0, lum = 0;
     for (int t = 1; t <= a->k + 1; t++) {
         img_accumulate(sum, a->contrib[t], 1.0);
-        for (size_t p = 0; p < n; p++) mcount += a->count[t][p];
+        for (size_t p = 0; p < n; p++)
+            mcount += a->count[t][p];
     }
-    for (size_t p = 0; p < n; p++) lum += luminance((rgb){sum->px[3 * p], sum->px[3 * p + 1], sum->px[3 * p + 2]});
+    for (size_t p = 0; p < n; p++)
+        lum += luminance((rgb){sum->px[3 * p], sum->px[3 * p + 1], sum->px[3 * p + 2]});
     lum /= (double)n;
     mcount /= (double)n;
     bool ok = true;
     for (int t = 1; t <= a->k + 1 && ok; t++) {
-        for (size_t p = 0; p < n; p++) cnt->px[3 * p] = cnt->px[3 * p + 1] = cnt->px[3 * p + 2] = a->count[t][p];
+        for (size_t p = 0; p < n; p++)
+            cnt->px[3 * p] = cnt->px[3 * p + 1] = cnt->px[3 * p + 2] = a->count[t][p];
         snprintf(path, sizeof path, "%.4000s.tech-t%d.exr", prefix, t);
         ok = img_write_exr(a->contrib[t], 1.0, path, err, errlen);
         snprintf(path, sizeof path, "%.4000s.tech-t%d.png", prefix, t);

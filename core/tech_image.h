@@ -74,8 +74,8 @@ void tech_follow(const struct tech_acc *a, int blk, struct tech_follow *out);
 void tech_acc_write_csv(FILE *f, const struct tech_acc *a, int blk);
 /* PREFIX.tech-tT.exr (contribution, RGB) and PREFIX.count-tT.exr (samples, grey) for every t, PNGs of
  * both exposed alike (0.5 / the mean over pixels of the sum over t, of the contributions' luminance
- * and of the counts: a technique's two PNGs look alike where its counts follow its contributions) and PREFIX.tech.csv with `header` on top (follow statistics over 8 x 8
- * blocks). All written atomically. */
+ * and of the counts: a technique's two PNGs look alike where its counts follow its contributions) and PREFIX.tech.csv
+ * with `header` on top (follow statistics over 8 x 8 blocks). All written atomically. */
 bool tech_acc_write(const struct tech_acc *a, const char *prefix, const char *header, char *err, size_t errlen);
 
 #endif

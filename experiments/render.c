@@ -66,7 +66,8 @@ struct args {
  * which would quietly change an experiment. */
 static const char *const mcmc_only[] = {"--p-large", "--kernel", "--sigma", "--rap", "--rap-resolution", "--cdc",
                                         "--seed-paths", "--large-step", "--hybrid-length", "--uniform-lengths",
-                                        "--max-heuristic", "--small-step", "--angle-stats", "--technique-images", NULL};
+                                        "--max-heuristic", "--small-step", "--angle-stats",
+                                        "--technique-images", NULL};
 static const char *const mmlt_only[] = {"--large-step", "--hybrid-length", "--uniform-lengths", "--small-step",
                                         "--angle-stats", NULL};
 static const char *const pssmlt_only[] = {"--max-heuristic", NULL};
@@ -195,7 +196,8 @@ static void parse(int argc, char **argv, struct args *a)
     }
     warn_unused(prog, argc, argv, a->method);
     if (a->mlt.technique_k && !strcmp(a->method, "pitp"))
-        cli_fail(prog, "--technique-images: pssmlt and mmlt only (PITP's perturbation moves a state between techniques)");
+        cli_fail(prog,
+                 "--technique-images: pssmlt and mmlt only (PITP's perturbation moves a state between techniques)");
 }
 
 /* PREFIX.angle.exr (mean angle change per pixel, radians) and PREFIX.angle.csv (per length). */
@@ -223,7 +225,9 @@ static bool write_angle(const struct args *a, const struct mlt_result *r, char *
 static bool write_tech(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
     char head[8192];
-    snprintf(head, sizeof head, "# render %s --method %s --technique-images %d\n# commit %s\n# seed %llu\n# mutations %ld\n# seconds %.3f\n",
+    snprintf(head, sizeof head,
+             "# render %s --method %s --technique-images %d\n# commit %s\n# seed %llu\n"
+             "# mutations %ld\n# seconds %.3f\n",
              a->scene, a->method, a->mlt.technique_k, GIT_COMMIT, (unsigned long long)a->mlt.seed, r->mutations, r->seconds);
     return tech_acc_write(r->tech, a->out, head, err, errlen);
 }
@@ -314,7 +318,9 @@ int main(int argc, char **argv)
         a.mlt.min_length = a.mc.min_length;
         if (a.mlt.technique_k && (a.mlt.technique_k > a.mlt.max_length || a.mlt.technique_k < a.mlt.min_length ||
                                   a.mlt.large_step != LARGE_MMLT))
-            cli_fail("render", "--technique-images %d: needs a length within --min-length %d..--max-length %d and MMLT large steps",
+            cli_fail("render",
+                     "--technique-images %d: needs a length within --min-length %d..--max-length %d and MMLT "
+                     "large steps",
                      a.mlt.technique_k, a.mlt.min_length, a.mlt.max_length);
         a.mlt.mutations = (long)a.mc.spp * sc->cam.width * sc->cam.height;
         a.mlt.pss = cli_pss;

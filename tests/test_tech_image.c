@@ -11,15 +11,23 @@
 
 static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, int k, int min_len)
 {
-    *o = (struct mlt_opts){.method = m, .p_large = 0.1, .mutations = 60000, .seed_paths = 5000, .threads = 2,
-                           .max_length = 6, .min_length = min_len, .seed = 3, .technique_k = k};
+    *o = (struct mlt_opts){.method = m,
+                           .p_large = 0.1,
+                           .mutations = 60000,
+                           .seed_paths = 5000,
+                           .threads = 2,
+                           .max_length = 6,
+                           .min_length = min_len,
+                           .seed = 3,
+                           .technique_k = k};
     pss_opts_default(&o->pss, sc->cam.width, sc->cam.height);
 }
 
 static double count_sum(const struct tech_acc *a, int t)
 {
     double n = 0;
-    for (size_t p = 0; p < (size_t)a->w * a->h; p++) n += a->count[t][p];
+    for (size_t p = 0; p < (size_t)a->w * a->h; p++)
+        n += a->count[t][p];
     return n;
 }
 
@@ -40,13 +48,16 @@ static void check_sum_is_image(enum mlt_method m)
     for (int y = 0; y < 24; y++)
         for (int x = 0; x < 24; x++) {
             rgb s = v3s(0), im = img_get(r.img, x, y);
-            for (int t = 1; t <= 4; t++) s = vadd(s, img_get(r.tech->contrib[t], x, y));
+            for (int t = 1; t <= 4; t++)
+                s = vadd(s, img_get(r.tech->contrib[t], x, y));
             total += luminance(im);
             worst = fmax(worst, fabs(luminance(s) - luminance(im)));
         }
-    for (int t = 1; t <= 4; t++) nonzero_t += count_sum(r.tech, t) > 0;
+    for (int t = 1; t <= 4; t++)
+        nonzero_t += count_sum(r.tech, t) > 0;
     cr_assert_gt(total, 0);
-    cr_assert_lt(worst, 1e-9 * total, "%s: largest pixel difference %g (image sum %g)", m == MLT_MMLT ? "mmlt" : "pssmlt", worst, total);
+    cr_assert_lt(worst, 1e-9 * total, "%s: largest pixel difference %g (image sum %g)",
+                 m == MLT_MMLT ? "mmlt" : "pssmlt", worst, total);
     cr_assert_geq(nonzero_t, 3, "the Cornell box's length-3 paths come from several techniques");
     /* every iteration is on length 3: one chain sample each */
     cr_assert_eq(r.tech->samples, r.mutations);
@@ -55,8 +66,11 @@ static void check_sum_is_image(enum mlt_method m)
         n += count_sum(r.tech, t);
         cr_assert_leq(count_sum(r.tech, t), (double)r.mutations);
     }
-    if (m == MLT_MMLT) cr_assert_eq(n, (double)r.mutations, "an MMLT state is in one technique: %g samples of %ld", n, r.mutations);
-    else cr_assert_gt(n, (double)r.mutations, "a PSSMLT state is in every technique it connects: %g of %ld", n, r.mutations);
+    if (m == MLT_MMLT)
+        cr_assert_eq(n, (double)r.mutations, "an MMLT state is in one technique: %g samples of %ld", n, r.mutations);
+    else
+        cr_assert_gt(n, (double)r.mutations, "a PSSMLT state is in every technique it connects: %g of %ld", n,
+                     r.mutations);
     mlt_result_free(&r);
     scene_free(sc);
 }
@@ -79,7 +93,8 @@ Test(tech_image, mmlt_counts_are_the_length_k_mutations)
     cr_assert_lt(spent, r.mutations);
     cr_assert_eq(r.tech->samples, spent);
     double n = 0;
-    for (int t = 1; t <= 4; t++) n += count_sum(r.tech, t);
+    for (int t = 1; t <= 4; t++)
+        n += count_sum(r.tech, t);
     cr_assert_eq(n, (double)spent);
     mlt_result_free(&r);
     scene_free(sc);
@@ -126,7 +141,8 @@ Test(tech_image, follow_statistics)
     cr_assert_float_eq(f.r, 1, 1e-12);
     cr_assert_eq(f.cells, 4);
     cr_assert_float_eq(f.contrib_share[1], 4.0 / 6.0, 1e-12);
-    for (size_t p = 0; p < 128; p++) a.count[1][p] = a.count[2][p] = 5;
+    for (size_t p = 0; p < 128; p++)
+        a.count[1][p] = a.count[2][p] = 5;
     tech_follow(&a, 8, &f);
     cr_assert_float_eq(f.sample_share[1], 0.5, 1e-12);
     cr_assert_float_eq(f.tv, 4.0 / 6.0 - 0.5, 1e-12);

@@ -18,8 +18,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *usage = "usage: ch6_tech --k K --out OUT.csv [--block B] --ref PREFIX... --run PREFIX...\n"
-                           "  PREFIX: a bin/render --technique-images K output prefix (PREFIX.tech-tT.exr, PREFIX.count-tT.exr)\n";
+static const char *usage =
+    "usage: ch6_tech --k K --out OUT.csv [--block B] --ref PREFIX... --run PREFIX...\n"
+    "  PREFIX: a bin/render --technique-images K output prefix (PREFIX.tech-tT.exr, PREFIX.count-tT.exr)\n";
 
 static struct image *load(const char *prefix, const char *kind, int t, int w, int h)
 {
@@ -47,15 +48,24 @@ int main(int argc, char **argv)
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
             fputs(usage, stdout);
             return 0;
-        } else if (!strcmp(o, "--k")) k = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
-        else if (!strcmp(o, "--block")) blk = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 4096);
-        else if (!strcmp(o, "--out")) out = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--ref")) mode = 1;
-        else if (!strcmp(o, "--run")) mode = 2;
-        else if (o[0] == '-') cli_fail(prog, "unknown option '%s' (see --help)", o);
-        else if (mode == 1) ref[nref++] = o;
-        else if (mode == 2) run[nrun++] = o;
-        else cli_fail(prog, "'%s': give prefixes after --ref or --run (see --help)", o);
+        } else if (!strcmp(o, "--k"))
+            k = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
+        else if (!strcmp(o, "--block"))
+            blk = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 4096);
+        else if (!strcmp(o, "--out"))
+            out = cli_value(prog, argc, argv, &i);
+        else if (!strcmp(o, "--ref"))
+            mode = 1;
+        else if (!strcmp(o, "--run"))
+            mode = 2;
+        else if (o[0] == '-')
+            cli_fail(prog, "unknown option '%s' (see --help)", o);
+        else if (mode == 1)
+            ref[nref++] = o;
+        else if (mode == 2)
+            run[nrun++] = o;
+        else
+            cli_fail(prog, "'%s': give prefixes after --ref or --run (see --help)", o);
     }
     if (!k || !out || !nref || !nrun) cli_fail(prog, "--k, --out, --ref and --run are required (see --help)");
     /* the yardstick: the sum of the reference runs' contribution images */
@@ -75,11 +85,15 @@ int main(int argc, char **argv)
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    fprintf(f, "# ch6_tech: sample counts of each run against the mean contribution of the %d reference runs (leaving out the run), %dx%d blocks\n", nref, blk, blk);
+    fprintf(f,
+            "# ch6_tech: sample counts of each run against the mean contribution of the %d reference runs (leaving out "
+            "the run), %dx%d blocks\n",
+            nref, blk, blk);
     fprintf(f, "run,tv,r,cells,references\n");
     for (int i = 0; i < nrun; i++) {
         bool own = false;
-        for (int j = 0; j < nref; j++) own |= !strcmp(ref[j], run[i]);
+        for (int j = 0; j < nref; j++)
+            own |= !strcmp(ref[j], run[i]);
         if (own && nref < 2) cli_fail(prog, "%s: the only reference is the run itself", run[i]);
         int nr = nref - own;
         for (int t = 1; t <= k + 1; t++) {
@@ -91,7 +105,8 @@ int main(int argc, char **argv)
                 img_destroy(im);
             }
             struct image *im = load(run[i], "count", t, w, h);
-            for (size_t p = 0; p < (size_t)w * h; p++) a.count[t][p] = im->px[3 * p];
+            for (size_t p = 0; p < (size_t)w * h; p++)
+                a.count[t][p] = im->px[3 * p];
             img_destroy(im);
         }
         struct tech_follow fo;
@@ -106,7 +121,8 @@ int main(int argc, char **argv)
     }
     free(buf);
     tech_acc_free(&a);
-    for (int t = 1; t <= k + 1; t++) img_destroy(sum[t]);
+    for (int t = 1; t <= k + 1; t++)
+        img_destroy(sum[t]);
     free(ref);
     free(run);
     return 0;
