@@ -8,6 +8,8 @@ void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w
     int K = pc->max_length;
     int nz = walk_camera(pc, s, w->cam, K + 1);
     int ny = walk_emitter(pc, s, w->emi, K);
+    w->nz = nz;
+    w->ny = ny;
     rgb sum = v3s(0);
     struct connection c;
     out->n = 0;

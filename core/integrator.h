@@ -12,6 +12,7 @@
 struct scratch {
     struct vertex cam[MAX_SUBPATH_VERTS], emi[MAX_SUBPATH_VERTS];
     long nonfinite; /* contributions dropped because they were NaN or infinite */
+    int nz, ny;     /* vertex counts of the subpaths bdpt_splats last walked (per-technique images) */
 };
 
 void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct image *img);

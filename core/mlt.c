@@ -110,6 +110,7 @@ struct run_job {
     struct image **img;
     struct mlt_stats *stats;
     struct angle_acc *angle; /* per thread, with angle_stats */
+    struct tech_acc *tech;   /* per thread, with technique_k */
     long (*ctrl_fail)[2];    /* per thread: forward, reverse */
     long *done;
     double t0;
@@ -239,6 +240,7 @@ static void run_worker(int tid, void *p)
     struct mctls_buf *mb = xmalloc(sizeof *mb);
     struct mlt_stats *st = &j->stats[tid];
     struct image *img = j->img[tid];
+    struct tech_acc *ta = j->tech ? &j->tech[tid] : NULL;
     bool pitp = o->method == MLT_PITP, multiplexed = o->method != MLT_PSSMLT;
     /* the proposal's path; under PITP swapped with the chain's on accept (no copy, no allocation) */
     struct pitp_path *spare = xmalloc(sizeof *spare);
@@ -251,7 +253,7 @@ static void run_worker(int tid, void *p)
     bool complete;
     long n = 0;
     struct ckpt_sync *sync = o->ckpt ? &j->sync : NULL;
-    struct mlt_thread ts = {ch, j->nk, &r, &n, &w->nonfinite, st, j->ctrl_fail[tid], img, j->angle ? &j->angle[tid] : NULL};
+    struct mlt_thread ts = {ch, j->nk, &r, &n, &w->nonfinite, st, j->ctrl_fail[tid], img, j->angle ? &j->angle[tid] : NULL, ta};
     /* Start every chain from a seed sample resampled in proportion to its target, or from where a
      * checkpoint left it. */
     for (int kk = 0; kk < j->nk; kk++) {
@@ -271,6 +273,7 @@ static void run_worker(int tid, void *p)
         if (pitp) c->x = xmalloc(sizeof *c->x);
         struct pitp_path *x0 = pitp ? c->x : spare;
         c->f = eval_state(o->method, &pc, &c->pss.base, w, c->k, x0, &c->cur, &c->tech, &complete);
+        if (ta) tech_acc_eval(ta, &pc, w, multiplexed ? c->k : 0, c->tech, &c->cur, true);
         pss_accept(&c->pss);
         if (track) {
             c->path = xmalloc(sizeof *c->path);
@@ -345,6 +348,7 @@ static void run_worker(int tid, void *p)
             bool ctrl = !large && cs;
             if (ctrl) ctrl_begin(cs, &c->pss, c->path, spare->cam, spare->emi, o->small_step);
             double f = eval_state(o->method, &pc, ctrl ? &cs->base : &c->pss.base, w, c->k, spare, &prop, &tech, &complete);
+            if (ta) tech_acc_eval(ta, &pc, w, multiplexed ? c->k : 0, tech, &prop, false);
             double tr = ctrl ? ctrl_finish(cs, complete) : 1;
             if (ctrl && cs->fail != CTRL_OK) j->ctrl_fail[tid][cs->fail - 1]++;
             if (o->ctrl_unit_ratio && tr > 0) tr = 1;
@@ -361,6 +365,7 @@ static void run_worker(int tid, void *p)
             if (f > 0) splat_list_weighted(img, &prop, a * c->scale / f);
             owe_current(c, a);
             bool acc = rng_uniform(&r) < a;
+            if (ta) tech_acc_step(ta, a, acc, f, c->f, c->scale);
             if (acc) {
                 pss_accept(&c->pss);
                 move_to(img, c, &prop, f);
@@ -513,6 +518,13 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         snprintf(err, errlen, "controlled and root small steps need mmlt or pitp, MMLT large steps, the Gaussian kernel and no --cdc");
         return false;
     }
+    if (o.technique_k && (o.method == MLT_PITP || o.large_step != LARGE_MMLT || o.technique_k < o.min_length ||
+                          o.technique_k > o.max_length)) {
+        snprintf(err, errlen,
+                 "technique images need pssmlt or mmlt with MMLT large steps and a length within "
+                 "--min-length..--max-length");
+        return false;
+    }
     if (o.angle_stats && (o.method == MLT_PSSMLT || o.large_step != LARGE_MMLT)) {
         snprintf(err, errlen, "angle statistics need mmlt or pitp with MMLT large steps");
         return false;
@@ -533,6 +545,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         rj.angle = xcalloc((size_t)T, sizeof *rj.angle);
         for (int i = 0; i < T; i++) angle_acc_init(&rj.angle[i], W, H);
     }
+    if (o.technique_k) rj.tech = tech_acc_alloc(T, o.technique_k, W, H, sc->cam.filter == FILTER_TENT);
     for (int i = 0; i < T; i++) {
         rj.img[i] = img_create(W, H);
         rj.img[i]->tent = sc->cam.filter == FILTER_TENT;
@@ -582,6 +595,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         }
         free(rj.angle);
     }
+    if (rj.tech) r->tech = tech_acc_reduce(rj.tech, T, scale);
     free(rj.ctrl_fail);
     r->nonfinite = r->stats.nonfinite;
     for (int kk = 0; kk < nk; kk++) free((void *)rj.cdf[kk]);
@@ -598,4 +612,6 @@ void mlt_result_free(struct mlt_result *r)
     if (r->angle) angle_acc_free(r->angle);
     free(r->angle);
     r->angle = NULL;
+    tech_acc_destroy(r->tech);
+    r->tech = NULL;
 }

@@ -22,6 +22,7 @@
 #include "mlt_stats.h"
 #include "pss.h"
 #include "scene.h"
+#include "tech_image.h"
 
 /* MLT_PITP: MMLT with the path-invariant technique perturbation before every small step (thesis
  * §5.2, core/pitp.h); every MMLT option applies. */
@@ -61,6 +62,7 @@ struct mlt_opts {
      * for what the checkpointed run had left. The seed pass is not checkpointed (a checkpoint
      * holds the normalisation it found). */
     struct ckpt_ctl *ckpt;
+    int technique_k;             /* > 0: per-technique images of this path length (pssmlt, mmlt; tech_image.h) */
 };
 
 struct mlt_result {
@@ -74,6 +76,7 @@ struct mlt_result {
     bool partial;          /* interrupted: fewer mutations than asked (the image stays unbiased) */
     struct angle_acc *angle; /* with angle_stats */
     long ctrl_fail_forward, ctrl_fail_reverse; /* controlled steps: impossible inversions */
+    struct tech_acc *tech;                     /* with technique_k */
 };
 
 /* Returns false (with a message) when the seed pass finds no light at all. */

@@ -10,6 +10,7 @@
 #include "pitp.h"
 #include "pss.h"
 #include "splat.h"
+#include "tech_image.h"
 
 struct chain {
     struct pss_sampler pss;
@@ -37,6 +38,7 @@ struct mlt_thread {
     long *ctrl_fail;   /* [2]: forward, reverse */
     struct image *img;
     struct angle_acc *angle; /* or NULL */
+    struct tech_acc *tech;   /* or NULL */
 };
 
 void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t);

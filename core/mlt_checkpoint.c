@@ -79,6 +79,17 @@ void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct ml
         CKPT_PUT(b, t->angle->len);
         CKPT_PUT(b, t->angle->skipped);
     }
+    if (t->tech) {
+        const struct tech_acc *a = t->tech;
+        for (int i = 1; i <= a->k + 1; i++) {
+            ckpt_put_image(b, a->contrib[i]);
+            ckpt_put(b, a->count[i], (size_t)a->w * a->h * sizeof(double));
+        }
+        CKPT_PUT(b, a->samples);
+        CKPT_PUT(b, a->cur);
+        CKPT_PUT(b, a->prop);
+        CKPT_PUT(b, a->active);
+    }
 }
 
 bool mlt_thread_load(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t)
@@ -99,6 +110,17 @@ bool mlt_thread_load(struct ckpt_buf *b, const struct scene *sc, const struct ml
         ckpt_get(b, t->angle->count, np * sizeof(double));
         CKPT_GET(b, t->angle->len);
         CKPT_GET(b, t->angle->skipped);
+    }
+    if (t->tech) {
+        struct tech_acc *a = t->tech;
+        for (int i = 1; i <= a->k + 1; i++) {
+            ckpt_get_image(b, a->contrib[i]);
+            ckpt_get(b, a->count[i], (size_t)a->w * a->h * sizeof(double));
+        }
+        CKPT_GET(b, a->samples);
+        CKPT_GET(b, a->cur);
+        CKPT_GET(b, a->prop);
+        CKPT_GET(b, a->active);
     }
     return !b->short_read;
 }

@@ -55,6 +55,9 @@ static const char *usage =
     "  --small-step pss|controlled|root  mmlt/pitp small step (default pss; controlled: thesis 5.3\n"
     "                       Alg. 4, root: Alg. 3, analysis only); the latter two use the Gaussian kernel\n"
     "  --angle-stats        mmlt, pitp: angle change of every small step, PREFIX.angle.exr and .angle.csv\n"
+    "  --technique-images K pssmlt, mmlt (MMLT large steps): per-technique images of path length K\n"
+    "                       (MMLT paper 5): PREFIX.tech-tT.exr/.png contribution, PREFIX.count-tT.exr/.png\n"
+    "                       chain samples in technique T, PREFIX.tech.csv shares; pssmlt runs slower with it\n"
     "Prints one summary line: method, samples, seconds, samples/s.\n";
 
 struct args {
@@ -71,7 +74,8 @@ struct args {
  * which would quietly change an experiment. */
 static const char *const mcmc_only[] = {"--p-large", "--kernel", "--sigma", "--rap", "--rap-resolution", "--cdc",
                                         "--seed-paths", "--large-step", "--hybrid-length", "--uniform-lengths",
-                                        "--max-heuristic", "--small-step", "--angle-stats", NULL};
+                                        "--max-heuristic", "--small-step", "--angle-stats",
+                                        "--technique-images", NULL};
 static const char *const mmlt_only[] = {"--large-step", "--hybrid-length", "--uniform-lengths", "--small-step",
                                         "--angle-stats", NULL};
 static const char *const pssmlt_only[] = {"--max-heuristic", NULL};
@@ -94,6 +98,7 @@ static void warn_unused(const char *prog, int argc, char **argv, const char *met
                            : !strcmp(method, "pssmlt") && listed(o, mmlt_only) ? "mmlt and pitp"
                            : multiplexed && listed(o, pssmlt_only) ? "pssmlt"
                                                                               : NULL;
+        if (only && !mcmc && !strcmp(o, "--technique-images")) only = "pssmlt and mmlt"; /* not pitp */
         if (only) fprintf(stderr, "%s: warning: %s has no effect with --method %s (it applies to %s)\n", prog, o, method, only);
     }
 }
@@ -180,6 +185,8 @@ static void parse(int argc, char **argv, struct args *a)
             else cli_fail(prog, "--small-step: expected pss, controlled or root, got '%s'", v);
         } else if (!strcmp(o, "--angle-stats")) {
             a->mlt.angle_stats = true;
+        } else if (!strcmp(o, "--technique-images")) {
+            a->mlt.technique_k = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
         } else if (!strcmp(o, "--uniform-lengths")) {
             a->mlt.uniform_lengths = true;
         } else if (!strcmp(o, "--seed-paths")) {
@@ -201,6 +208,9 @@ static void parse(int argc, char **argv, struct args *a)
         a->mlt.pss.kernel = KERNEL_GAUSSIAN;
     }
     warn_unused(prog, argc, argv, a->method);
+    if (a->mlt.technique_k && !strcmp(a->method, "pitp"))
+        cli_fail(prog,
+                 "--technique-images: pssmlt and mmlt only (PITP's perturbation moves a state between techniques)");
 }
 
 /* PREFIX.angle.exr (mean angle change per pixel, radians) and PREFIX.angle.csv (per length). */
@@ -222,6 +232,17 @@ static bool write_angle(const struct args *a, const struct mlt_result *r, char *
     ok = ok && write_text_atomic(path, buf, err, errlen);
     free(buf);
     return ok;
+}
+
+/* The per-technique images and PREFIX.tech.csv (core/tech_image.h). */
+static bool write_tech(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
+{
+    char head[8192];
+    snprintf(head, sizeof head,
+             "# render %s --method %s --technique-images %d\n# commit %s\n# seed %llu\n"
+             "# mutations %ld\n# seconds %.3f\n",
+             a->scene, a->method, a->mlt.technique_k, GIT_COMMIT, (unsigned long long)a->mlt.seed, r->mutations, r->seconds);
+    return tech_acc_write(r->tech, a->out, head, err, errlen);
 }
 
 static bool write_csv(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
@@ -274,9 +295,10 @@ static void options_text(const struct args *a, const struct scene *sc, char *buf
         const struct mlt_opts *m = &a->mlt;
         snprintf(buf + len, n - (size_t)len,
                  " p_large=%g kernel=%d sigma=%g rap=%d rap_resolution=%d cdc=%d seed_paths=%ld large_step=%d "
-                 "hybrid_length=%d uniform_lengths=%d max_heuristic=%d small_step=%d angle_stats=%d",
+                 "hybrid_length=%d uniform_lengths=%d max_heuristic=%d small_step=%d angle_stats=%d technique_k=%d",
                  m->p_large, m->pss.kernel, m->pss.sigma, m->pss.rap, m->pss.rap_resolution, m->pss.cdc, m->seed_paths,
-                 m->large_step, m->hybrid_length, m->uniform_lengths, m->max_heuristic, m->small_step, m->angle_stats);
+                 m->large_step, m->hybrid_length, m->uniform_lengths, m->max_heuristic, m->small_step, m->angle_stats,
+                 m->technique_k);
     }
 }
 
@@ -350,6 +372,12 @@ int main(int argc, char **argv)
         a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : !strcmp(a.method, "pitp") ? MLT_PITP : MLT_PSSMLT;
         a.mlt.max_length = a.mc.max_length;
         a.mlt.min_length = a.mc.min_length;
+        if (a.mlt.technique_k && (a.mlt.technique_k > a.mlt.max_length || a.mlt.technique_k < a.mlt.min_length ||
+                                  a.mlt.large_step != LARGE_MMLT))
+            cli_fail("render",
+                     "--technique-images %d: needs a length within --min-length %d..--max-length %d and MMLT "
+                     "large steps",
+                     a.mlt.technique_k, a.mlt.min_length, a.mlt.max_length);
         a.mlt.mutations = (long)a.mc.spp * sc->cam.width * sc->cam.height;
         a.mlt.pss = cli_pss;
         a.mlt.pss.width = camera_film_width(&sc->cam);
@@ -364,7 +392,7 @@ int main(int argc, char **argv)
         }
         partial = r.partial;
         ok = img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
-             (!r.angle || write_angle(&a, &r, err, sizeof err));
+             (!r.angle || write_angle(&a, &r, err, sizeof err)) && (!r.tech || write_tech(&a, &r, err, sizeof err));
         if (ok)
             printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%d threads), %ld non-finite "
                    "dropped\n",

@@ -13,3 +13,12 @@ for f in "$@"; do
 done
 echo
 echo "MMLT paper §5 (door scene): 11.81 % of PSSMLT's samples and 29.75 % of MMLT's have non-zero contribution."
+echo "Here (all proposals; z = difference / combined standard error over seeds):"
+echo
+for f in "$@"; do
+  awk -F, '!/^#/ && $1 != "scene" { if ($3 + 0 >= max[$2] + 0) { max[$2] = $3; nz[$2] = $11; se[$2] = $12 } scene = $1 }
+    END { if (!("mmlt" in nz) || !("pssmlt" in nz)) exit
+      z = (nz["mmlt"] - nz["pssmlt"]) / sqrt(se["mmlt"]^2 + se["pssmlt"]^2)
+      printf "- %s: MMLT %.2f %% vs PSSMLT %.2f %% (z = %.1f): **%s**\n", scene, 100 * nz["mmlt"], 100 * nz["pssmlt"], z,
+        (z > 2) ? "holds" : (z > 0) ? "holds in the mean, not significantly" : "does not hold" }' "$f"
+done

@@ -10,8 +10,9 @@ out=results/report
 mkdir -p "$out"
 tmp="$out/.index.tmp$$.html"
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
-ch6=results/ch6-$scale hyb=results/hybrid-study-$scale
-# id | title | make command | images (space-separated) | data files | claim | verdict (README's quick-scale result; '' = see the measured tables)
+ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale
+# id | title | make command | images (space-separated) | data files | claim | verdict: the README's quick-scale
+# result, or @FILE... = the measured verdicts, the '- ' lines of those files (written by the run's scripts)
 entries=(
 "fig4.1|Thesis Fig. 4.1: isotropic vs resolution-aware small steps|make fig4.1|results/fig4.1/fig4.1.png results/fig4.1/fig4.1-profiles.png|results/fig4.1/fig4.1.csv results/fig4.1/fig4.1.md|Isotropic small steps stretch the noise horizontally by about the aspect ratio (1.78); resolution-aware steps make it isotropic.|Holds in direction, not fully in size: l_x/l_y = 1.55 ± 0.03 (isotropic) vs 1.02 ± 0.02 (--rap), README quick scale."
 "fig4.2|Thesis Fig. 4.2: the wall at 1024², 512², 256² and resolution-scaled steps|make fig4.2|results/fig4.2/fig4.2.png results/fig4.2/fig4.2-plot.png|results/fig4.2/fig4.2.csv results/fig4.2/fig4.2.md|Smaller images get smaller steps in pixels and blotchier noise; scaling the step to the resolution removes it.|Holds: correlation length halves with the resolution (19, 8.3, 4.3 px); --rap-resolution at 256² gives 1024²'s relMSE (0.256 ± 0.0003)."
@@ -21,13 +22,13 @@ entries=(
 "fig5.5|Thesis Fig. 5.5: angle change of MMLT vs controlled small steps|make fig5.5|results/fig5.5/fig5.5.png|results/fig5.5/fig5.5.csv results/fig5.5/fig5.5.md|MMLT's small steps change the path more near edges; controlled steps do not.|Holds: edge/elsewhere 1.73 ± 0.02 (MMLT) vs 1.15 ± 0.03 (controlled)."
 "fig5.6|Thesis Fig. 5.6: rendered images, MMLT vs controlled small steps|make fig5.6|results/fig5.6/fig5.6.png|results/fig5.6/fig5.6.csv results/fig5.6/fig5.6.md|Controlled small steps give streaky, splotchy noise and are not better.|Holds, more strongly: relMSE 0.56 ± 0.13 (controlled) vs 0.082 ± 0.011 (MMLT)."
 "table1-cmlt|CMLT paper Table 1 and Fig. 3: the two-light toy|make table1-cmlt|results/table1-cmlt/fig3.png|results/table1-cmlt/table1.csv results/table1-cmlt/table1_stats.csv results/table1-cmlt/table1.md|CMLT has the lowest RMSE of the six samplers.|See the measured table."
-"fig6.2|Thesis Fig. 6.2: living room, equal time, insets|make fig6.2|$ch6/living-room/fig6.2.png $ch6/living-room/error-vs-time.png|$ch6/living-room/summary.csv $ch6/living-room/runs.csv $ch6/living-room/living-room.md $ch6/living-room/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|"
-"fig6.3|Thesis Fig. 6.3: staircase, equal time, insets|make fig6.3|$ch6/staircase/fig6.3.png $ch6/staircase/error-vs-time.png|$ch6/staircase/summary.csv $ch6/staircase/runs.csv $ch6/staircase/staircase.md $ch6/staircase/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|"
-"fig6.4|Thesis Fig. 6.4: ajar, equal time, insets|make fig6.4|$ch6/ajar/fig6.4.png $ch6/ajar/error-vs-time.png|$ch6/ajar/summary.csv $ch6/ajar/runs.csv $ch6/ajar/ajar.md $ch6/ajar/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|"
-"fig6.5|Thesis Fig. 6.5: living room, full images|make fig6.5|$ch6/living-room/fig6.5.png|$ch6/living-room/summary.csv|Full-resolution images of Fig. 6.2's methods.|"
-"fig6.6|Thesis Fig. 6.6: staircase, full images|make fig6.6|$ch6/staircase/fig6.6.png|$ch6/staircase/summary.csv|Full-resolution images of Fig. 6.3's methods.|"
-"fig6.7|Thesis Fig. 6.7: ajar, full images|make fig6.7|$ch6/ajar/fig6.7.png|$ch6/ajar/summary.csv|Full-resolution images of Fig. 6.4's methods.|"
-"mmlt-ratio|MMLT paper §5: fraction of samples with non-zero contribution|make mmlt-ratio||results/mmlt-ratio/mmlt-ratio.md|11.81 % of PSSMLT's samples vs 29.75 % of MMLT's have non-zero contribution (door scene).|"
+"fig6.2|Thesis Fig. 6.2: living room, equal time, insets|make fig6.2|$ch6/living-room/fig6.2.png $ch6/living-room/error-vs-time.png|$ch6/living-room/summary.csv $ch6/living-room/runs.csv $ch6/living-room/living-room.md $ch6/living-room/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|@$ch6/living-room/claims.md"
+"fig6.3|Thesis Fig. 6.3: staircase, equal time, insets|make fig6.3|$ch6/staircase/fig6.3.png $ch6/staircase/error-vs-time.png|$ch6/staircase/summary.csv $ch6/staircase/runs.csv $ch6/staircase/staircase.md $ch6/staircase/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|@$ch6/staircase/claims.md"
+"fig6.4|Thesis Fig. 6.4: ajar, equal time, insets|make fig6.4|$ch6/ajar/fig6.4.png $ch6/ajar/error-vs-time.png|$ch6/ajar/summary.csv $ch6/ajar/runs.csv $ch6/ajar/ajar.md $ch6/ajar/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|@$ch6/ajar/claims.md"
+"fig6.5|Thesis Fig. 6.5: living room, full images|make fig6.5|$ch6/living-room/fig6.5.png|$ch6/living-room/summary.csv $ch6/living-room/claims.md|Full-resolution images of Fig. 6.2's methods: PSSMLT worst; MMLT streaky/splotchy; PITP most uniform.|@$ch6/living-room/claims.md"
+"fig6.6|Thesis Fig. 6.6: staircase, full images|make fig6.6|$ch6/staircase/fig6.6.png|$ch6/staircase/summary.csv $ch6/staircase/claims.md|Full-resolution images of Fig. 6.3's methods: PSSMLT worst; MMLT streaky/splotchy; PITP most uniform.|@$ch6/staircase/claims.md"
+"fig6.7|Thesis Fig. 6.7: ajar, full images|make fig6.7|$ch6/ajar/fig6.7.png|$ch6/ajar/summary.csv $ch6/ajar/claims.md|Full-resolution images of Fig. 6.4's methods: PSSMLT worst; MMLT streaky/splotchy; PITP most uniform.|@$ch6/ajar/claims.md"
+"mmlt-ratio|MMLT paper §5 and Fig. 5: non-zero samples; per-technique contributions and sample counts (ajar, length 4)|make mmlt-ratio|$tech/technique-images.png|results/mmlt-ratio/mmlt-ratio.md $tech/tech.md $tech/follow-mmlt.csv $tech/follow-pssmlt.csv|11.81 % of PSSMLT's samples vs 29.75 % of MMLT's have non-zero contribution (door scene); MMLT's per-technique sample counts follow the per-technique contributions, PSSMLT's do not.|@results/mmlt-ratio/mmlt-ratio.md $tech/tech.md"
 "hybrid-study|Thesis §4.3/§7.1: hybrid MCTLS at equal time, with small steps|make hybrid-study||$hyb/hybrid-study.md $hyb/ajar/summary.csv $hyb/living-room/summary.csv|Open question: do MMLT large steps for short paths plus MCTLS for long ones beat both?|"
 )
 {
@@ -65,7 +66,14 @@ for e in "${entries[@]}"; do
   for d in $data; do
     case $d in *.md) [ -f "$d" ] && { echo "<pre>"; esc < "$d"; echo "</pre>"; } ;; esac
   done
-  if [ -n "$verdict" ]; then echo "<p class=\"verdict\"><b>Holds?</b> $(printf '%s' "$verdict" | esc)</p>"
+  if [ "${verdict:0:1}" = @ ]; then
+    echo "<div class=\"verdict\"><b>Holds? (measured on this run)</b><ul>"
+    for vf in ${verdict:1}; do
+      if [ -f "$vf" ]; then grep '^- ' "$vf" | sed 's/^- //' | esc | sed -e 's|\*\*\([^*]*\)\*\*|<b>\1</b>|g' -e 's|^|<li>|; s|$|</li>|'
+      else echo "<li class=\"missing\">$(basename "$vf") not made yet: <code>$(printf '%s' "$cmd" | esc)</code></li>"; fi
+    done
+    echo "</ul></div>"
+  elif [ -n "$verdict" ]; then echo "<p class=\"verdict\"><b>Holds?</b> $(printf '%s' "$verdict" | esc)</p>"
   else echo "<p class=\"verdict\"><b>Holds?</b> see the claims and tables above (measured on this run).</p>"; fi
   echo "<p>Data:"
   for d in $data; do [ -f "$d" ] && echo " <a href=\"../${d#results/}\">$(basename "$d")</a>"; done

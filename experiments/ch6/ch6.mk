@@ -3,12 +3,12 @@
 # bin/render accepts (pitp once merged) needs no change here.
 CH6_LIB := $(patsubst %,$(BUILD)/%.o,experiments/ch6/ch6_stats.c)
 $(BUILD)/experiments/ch6/%: CPPFLAGS += -Iexperiments/ch6
-.SECONDARY: $(CH6_LIB) $(BUILD)/experiments/ch6/ch6_assets.c.o $(BUILD)/experiments/ch6/ch6_equal.c.o
+.SECONDARY: $(CH6_LIB) $(BUILD)/experiments/ch6/ch6_assets.c.o $(BUILD)/experiments/ch6/ch6_equal.c.o $(BUILD)/experiments/ch6/ch6_tech.c.o
 
-$(BIN)/ch6_assets $(BIN)/ch6_equal: $(BIN)/%: $(BUILD)/experiments/ch6/%.c.o $(CH6_LIB) $(LIBCORE) | $(OIIO_MODULE)
+$(BIN)/ch6_assets $(BIN)/ch6_equal $(BIN)/ch6_tech: $(BIN)/%: $(BUILD)/experiments/ch6/%.c.o $(CH6_LIB) $(LIBCORE) | $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
-all: $(BIN)/ch6_assets $(BIN)/ch6_equal
+all: $(BIN)/ch6_assets $(BIN)/ch6_equal $(BIN)/ch6_tech
 
 # tests/test_ch6_stats.c sees the analysis code.
 $(BUILD)/tests/test_ch6_stats.c.o: CPPFLAGS += -Iexperiments/ch6
@@ -79,12 +79,27 @@ ch6-clean:
 # Read from the fig6 runs of the three scenes (their render CSVs count every proposal's contribution;
 # paths of length >= 3 as in those runs): all proposals and large steps alone, mean +- standard error
 # over seeds at the largest budget.
+# MMLT paper §5 / Fig. 5: per-technique images of contribution and of sample count for one path
+# length, MMLT vs PSSMLT (scripts/ch6-tech.sh, bin/render --technique-images, bin/ch6_tech): ajar at
+# 256x144 as fig6.4, length k = 4, paths of length >= 3, p_large = 0.1, 4 seeds per method, 8 s
+# each (paper scale: 120 s). Rerun when the scene changes, or by make ch6-clean.
+TECH_K := 4
+ifeq ($(SCALE),paper)
+  TECH_TIME := 120
+else
+  TECH_TIME := 8
+endif
+TECH_OUT := results/mmlt-ratio/technique-k$(TECH_K)-$(SCALE)
+$(TECH_OUT)/tech.md: scenes/ajar/scene.json | deps $(BIN)/render $(BIN)/ch6_tech
+	bash scripts/ch6-tech.sh $(BIN) scenes/ajar/scene.json $(TECH_K) 4 $(TECH_OUT) --resolution 256x144 --min-length 3 --p-large 0.1 --time $(TECH_TIME)
+
 .PHONY: mmlt-ratio
-mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary.csv $(CH6_OUT)/ajar/summary.csv
+mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary.csv $(CH6_OUT)/ajar/summary.csv $(TECH_OUT)/tech.md
 	@mkdir -p results/mmlt-ratio
 	bash scripts/ch6-ratio.sh $(filter %summary.csv,$^) > results/mmlt-ratio/mmlt-ratio.md.tmp
 	mv -f results/mmlt-ratio/mmlt-ratio.md.tmp results/mmlt-ratio/mmlt-ratio.md
-	@cat results/mmlt-ratio/mmlt-ratio.md
+	@cat results/mmlt-ratio/mmlt-ratio.md $(TECH_OUT)/tech.md
+	@echo "per-technique images: $(TECH_OUT)/technique-images.png"
 
 # ---- thesis §4.3 / §7.1: MMLT large steps vs MCTLS vs hybrid, with small steps (p_large = 0.1) ----
 # Equal time per run, 8 seeds, on ajar and living-room at 128x72 (all path lengths), against cached

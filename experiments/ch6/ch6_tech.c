@@ -1,0 +1,129 @@
+/* bin/ch6_tech: do a run's per-technique sample counts follow the per-technique contributions?
+ * (MMLT paper §5, Fig. 5; the images of `bin/render --technique-images K`, core/tech_image.h.)
+ *
+ * A run's own contribution images cannot be the yardstick for MMLT: every MMLT chain sample carries
+ * the same luminance (b_k / P(k)), so its contribution images are its sample counts times a constant
+ * and would "follow" them by construction. The contributions are therefore taken from other runs:
+ * the mean contribution images of the --ref prefixes, leaving out the scored run when it is one of
+ * them (leave one out, so that every run of either method is scored against an independent
+ * estimate of the same per-technique images, of about the same quality). For each --run prefix, its
+ * sample counts against that mean with tech_follow: tv (half the L1 distance of the technique
+ * shares) and r (correlation of the within-block shares over B x B blocks). Writes
+ * `run,tv,r,cells,references` rows to OUT.csv (atomically). */
+#include "cli.h"
+#include "image.h"
+#include "tech_image.h"
+#include "util.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *usage =
+    "usage: ch6_tech --k K --out OUT.csv [--block B] --ref PREFIX... --run PREFIX...\n"
+    "  PREFIX: a bin/render --technique-images K output prefix (PREFIX.tech-tT.exr, PREFIX.count-tT.exr)\n";
+
+static struct image *load(const char *prefix, const char *kind, int t, int w, int h)
+{
+    char path[4200], err[1024];
+    snprintf(path, sizeof path, "%.4000s.%s-t%d.exr", prefix, kind, t);
+    struct image *im = img_read(path, err, sizeof err);
+    if (!im) {
+        fprintf(stderr, "ch6_tech: %s\n", err);
+        exit(2);
+    }
+    if (w > 0 && (im->w != w || im->h != h)) {
+        fprintf(stderr, "ch6_tech: %s is %dx%d, expected %dx%d\n", path, im->w, im->h, w, h);
+        exit(2);
+    }
+    return im;
+}
+
+int main(int argc, char **argv)
+{
+    const char *prog = "ch6_tech", *out = NULL;
+    int k = 0, blk = 8, nref = 0, nrun = 0, mode = 0;
+    const char **ref = xcalloc((size_t)argc, sizeof *ref), **run = xcalloc((size_t)argc, sizeof *run);
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (!strcmp(o, "--k"))
+            k = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
+        else if (!strcmp(o, "--block"))
+            blk = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 4096);
+        else if (!strcmp(o, "--out"))
+            out = cli_value(prog, argc, argv, &i);
+        else if (!strcmp(o, "--ref"))
+            mode = 1;
+        else if (!strcmp(o, "--run"))
+            mode = 2;
+        else if (o[0] == '-')
+            cli_fail(prog, "unknown option '%s' (see --help)", o);
+        else if (mode == 1)
+            ref[nref++] = o;
+        else if (mode == 2)
+            run[nrun++] = o;
+        else
+            cli_fail(prog, "'%s': give prefixes after --ref or --run (see --help)", o);
+    }
+    if (!k || !out || !nref || !nrun) cli_fail(prog, "--k, --out, --ref and --run are required (see --help)");
+    /* the yardstick: the sum of the reference runs' contribution images */
+    struct image *first = load(ref[0], "tech", 1, 0, 0), *sum[TECH_MAX] = {0};
+    int w = first->w, h = first->h;
+    img_destroy(first);
+    struct tech_acc a;
+    tech_acc_init(&a, k, w, h, false);
+    for (int t = 1; t <= k + 1; t++) {
+        sum[t] = img_create(w, h);
+        for (int i = 0; i < nref; i++) {
+            struct image *im = load(ref[i], "tech", t, w, h);
+            img_accumulate(sum[t], im, 1.0);
+            img_destroy(im);
+        }
+    }
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    fprintf(f,
+            "# ch6_tech: sample counts of each run against the mean contribution of the %d reference runs (leaving out "
+            "the run), %dx%d blocks\n",
+            nref, blk, blk);
+    fprintf(f, "run,tv,r,cells,references\n");
+    for (int i = 0; i < nrun; i++) {
+        bool own = false;
+        for (int j = 0; j < nref; j++)
+            own |= !strcmp(ref[j], run[i]);
+        if (own && nref < 2) cli_fail(prog, "%s: the only reference is the run itself", run[i]);
+        int nr = nref - own;
+        for (int t = 1; t <= k + 1; t++) {
+            memset(a.contrib[t]->px, 0, sizeof(double) * 3 * (size_t)w * h);
+            img_accumulate(a.contrib[t], sum[t], 1.0 / nr);
+            if (own) {
+                struct image *im = load(run[i], "tech", t, w, h);
+                img_accumulate(a.contrib[t], im, -1.0 / nr);
+                img_destroy(im);
+            }
+            struct image *im = load(run[i], "count", t, w, h);
+            for (size_t p = 0; p < (size_t)w * h; p++)
+                a.count[t][p] = im->px[3 * p];
+            img_destroy(im);
+        }
+        struct tech_follow fo;
+        tech_follow(&a, blk, &fo);
+        fprintf(f, "%s,%.6g,%.6g,%d,%d\n", run[i], fo.tv, fo.r, fo.cells, nr);
+    }
+    fclose(f);
+    char err[1024];
+    if (!write_text_atomic(out, buf, err, sizeof err)) {
+        fprintf(stderr, "ch6_tech: %s\n", err);
+        return 1;
+    }
+    free(buf);
+    tech_acc_free(&a);
+    for (int t = 1; t <= k + 1; t++)
+        img_destroy(sum[t]);
+    free(ref);
+    free(run);
+    return 0;
+}
