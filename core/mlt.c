@@ -3,6 +3,8 @@
 #include "mlt.h"
 #include "camera.h"
 #include "connect.h"
+#include "dist.h"
+#include "dist_merge.h"
 #include "emitter.h"
 #include "integrator.h"
 #include "parallel.h"
@@ -67,6 +69,7 @@ struct seed_job {
     const struct mlt_opts *o;
     int nk;            /* chains per thread: 1 (PSSMLT) or K (MMLT) */
     double *f;         /* seed_paths * nk targets, index i * nk + (k - 1) */
+    int g0, stride;    /* this rank's first global thread; the job's threads (core/dist.h) */
     struct progress prog;
 };
 
@@ -82,12 +85,12 @@ static void seed_worker(int tid, void *p)
     struct splat_list l;
     int tech;
     bool complete;
-    for (long i = tid; i < j->o->seed_paths; i += j->o->threads) {
+    for (long i = j->g0 + tid; i < j->o->seed_paths; i += j->stride) {
         for (int kk = 0; kk < j->nk; kk++) {
             sampler_independent_init(&s, j->o->seed, seed_stream(i, j->nk, kk));
             j->f[i * j->nk + kk] = eval_state(j->o->method, &pc, &s.base, w, kk + 1, x, &l, &tech, &complete);
         }
-        if ((i / j->o->threads) % 1024 == 0) progress_add(&j->prog, 1024);
+        if ((i / j->stride) % 1024 == 0) progress_add(&j->prog, 1024);
     }
     free(x);
     free(w);
@@ -124,6 +127,7 @@ struct run_job {
     struct angle_acc *angle; /* per thread, with angle_stats */
     long (*ctrl_fail)[2];    /* per thread: forward, reverse */
     long *done;
+    int g0, stride;          /* this rank's first global thread; the job's threads (core/dist.h) */
     double t0;
     struct progress prog;
 };
@@ -250,7 +254,8 @@ static void run_worker(int tid, void *p)
     struct pitp_scratch *ps = pitp ? xmalloc(sizeof *ps) : NULL;
     if (ps) pitp_scratch_init(ps, j->sc);
     rng r;
-    rng_seed(&r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)tid);
+    int g = j->g0 + tid; /* streams and budgets are the job's global thread's */
+    rng_seed(&r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)g);
     bool track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     struct ctrl_sampler *cs = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *cs) : NULL;
     bool complete;
@@ -272,9 +277,9 @@ static void run_worker(int tid, void *p)
         }
         /* The seed's stream reproduced its path; the mutations get a stream of their own, so that
          * two threads starting from the same seed sample do not run identical chains. */
-        rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)tid << 24) | (uint64_t)kk);
+        rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)g << 24) | (uint64_t)kk);
     }
-    long budget = o->mutations / o->threads + (tid < o->mutations % o->threads);
+    long budget = o->mutations / j->stride + (g < o->mutations % j->stride);
     long n = 0;
     struct splat_list prop;
     for (;; n++) {
@@ -405,9 +410,13 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     }
     double t0 = now_seconds();
 
-    struct seed_job sj = {sc, &o, nk, xmalloc((size_t)o.seed_paths * nk * sizeof(double)), {0}};
-    progress_init(&sj.prog, "seed pass", o.seed_paths, o.progress);
+    /* The seed pass is dealt over the job's threads; each target is computed by one rank and the
+     * others hold 0, so the sum gives every rank the whole pass, exactly. */
+    int N = dist_size();
+    struct seed_job sj = {sc, &o, nk, xcalloc((size_t)o.seed_paths * nk, sizeof(double)), dist_thread0(T), N * T, {0}};
+    progress_init(&sj.prog, "seed pass", o.seed_paths / N, o.progress);
     parallel_run(T, seed_worker, &sj);
+    dist_sum_doubles(sj.f, (size_t)o.seed_paths * nk);
     progress_finish(&sj.prog);
 
     struct run_job rj;
@@ -415,6 +424,8 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     rj.sc = sc;
     rj.o = &o;
     rj.nk = nk;
+    rj.g0 = sj.g0;
+    rj.stride = sj.stride;
     double total = 0;
     int live = 0;
     for (int kk = 0; kk < nk; kk++) {
@@ -460,30 +471,35 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         rj.img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
     rj.t0 = now_seconds();
-    progress_init(&rj.prog, (const char *[]){"pssmlt", "mmlt", "pitp"}[o.method], o.seconds > 0 ? (long)(1000 * o.seconds) : o.mutations,
+    progress_init(&rj.prog, (const char *[]){"pssmlt", "mmlt", "pitp"}[o.method], o.seconds > 0 ? (long)(1000 * o.seconds) : o.mutations / N,
                   o.progress);
     parallel_run(T, run_worker, &rj);
     progress_finish(&rj.prog);
+    /* Counts over the job's threads (integers: exact in any order), before the image's scale. */
+    long counts[4] = {0, 0, 0, interrupted()};
+    for (int i = 0; i < T; i++) {
+        counts[0] += rj.done[i];
+        counts[1] += rj.ctrl_fail[i][0];
+        counts[2] += rj.ctrl_fail[i][1];
+    }
+    dist_sum_longs(counts, 4);
     r->seconds = now_seconds() - rj.t0;
-    r->partial = interrupted();
-    for (int i = 0; i < T; i++) r->mutations += rj.done[i];
+    r->mutations = counts[0];
+    r->ctrl_fail_forward = counts[1];
+    r->ctrl_fail_reverse = counts[2];
+    r->partial = counts[3] > 0;
     r->img = img_create(W, H);
     stats_clear(&r->stats);
-    double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
-    for (int i = 0; i < T; i++) { /* fixed order: reproducible sums */
-        img_accumulate(r->img, rj.img[i], scale);
-        stats_merge(&r->stats, &rj.stats[i]);
-        img_destroy(rj.img[i]);
-        r->ctrl_fail_forward += rj.ctrl_fail[i][0];
-        r->ctrl_fail_reverse += rj.ctrl_fail[i][1];
-    }
     if (o.angle_stats) {
         r->angle = xmalloc(sizeof *r->angle);
         angle_acc_init(r->angle, W, H);
-        for (int i = 0; i < T; i++) {
-            angle_acc_merge(r->angle, &rj.angle[i]);
-            angle_acc_free(&rj.angle[i]);
-        }
+    }
+    double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
+    merge_thread_results(&(struct thread_results){.threads = T, .img = rj.img, .scale = scale, .stats = rj.stats, .angle = rj.angle},
+                         r->img, &r->stats, r->angle);
+    for (int i = 0; i < T; i++) img_destroy(rj.img[i]);
+    if (o.angle_stats) {
+        for (int i = 0; i < T; i++) angle_acc_free(&rj.angle[i]);
         free(rj.angle);
     }
     free(rj.ctrl_fail);

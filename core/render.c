@@ -1,5 +1,7 @@
 #include "render.h"
 #include "camera.h"
+#include "dist.h"
+#include "dist_merge.h"
 #include "integrator.h"
 #include "parallel.h"
 #include "util.h"
@@ -50,6 +52,7 @@ struct job {
     struct progress prog;
     int first, count; /* samples first .. first + count - 1 of every pixel */
     uint64_t key;     /* sample i of film cell c draws from stream c * key + i */
+    int g0, stride;   /* this rank's first global thread; the job's threads (core/dist.h) */
     /* --time: passes of one sample per pixel until the budget */
     struct pass_barrier passes;
     int spp;          /* passes done */
@@ -72,7 +75,7 @@ static void worker(int tid, void *p)
         /* Ctrl-C is honoured within a pixel (every 4096 samples), not only between rows: a row of
          * a high-spp render can take minutes. */
         bool stop = false;
-        for (int y = tid; y < H && !stop; y += o->threads) {
+        for (int y = j->g0 + tid; y < H && !stop; y += j->stride) {
             for (int x = 0; x < W && !stop; x++) {
                 s.x0 = x;
                 s.y0 = y;
@@ -93,14 +96,16 @@ static void worker(int tid, void *p)
 }
 
 /* Called between passes by one thread while the others wait: another pass only if it should end
- * within the budget at the mean pass time so far. */
+ * within the budget at the mean pass time so far. Over MPI ranks the slowest rank's time counts
+ * and rank 0 decides for all, so that every rank renders the same passes. */
 static bool next_pass(void *p)
 {
     struct job *j = p;
     j->spp++;
-    double elapsed = now_seconds() - j->t0;
+    double elapsed = dist_max_double(now_seconds() - j->t0);
     progress_set(&j->prog, (long)(1000 * elapsed));
-    if (interrupted() || j->spp >= TIME_MODE_MAX_SPP || elapsed * (j->spp + 1) / j->spp > j->o->seconds) return false;
+    bool more = !(interrupted() || j->spp >= TIME_MODE_MAX_SPP || elapsed * (j->spp + 1) / j->spp > j->o->seconds);
+    if (!dist_bcast_bool(more)) return false;
     j->first = j->spp;
     return true;
 }
@@ -111,7 +116,8 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     struct render_opts opts = *o;
     opts.threads = T;
     struct job j = {.sc = sc, .o = &opts, .img = xcalloc((size_t)T, sizeof(struct image *)),
-                    .nonfinite = xcalloc((size_t)T, sizeof(long)), .samples = xcalloc((size_t)T, sizeof(long))};
+                    .nonfinite = xcalloc((size_t)T, sizeof(long)), .samples = xcalloc((size_t)T, sizeof(long)),
+                    .g0 = dist_thread0(T), .stride = dist_size() * T};
     for (int i = 0; i < T; i++) {
         j.img[i] = img_create(W, H);
         j.img[i]->tent = sc->cam.filter == FILTER_TENT;
@@ -129,24 +135,28 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         pass_barrier_destroy(&j.passes);
         spp = j.spp;
     } else {
-        progress_init(&j.prog, method_name(o->method), camera_film_height(&sc->cam), o->progress);
+        int rows = 0; /* this rank's */
+        for (int y = 0; y < camera_film_height(&sc->cam); y++) rows += y % j.stride >= j.g0 && y % j.stride < j.g0 + T;
+        progress_init(&j.prog, method_name(o->method), rows, o->progress);
         j.count = spp;
         j.key = (uint64_t)spp;
         parallel_run(T, worker, &j);
     }
     progress_finish(&j.prog);
     struct image *out = img_create(W, H);
-    st->nonfinite = 0;
-    st->samples = 0;
-    for (int i = 0; i < T; i++) { /* fixed order: reproducible sums */
-        img_accumulate(out, j.img[i], 1.0 / spp);
-        st->nonfinite += j.nonfinite[i];
-        st->samples += j.samples[i];
+    merge_thread_results(&(struct thread_results){.threads = T, .img = j.img, .scale = 1.0 / spp}, out, NULL, NULL);
+    long counts[3] = {0, 0, interrupted()}; /* over the job's threads: integers, exact in any order */
+    for (int i = 0; i < T; i++) {
+        counts[0] += j.nonfinite[i];
+        counts[1] += j.samples[i];
         img_destroy(j.img[i]);
     }
+    dist_sum_longs(counts, 3);
+    st->nonfinite = counts[0];
+    st->samples = counts[1];
     st->seconds = now_seconds() - t0;
     st->spp = spp;
-    st->partial = interrupted();
+    st->partial = counts[2] > 0;
     free(j.img);
     free(j.nonfinite);
     free(j.samples);

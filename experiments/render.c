@@ -1,8 +1,10 @@
 /* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
- * MCMC methods, PREFIX.csv with acceptance statistics. */
+ * MCMC methods, PREFIX.csv with acceptance statistics. Built with MPI=1 and started by mpirun, its
+ * ranks share the render (core/dist.h) and rank 0 alone writes the outputs and the summary. */
 #include "accel.h"
 #include "camera.h"
 #include "cli.h"
+#include "dist.h"
 #include "emitter.h"
 #include "mlt.h"
 #include "parallel.h"
@@ -219,6 +221,7 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     FILE *f = open_memstream(&buf, &len);
     fprintf(f, "# render %s --method %s\n# commit %s\n# seed %llu\n# threads %d\n# max_length %d\n", a->scene,
             a->method, GIT_COMMIT, (unsigned long long)a->mlt.seed, a->mlt.threads, a->mlt.max_length);
+    if (dist_size() > 1) fprintf(f, "# ranks %d\n", dist_size()); /* threads are per rank */
     fprintf(f, "# large_step %s\n# hybrid_length %d\n# uniform_lengths %d\n",
             (const char *[]){"mmlt", "mctls", "hybrid"}[a->mlt.large_step], a->mlt.hybrid_length, a->mlt.uniform_lengths);
     fprintf(f, "# mis %s\n", a->mlt.max_heuristic ? "maximum" : "balance");
@@ -248,8 +251,18 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     return ok;
 }
 
+/* "(4 threads)", or under MPI "(2 ranks x 2 threads)". */
+static const char *threads_note(int threads)
+{
+    static char s[64];
+    if (dist_size() > 1) snprintf(s, sizeof s, "%d ranks x %d threads", dist_size(), threads);
+    else snprintf(s, sizeof s, "%d threads", threads);
+    return s;
+}
+
 int main(int argc, char **argv)
 {
+    dist_init(&argc, &argv);
     struct args a = {.out = "out", .method = "bdpt"};
     a.mc = (struct render_opts){.method = METHOD_BDPT, .spp = -1, .seed = 1, .threads = cpu_count(), .max_length = -1,
                                 .progress = true};
@@ -285,12 +298,12 @@ int main(int argc, char **argv)
         method_parse(a.method, &a.mc.method);
         struct render_stats st;
         struct image *img = render_mc(sc, &a.mc, &st);
-        ok = img_write_exr_png(img, a.out, err, sizeof err);
+        ok = !dist_root() || img_write_exr_png(img, a.out, err, sizeof err);
         partial = st.partial;
-        if (ok)
-            printf("%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%d threads), %ld non-finite dropped\n",
+        if (ok && dist_root())
+            printf("%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped\n",
                    partial ? "PARTIAL (interrupted) " : "", a.method, st.samples, st.spp, st.seconds, st.samples / st.seconds,
-                   a.mc.threads, st.nonfinite);
+                   threads_note(a.mc.threads), st.nonfinite);
         img_destroy(img);
     } else {
         a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : !strcmp(a.method, "pitp") ? MLT_PITP : MLT_PSSMLT;
@@ -308,12 +321,13 @@ int main(int argc, char **argv)
             return 1;
         }
         partial = r.partial;
-        ok = img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
-             (!r.angle || write_angle(&a, &r, err, sizeof err));
-        if (ok)
-            printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%d threads), %ld non-finite "
+        ok = !dist_root() || (img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
+                              (!r.angle || write_angle(&a, &r, err, sizeof err)));
+        if (ok && dist_root())
+            printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%s), %ld non-finite "
                    "dropped\n",
-                   partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds, a.mlt.threads, r.nonfinite);
+                   partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds,
+                   threads_note(a.mlt.threads), r.nonfinite);
         mlt_result_free(&r);
     }
     if (!ok) fprintf(stderr, "%s\n", err);

@@ -5,9 +5,9 @@ CH6_LIB := $(patsubst %,$(BUILD)/%.o,experiments/ch6/ch6_stats.c)
 $(BUILD)/experiments/ch6/%: CPPFLAGS += -Iexperiments/ch6
 .SECONDARY: $(CH6_LIB) $(BUILD)/experiments/ch6/ch6_assets.c.o $(BUILD)/experiments/ch6/ch6_equal.c.o
 
-$(BIN)/ch6_assets $(BIN)/ch6_equal: $(BIN)/%: $(BUILD)/experiments/ch6/%.c.o $(CH6_LIB) $(LIBCORE) | $(OIIO_MODULE)
+$(BIN)/ch6_assets $(BIN)/ch6_equal: $(BIN)/%: $(BUILD)/experiments/ch6/%.c.o $(CH6_LIB) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
 all: $(BIN)/ch6_assets $(BIN)/ch6_equal
 
 # tests/test_ch6_stats.c sees the analysis code.
