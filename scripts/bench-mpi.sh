@@ -2,7 +2,9 @@
 # Scaling from one MPI rank to two on this machine (make bench-mpi; README "MPI: paper-scale runs"):
 # the same total of threads, 1 rank x T against 2 ranks x T/2, so the figure is what the ranks'
 # start-up, pass agreement and ordered image reduction cost over threads of one process.
-# Usage: bench-mpi.sh RENDER [SCENE] ; RUNS (default 3) and SECONDS (default 2) from the environment.
+# Usage: bench-mpi.sh RENDER [SCENE] ; RUNS (default 3), SECONDS_PER_RUN (default 2) and THREADS (the
+# total, default 2) from the environment. --bind-to none: with two processes or fewer mpirun binds
+# each rank to one core, and a rank's threads would then share it.
 set -euo pipefail
 render=$1
 scene=${2:-scenes/cornell-box/scene.json}
@@ -18,7 +20,7 @@ trap 'rm -rf "$tmp"' EXIT
 rate() {
   local np=$1 t=$2 method=$3 r=()
   for ((i = 0; i < runs; i++)); do
-    r+=("$(mpirun -q --oversubscribe -np "$np" "$render" "$scene" --method "$method" --time "$seconds" --threads "$t" \
+    r+=("$(mpirun -q --oversubscribe --bind-to none -np "$np" "$render" "$scene" --method "$method" --time "$seconds" --threads "$t" \
       --resolution 320x180 --max-length 8 --quiet --out "$tmp/x" | sed -n 's/.*, \([0-9]*\) \(samples\|mutations\)\/s.*/\1/p')")
   done
   printf '%s\n' "${r[@]}" | sort -n | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'

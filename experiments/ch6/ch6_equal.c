@@ -116,20 +116,6 @@ static double csv_nonzero(const char *text, const char *kind)
     return att > 0 ? nz / att : NAN;
 }
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = xmalloc((size_t)n + 1);
-    size_t r = fread(s, 1, (size_t)n, f);
-    s[r] = 0;
-    fclose(f);
-    return s;
-}
-
 /* mkdir -p */
 static void make_dirs(const char *path)
 {
@@ -342,7 +328,7 @@ int main(int argc, char **argv)
                 }
                 img_destroy(im);
                 snprintf(path, sizeof path, "%.4000s.csv", prefix);
-                char *csv = slurp(path);
+                char *csv = read_whole_file(path);
                 if (!csv) fail("cannot read ", path);
                 r->seconds = csv_header(csv, "seconds");
                 r->mutations = csv_header(csv, "mutations");

@@ -5,6 +5,7 @@
 #include <criterion/criterion.h>
 
 #include "image.h"
+#include "util.h"
 #include <ctype.h>
 #include <dirent.h>
 #include <signal.h>
@@ -47,20 +48,6 @@ static void teardown(void)
 
 TestSuite(mpi, .init = setup, .fini = teardown, .timeout = 170);
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = 0;
-    fclose(f);
-    return s;
-}
-
 /* Runs bin/render (ranks = 0: directly, without mpirun) with its output in dir/NAME.out and
  * dir/NAME.err; returns the exit status. */
 static int run_render(int ranks, const char *name, const char *args)
@@ -77,7 +64,7 @@ static char *output(const char *name, const char *ext)
 {
     char p[256];
     snprintf(p, sizeof p, "%s/%s.%s", dir, name, ext);
-    return slurp(p);
+    return read_whole_file(p);
 }
 
 /* The same pixels, bit for bit (the files' bytes differ: OpenImageIO stamps the time of writing). */
@@ -231,7 +218,7 @@ Test(mpi, tools_not_rank_aware_refuse)
     int rc = system(cmd);
     char p[128];
     snprintf(p, sizeof p, "%s/bench.err", dir);
-    char *err = slurp(p);
+    char *err = read_whole_file(p);
     cr_expect(WIFEXITED(rc) && WEXITSTATUS(rc) == 2, "status %d: %s", rc, err);
     cr_expect_eq(count(err, "not rank-aware"), 1, "expected the refusal once:\n%s", err);
     free(err);
@@ -312,7 +299,7 @@ Test(mpi, killed_rank_fails_the_job)
         }
         usleep(100000);
     }
-    char *msg = slurp(err);
+    char *msg = read_whole_file(err);
     cr_expect(!(WIFEXITED(status) && WEXITSTATUS(status) == 0), "the job succeeded without rank 1");
     cr_expect(strstr(msg, "signal 9") || strstr(msg, "Killed"), "mpirun did not say which rank died:\n%s", msg);
     free(msg);
