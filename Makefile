@@ -181,8 +181,8 @@ test: deps all
 	$(TEST_BIN) --jobs 2 $(TEST_ARGS)
 
 # The MPI suite (tests/mpi/): bin/render under `mpirun -np 2` and `-np 3` on this machine,
-# oversubscribed. Built and run in the MPI=1 mode, which leaves bin/ linked against Open MPI (a
-# later plain `make` relinks it). mpirun refuses root unless told (CI runs as root); containers
+# oversubscribed. Built and run in the MPI=1 mode, which leaves bin/'s tools linked against Open MPI
+# (a later plain `make` relinks them); the plain test runner is not rebuilt for it. mpirun refuses root unless told (CI runs as root); containers
 # without ptrace rights refuse Open MPI's cross-memory copies, hence the copy mechanism `none`.
 MPI_TEST_SRC := $(wildcard tests/mpi/*.c)
 MPI_TEST_BIN := $(BUILD)/tests/run-mpi-tests
@@ -195,7 +195,7 @@ $(BUILD)/tests/mpi/%.c.o: CFLAGS += -fno-lto
 
 .PHONY: test-mpi
 ifeq ($(MPI),1)
-test-mpi: deps $(BIN)/render $(BIN)/bench $(MPI_TEST_BIN)
+test-mpi: deps $(EXP_BIN) $(MPI_TEST_BIN)
 	OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none \
 	  $(MPI_TEST_BIN) --jobs 1 $(TEST_ARGS)
 else
