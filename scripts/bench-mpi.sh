@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Scaling from one MPI rank to two on this machine (make bench-mpi; README "MPI: paper-scale runs"):
-# the same total of threads, 1 rank x T against 2 ranks x T/2, so the figure is what the ranks'
-# start-up, pass agreement and ordered image reduction cost over threads of one process.
+# the same total of threads, 1 rank x T against 2 ranks x T/2, so the figure is what ranks cost
+# against threads of one process: the pass agreement and the ordered image reduction (the rate is
+# render's own, so start-up and the scene's load are outside it).
 # Usage: bench-mpi.sh RENDER [SCENE] ; RUNS (default 3), SECONDS_PER_RUN (default 2) and THREADS (the
 # total, default 2) from the environment. --bind-to none: with two processes or fewer mpirun binds
 # each rank to one core, and a rank's threads would then share it.
