@@ -25,6 +25,10 @@ void dist_finalize(void);
  * rank-aware: the first of these calls prints one line (on the launcher's rank 0) and exits 2. */
 int dist_rank(void);
 int dist_size(void);
+/* The same refusal, at once: for tools that do not render in-process but would misbehave as
+ * several copies (bin/ch6_equal starts bin/render processes, which would take its launcher's
+ * variables for their own). */
+void dist_refuse_ranks(void);
 static inline bool dist_root(void) { return dist_rank() == 0; }
 
 /* Sums over ranks, in place, identical on every rank. Each entry must come from one rank (the others

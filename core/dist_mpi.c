@@ -90,11 +90,14 @@ static void refuse_if_launched(void)
     checked = true;
     if (launcher_size() > 1) {
         if (launcher_rank() == 0)
-            fprintf(stderr, "%s: not rank-aware: run it without mpirun (only bin/render splits a render over MPI ranks)\n",
+            fprintf(stderr, "%s: not rank-aware: run it without mpirun (only bin/render splits a render over MPI ranks; "
+                    "bin/ch6_equal --render scripts/mpirun-render.sh runs its renders that way)\n",
                     program_invocation_short_name);
         exit(2);
     }
 }
+
+void dist_refuse_ranks(void) { refuse_if_launched(); }
 
 int dist_rank(void)
 {

@@ -11,6 +11,9 @@ void dist_init(int *argc, char ***argv)
 
 void dist_finalize(void) {}
 
+/* Without MPI there is no launcher to recognise: copies started by one run independently. */
+void dist_refuse_ranks(void) {}
+
 int dist_rank(void) { return 0; }
 int dist_size(void) { return 1; }
 

@@ -16,6 +16,7 @@
  * budget T); all atomically. */
 #include "ch6_stats.h"
 #include "cli.h"
+#include "dist.h"
 #include "image.h"
 #include "util.h"
 #include "version.h"
@@ -150,6 +151,8 @@ int main(int argc, char **argv)
     int seeds = 4, refspp = 256, blk = 16, threads = 2, minlen = 1;
     double T = 8, t0 = -1;
     bool reuse = false;
+    /* Several copies would each run every render; MPI goes through --render instead (README MPI). */
+    dist_refuse_ranks();
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i];
 #define VALUE cli_value(prog, argc, argv, &i)

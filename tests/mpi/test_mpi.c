@@ -210,18 +210,21 @@ Test(mpi, bad_input_one_line_exit_2)
     free(err);
 }
 
-/* A tool that does not split its work refuses mpirun at its first render, with one line. */
+/* A tool that does not split its work refuses mpirun with one line: bin/bench at its first render,
+ * bin/ch6_equal (which starts renderer processes) at once. */
 Test(mpi, tools_not_rank_aware_refuse)
 {
-    char cmd[512];
-    snprintf(cmd, sizeof cmd, "timeout " JOB_TIMEOUT " mpirun --oversubscribe -np 2 " BIN_DIR "/bench --runs 1 --seconds 0.05 >%s/bench.out 2>%s/bench.err", dir, dir);
-    int rc = system(cmd);
-    char p[128];
-    snprintf(p, sizeof p, "%s/bench.err", dir);
-    char *err = read_whole_file(p);
-    cr_expect(WIFEXITED(rc) && WEXITSTATUS(rc) == 2, "status %d: %s", rc, err);
-    cr_expect_eq(count(err, "not rank-aware"), 1, "expected the refusal once:\n%s", err);
-    free(err);
+    const char *tools[] = {BIN_DIR "/bench --runs 1 --seconds 0.05", BIN_DIR "/ch6_equal --scene scenes/cornell-box/scene.json"};
+    for (int i = 0; i < 2; i++) {
+        char cmd[512], p[128];
+        snprintf(cmd, sizeof cmd, "timeout " JOB_TIMEOUT " mpirun --oversubscribe -np 2 %s >%s/tool.out 2>%s/tool.err", tools[i], dir, dir);
+        int rc = system(cmd);
+        snprintf(p, sizeof p, "%s/tool.err", dir);
+        char *err = read_whole_file(p);
+        cr_expect(WIFEXITED(rc) && WEXITSTATUS(rc) == 2, "%s: status %d: %s", tools[i], rc, err);
+        cr_expect_eq(count(err, "not rank-aware"), 1, "%s: expected the refusal once:\n%s", tools[i], err);
+        free(err);
+    }
 }
 
 /* The pid of the process run by mpirun `launcher` as rank `rank`, or 0. */
