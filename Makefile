@@ -104,9 +104,11 @@ EXP_BIN := $(patsubst experiments/%.c,$(BIN)/%,$(EXP_SRC))
 # the next build would recompile and relink (and, with PGO, retrain).
 .SECONDARY: $(patsubst %,$(BUILD)/%.o,$(EXP_SRC))
 
-.PHONY: all deps test test-fast test-san check bench clean help
+.PHONY: all tools deps test test-fast test-san check bench clean help
 SHELL := /bin/bash
-all: $(LIBCORE) $(OIIO_MODULE) $(EXP_BIN) $(TEST_BIN) $(TEST_OIIO_MODULE)
+all: tools $(LIBCORE) $(TEST_BIN) $(TEST_OIIO_MODULE)
+# Every executable of bin/ (experiments in subfolders add theirs in their .mk), without the test runner.
+tools: $(OIIO_MODULE) $(EXP_BIN)
 
 # Every compile waits for it (order-only), so the first `make` of a fresh machine, with any -j and
 # any goal, installs the headers and libraries before it needs them.
@@ -195,7 +197,7 @@ $(BUILD)/tests/mpi/%.c.o: CFLAGS += -fno-lto
 
 .PHONY: test-mpi
 ifeq ($(MPI),1)
-test-mpi: deps $(EXP_BIN) $(MPI_TEST_BIN)
+test-mpi: deps tools $(MPI_TEST_BIN)
 	OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none \
 	  $(MPI_TEST_BIN) --jobs 1 $(TEST_ARGS)
 else

@@ -8,7 +8,7 @@ $(BUILD)/experiments/ch6/%: CPPFLAGS += -Iexperiments/ch6
 $(BIN)/ch6_assets $(BIN)/ch6_equal: $(BIN)/%: $(BUILD)/experiments/ch6/%.c.o $(CH6_LIB) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
-all: $(BIN)/ch6_assets $(BIN)/ch6_equal
+tools: $(BIN)/ch6_assets $(BIN)/ch6_equal
 
 # tests/test_ch6_stats.c sees the analysis code.
 $(BUILD)/tests/test_ch6_stats.c.o: CPPFLAGS += -Iexperiments/ch6

@@ -7,7 +7,7 @@ $(BUILD)/experiments/fig5/%: CPPFLAGS += -Iexperiments/fig5
 $(BIN)/fig5_%: $(BUILD)/experiments/fig5/fig5_%_main.c.o $(FIG5_COMMON) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
-all: $(BIN)/fig5_5 $(BIN)/fig5_6
+tools: $(BIN)/fig5_5 $(BIN)/fig5_6
 
 .PHONY: fig5.5 check-fig5.5 fig5.6 check-fig5.6
 # Angle-change images (MMLT vs controlled small steps) with the edge/elsewhere table.
