@@ -292,6 +292,7 @@ clean:
 help:
 	@echo "make            install deps if missing, build core, tools (bin/) and tests"
 	@echo "make test       install deps if missing, build, run all tests"
+	@echo "make tools      every executable of bin/, without the test runner"
 	@echo "make test-san   fast tests under AddressSanitizer + UBSan"
 	@echo "make test-mpi   bin/render under mpirun -np 2 and -np 3 (builds with MPI=1)"
 	@echo "MPI=1           build bin/ against Open MPI: mpirun -np N bin/render ... splits the render"
