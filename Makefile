@@ -51,6 +51,21 @@ else
   endif
 endif
 
+# MPI=1: the renderer over Open MPI ranks (core/dist.h, README "MPI: paper-scale runs"). Its objects
+# live under $(BUILD)/mpi/; the executables stay in $(BIN), relinked whenever the mode changes
+# (LINK_MODE_FILE). The compiler stays the same, Open MPI's flags come from pkg-config (`mpicc` is
+# that compiler with those flags), so both modes compile every shared source identically.
+MPI ?= 0
+LINK_MODE_FILE := $(BUILD)/link-mode
+ifeq ($(MPI),1)
+  BUILD := $(BUILD)/mpi
+  MPI_CFLAGS = $(shell pkg-config --cflags ompi-c)
+  MPI_LIBS = $(shell pkg-config --libs ompi-c)
+  DIST_SRC_OFF := core/dist_single.c
+else
+  DIST_SRC_OFF := core/dist_mpi.c
+endif
+
 CC ?= cc
 CXX ?= c++
 WARN := -Wall -Wextra $(if $(WERROR),-Werror)
@@ -61,7 +76,7 @@ CFLAGS := -std=c11 $(OPT) $(WARN) -pthread
 OIIO_CFLAGS = $(shell pkg-config --cflags OpenImageIO)
 CXXFLAGS = -std=c++17 $(OPT) $(WARN) -pthread -fPIC $(OIIO_CFLAGS)
 LDFLAGS := $(OPT) -pthread
-LDLIBS := -lembree3 -lcjson -lgsl -lgslcblas -lm -ldl
+LDLIBS = -lembree3 -lcjson -lgsl -lgslcblas -lm -ldl $(MPI_LIBS)
 # OpenImageIO lives in a module of its own, opened on the first image read or write (core/oiio.h):
 # linked in, Debian's build adds 120 MB and 0.2 s of start-up to every process.
 # --no-undefined: a module linked without the library fails here, not at its first use.
@@ -72,7 +87,7 @@ GIT_COMMIT := $(or $(PGO_COMMIT),$(shell git rev-parse --short=12 HEAD 2>/dev/nu
 $(shell mkdir -p $(BUILD) && echo '#define GIT_COMMIT "$(GIT_COMMIT)"' > $(BUILD)/version.h.new && (cmp -s $(BUILD)/version.h.new $(BUILD)/version.h || mv $(BUILD)/version.h.new $(BUILD)/version.h))
 CPPFLAGS += -I$(BUILD)
 
-CORE_SRC := $(wildcard core/*.c)
+CORE_SRC := $(filter-out $(DIST_SRC_OFF),$(wildcard core/*.c))
 CORE_OBJ := $(patsubst %,$(BUILD)/%.o,$(CORE_SRC))
 LIBCORE := $(BUILD)/libcore.a
 # A copy beside every directory of executables: core/oiio_load.c looks for it there.
@@ -89,14 +104,23 @@ EXP_BIN := $(patsubst experiments/%.c,$(BIN)/%,$(EXP_SRC))
 # the next build would recompile and relink (and, with PGO, retrain).
 .SECONDARY: $(patsubst %,$(BUILD)/%.o,$(EXP_SRC))
 
-.PHONY: all deps test test-fast test-san check bench clean help
+.PHONY: all tools deps test test-fast test-san check bench clean help
 SHELL := /bin/bash
-all: $(LIBCORE) $(OIIO_MODULE) $(EXP_BIN) $(TEST_BIN) $(TEST_OIIO_MODULE)
+all: tools $(LIBCORE) $(TEST_BIN) $(TEST_OIIO_MODULE)
+# Every executable of bin/ (experiments in subfolders add theirs in their .mk), without the test runner.
+tools: $(OIIO_MODULE) $(EXP_BIN)
 
 # Every compile waits for it (order-only), so the first `make` of a fresh machine, with any -j and
 # any goal, installs the headers and libraries before it needs them.
 deps:
-	@bash scripts/install-deps.sh
+	@bash scripts/install-deps.sh $(if $(filter 1,$(MPI)),--mpi)
+
+# Which library the executables in $(BIN) were linked against ("mpi" or "plain"), rewritten only
+# when it changes: switching MPI=0/1 relinks them from the other mode's objects.
+$(LINK_MODE_FILE): FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(if $(filter 1,$(MPI)),mpi,plain)' > $@.new
+	@cmp -s $@.new $@ && rm $@.new || mv $@.new $@
 
 # OpenImageIO's flags as pkg-config gives them now; rewritten only when they change, so the module
 # is rebuilt and relinked when the package appears (or moves) after an earlier build.
@@ -110,6 +134,9 @@ $(BUILD)/%.c.o: %.c $(PGO_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PGO_CFLAGS) -c $< -o $@
 
+# Only the MPI implementation of core/dist.h sees Open MPI's headers.
+$(BUILD)/core/dist_mpi.c.o: CPPFLAGS += $(MPI_CFLAGS)
+
 $(BUILD)/%.cpp.o: %.cpp $(OIIO_FLAGS_FILE) | deps
 	@mkdir -p $(dir $@)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
@@ -118,7 +145,7 @@ $(BUILD)/%.cpp.o: %.cpp $(OIIO_FLAGS_FILE) | deps
 # and the stamp touched, which recompiles every release object against the new profiles.
 .PHONY: FORCE
 build/pgo.stamp: FORCE | deps
-	@$(MAKE) --no-print-directory PGO_STAGE=gen build/pgo-gen/bin/render
+	@$(MAKE) --no-print-directory PGO_STAGE=gen MPI=0 build/pgo-gen/bin/render
 	@if [ ! -e $@ ] || [ build/pgo-gen/bin/render -nt $@ ]; then \
 	  set -e; rm -rf $(PGO_DIR); mkdir -p $(PGO_DIR); \
 	  echo "training the profile-guided build (scripts/pgo-train.sh)"; \
@@ -137,7 +164,7 @@ $(TEST_OIIO_MODULE): $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
 	cp $< $@
 
-$(BIN)/%: $(BUILD)/experiments/%.c.o $(LIBCORE) | $(OIIO_MODULE)
+$(BIN)/%: $(BUILD)/experiments/%.c.o $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) $< $(LIBCORE) $(LDLIBS) -o $@
 
@@ -154,6 +181,29 @@ $(TEST_BIN): $(TEST_OBJ) $(LIBCORE) | $(TEST_OIIO_MODULE)
 TEST_ARGS ?=
 test: deps all
 	$(TEST_BIN) --jobs 2 $(TEST_ARGS)
+
+# The MPI suite (tests/mpi/): bin/render under `mpirun -np 2` and `-np 3` on this machine,
+# oversubscribed. Built and run in the MPI=1 mode, which leaves bin/'s tools linked against Open MPI
+# (a later plain `make` relinks them); the plain test runner is not rebuilt for it. mpirun refuses root unless told (CI runs as root); containers
+# without ptrace rights refuse Open MPI's cross-memory copies, hence the copy mechanism `none`.
+MPI_TEST_SRC := $(wildcard tests/mpi/*.c)
+MPI_TEST_BIN := $(BUILD)/tests/run-mpi-tests
+$(MPI_TEST_BIN): CPPFLAGS += -DBIN_DIR='"$(BIN)"'
+$(MPI_TEST_BIN): $(patsubst %,$(BUILD)/%.o,$(MPI_TEST_SRC)) $(LIBCORE) | $(TEST_OIIO_MODULE)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDFLAGS) $(filter %.o,$^) $(LIBCORE) $(LDLIBS) -lcriterion -o $@
+$(BUILD)/tests/mpi/%.c.o: CPPFLAGS += -DBIN_DIR='"$(BIN)"'
+$(BUILD)/tests/mpi/%.c.o: CFLAGS += -fno-lto
+
+.PHONY: test-mpi
+ifeq ($(MPI),1)
+test-mpi: deps tools $(MPI_TEST_BIN)
+	OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none \
+	  $(MPI_TEST_BIN) --jobs 1 $(TEST_ARGS)
+else
+test-mpi:
+	$(MAKE) MPI=1 test-mpi
+endif
 
 test-fast: deps all
 	$(TEST_BIN) --jobs 2 --filter '!(stat_*)/*' $(TEST_ARGS)
@@ -219,10 +269,22 @@ fig4.6: deps $(BIN)/fig4_6
 .PHONY: check
 check: $(CHECK_TARGETS)
 
-# The issue targets' figures on the Cornell box, then a table over every committed scene.
+# The issue targets' figures on the Cornell box, then a table over every committed scene; built
+# with MPI=1, also the scaling from one rank to two (bench-mpi).
 bench: deps all $(BENCH_TARGETS)
 	$(BIN)/bench
 	$(BIN)/bench --runs 1 --seconds 1 scenes/*/scene.json
+	$(if $(filter 1,$(MPI)),bash scripts/bench-mpi.sh $(BIN)/render)
+
+# 1 rank x 2 threads against 2 ranks x 1 thread (scripts/bench-mpi.sh), in the MPI=1 build.
+.PHONY: bench-mpi
+ifeq ($(MPI),1)
+bench-mpi: deps $(BIN)/render
+	bash scripts/bench-mpi.sh $(BIN)/render
+else
+bench-mpi:
+	$(MAKE) MPI=1 bench-mpi
+endif
 
 clean:
 	rm -rf build build-san bin
@@ -230,7 +292,10 @@ clean:
 help:
 	@echo "make            install deps if missing, build core, tools (bin/) and tests"
 	@echo "make test       install deps if missing, build, run all tests"
+	@echo "make tools      every executable of bin/, without the test runner"
 	@echo "make test-san   fast tests under AddressSanitizer + UBSan"
+	@echo "make test-mpi   bin/render under mpirun -np 2 and -np 3 (builds with MPI=1)"
+	@echo "MPI=1           build bin/ against Open MPI: mpirun -np N bin/render ... splits the render"
 	@echo "make fig4.1     thesis Fig. 4.1: isotropic vs resolution-aware small steps, noise shape on a 16:9 wall"
 	@echo "make fig4.2     thesis Fig. 4.2: the wall at 1024², 512², 256² and resolution-scaled steps at 256²"
 	@echo "make fig4.3     thesis Fig. 4.3: BDPT vs PSSMLT vs PSSMLT --cdc, a room reflected in a window"
@@ -240,10 +305,10 @@ help:
 	@echo "make ch6-assets  regenerate the living-room and staircase sky and wood texture"
 	@echo "make report     results/report/index.html: every figure made so far beside its claim, checked in Chromium"
 	@echo "make check      regression-check every statistic against results/baselines/"
-	@echo "make bench      throughput figures"
+	@echo "make bench      throughput figures (with MPI=1 also 1 vs 2 ranks; make bench-mpi: that alone)"
 	@echo "make fig4.5, fig4.6, fig5.5, fig5.6, fig6.1, table1-cmlt   thesis figures (check-<target> against the baselines)"
 	@echo "SCALE=quick|paper selects experiment sizes (default quick)"
 	@echo "PGO=0, LTO=0    build without profile-guided / link-time optimisation (after make clean)"
 
 # Every object's header dependencies, the experiments' subfolders (ch4/, cmlt/, fig5/, ...) included.
--include $(CORE_OBJ:.o=.d) $(BUILD)/core/oiio.cpp.d $(TEST_OBJ:.o=.d) $(patsubst %,$(BUILD)/%.d,$(EXP_SRC) $(wildcard experiments/*/*.c))
+-include $(CORE_OBJ:.o=.d) $(BUILD)/core/oiio.cpp.d $(TEST_OBJ:.o=.d) $(patsubst %,$(BUILD)/%.d,$(MPI_TEST_SRC)) $(patsubst %,$(BUILD)/%.d,$(EXP_SRC) $(wildcard experiments/*/*.c))

@@ -4,6 +4,8 @@
 #include "mlt_chain.h"
 #include "camera.h"
 #include "connect.h"
+#include "dist.h"
+#include "dist_merge.h"
 #include "emitter.h"
 #include "integrator.h"
 #include "parallel.h"
@@ -68,6 +70,7 @@ struct seed_job {
     const struct mlt_opts *o;
     int nk;            /* chains per thread: 1 (PSSMLT) or K (MMLT) */
     double *f;         /* seed_paths * nk targets, index i * nk + (k - 1) */
+    int g0, stride;    /* this rank's first global thread; the job's threads (core/dist.h) */
     struct progress prog;
 };
 
@@ -83,12 +86,12 @@ static void seed_worker(int tid, void *p)
     struct splat_list l;
     int tech;
     bool complete;
-    for (long i = tid; i < j->o->seed_paths; i += j->o->threads) {
+    for (long i = j->g0 + tid; i < j->o->seed_paths; i += j->stride) {
         for (int kk = 0; kk < j->nk; kk++) {
             sampler_independent_init(&s, j->o->seed, seed_stream(i, j->nk, kk));
             j->f[i * j->nk + kk] = eval_state(j->o->method, &pc, &s.base, w, kk + 1, x, &l, &tech, &complete);
         }
-        if ((i / j->o->threads) % 1024 == 0) progress_add(&j->prog, 1024);
+        if ((i / j->stride) % 1024 == 0) progress_add(&j->prog, 1024);
     }
     free(x);
     free(w);
@@ -113,6 +116,7 @@ struct run_job {
     struct tech_acc *tech;   /* per thread, with technique_k */
     long (*ctrl_fail)[2];    /* per thread: forward, reverse */
     long *done;
+    int g0, stride;          /* this rank's first global thread; the job's threads (core/dist.h) */
     double t0;
     struct progress prog;
     /* checkpoints (o->ckpt): the rendezvous, the run's normalisation, and on resume each thread's
@@ -247,7 +251,8 @@ static void run_worker(int tid, void *p)
     struct pitp_scratch *ps = pitp ? xmalloc(sizeof *ps) : NULL;
     if (ps) pitp_scratch_init(ps, j->sc);
     rng r;
-    rng_seed(&r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)tid);
+    int g = j->g0 + tid; /* streams and budgets are the job's global thread's */
+    rng_seed(&r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)g);
     bool track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     struct ctrl_sampler *cs = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *cs) : NULL;
     bool complete;
@@ -281,12 +286,12 @@ static void run_worker(int tid, void *p)
         }
         /* The seed's stream reproduced its path; the mutations get a stream of their own, so that
          * two threads starting from the same seed sample do not run identical chains. */
-        rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)tid << 24) | (uint64_t)kk);
+        rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)g << 24) | (uint64_t)kk);
     }
     bool bad = j->resume && !mlt_thread_load(&j->resume[tid], j->sc, &ts);
     if (bad) atomic_store(&j->resume_bad, true);
     if (j->resume && o->seconds <= 0) progress_add(&j->prog, n);
-    long budget = o->mutations / o->threads + (tid < o->mutations % o->threads);
+    long budget = o->mutations / j->stride + (g < o->mutations % j->stride);
     struct splat_list prop;
     for (; !bad; n++) {
         if ((n & 255) == 0 && interrupted()) break;
@@ -463,9 +468,12 @@ static bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_
     const struct mlt_opts *o = rj->o;
     double t0 = now_seconds();
 
-    struct seed_job sj = {rj->sc, o, rj->nk, xmalloc((size_t)o->seed_paths * rj->nk * sizeof(double)), {0}};
-    progress_init(&sj.prog, "seed pass", o->seed_paths, o->progress);
+    /* The seed pass is dealt over the job's threads; each target is computed by one rank and the
+     * others hold 0, so the sum gives every rank the whole pass, exactly. */
+    struct seed_job sj = {rj->sc, o, rj->nk, xcalloc((size_t)o->seed_paths * rj->nk, sizeof(double)), rj->g0, rj->stride, {0}};
+    progress_init(&sj.prog, "seed pass", o->seed_paths / dist_size(), o->progress);
     parallel_run(o->threads, seed_worker, &sj);
+    dist_sum_doubles(sj.f, (size_t)o->seed_paths * rj->nk);
     progress_finish(&sj.prog);
 
     double total = 0;
@@ -525,6 +533,10 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
                  "--min-length..--max-length");
         return false;
     }
+    if (o.technique_k && dist_size() > 1) {
+        snprintf(err, errlen, "technique images are not merged across MPI ranks: make them without mpirun");
+        return false;
+    }
     if (o.angle_stats && (o.method == MLT_PSSMLT || o.large_step != LARGE_MMLT)) {
         snprintf(err, errlen, "angle statistics need mmlt or pitp with MMLT large steps");
         return false;
@@ -535,6 +547,8 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     rj.o = &o;
     rj.nk = nk;
     rj.res = r;
+    rj.g0 = dist_thread0(T);
+    rj.stride = dist_size() * T;
     bool resumed = o.ckpt && o.ckpt->resume;
     if (resumed ? !resume_global(&rj, err, errlen) : !normalise(&rj, r, err, errlen)) return false;
     rj.img = xcalloc((size_t)T, sizeof(struct image *));
@@ -551,19 +565,27 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         rj.img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
     rj.t0 = now_seconds() - rj.elapsed0;
-    progress_init(&rj.prog, (const char *[]){"pssmlt", "mmlt", "pitp"}[o.method], o.seconds > 0 ? (long)(1000 * o.seconds) : o.mutations,
+    progress_init(&rj.prog, (const char *[]){"pssmlt", "mmlt", "pitp"}[o.method], o.seconds > 0 ? (long)(1000 * o.seconds) : o.mutations / dist_size(),
                   o.progress);
     if (o.ckpt) ckpt_sync_init(&rj.sync, T, o.ckpt->every, mlt_save, &rj);
     parallel_run(T, run_worker, &rj);
     progress_finish(&rj.prog);
+    /* Counts over the job's threads (integers: exact in any order), before the image's scale. */
+    long counts[5] = {0, 0, 0, interrupted(), atomic_load(&rj.resume_bad)};
+    for (int i = 0; i < T; i++) {
+        counts[0] += rj.done[i];
+        counts[1] += rj.ctrl_fail[i][0];
+        counts[2] += rj.ctrl_fail[i][1];
+    }
+    dist_sum_longs(counts, 5); /* every rank learns of an interruption or a bad resume anywhere */
     r->seconds = now_seconds() - rj.t0;
-    r->partial = interrupted();
+    r->partial = counts[3] > 0;
     if (o.ckpt) {
-        if (r->partial) mlt_save(&rj); /* Ctrl-C: every thread stored where it stopped */
+        if (interrupted()) mlt_save(&rj); /* Ctrl-C: every thread stored where it stopped */
         ckpt_sync_destroy(&rj.sync);
     }
     free(rj.resume);
-    if (atomic_load(&rj.resume_bad)) {
+    if (counts[4]) {
         snprintf(err, errlen, "the checkpoint's state does not fit this run's chains");
         for (int i = 0; i < T; i++) img_destroy(rj.img[i]);
         free(rj.img);
@@ -573,26 +595,26 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         if (rj.angle)
             for (int i = 0; i < T; i++) angle_acc_free(&rj.angle[i]);
         free(rj.angle);
+        if (rj.tech)
+            for (int i = 0; i < T; i++) tech_acc_free(&rj.tech[i]);
+        free(rj.tech);
         return false;
     }
-    for (int i = 0; i < T; i++) r->mutations += rj.done[i];
+    r->mutations = counts[0];
+    r->ctrl_fail_forward = counts[1];
+    r->ctrl_fail_reverse = counts[2];
     r->img = img_create(W, H);
     stats_clear(&r->stats);
-    double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
-    for (int i = 0; i < T; i++) { /* fixed order: reproducible sums */
-        img_accumulate(r->img, rj.img[i], scale);
-        stats_merge(&r->stats, &rj.stats[i]);
-        img_destroy(rj.img[i]);
-        r->ctrl_fail_forward += rj.ctrl_fail[i][0];
-        r->ctrl_fail_reverse += rj.ctrl_fail[i][1];
-    }
     if (o.angle_stats) {
         r->angle = xmalloc(sizeof *r->angle);
         angle_acc_init(r->angle, W, H);
-        for (int i = 0; i < T; i++) {
-            angle_acc_merge(r->angle, &rj.angle[i]);
-            angle_acc_free(&rj.angle[i]);
-        }
+    }
+    double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
+    merge_thread_results(&(struct thread_results){.threads = T, .img = rj.img, .scale = scale, .stats = rj.stats, .angle = rj.angle},
+                         r->img, &r->stats, r->angle);
+    for (int i = 0; i < T; i++) img_destroy(rj.img[i]);
+    if (o.angle_stats) {
+        for (int i = 0; i < T; i++) angle_acc_free(&rj.angle[i]);
         free(rj.angle);
     }
     if (rj.tech) r->tech = tech_acc_reduce(rj.tech, T, scale);

@@ -1,5 +1,7 @@
 #include "render.h"
 #include "camera.h"
+#include "dist.h"
+#include "dist_merge.h"
 #include "integrator.h"
 #include "parallel.h"
 #include "util.h"
@@ -50,6 +52,7 @@ struct job {
     struct progress prog;
     int first, count; /* samples first .. first + count - 1 of every pixel */
     uint64_t key;     /* sample i of film cell c draws from stream c * key + i */
+    int g0, stride;   /* this rank's first global thread; the job's threads (core/dist.h) */
     /* --time: passes of one sample per pixel until the budget */
     struct pass_barrier passes;
     int spp;          /* passes done */
@@ -123,15 +126,15 @@ static void worker(int tid, void *p)
     struct path_ctx pc = {.sc = sc, .max_length = o->max_length, .min_length = o->min_length, .only_s = o->only_s, .only_t = o->only_t};
     struct scratch *w = xmalloc(sizeof *w);
     struct image *img = j->img[tid];
-    int W = camera_film_width(&sc->cam), H = camera_film_height(&sc->cam), T = o->threads;
+    int W = camera_film_width(&sc->cam), H = camera_film_height(&sc->cam);
     struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H};
     struct ckpt_sync *sync = o->ckpt ? &j->sync : NULL;
-    struct mc_pos at = {tid, 0, j->first};
+    struct mc_pos at = {j->g0 + tid, 0, j->first};
     bool bad = j->resume && !load_thread(&j->resume[tid], j, tid, &at);
     if (bad) atomic_store(&j->resume_bad, true);
     long done = j->samples[tid];
     w->nonfinite = j->nonfinite[tid];
-    if (o->seconds <= 0) progress_add(&j->prog, (at.y - tid) / T);
+    if (o->seconds <= 0) progress_add(&j->prog, (at.y - j->g0 - tid) / j->stride);
     do {
         /* Ctrl-C is honoured within a pixel (every 4096 samples), not only between rows: a row of
          * a high-spp render can take minutes. */
@@ -155,7 +158,7 @@ static void worker(int tid, void *p)
                     ckpt_sync_arrive(sync);
                 }
             }
-            at.y += T;
+            at.y += j->stride;
             at.x = 0;
             if (o->seconds <= 0) progress_add(&j->prog, 1);
         }
@@ -165,7 +168,7 @@ static void worker(int tid, void *p)
         /* every thread meets the others after a pass, interrupted or not; an interrupted pass
          * ends the run, and `at` keeps where this thread stopped in it */
         if (o->seconds <= 0 || !pass_barrier_arrive(&j->passes)) break;
-        at = (struct mc_pos){tid, 0, j->first}; /* next_pass set j->first */
+        at = (struct mc_pos){j->g0 + tid, 0, j->first}; /* next_pass set j->first */
     } while (true);
     if (sync) {
         save_thread(&sync->slot[tid], j, tid, at);
@@ -175,19 +178,23 @@ static void worker(int tid, void *p)
 }
 
 /* Called between passes by one thread while the others wait: another pass only if it should end
- * within the budget at the mean pass time so far. A due checkpoint is taken here, where every
- * thread stands at the start of the next pass. */
+ * within the budget at the mean pass time so far. Over MPI ranks the slowest rank's time counts
+ * and rank 0 decides for all, so that every rank renders the same passes. A due checkpoint is
+ * taken here, where every thread stands at the start of the next pass; rank 0 decides that too,
+ * so every rank's checkpoint holds the same pass. */
 static bool next_pass(void *p)
 {
     struct job *j = p;
     j->spp++;
-    double elapsed = now_seconds() - j->t0;
+    double elapsed = dist_max_double(now_seconds() - j->t0);
     progress_set(&j->prog, (long)(1000 * elapsed));
-    if (interrupted() || j->spp >= TIME_MODE_MAX_SPP || elapsed * (j->spp + 1) / j->spp > j->o->seconds) return false;
+    bool more = !(interrupted() || j->spp >= TIME_MODE_MAX_SPP || elapsed * (j->spp + 1) / j->spp > j->o->seconds);
+    if (!dist_bcast_bool(more)) return false;
     j->first = j->spp;
     struct ckpt_ctl *ctl = j->o->ckpt;
-    if (ctl && ctl->every > 0 && now_seconds() >= j->next_ckpt) {
-        for (int i = 0; i < j->o->threads; i++) save_thread(&j->sync.slot[i], j, i, (struct mc_pos){i, 0, j->first});
+    if (ctl && ctl->every > 0 && dist_bcast_bool(now_seconds() >= j->next_ckpt)) {
+        for (int i = 0; i < j->o->threads; i++)
+            save_thread(&j->sync.slot[i], j, i, (struct mc_pos){j->g0 + i, 0, j->first});
         mc_save(j);
         j->next_ckpt = now_seconds() + ctl->every;
     }
@@ -200,13 +207,21 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     struct render_opts opts = *o;
     opts.threads = T;
     struct job j = {.sc = sc, .o = &opts, .img = xcalloc((size_t)T, sizeof(struct image *)),
-                    .nonfinite = xcalloc((size_t)T, sizeof(long)), .samples = xcalloc((size_t)T, sizeof(long))};
+                    .nonfinite = xcalloc((size_t)T, sizeof(long)), .samples = xcalloc((size_t)T, sizeof(long)),
+                    .g0 = dist_thread0(T), .stride = dist_size() * T};
     for (int i = 0; i < T; i++) {
         j.img[i] = img_create(W, H);
         j.img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
     double t0 = now_seconds(), elapsed0 = 0;
-    if (o->ckpt && o->ckpt->resume && !mc_resume_global(&j, &elapsed0)) atomic_store(&j.resume_bad, true);
+    if (o->ckpt && o->ckpt->resume) {
+        long bad = !mc_resume_global(&j, &elapsed0);
+        /* ranks must agree, and under a time budget be at the same pass: a job stopped between
+         * two ranks' writes left checkpoints of different passes, whose passes would not meet */
+        if (o->seconds > 0 && dist_max_double(j.first) != -dist_max_double(-j.first)) bad = 1;
+        dist_sum_longs(&bad, 1);
+        if (bad) atomic_store(&j.resume_bad, true);
+    }
     if (o->ckpt) {
         /* periodic checkpoints poll per pixel with a spp budget, and are taken between passes
          * with a time budget (next_pass) */
@@ -227,30 +242,35 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         pass_barrier_destroy(&j.passes);
         spp = j.spp;
     } else {
-        progress_init(&j.prog, method_name(o->method), camera_film_height(&sc->cam), o->progress);
+        int rows = 0; /* this rank's */
+        for (int y = 0; y < camera_film_height(&sc->cam); y++) rows += y % j.stride >= j.g0 && y % j.stride < j.g0 + T;
+        progress_init(&j.prog, method_name(o->method), rows, o->progress);
         j.count = spp;
         j.key = (uint64_t)spp;
         parallel_run(T, worker, &j);
     }
     progress_finish(&j.prog);
-    st->resume_failed = atomic_load(&j.resume_bad);
     if (o->ckpt) {
         if (interrupted()) mc_save(&j); /* Ctrl-C: every thread stored where it stopped */
         ckpt_sync_destroy(&j.sync);
     }
     free(j.resume);
     struct image *out = img_create(W, H);
-    st->nonfinite = 0;
-    st->samples = 0;
-    for (int i = 0; i < T; i++) { /* fixed order: reproducible sums */
-        img_accumulate(out, j.img[i], 1.0 / spp);
-        st->nonfinite += j.nonfinite[i];
-        st->samples += j.samples[i];
+    merge_thread_results(&(struct thread_results){.threads = T, .img = j.img, .scale = 1.0 / spp}, out, NULL, NULL);
+    /* over the job's threads: integers, exact in any order */
+    long counts[4] = {0, 0, interrupted(), atomic_load(&j.resume_bad)};
+    for (int i = 0; i < T; i++) {
+        counts[0] += j.nonfinite[i];
+        counts[1] += j.samples[i];
         img_destroy(j.img[i]);
     }
+    dist_sum_longs(counts, 4);
+    st->nonfinite = counts[0];
+    st->samples = counts[1];
+    st->resume_failed = counts[3] > 0;
     st->seconds = now_seconds() - j.t0;
     st->spp = spp;
-    st->partial = interrupted();
+    st->partial = counts[2] > 0;
     free(j.img);
     free(j.nonfinite);
     free(j.samples);

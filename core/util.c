@@ -79,3 +79,17 @@ bool write_text_atomic(const char *path, const char *text, char *err, size_t err
 {
     return atomic_write(path, write_text, (void *)text, err, errlen);
 }
+
+char *read_whole_file(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *s = n >= 0 ? xmalloc((size_t)n + 1) : NULL;
+    size_t r = s ? fread(s, 1, (size_t)n, f) : 0;
+    if (s) s[r] = 0;
+    fclose(f);
+    return s;
+}

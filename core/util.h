@@ -16,6 +16,8 @@ void die_assert(const char *expr, const char *file, int line);
  * `write` is called with the temporary path. */
 typedef bool (*write_fn)(const char *tmp_path, void *ctx, char *err, size_t errlen);
 bool atomic_write(const char *path, write_fn write, void *ctx, char *err, size_t errlen);
+/* A whole file as a NUL-terminated string (the caller frees it), or NULL when it cannot be read. */
+char *read_whole_file(const char *path);
 
 #endif
 

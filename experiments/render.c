@@ -1,9 +1,11 @@
 /* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
- * MCMC methods, PREFIX.csv with acceptance statistics. */
+ * MCMC methods, PREFIX.csv with acceptance statistics. Built with MPI=1 and started by mpirun, its
+ * ranks share the render (core/dist.h) and rank 0 alone writes the outputs and the summary. */
 #include "accel.h"
 #include "checkpoint.h"
 #include "camera.h"
 #include "cli.h"
+#include "dist.h"
 #include "emitter.h"
 #include "mlt.h"
 #include "parallel.h"
@@ -252,6 +254,7 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     FILE *f = open_memstream(&buf, &len);
     fprintf(f, "# render %s --method %s\n# commit %s\n# seed %llu\n# threads %d\n# max_length %d\n", a->scene,
             a->method, GIT_COMMIT, (unsigned long long)a->mlt.seed, a->mlt.threads, a->mlt.max_length);
+    if (dist_size() > 1) fprintf(f, "# ranks %d\n", dist_size()); /* threads are per rank */
     fprintf(f, "# large_step %s\n# hybrid_length %d\n# uniform_lengths %d\n",
             (const char *[]){"mmlt", "mctls", "hybrid"}[a->mlt.large_step], a->mlt.hybrid_length, a->mlt.uniform_lengths);
     fprintf(f, "# mis %s\n", a->mlt.max_heuristic ? "maximum" : "balance");
@@ -302,8 +305,18 @@ static void options_text(const struct args *a, const struct scene *sc, char *buf
     }
 }
 
+/* "(4 threads)", or under MPI "(2 ranks x 2 threads)". */
+static const char *threads_note(int threads)
+{
+    static char s[64];
+    if (dist_size() > 1) snprintf(s, sizeof s, "%d ranks x %d threads", dist_size(), threads);
+    else snprintf(s, sizeof s, "%d threads", threads);
+    return s;
+}
+
 int main(int argc, char **argv)
 {
+    dist_init(&argc, &argv);
     struct args a = {.out = "out", .method = "bdpt"};
     a.mc = (struct render_opts){.method = METHOD_BDPT, .spp = -1, .seed = 1, .threads = cpu_count(), .max_length = -1,
                                 .progress = true};
@@ -333,15 +346,26 @@ int main(int argc, char **argv)
     if (a.mc.spp < 0) a.mc.spp = sc->spp > 0 ? sc->spp : 16;
     if (a.mc.max_length < 0) a.mc.max_length = sc->max_length;
     if (a.mc.progress && !isatty(2)) a.mc.progress = a.mlt.progress = false;
-    /* Checkpoints are always armed: Ctrl-C leaves one even without --checkpoint. */
-    char ckpt_path[4096], opts[1024];
+    /* Checkpoints are always armed: Ctrl-C leaves one even without --checkpoint. Over N > 1 MPI
+     * ranks each rank keeps its own threads' state, in PREFIX.ckpt.rankR, and --resume FILE reads
+     * FILE.rankR. */
+    char ckpt_path[4096], resume_path[4096], opts[1100];
+    int N = dist_size(), R = dist_rank();
     snprintf(ckpt_path, sizeof ckpt_path, "%s.ckpt", a.out);
+    if (N > 1) snprintf(ckpt_path + strlen(ckpt_path), sizeof ckpt_path - strlen(ckpt_path), ".rank%d", R);
     options_text(&a, sc, opts, sizeof opts);
+    snprintf(opts + strlen(opts), sizeof opts - strlen(opts), " ranks=%d", N);
     struct ckpt_ctl ctl = {.path = ckpt_path, .every = a.checkpoint, .id = {ckpt_build_hash(), ckpt_scene_hash(sc), opts}};
     struct ckpt_buf resume = {0};
     if (a.resume) {
-        if (!ckpt_read_file(a.resume, &ctl.id, &resume, err, sizeof err)) {
-            fprintf(stderr, "render: --resume %s\n", err);
+        snprintf(resume_path, sizeof resume_path, N > 1 ? "%s.rank%d" : "%s", a.resume, R);
+        long failed = !ckpt_read_file(resume_path, &ctl.id, &resume, err, sizeof err), own = failed;
+        dist_sum_longs(&failed, 1); /* all ranks resume, or none */
+        if (failed) {
+            if (own) fprintf(stderr, "render: --resume %s\n", err);
+            else fprintf(stderr, "render: --resume %s: %ld of the %d ranks' checkpoints (%s.rankR) are missing, damaged or of another run\n",
+                         a.resume, failed, N, a.resume);
+            ckpt_buf_free(&resume);
             scene_free(sc);
             return 2;
         }
@@ -361,12 +385,12 @@ int main(int argc, char **argv)
             scene_free(sc);
             return 2;
         }
-        ok = img_write_exr_png(img, a.out, err, sizeof err);
+        ok = !dist_root() || img_write_exr_png(img, a.out, err, sizeof err);
         partial = st.partial;
-        if (ok)
-            printf("%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%d threads), %ld non-finite dropped\n",
+        if (ok && dist_root())
+            printf("%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped\n",
                    partial ? "PARTIAL (interrupted) " : "", a.method, st.samples, st.spp, st.seconds, st.samples / st.seconds,
-                   a.mc.threads, st.nonfinite);
+                   threads_note(a.mc.threads), st.nonfinite);
         img_destroy(img);
     } else {
         a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : !strcmp(a.method, "pitp") ? MLT_PITP : MLT_PSSMLT;
@@ -391,17 +415,18 @@ int main(int argc, char **argv)
             return a.resume ? 2 : 1;
         }
         partial = r.partial;
-        ok = img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
-             (!r.angle || write_angle(&a, &r, err, sizeof err)) && (!r.tech || write_tech(&a, &r, err, sizeof err));
-        if (ok)
-            printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%d threads), %ld non-finite "
+        ok = !dist_root() || (img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
+                              (!r.angle || write_angle(&a, &r, err, sizeof err)) && (!r.tech || write_tech(&a, &r, err, sizeof err)));
+        if (ok && dist_root())
+            printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%s), %ld non-finite "
                    "dropped\n",
-                   partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds, a.mlt.threads, r.nonfinite);
+                   partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds,
+                   threads_note(a.mlt.threads), r.nonfinite);
         mlt_result_free(&r);
     }
     if (!ok) fprintf(stderr, "%s\n", err);
     if (ctl.err[0]) fprintf(stderr, "render: warning: %s\n", ctl.err);
-    else if (partial && ctl.written) fprintf(stderr, "render: interrupted; continue with --resume %s\n", ckpt_path);
+    else if (partial && ctl.written) fprintf(stderr, "render: interrupted; continue with --resume %s.ckpt\n", a.out);
     ckpt_buf_free(&resume);
     scene_free(sc);
     return !ok ? 1 : partial ? 130 : 0;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs exactly the Debian packages the harness needs; does nothing when they are all present.
-# Used by the README's set-up, by `make` (deps target), by `make report` (with --report) and by .ci/run.
+# Used by the README's set-up, by `make` (deps target), by `make report` (with --report), by
+# `make MPI=1` (with --mpi) and by .ci/run.
 set -euo pipefail
 pkgs=(
   build-essential pkg-config
@@ -13,8 +14,15 @@ pkgs=(
   fonts-dejavu-core        # labels in oiiotool montages (cmlt-montage.sh)
 )
 # `--report`: also the browser that checks results/report/index.html (make report, CI); large, so
-# only when asked.
-if [ "${1:-}" = "--report" ]; then pkgs+=(chromium); fi
+# only when asked. `--mpi`: Open MPI's compiler wrapper, headers and mpirun, for `make MPI=1`
+# (README "MPI: paper-scale runs"); the default build does not use them.
+for arg in "$@"; do
+  case "$arg" in
+    --report) pkgs+=(chromium) ;;
+    --mpi) pkgs+=(libopenmpi-dev openmpi-bin) ;;
+    *) echo "install-deps: unknown option '$arg' (expected --report or --mpi)" >&2; exit 2 ;;
+  esac
+done
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -6,9 +6,9 @@ CH4_OBJ := $(patsubst %,$(BUILD)/%.o,$(CH4_SRC))
 CH4_BASE := results/baselines
 
 $(BUILD)/experiments/fig4_%.c.o: CPPFLAGS += -Iexperiments/ch4
-$(BIN)/fig4_1 $(BIN)/fig4_2 $(BIN)/fig4_3: $(BIN)/%: $(BUILD)/experiments/%.c.o $(CH4_OBJ) $(LIBCORE) | $(OIIO_MODULE)
+$(BIN)/fig4_1 $(BIN)/fig4_2 $(BIN)/fig4_3: $(BIN)/%: $(BUILD)/experiments/%.c.o $(CH4_OBJ) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
 
 # tests/test_noise_corr.c sees the shared analysis code.
 $(BUILD)/tests/test_noise_corr.c.o: CPPFLAGS += -Iexperiments/ch4

@@ -5,10 +5,10 @@ CH6_LIB := $(patsubst %,$(BUILD)/%.o,experiments/ch6/ch6_stats.c)
 $(BUILD)/experiments/ch6/%: CPPFLAGS += -Iexperiments/ch6
 .SECONDARY: $(CH6_LIB) $(BUILD)/experiments/ch6/ch6_assets.c.o $(BUILD)/experiments/ch6/ch6_equal.c.o $(BUILD)/experiments/ch6/ch6_tech.c.o
 
-$(BIN)/ch6_assets $(BIN)/ch6_equal $(BIN)/ch6_tech: $(BIN)/%: $(BUILD)/experiments/ch6/%.c.o $(CH6_LIB) $(LIBCORE) | $(OIIO_MODULE)
+$(BIN)/ch6_assets $(BIN)/ch6_equal $(BIN)/ch6_tech: $(BIN)/%: $(BUILD)/experiments/ch6/%.c.o $(CH6_LIB) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
-all: $(BIN)/ch6_assets $(BIN)/ch6_equal $(BIN)/ch6_tech
+	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
+tools: $(BIN)/ch6_assets $(BIN)/ch6_equal $(BIN)/ch6_tech
 
 # tests/test_ch6_stats.c sees the analysis code.
 $(BUILD)/tests/test_ch6_stats.c.o: CPPFLAGS += -Iexperiments/ch6

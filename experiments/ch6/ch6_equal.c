@@ -16,6 +16,7 @@
  * budget T); all atomically. */
 #include "ch6_stats.h"
 #include "cli.h"
+#include "dist.h"
 #include "image.h"
 #include "util.h"
 #include "version.h"
@@ -116,20 +117,6 @@ static double csv_nonzero(const char *text, const char *kind)
     return att > 0 ? nz / att : NAN;
 }
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = xmalloc((size_t)n + 1);
-    size_t r = fread(s, 1, (size_t)n, f);
-    s[r] = 0;
-    fclose(f);
-    return s;
-}
-
 /* mkdir -p */
 static void make_dirs(const char *path)
 {
@@ -164,6 +151,8 @@ int main(int argc, char **argv)
     int seeds = 4, refspp = 256, blk = 16, threads = 2, minlen = 1;
     double T = 8, t0 = -1;
     bool reuse = false;
+    /* Several copies would each run every render; MPI goes through --render instead (README MPI). */
+    dist_refuse_ranks();
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i];
 #define VALUE cli_value(prog, argc, argv, &i)
@@ -342,7 +331,7 @@ int main(int argc, char **argv)
                 }
                 img_destroy(im);
                 snprintf(path, sizeof path, "%.4000s.csv", prefix);
-                char *csv = slurp(path);
+                char *csv = read_whole_file(path);
                 if (!csv) fail("cannot read ", path);
                 r->seconds = csv_header(csv, "seconds");
                 r->mutations = csv_header(csv, "mutations");

@@ -5,9 +5,9 @@ CMLT_OUT := results/table1-cmlt
 CMLT_BASE := results/baselines/table1-cmlt
 CMLT_COMMIT := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 
-$(BIN)/table1_cmlt: $(BUILD)/experiments/table1_cmlt.c.o $(CMLT_OBJ) $(LIBCORE) | $(OIIO_MODULE)
+$(BIN)/table1_cmlt: $(BUILD)/experiments/table1_cmlt.c.o $(CMLT_OBJ) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
 
 # tests/test_cmlt*.c see the toy's headers and link its objects.
 $(BUILD)/tests/test_cmlt%: CPPFLAGS += -Iexperiments/cmlt

@@ -4,10 +4,10 @@ FIG5_COMMON := $(patsubst %,$(BUILD)/%.o,experiments/fig5/fig5_common.c experime
 $(BUILD)/experiments/fig5/%: CPPFLAGS += -Iexperiments/fig5
 .SECONDARY: $(FIG5_COMMON) $(BUILD)/experiments/fig5/fig5_5_main.c.o $(BUILD)/experiments/fig5/fig5_6_main.c.o
 
-$(BIN)/fig5_%: $(BUILD)/experiments/fig5/fig5_%_main.c.o $(FIG5_COMMON) $(LIBCORE) | $(OIIO_MODULE)
+$(BIN)/fig5_%: $(BUILD)/experiments/fig5/fig5_%_main.c.o $(FIG5_COMMON) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
-all: $(BIN)/fig5_5 $(BIN)/fig5_6
+	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
+tools: $(BIN)/fig5_5 $(BIN)/fig5_6
 
 .PHONY: fig5.5 check-fig5.5 fig5.6 check-fig5.6
 # Angle-change images (MMLT vs controlled small steps) with the edge/elsewhere table.
