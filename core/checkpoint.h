@@ -92,4 +92,11 @@ void ckpt_sync_arrive(struct ckpt_sync *s);
 /* Called once by each thread when its work ends, after storing its final state. */
 void ckpt_sync_finish(struct ckpt_sync *s);
 
+/* A run's checkpoint: the renderer's own header (freed here), then every thread's slot; a write
+ * that fails leaves its reason in ctl->err and the run goes on. */
+void ckpt_save_run(struct ckpt_ctl *ctl, struct ckpt_buf *head, const struct ckpt_sync *s);
+/* The counterpart, after the renderer has read its header from b: one buffer per thread (borrowing
+ * b's bytes; free the array), or NULL when the payload does not end with exactly that many. */
+struct ckpt_buf *ckpt_resume_threads(struct ckpt_buf *b, int threads);
+
 #endif

@@ -68,3 +68,19 @@ void ckpt_sync_finish(struct ckpt_sync *s)
     save_if_complete(s);
     pthread_mutex_unlock(&s->lock);
 }
+
+void ckpt_save_run(struct ckpt_ctl *ctl, struct ckpt_buf *head, const struct ckpt_sync *s)
+{
+    for (int i = 0; i < s->threads; i++) ckpt_put_buf(head, &s->slot[i]);
+    if (ckpt_write_file(ctl->path, &ctl->id, head, ctl->err, sizeof ctl->err)) ctl->written = true;
+    ckpt_buf_free(head);
+}
+
+struct ckpt_buf *ckpt_resume_threads(struct ckpt_buf *b, int threads)
+{
+    struct ckpt_buf *t = xcalloc((size_t)threads, sizeof *t);
+    for (int i = 0; i < threads; i++) ckpt_get_buf(b, &t[i]);
+    if (!b->short_read && b->pos == b->len) return t;
+    free(t);
+    return NULL;
+}

@@ -421,7 +421,6 @@ static const char mlt_tag[8] = "MLTRUN1";
 static void mlt_save(void *p)
 {
     struct run_job *j = p;
-    struct ckpt_ctl *ctl = j->o->ckpt;
     struct ckpt_buf b = {0};
     double elapsed = now_seconds() - j->t0;
     ckpt_put(&b, mlt_tag, sizeof mlt_tag);
@@ -431,9 +430,7 @@ static void mlt_save(void *p)
     CKPT_PUT(&b, j->kcdf);
     CKPT_PUT(&b, j->scale);
     CKPT_PUT(&b, elapsed);
-    for (int i = 0; i < j->o->threads; i++) ckpt_put_buf(&b, &j->sync.slot[i]);
-    if (ckpt_write_file(ctl->path, &ctl->id, &b, ctl->err, sizeof ctl->err)) ctl->written = true;
-    ckpt_buf_free(&b);
+    ckpt_save_run(j->o->ckpt, &b, &j->sync);
 }
 
 /* The counterpart of mlt_save's header, and each thread's state located for its worker. */
@@ -451,11 +448,11 @@ static bool resume_global(struct run_job *rj, char *err, size_t errlen)
     CKPT_GET(b, rj->kcdf);
     CKPT_GET(b, rj->scale);
     CKPT_GET(b, elapsed);
-    rj->resume = xcalloc((size_t)rj->o->threads, sizeof *rj->resume);
-    for (int i = 0; i < rj->o->threads; i++) ckpt_get_buf(b, &rj->resume[i]);
-    if (b->short_read || memcmp(tag, mlt_tag, sizeof tag) || b->pos != b->len) {
+    rj->resume = ckpt_resume_threads(b, rj->o->threads);
+    if (!rj->resume || memcmp(tag, mlt_tag, sizeof tag)) {
         snprintf(err, errlen, "the checkpoint's state does not fit this run (not an MCMC run of these options)");
         free(rj->resume);
+        rj->resume = NULL;
         return false;
     }
     rj->elapsed0 = elapsed;

@@ -93,15 +93,12 @@ static const char mc_tag[8] = "MCRUN01";
 static void mc_save(void *p)
 {
     struct job *j = p;
-    struct ckpt_ctl *ctl = j->o->ckpt;
     struct ckpt_buf b = {0};
     double elapsed = now_seconds() - j->t0;
     ckpt_put(&b, mc_tag, sizeof mc_tag);
     CKPT_PUT(&b, j->first);
     CKPT_PUT(&b, elapsed);
-    for (int i = 0; i < j->o->threads; i++) ckpt_put_buf(&b, &j->sync.slot[i]);
-    if (ckpt_write_file(ctl->path, &ctl->id, &b, ctl->err, sizeof ctl->err)) ctl->written = true;
-    ckpt_buf_free(&b);
+    ckpt_save_run(j->o->ckpt, &b, &j->sync);
 }
 
 static bool mc_resume_global(struct job *j, double *elapsed)
@@ -113,9 +110,8 @@ static bool mc_resume_global(struct job *j, double *elapsed)
     CKPT_GET(b, j->first);
     j->spp = j->first;
     CKPT_GET(b, *elapsed);
-    j->resume = xcalloc((size_t)j->o->threads, sizeof *j->resume);
-    for (int i = 0; i < j->o->threads; i++) ckpt_get_buf(b, &j->resume[i]);
-    return !b->short_read && !memcmp(tag, mc_tag, sizeof tag) && b->pos == b->len;
+    j->resume = ckpt_resume_threads(b, j->o->threads);
+    return j->resume && !memcmp(tag, mc_tag, sizeof tag);
 }
 
 static void worker(int tid, void *p)
