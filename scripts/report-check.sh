@@ -24,6 +24,9 @@ done < <(grep -o 'href="[^"]*"' "$page" | sed 's/href="//; s/"$//')
 [ $broken = 0 ] || exit 1
 shot="$dir/screenshot.png"
 rm -f "$shot"
-(cd "$dir" && "$chrome" "${flags[@]}" --window-size=1300,5000 --screenshot="$shot" "$url" >/dev/null 2>&1)
+# The whole page in one tall window. Without a fixed device scale factor and with scroll bars,
+# headless Chromium painted only the top ~2400 px of a 5000 px window and left the rest black.
+(cd "$dir" && "$chrome" "${flags[@]}" --window-size=1300,16000 --force-device-scale-factor=1 --hide-scrollbars \
+  --screenshot="$shot" "$url" >/dev/null 2>&1)
 [ -s "$shot" ] || { echo "report-check: no screenshot written" >&2; exit 1; }
 echo "report-check: ${check#data-imgcheck=}, links ok, screenshot $shot"
