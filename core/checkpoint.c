@@ -150,8 +150,15 @@ static bool write_all(int fd, const void *p, size_t n)
     return true;
 }
 
-/* Layout: magic, build, scene, options length and text, payload length and bytes, then the hash
- * of all of it. */
+/* Layout: magic, build, scene, options length and text, payload length (the header), then the
+ * payload, then hash64 of the payload seeded with hash64 of the header: the payload, every
+ * framebuffer of the run, is hashed where it lies rather than copied behind the header. */
+#define HEAD_FIXED (8 + 3 * 8 + 8) /* the header without the options text */
+
+static uint64_t checksum(const unsigned char *head, size_t hlen, const unsigned char *payload, size_t plen)
+{
+    return hash64(hash64(0, head, hlen), payload, plen);
+}
 bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ckpt_buf *payload, char *err, size_t errlen)
 {
     struct ckpt_buf head = {0};
@@ -162,13 +169,12 @@ bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ck
     CKPT_PUT(&head, olen);
     ckpt_put(&head, id->options, olen);
     CKPT_PUT(&head, plen);
-    ckpt_put(&head, payload->p, payload->len); /* one buffer: the hash reads it as the reader will */
-    uint64_t sum = hash64(0, head.p, head.len);
+    uint64_t sum = checksum(head.p, head.len, payload->p, payload->len);
     size_t n = strlen(path) + 32;
     char *tmp = xmalloc(n);
     snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid());
     int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    bool ok = fd >= 0 && write_all(fd, head.p, head.len) &&
+    bool ok = fd >= 0 && write_all(fd, head.p, head.len) && write_all(fd, payload->p, payload->len) &&
               write_all(fd, &sum, sizeof sum) && fsync(fd) == 0;
     if (fd >= 0 && close(fd) != 0) ok = false;
     if (ok && rename(tmp, path) != 0) ok = false;
@@ -206,14 +212,16 @@ bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf 
     fclose(f);
     char magic[8] = {0};
     uint64_t build = 0, scene = 0, olen = 0, plen = 0, sum = 0;
-    bool ok = all.len >= 8 + 4 * 8 + 8 && !memcmp(all.p, MAGIC, 8);
+    bool ok = all.len >= HEAD_FIXED + 8 && !memcmp(all.p, MAGIC, 8);
     if (!ok) {
         snprintf(err, errlen, "%s: not a checkpoint of this harness", path);
         ckpt_buf_free(&all);
         return false;
     }
     memcpy(&sum, all.p + all.len - 8, 8);
-    if (hash64(0, all.p, all.len - 8) != sum) {
+    memcpy(&olen, all.p + HEAD_FIXED - 16, 8);
+    size_t hlen = olen <= all.len - HEAD_FIXED - 8 ? HEAD_FIXED + (size_t)olen : 0;
+    if (!hlen || checksum(all.p, hlen, all.p + hlen, all.len - 8 - hlen) != sum) {
         snprintf(err, errlen, "%s: the checkpoint is truncated or corrupted (checksum mismatch); nothing was read", path);
         ckpt_buf_free(&all);
         return false;
@@ -240,8 +248,13 @@ bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf 
         snprintf(err, errlen, "%s: written with other options (%s) than these (%s)", path, opts, id->options);
     else
         ok = true;
-    if (ok) ckpt_put(payload, all.p + all.pos, (size_t)plen);
     free(opts);
-    ckpt_buf_free(&all);
-    return ok;
+    if (!ok) {
+        ckpt_buf_free(&all);
+        return false;
+    }
+    /* the payload moves to the front of the file's buffer, which becomes the caller's */
+    memmove(all.p, all.p + all.pos, (size_t)plen);
+    *payload = (struct ckpt_buf){.p = all.p, .len = (size_t)plen, .cap = all.cap};
+    return true;
 }

@@ -301,7 +301,6 @@ static void run_worker(int tid, void *p)
             break;
         }
         if (sync && (n & 255) == 0 && ckpt_sync_poll(sync)) {
-            sync->slot[tid].len = 0;
             mlt_thread_save(&sync->slot[tid], j->sc, &ts);
             ckpt_sync_arrive(sync);
         }
@@ -395,7 +394,6 @@ static void run_worker(int tid, void *p)
     }
     if (sync) {
         /* before the final splats: a resumed run makes them itself */
-        sync->slot[tid].len = 0;
         mlt_thread_save(&sync->slot[tid], j->sc, &ts);
         ckpt_sync_finish(sync);
     }

@@ -41,6 +41,7 @@ struct mlt_thread {
     struct tech_acc *tech;   /* or NULL */
 };
 
+/* Replaces b's contents with the thread's state. */
 void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t);
 /* False when the bytes do not fit this run's layout. */
 bool mlt_thread_load(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t);

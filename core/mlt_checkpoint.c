@@ -64,6 +64,7 @@ static bool get_chain(struct ckpt_buf *b, const struct scene *sc, struct chain *
 
 void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t)
 {
+    b->len = 0; /* the slot's previous state, its memory kept */
     CKPT_PUT(b, t->nk);
     for (int i = 0; i < t->nk; i++) put_chain(b, sc, &t->ch[i]);
     CKPT_PUT(b, *t->r);
