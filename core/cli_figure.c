@@ -1,6 +1,7 @@
 /* The options every acceptance figure tool shares (fig4_5, fig6_1): see cli.h. */
 #include "cli.h"
 #include "parallel.h"
+#include "sampler.h"
 #include "scene.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,7 +24,7 @@ void cli_figure_parse(const char *prog, const char *usage, int argc, char **argv
         } else if (!strcmp(o, "--scene")) f->scene = cli_value(prog, argc, argv, &i);
         else if (!strcmp(o, "--scale")) f->scale = cli_value(prog, argc, argv, &i);
         else if (!strcmp(o, "--mutations")) f->mutations = cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1L << 40);
-        else if (!strcmp(o, "--max-length")) f->max_length = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 32);
+        else if (!strcmp(o, "--max-length")) f->max_length = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
         else if (!strcmp(o, "--seed")) f->seed = cli_u64(prog, o, cli_value(prog, argc, argv, &i));
         else if (!strcmp(o, "--threads")) f->threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1024);
         else if (!strcmp(o, "--out")) f->out = cli_value(prog, argc, argv, &i);

@@ -514,6 +514,11 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     int W = sc->cam.width, H = sc->cam.height, T = o.threads;
     int nk = o.method != MLT_PSSMLT ? o.max_length : 1;
     memset(r, 0, sizeof *r);
+    if (o.max_length < 1 || o.max_length > MAX_PATH_LENGTH || o.min_length > o.max_length) {
+        snprintf(err, errlen, "path lengths %d..%d: the renderer holds paths of 1..%d segments", o.min_length,
+                 o.max_length, MAX_PATH_LENGTH);
+        return false;
+    }
     if (o.small_step != SMALL_STEP_PSS &&
         (o.method == MLT_PSSMLT || o.large_step != LARGE_MMLT || o.pss.kernel != KERNEL_GAUSSIAN || o.pss.cdc)) {
         /* the reverse density needs the Gaussian's (controlled_step.h); MCTLS does not keep the

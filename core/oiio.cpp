@@ -47,6 +47,15 @@ extern "C" bool oiio_module_read_rgb(const char *path, int *w, int *h, float **p
         snprintf(err, errlen, "%s: empty image", path);
         return false;
     }
+    if ((long)spec.width * spec.height > OIIO_MAX_TEXELS) {
+        snprintf(err, errlen, "%s: %dx%d texels, above the limit of %ld (16384x8192)", path, spec.width, spec.height,
+                 OIIO_MAX_TEXELS);
+        return false;
+    }
+    if (nc > 64) {
+        snprintf(err, errlen, "%s: %d channels, above the limit of 64", path, nc);
+        return false;
+    }
     std::vector<float> buf((size_t)spec.width * spec.height * nc);
     if (!in->read_image(0, 0, 0, nc, TypeDesc::FLOAT, buf.data())) {
         snprintf(err, errlen, "%s: %s", path, in->geterror().c_str());

@@ -14,6 +14,11 @@
 extern "C" {
 #endif
 
+/* The largest image oiio_read_rgb accepts, in texels (16384 x 8192, a large HDR sky): a texture
+ * is held as 3 doubles per texel (24 B), so this bounds one texture at 3.2 GB. The header is read
+ * before anything is allocated. */
+#define OIIO_MAX_TEXELS (1L << 27)
+
 /* Writes nchan-channel float pixels (row 0 on top) to `path`; the format follows the extension,
  * 8-bit formats get values quantised from [0, 1]. Not atomic by itself. */
 bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen);

@@ -200,6 +200,7 @@ static bool next_pass(void *p)
 struct image *render_mc(const struct scene *sc, const struct render_opts *o, struct render_stats *st)
 {
     int W = sc->cam.width, H = sc->cam.height, T = o->threads < 1 ? 1 : o->threads;
+    ASSERT(o->max_length >= 1 && o->max_length <= MAX_PATH_LENGTH); /* the walks' arrays hold no more */
     struct render_opts opts = *o;
     opts.threads = T;
     struct job j = {.sc = sc, .o = &opts, .img = xcalloc((size_t)T, sizeof(struct image *)),

@@ -27,7 +27,10 @@ enum dim_kind {
 enum { STREAM_CAMERA = 0, STREAM_EMITTER = 1, STREAM_TECHNIQUE = 2, STREAM_COUNT = 3 };
 
 #define SAMPLER_BLOCK 8      /* dimensions per vertex */
-#define MAX_PATH_LENGTH 32   /* segments; subpaths hold at most MAX_PATH_LENGTH + 1 vertices */
+/* Segments; subpaths hold at most MAX_PATH_LENGTH + 1 vertices. 64 is Tungsten's default
+ * max_bounces, so most Tungsten scenes fit; the loader clamps longer limits with a warning.
+ * Every fixed-size per-path array of the core is sized from it. */
+#define MAX_PATH_LENGTH 64
 #define MAX_SUBPATH_VERTS (MAX_PATH_LENGTH + 2)
 #define STREAM_DIMS (MAX_SUBPATH_VERTS * SAMPLER_BLOCK)
 

@@ -95,6 +95,10 @@ struct camera {
 struct emitter_table;          /* light selection, built by emitters_build() (emitter.h) */
 struct accel;                  /* Embree scene, built by accel_build() (accel.h) */
 
+/* The largest image a run renders, 8192 x 8192: every thread holds a framebuffer of 3 doubles per
+ * pixel (1.6 GB at this size). */
+#define SCENE_MAX_PIXELS (1L << 26)
+
 struct scene {
     char *file;                /* the scene file, for messages */
     struct bsdf *bsdfs;

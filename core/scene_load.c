@@ -7,6 +7,7 @@
  * A path of k segments has its emitter hit at bounce = k - 1, so max_bounces is the maximum number of
  * segments and min_bounces + 1 the minimum: max_length = max_bounces, min_length = min_bounces + 1. */
 #include "camera.h"
+#include "sampler.h"
 #include "scene_load_internal.h"
 #include "util.h"
 #include <errno.h>
@@ -115,6 +116,9 @@ static bool load_camera(struct loader *L, const cJSON *cam)
         }
         w = wh[0];
         h = wh[1];
+        if ((long)w * h > SCENE_MAX_PIXELS)
+            return jfail(c, "camera.resolution", "%dx%d is %ld pixels, above the limit of %ld (8192x8192)", w, h,
+                         (long)w * h, SCENE_MAX_PIXELS);
     }
     const cJSON *t = cJSON_GetObjectItemCaseSensitive(cam, "transform");
     if (!t) return jfail(c, "camera.transform", "missing required field (position, look_at, up)");
@@ -153,6 +157,16 @@ static bool load_settings(struct loader *L, const cJSON *integ, const cJSON *ren
     if (rend) {
         if (!cJSON_IsObject(rend)) return jfail(c, "renderer", "expected an object");
         if (!jget_int(c, rend, "renderer", "spp", false, 1, 1 << 30, &s->spp)) return false;
+    }
+    if (maxb > MAX_PATH_LENGTH) {
+        /* the per-path arrays of the core hold MAX_PATH_LENGTH segments; a longer path carries
+         * albedo^64 of the light in any scene that is not a white furnace */
+        if (minb >= MAX_PATH_LENGTH)
+            return jfail(c, "integrator.min_bounces", "must be less than %d (the renderer's path length limit)",
+                         MAX_PATH_LENGTH);
+        jwarn(c, "integrator.max_bounces", "%d is above the renderer's limit; paths are capped at %d segments", maxb,
+              MAX_PATH_LENGTH);
+        maxb = MAX_PATH_LENGTH;
     }
     s->max_length = maxb;
     s->min_length = minb + 1;

@@ -4,6 +4,7 @@
 #define SPLAT_H
 
 #include "sampler.h"
+#include "util.h"
 #include "vecmath.h"
 
 #define MAX_SPLATS (MAX_PATH_LENGTH + 2)
@@ -18,9 +19,11 @@ struct splat_list {
     struct splat s[MAX_SPLATS];
 };
 
+/* A sample holds at most one camera-pixel sum and one t = 1 splat per path length: K + 1. */
 static inline void splat_push(struct splat_list *l, double px, double py, rgb c)
 {
-    if (l->n < MAX_SPLATS) l->s[l->n++] = (struct splat){px, py, c};
+    ASSERT(l->n < MAX_SPLATS); /* a dropped splat would bias the image silently */
+    l->s[l->n++] = (struct splat){px, py, c};
 }
 
 /* Sum of the luminances: the scalar MCMC target of a splat list. */

@@ -137,6 +137,8 @@ static void parse(int argc, char **argv, struct args *a)
             if (sscanf(v, "%dx%d%c", &a->width, &a->height, &extra) != 2 || a->width < 1 || a->height < 1 ||
                 a->width > 1 << 15 || a->height > 1 << 15)
                 cli_fail(prog, "--resolution: expected WxH with positive integers, got '%s'", v);
+            if ((long)a->width * a->height > SCENE_MAX_PIXELS)
+                cli_fail(prog, "--resolution: %s is above the limit of %ld pixels (8192x8192)", v, SCENE_MAX_PIXELS);
         } else if (!strcmp(o, "--out")) {
             a->out = VALUE;
         } else if (!strcmp(o, "--checkpoint")) {
