@@ -61,15 +61,16 @@ ifeq ($(MPI),1)
   BUILD := $(BUILD)/mpi
   MPI_CFLAGS = $(shell pkg-config --cflags ompi-c)
   MPI_LIBS = $(shell pkg-config --libs ompi-c)
-  DIST_SRC_OFF := core/dist_single.c
+  DIST_SRC_OFF := core/base/dist_single.c
 else
-  DIST_SRC_OFF := core/dist_mpi.c
+  DIST_SRC_OFF := core/base/dist_mpi.c
 endif
 
 CC ?= cc
 CXX ?= c++
 WARN := -Wall -Wextra $(if $(WERROR),-Werror)
-CPPFLAGS := -Icore -D_DEFAULT_SOURCE -MMD -MP
+# Includes name their folder: "path/path.h" from core/, "common/cli.h" from experiments/.
+CPPFLAGS := -Icore -Iexperiments -D_DEFAULT_SOURCE -MMD -MP
 CFLAGS := -std=c11 $(OPT) $(WARN) -pthread
 # pkg-config is asked when a recipe runs, not when the Makefile is read: on a fresh machine the
 # packages (pkg-config among them) arrive only when `deps` runs, after the Makefile was parsed.
@@ -87,10 +88,10 @@ GIT_COMMIT := $(or $(PGO_COMMIT),$(shell git rev-parse --short=12 HEAD 2>/dev/nu
 $(shell mkdir -p $(BUILD) && echo '#define GIT_COMMIT "$(GIT_COMMIT)"' > $(BUILD)/version.h.new && (cmp -s $(BUILD)/version.h.new $(BUILD)/version.h || mv $(BUILD)/version.h.new $(BUILD)/version.h))
 CPPFLAGS += -I$(BUILD)
 
-CORE_SRC := $(filter-out $(DIST_SRC_OFF),$(wildcard core/*.c))
+CORE_SRC := $(filter-out $(DIST_SRC_OFF),$(wildcard core/*/*.c))
 CORE_OBJ := $(patsubst %,$(BUILD)/%.o,$(CORE_SRC))
 LIBCORE := $(BUILD)/libcore.a
-# A copy beside every directory of executables: core/oiio_load.c looks for it there.
+# A copy beside every directory of executables: core/io/oiio_load.c looks for it there.
 OIIO_MODULE := $(BIN)/oiio.so
 
 TEST_SRC := $(wildcard tests/*.c)
@@ -98,17 +99,36 @@ TEST_OBJ := $(patsubst %,$(BUILD)/%.o,$(TEST_SRC))
 TEST_BIN := $(BUILD)/tests/run-tests
 TEST_OIIO_MODULE := $(BUILD)/tests/oiio.so
 
-EXP_SRC := $(wildcard experiments/*.c)
-EXP_BIN := $(patsubst experiments/%.c,$(BIN)/%,$(EXP_SRC))
+# The tools (bin/): every experiments/FOLDER/ lists its mains in its .mk through TOOLS below;
+# the folder's other sources become its own library, experiments/common/ is shared by all.
+EXP_COMMON_SRC := $(wildcard experiments/common/*.c)
+EXP_COMMON_LIB := $(BUILD)/experiments/common/libcommon.a
+EXP_SRC := $(EXP_COMMON_SRC)
+
+# $(call TOOLS,FOLDER,NAMES): bin/NAME from experiments/FOLDER/NAME.c, linked with the folder's
+# library (its other .c files), experiments/common and the core.
+define TOOLS
+$(1)_MAINS := $$(patsubst %,experiments/$(1)/%.c,$(2))
+$(1)_LIB_SRC := $$(filter-out $$($(1)_MAINS),$$(wildcard experiments/$(1)/*.c))
+$(1)_LIB := $$(BUILD)/experiments/$(1)/lib$(1).a
+EXP_SRC += $$($(1)_MAINS) $$($(1)_LIB_SRC)
+$$($(1)_LIB): $$(patsubst %,$$(BUILD)/%.o,$$($(1)_LIB_SRC))
+	@mkdir -p $$(dir $$@) && rm -f $$@
+	$$(if $$^,$$(AR) rcs $$@ $$^,printf '!<arch>\n' > $$@)
 # Kept after linking: make would otherwise delete them as intermediates of the first build, and
 # the next build would recompile and relink (and, with PGO, retrain).
-.SECONDARY: $(patsubst %,$(BUILD)/%.o,$(EXP_SRC))
+.SECONDARY: $$(patsubst %,$$(BUILD)/%.o,$$($(1)_MAINS) $$($(1)_LIB_SRC))
+$$(patsubst %,$$(BIN)/%,$(2)): $$(BIN)/%: $$(BUILD)/experiments/$(1)/%.c.o $$($(1)_LIB) $$(EXP_COMMON_LIB) $$(LIBCORE) $$(LINK_MODE_FILE) | $$(OIIO_MODULE)
+	@mkdir -p $$(dir $$@)
+	$$(CC) $$(LDFLAGS) $$(filter %.o %.a,$$^) $$(LDLIBS) -o $$@
+tools: $$(patsubst %,$$(BIN)/%,$(2))
+endef
 
 .PHONY: all tools deps test test-fast test-san check bench clean help
 SHELL := /bin/bash
 all: tools $(LIBCORE) $(TEST_BIN) $(TEST_OIIO_MODULE)
 # Every executable of bin/ (experiments in subfolders add theirs in their .mk), without the test runner.
-tools: $(OIIO_MODULE) $(EXP_BIN)
+tools: $(OIIO_MODULE)
 
 # Every compile waits for it (order-only), so the first `make` of a fresh machine, with any -j and
 # any goal, installs the headers and libraries before it needs them.
@@ -135,7 +155,7 @@ $(BUILD)/%.c.o: %.c $(PGO_STAMP) | deps
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PGO_CFLAGS) -c $< -o $@
 
 # Only the MPI implementation of core/dist.h sees Open MPI's headers.
-$(BUILD)/core/dist_mpi.c.o: CPPFLAGS += $(MPI_CFLAGS)
+$(BUILD)/core/base/dist_mpi.c.o: CPPFLAGS += $(MPI_CFLAGS)
 
 $(BUILD)/%.cpp.o: %.cpp $(OIIO_FLAGS_FILE) | deps
 	@mkdir -p $(dir $@)
@@ -156,7 +176,7 @@ $(LIBCORE): $(CORE_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
 
-$(OIIO_MODULE): $(BUILD)/core/oiio.cpp.o $(OIIO_FLAGS_FILE)
+$(OIIO_MODULE): $(BUILD)/core/io/oiio.cpp.o $(OIIO_FLAGS_FILE)
 	@mkdir -p $(dir $@)
 	$(CXX) -shared $(LDFLAGS) $< $(OIIO_LIBS) -o $@
 
@@ -164,18 +184,19 @@ $(TEST_OIIO_MODULE): $(OIIO_MODULE)
 	@mkdir -p $(dir $@)
 	cp $< $@
 
-$(BIN)/%: $(BUILD)/experiments/%.c.o $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
-	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $< $(LIBCORE) $(LDLIBS) -o $@
+$(EXP_COMMON_LIB): $(patsubst %,$(BUILD)/%.o,$(EXP_COMMON_SRC))
+	@rm -f $@
+	$(AR) rcs $@ $^
 
 # End-to-end tests run the tools of the same build. Test objects are not link-time optimised: LTO
 # drops the registration records of Criterion's parameterised tests, and tests gain nothing from it.
 $(BUILD)/tests/%.c.o: CPPFLAGS += -DBIN_DIR='"$(BIN)"'
 $(BUILD)/tests/%.c.o: CFLAGS += -fno-lto
-$(TEST_BIN): $(EXP_BIN)
-$(TEST_BIN): $(TEST_OBJ) $(LIBCORE) | $(TEST_OIIO_MODULE)
+$(TEST_BIN): | tools
+# TEST_LIBS: the experiments' libraries some tests exercise (added by their .mk files).
+$(TEST_BIN): $(TEST_OBJ) $(EXP_COMMON_LIB) $(LIBCORE) | $(TEST_OIIO_MODULE)
 	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $(TEST_OBJ) $(LIBCORE) $(LDLIBS) -lcriterion -o $@
+	$(CC) $(LDFLAGS) $(TEST_OBJ) $(TEST_LIBS) $(EXP_COMMON_LIB) $(LIBCORE) $(LDLIBS) -lcriterion -o $@
 
 # Statistical suites are named stat_*; the fast subset is everything else.
 TEST_ARGS ?=
@@ -265,6 +286,7 @@ fig4.6: deps $(BIN)/fig4_6
 
 # Experiments in subfolders add their figure, check and bench rules here.
 -include experiments/*/*.mk
+$(TEST_BIN): $(TEST_LIBS)
 
 .PHONY: check
 check: $(CHECK_TARGETS)
@@ -311,4 +333,4 @@ help:
 	@echo "PGO=0, LTO=0    build without profile-guided / link-time optimisation (after make clean)"
 
 # Every object's header dependencies, the experiments' subfolders (ch4/, cmlt/, fig5/, ...) included.
--include $(CORE_OBJ:.o=.d) $(BUILD)/core/oiio.cpp.d $(TEST_OBJ:.o=.d) $(patsubst %,$(BUILD)/%.d,$(MPI_TEST_SRC)) $(patsubst %,$(BUILD)/%.d,$(EXP_SRC) $(wildcard experiments/*/*.c))
+-include $(CORE_OBJ:.o=.d) $(BUILD)/core/io/oiio.cpp.d $(TEST_OBJ:.o=.d) $(patsubst %,$(BUILD)/%.d,$(MPI_TEST_SRC)) $(patsubst %,$(BUILD)/%.d,$(EXP_SRC) $(wildcard experiments/*/*.c))

@@ -1,19 +1,11 @@
 # Thesis chapter 4, Figures 4.1-4.3 (resolution-aware proposals, constrained discrete choices):
 # the tools' shared objects, figure and check targets. Every output is written atomically: the tools
 # and ch4-montage.sh through temporary files, the plots and tables here through NAME.tmp and mv.
-CH4_SRC := $(wildcard experiments/ch4/*.c)
-CH4_OBJ := $(patsubst %,$(BUILD)/%.o,$(CH4_SRC))
 CH4_BASE := results/baselines
+$(eval $(call TOOLS,ch4,fig4_1 fig4_2 fig4_3 fig4_5 fig4_6))
 
-$(BUILD)/experiments/fig4_%.c.o: CPPFLAGS += -Iexperiments/ch4
-$(BIN)/fig4_1 $(BIN)/fig4_2 $(BIN)/fig4_3: $(BIN)/%: $(BUILD)/experiments/%.c.o $(CH4_OBJ) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
-	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
-
-# tests/test_noise_corr.c sees the shared analysis code.
-$(BUILD)/tests/test_noise_corr.c.o: CPPFLAGS += -Iexperiments/ch4
-TEST_OBJ += $(CH4_OBJ)
-$(TEST_BIN): $(CH4_OBJ)
+# tests/test_noise_corr.c links the shared analysis code.
+TEST_LIBS += $(ch4_LIB)
 
 # Thesis Figure 4.1: isotropic vs resolution-aware small steps on a 16:9 wall; the error's
 # correlation lengths along x and y over seeds.

@@ -3,9 +3,9 @@
 #ifndef CH4_COMMON_H
 #define CH4_COMMON_H
 
-#include "image.h"
-#include "render.h"
-#include "scene.h"
+#include "io/image.h"
+#include "mc/render.h"
+#include "scene/scene.h"
 #include <stdint.h>
 
 /* The options every chapter-4 tool takes; -1 (NULL for strings) means the tool's default. */

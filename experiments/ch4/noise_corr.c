@@ -1,6 +1,6 @@
 /* Autocorrelation profiles and correlation lengths of an error field (noise_corr.h). */
-#include "noise_corr.h"
-#include "util.h"
+#include "ch4/noise_corr.h"
+#include "base/util.h"
 #include <math.h>
 #include <stdlib.h>
 

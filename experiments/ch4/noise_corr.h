@@ -12,7 +12,7 @@
 #ifndef NOISE_CORR_H
 #define NOISE_CORR_H
 
-#include "image.h"
+#include "io/image.h"
 
 /* rho_x[d], rho_y[d] for d = 0..maxlag (horizontal and vertical lags); f is w*h, row-major.
  * maxlag must be below w and h. Returns false when the field is constant (no variance). */

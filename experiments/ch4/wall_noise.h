@@ -4,9 +4,9 @@
 #ifndef WALL_NOISE_H
 #define WALL_NOISE_H
 
-#include "image.h"
-#include "mlt.h"
-#include "scene.h"
+#include "io/image.h"
+#include "mcmc/mlt.h"
+#include "scene/scene.h"
 
 struct wall_cfg {
     bool rap, rap_resolution;

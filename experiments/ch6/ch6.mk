@@ -1,19 +1,10 @@
 # Thesis chapter 6 (equal-time PSSMLT vs MMLT vs PITP), the MMLT paper's §5 ratio and the hybrid-MCTLS
 # study: tools, scene assets, figures and tables. Every run goes through bin/render, so a method that
 # bin/render accepts (pitp once merged) needs no change here.
-CH6_LIB := $(patsubst %,$(BUILD)/%.o,experiments/ch6/ch6_stats.c)
-$(BUILD)/experiments/ch6/%: CPPFLAGS += -Iexperiments/ch6
-.SECONDARY: $(CH6_LIB) $(BUILD)/experiments/ch6/ch6_assets.c.o $(BUILD)/experiments/ch6/ch6_equal.c.o $(BUILD)/experiments/ch6/ch6_tech.c.o
+$(eval $(call TOOLS,ch6,ch6_assets ch6_equal ch6_tech fig6_1))
 
-$(BIN)/ch6_assets $(BIN)/ch6_equal $(BIN)/ch6_tech: $(BIN)/%: $(BUILD)/experiments/ch6/%.c.o $(CH6_LIB) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
-	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
-tools: $(BIN)/ch6_assets $(BIN)/ch6_equal $(BIN)/ch6_tech
-
-# tests/test_ch6_stats.c sees the analysis code.
-$(BUILD)/tests/test_ch6_stats.c.o: CPPFLAGS += -Iexperiments/ch6
-TEST_OBJ += $(CH6_LIB)
-$(TEST_BIN): $(CH6_LIB)
+# tests/test_ch6_stats.c links the analysis code.
+TEST_LIBS += $(ch6_LIB)
 
 # The generated assets are committed (small; the skies stored as half-float EXR by oiiotool);
 # `make ch6-assets` regenerates them.

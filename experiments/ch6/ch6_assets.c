@@ -4,8 +4,8 @@
  *     it (column = atan2(z, x) / 2pi + 0.5, row = theta / pi from +y).
  *   wood PNG: rough-plastic albedo texture, growth rings distorted by noise, streaks along u.
  * Deterministic (fixed hash noise, no RNG state), so rerunning reproduces the committed files. */
-#include "cli.h"
-#include "image.h"
+#include "common/cli.h"
+#include "io/image.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,5 +1,5 @@
 /* Shared analysis of the chapter-6 tools (ch6_stats.h). */
-#include "ch6_stats.h"
+#include "ch6/ch6_stats.h"
 #include <math.h>
 
 void ch6_mean_se(const double *x, int n, double *mean, double *se)

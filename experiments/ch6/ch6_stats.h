@@ -3,7 +3,7 @@
 #ifndef CH6_STATS_H
 #define CH6_STATS_H
 
-#include "image.h"
+#include "io/image.h"
 
 /* Mean and standard error of the mean of x[0..n-1] (se = nan for n < 2). */
 void ch6_mean_se(const double *x, int n, double *mean, double *se);

@@ -1,19 +1,14 @@
 # CMLT toy (CMLT paper §5, Table 1 / Figure 3): objects, binary, figure, check and bench targets.
-CMLT_SRC := $(wildcard experiments/cmlt/*.c)
-CMLT_OBJ := $(patsubst %,$(BUILD)/%.o,$(CMLT_SRC))
 CMLT_OUT := results/table1-cmlt
 CMLT_BASE := results/baselines/table1-cmlt
 CMLT_COMMIT := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 
-$(BIN)/table1_cmlt: $(BUILD)/experiments/table1_cmlt.c.o $(CMLT_OBJ) $(LIBCORE) $(LINK_MODE_FILE) | $(OIIO_MODULE)
-	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $(filter-out $(LINK_MODE_FILE),$^) $(LDLIBS) -o $@
+$(eval $(call TOOLS,cmlt,table1_cmlt))
 
-# tests/test_cmlt*.c see the toy's headers and link its objects.
-$(BUILD)/tests/test_cmlt%: CPPFLAGS += -Iexperiments/cmlt
+# tests/test_cmlt*.c link the toy's library.
 $(BUILD)/tests/test_cmlt_check.c.o: CPPFLAGS += -DCHECK_STATS_BIN='"$(BIN)/check_stats"' -DCMLT_BASELINE='"$(CMLT_BASE)/stats-quick.csv"'
-TEST_OBJ += $(CMLT_OBJ)
-$(TEST_BIN): $(CMLT_OBJ) $(BIN)/check_stats
+TEST_LIBS += $(cmlt_LIB)
+$(TEST_BIN): $(BIN)/check_stats
 
 .PHONY: table1-cmlt check-table1-cmlt bench-cmlt
 table1-cmlt: deps $(BIN)/table1_cmlt

@@ -1,5 +1,5 @@
 /* Charts 1 and 2 of the CMLT toy and their exact inverses; see cmlt_charts.h. */
-#include "cmlt_charts.h"
+#include "cmlt/cmlt_charts.h"
 #include <math.h>
 
 static inline double prob_l1(void)

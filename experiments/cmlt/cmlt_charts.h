@@ -13,7 +13,7 @@
 #ifndef CMLT_CHARTS_H
 #define CMLT_CHARTS_H
 
-#include "cmlt_scene.h"
+#include "cmlt/cmlt_scene.h"
 
 #define CMLT_DIMS 4
 

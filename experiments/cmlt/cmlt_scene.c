@@ -1,5 +1,5 @@
 /* The CMLT §5 toy: emission, visibility, geometric term, ray cast. Geometry in cmlt_scene.h. */
-#include "cmlt_scene.h"
+#include "cmlt/cmlt_scene.h"
 #include <math.h>
 
 double cmlt_phi1(void) { return CMLT_A1 * (CMLT_EXPK1 - 1.0) / CMLT_K1; }

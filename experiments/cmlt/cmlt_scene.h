@@ -22,7 +22,7 @@
 #ifndef CMLT_SCENE_H
 #define CMLT_SCENE_H
 
-#include "vecmath.h"
+#include "base/vecmath.h"
 #include <stdbool.h>
 
 #define CMLT_RHO 0.8

@@ -1,0 +1,68 @@
+/* Pinhole camera, box or tent filter (camera.h). camera_setup() lives with the loader.
+ *
+ * Tungsten's PinholeCamera: the image plane at distance 1/tan(fov/2) spans x in [-1, 1] across the
+ * width (fov is horizontal) and y in [-H/W, H/W]; raster x grows along +x and raster y grows
+ * downward (local y = ratio - 2 py / W). At unit distance: for raster (px, py),
+ *   x = tan_half_fov * (2 px / W - 1),  y = tan_half_fov * (1 - 2 py / H) / aspect,  z = 1,
+ * in the basis (s = right, t = up, n = forward), also for film positions outside the image.
+ * A = (2 tan_half_fov)^2 / aspect * (film area / image area) is the film's area at unit distance;
+ * the solid-angle density of a uniform film position is 1 / (A cos^3 theta). */
+#include "camera/camera.h"
+
+static double plane_area(const struct camera *c)
+{
+    return 4 * c->tan_half_fov * c->tan_half_fov / c->aspect * camera_film_area(c) / ((double)c->width * c->height);
+}
+
+vec3 camera_sample_dir(const struct camera *c, struct sampler *s, double *px, double *py, double *pdf)
+{
+    double ux = sampler_next(s, DIM_IMAGE_X), uy = sampler_next(s, DIM_IMAGE_Y);
+    int m = camera_margin(c);
+    *px = ux * camera_film_width(c) - m;
+    *py = uy * camera_film_height(c) - m;
+    /* image-normalised position: (ux, uy) itself for the box filter */
+    double ix = m ? *px / c->width : ux, iy = m ? *py / c->height : uy;
+    vec3 l = v3(c->tan_half_fov * (2 * ix - 1), c->tan_half_fov * (1 - 2 * iy) / c->aspect, 1.0);
+    double len2 = vlen2(l), inv_len = 1.0 / sqrt(len2);
+    if (pdf) *pdf = len2 * sqrt(len2) / plane_area(c); /* 1 / (A cos^3), cos = 1 / |l| */
+    return vscale(frame_to_world(&c->basis, l), inv_len);
+}
+
+/* Image-normalised coordinates of world direction d ([0, 1) inside the image); false if behind
+ * the camera. */
+static bool image_uv(const struct camera *c, vec3 d, double *ux, double *uy, double *cos_theta)
+{
+    vec3 l = frame_to_local(&c->basis, d);
+    if (!(l.z > 0)) return false;
+    double x = l.x / l.z, y = l.y / l.z;
+    *ux = 0.5 * (x / c->tan_half_fov + 1);
+    *uy = 0.5 * (1 - y * c->aspect / c->tan_half_fov);
+    *cos_theta = l.z / vlen(l);
+    return true;
+}
+
+double camera_raster(const struct camera *c, vec3 d, double *px, double *py)
+{
+    double ux, uy, ct;
+    if (!image_uv(c, d, &ux, &uy, &ct)) return 0;
+    int m = camera_margin(c);
+    double x = ux * c->width, y = uy * c->height;
+    if (!(x >= -m && x < c->width + m && y >= -m && y < c->height + m)) return 0;
+    *px = x;
+    *py = y;
+    return 1.0 / (plane_area(c) * ct * ct * ct);
+}
+
+void camera_invert(const struct camera *c, double px, double py, struct sampler *w)
+{
+    int m = camera_margin(c);
+    double ux = (px + m) / camera_film_width(c), uy = (py + m) / camera_film_height(c);
+    sampler_put(w, DIM_IMAGE_X, ux < 0 ? 0 : ux >= 1 ? nextafter(1.0, 0.0) : ux);
+    sampler_put(w, DIM_IMAGE_Y, uy < 0 ? 0 : uy >= 1 ? nextafter(1.0, 0.0) : uy);
+}
+
+double camera_pdf_dir(const struct camera *c, vec3 d)
+{
+    double px, py;
+    return camera_raster(c, d, &px, &py);
+}

@@ -1,0 +1,260 @@
+/* Checkpoint payloads and files; see checkpoint.h. */
+#include "io/checkpoint.h"
+#include "base/util.h"
+#include <fcntl.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+void ckpt_buf_free(struct ckpt_buf *b)
+{
+    free(b->p);
+    memset(b, 0, sizeof *b);
+}
+
+void ckpt_put(struct ckpt_buf *b, const void *p, size_t n)
+{
+    if (b->len + n > b->cap) {
+        b->cap = 2 * (b->len + n) + 4096;
+        b->p = xrealloc(b->p, b->cap);
+    }
+    memcpy(b->p + b->len, p, n);
+    b->len += n;
+}
+
+bool ckpt_get(struct ckpt_buf *b, void *p, size_t n)
+{
+    if (b->short_read || n > b->len - b->pos) {
+        memset(p, 0, n);
+        b->short_read = true;
+        return false;
+    }
+    memcpy(p, b->p + b->pos, n);
+    b->pos += n;
+    return true;
+}
+
+void ckpt_put_buf(struct ckpt_buf *b, const struct ckpt_buf *inner)
+{
+    uint64_t n = inner->len;
+    CKPT_PUT(b, n);
+    ckpt_put(b, inner->p, inner->len);
+}
+
+bool ckpt_get_buf(struct ckpt_buf *b, struct ckpt_buf *inner)
+{
+    uint64_t n = 0;
+    memset(inner, 0, sizeof *inner);
+    if (!CKPT_GET(b, n) || n > b->len - b->pos) {
+        b->short_read = inner->short_read = true;
+        return false;
+    }
+    inner->p = b->p + b->pos;
+    inner->len = inner->cap = (size_t)n;
+    b->pos += (size_t)n;
+    return true;
+}
+
+void ckpt_put_image(struct ckpt_buf *b, const struct image *im)
+{
+    CKPT_PUT(b, im->w);
+    CKPT_PUT(b, im->h);
+    ckpt_put(b, im->px, 3 * sizeof(double) * (size_t)im->w * (size_t)im->h);
+}
+
+bool ckpt_get_image(struct ckpt_buf *b, struct image *im)
+{
+    int w = 0, h = 0;
+    CKPT_GET(b, w);
+    CKPT_GET(b, h);
+    if (w != im->w || h != im->h) {
+        b->short_read = true;
+        return false;
+    }
+    return ckpt_get(b, im->px, 3 * sizeof(double) * (size_t)w * (size_t)h);
+}
+
+/* The BSDF pointer as its index in the scene plus one (0: none). Slots past a path's end hold
+ * whatever an earlier path left, or nothing ever written; they are never read, and store 0. */
+void ckpt_put_vertices(struct ckpt_buf *b, const struct scene *sc, const struct vertex *v, int n)
+{
+    uintptr_t lo = (uintptr_t)sc->bsdfs, hi = (uintptr_t)(sc->bsdfs + sc->nbsdfs);
+    for (int i = 0; i < n; i++) {
+        struct vertex x = v[i];
+        uintptr_t p = (uintptr_t)v[i].bc.b;
+        x.bc.b = (const struct bsdf *)(p >= lo && p < hi ? (p - lo) / sizeof *sc->bsdfs + 1 : 0);
+        CKPT_PUT(b, x);
+    }
+}
+
+bool ckpt_get_vertices(struct ckpt_buf *b, const struct scene *sc, struct vertex *v, int n)
+{
+    for (int i = 0; i < n; i++) {
+        if (!CKPT_GET(b, v[i])) return false;
+        uintptr_t k = (uintptr_t)v[i].bc.b;
+        if (k > (uintptr_t)sc->nbsdfs) {
+            b->short_read = true;
+            return false;
+        }
+        v[i].bc.b = k ? &sc->bsdfs[k - 1] : NULL;
+    }
+    return true;
+}
+
+/* Word-wise multiply-xorshift: every step is a bijection of the state for a given word, so a file
+ * that differs from the written one in any single word always fails the check. */
+uint64_t hash64(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *c = p;
+    for (; n >= 8; n -= 8, c += 8) {
+        uint64_t w;
+        memcpy(&w, c, 8);
+        h = (h ^ w) * 0x9E3779B97F4A7C15ULL;
+        h ^= h >> 29;
+    }
+    uint64_t w = n; /* the tail, with its length, so "ab" and "ab\0" differ */
+    memcpy(&w, c, n);
+    h = (h ^ w ^ ((uint64_t)n << 56)) * 0xBF58476D1CE4E5B9ULL;
+    return h ^ (h >> 31);
+}
+
+uint64_t ckpt_build_hash(void)
+{
+    static uint64_t cached;
+    if (cached) return cached;
+    FILE *f = fopen("/proc/self/exe", "rb");
+    if (!f) return 0;
+    uint64_t h = 0x243F6A8885A308D3ULL;
+    unsigned char buf[1 << 16];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0) h = hash64(h, buf, n);
+    bool ok = !ferror(f);
+    fclose(f);
+    return cached = ok ? h : 0;
+}
+
+#define MAGIC "PSSCKPT1"
+
+static bool write_all(int fd, const void *p, size_t n)
+{
+    const char *c = p;
+    while (n > 0) {
+        ssize_t k = write(fd, c, n);
+        if (k <= 0) return false;
+        c += k;
+        n -= (size_t)k;
+    }
+    return true;
+}
+
+/* Layout: magic, build, scene, options length and text, payload length (the header), then the
+ * payload, then hash64 of the payload seeded with hash64 of the header: the payload, every
+ * framebuffer of the run, is hashed where it lies rather than copied behind the header. */
+#define HEAD_FIXED (8 + 3 * 8 + 8) /* the header without the options text */
+
+static uint64_t checksum(const unsigned char *head, size_t hlen, const unsigned char *payload, size_t plen)
+{
+    return hash64(hash64(0, head, hlen), payload, plen);
+}
+bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ckpt_buf *payload, char *err, size_t errlen)
+{
+    struct ckpt_buf head = {0};
+    ckpt_put(&head, MAGIC, 8);
+    CKPT_PUT(&head, id->build);
+    CKPT_PUT(&head, id->scene);
+    uint64_t olen = strlen(id->options), plen = payload->len;
+    CKPT_PUT(&head, olen);
+    ckpt_put(&head, id->options, olen);
+    CKPT_PUT(&head, plen);
+    uint64_t sum = checksum(head.p, head.len, payload->p, payload->len);
+    size_t n = strlen(path) + 32;
+    char *tmp = xmalloc(n);
+    snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid());
+    int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    bool ok = fd >= 0 && write_all(fd, head.p, head.len) && write_all(fd, payload->p, payload->len) &&
+              write_all(fd, &sum, sizeof sum) && fsync(fd) == 0;
+    if (fd >= 0 && close(fd) != 0) ok = false;
+    if (ok && rename(tmp, path) != 0) ok = false;
+    if (!ok) {
+        snprintf(err, errlen, "%s: cannot write the checkpoint", path);
+        remove(tmp);
+    } else {
+        /* the rename itself must reach the disk for the new file to survive a crash */
+        const char *slash = strrchr(path, '/');
+        char dir[4096];
+        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) + 1 : 1, slash ? path : ".");
+        int dfd = open(dir, O_RDONLY | O_DIRECTORY);
+        if (dfd >= 0) {
+            fsync(dfd);
+            close(dfd);
+        }
+    }
+    free(tmp);
+    ckpt_buf_free(&head);
+    return ok;
+}
+
+bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf *payload, char *err, size_t errlen)
+{
+    memset(payload, 0, sizeof *payload);
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, errlen, "%s: cannot read the checkpoint", path);
+        return false;
+    }
+    struct ckpt_buf all = {0};
+    unsigned char buf[1 << 16];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0) ckpt_put(&all, buf, n);
+    fclose(f);
+    char magic[8] = {0};
+    uint64_t build = 0, scene = 0, olen = 0, plen = 0, sum = 0;
+    bool ok = all.len >= HEAD_FIXED + 8 && !memcmp(all.p, MAGIC, 8);
+    if (!ok) {
+        snprintf(err, errlen, "%s: not a checkpoint of this harness", path);
+        ckpt_buf_free(&all);
+        return false;
+    }
+    memcpy(&sum, all.p + all.len - 8, 8);
+    memcpy(&olen, all.p + HEAD_FIXED - 16, 8);
+    size_t hlen = olen <= all.len - HEAD_FIXED - 8 ? HEAD_FIXED + (size_t)olen : 0;
+    if (!hlen || checksum(all.p, hlen, all.p + hlen, all.len - 8 - hlen) != sum) {
+        snprintf(err, errlen, "%s: the checkpoint is truncated or corrupted (checksum mismatch); nothing was read", path);
+        ckpt_buf_free(&all);
+        return false;
+    }
+    all.len -= 8;
+    ckpt_get(&all, magic, 8);
+    CKPT_GET(&all, build);
+    CKPT_GET(&all, scene);
+    CKPT_GET(&all, olen);
+    char *opts = olen <= all.len - all.pos ? xmalloc(olen + 1) : NULL;
+    if (opts) {
+        ckpt_get(&all, opts, olen);
+        opts[olen] = 0;
+    }
+    CKPT_GET(&all, plen);
+    ok = false;
+    if (!opts || all.short_read || plen != all.len - all.pos)
+        snprintf(err, errlen, "%s: the checkpoint's layout is damaged", path);
+    else if (build != id->build || !build)
+        snprintf(err, errlen, "%s: written by another build of the renderer; resume with the binary that wrote it", path);
+    else if (scene != id->scene)
+        snprintf(err, errlen, "%s: written for another scene (or the scene's files changed since)", path);
+    else if (strcmp(opts, id->options))
+        snprintf(err, errlen, "%s: written with other options (%s) than these (%s)", path, opts, id->options);
+    else
+        ok = true;
+    free(opts);
+    if (!ok) {
+        ckpt_buf_free(&all);
+        return false;
+    }
+    /* the payload moves to the front of the file's buffer, which becomes the caller's */
+    memmove(all.p, all.p + all.pos, (size_t)plen);
+    *payload = (struct ckpt_buf){.p = all.p, .len = (size_t)plen, .cap = all.cap};
+    return true;
+}

@@ -1,0 +1,26 @@
+/* Monte Carlo estimators on one camera sample: the path tracer (NEE + MIS between emission hits
+ * and light samples) and BDPT (every (s, t) technique, balance heuristic). Both add to `img`
+ * contributions whose sum, times width * height / N over N camera samples, estimates each pixel. */
+#ifndef INTEGRATOR_H
+#define INTEGRATOR_H
+
+#include "io/image.h"
+#include "path/path.h"
+#include "path/splat.h"
+
+/* Per-thread scratch: subpath arrays allocated once, never in the sample loop. */
+struct scratch {
+    struct vertex cam[MAX_SUBPATH_VERTS], emi[MAX_SUBPATH_VERTS];
+    long nonfinite; /* contributions dropped because they were NaN or infinite */
+    int nz, ny;     /* vertex counts of the subpaths bdpt_splats last walked (per-technique images) */
+};
+
+void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct image *img);
+/* BDPT's contributions of one sample: t = 1 splats, then the sum of t >= 2 at z_0's pixel. */
+void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct splat_list *out);
+void bdpt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct image *img);
+
+/* Adds c to the image at raster (px, py) unless it is not finite (then counts it). */
+void splat_checked(struct image *img, struct scratch *w, double px, double py, rgb c);
+
+#endif

@@ -1,0 +1,95 @@
+/* Markov chain renderers in primary sample space, driving the same BDPT code as the Monte Carlo
+ * renderer (thesis §3.5-3.8; MMLT paper §3-4).
+ *
+ * PSSMLT: the state is one pair of subpaths; its target is the luminance of the MIS-weighted sum of
+ * all their connections (as the thesis's Chapter 6 uses it).
+ * MMLT: one chain per path length k (per thread); the state adds a technique number
+ * (STREAM_TECHNIQUE) choosing t = 1 + floor((k + 1) u) camera vertices and s = k + 1 - t emitter
+ * vertices; the target is (k + 1) w_t C_t (MMLT Eq. 20; k + 1 techniques because a pinhole cannot
+ * be hit, so t = 0 is not a technique here). Each iteration picks k with probability b_k / sum b.
+ *
+ * Normalisation: a seed pass of `seed_paths` independent samples (per length for MMLT) estimates
+ * b; each chain starts from a seed sample resampled in proportion to its target, so there is no
+ * start-up bias. Splatting uses expected values: weight a on the proposal and 1 - a on the current
+ * state. Each run is reproducible from its seed and thread count (with a mutation budget).
+ * Over MPI ranks (core/dist.h) the seed pass, the chains' streams and the mutation budgets belong
+ * to the job's global threads, so N ranks of T threads give one process of N * T threads' image and
+ * statistics. The image and statistics are the job's on rank 0 only (elsewhere partial sums); the
+ * counts (mutations, controlled-step failures) and the normalisation are the job's on every rank. */
+#ifndef MLT_H
+#define MLT_H
+
+#include "stats/angle_change.h"
+#include "io/checkpoint.h"
+#include "mcmc/controlled_step.h"
+#include "io/image.h"
+#include "stats/mlt_stats.h"
+#include "sampler/pss.h"
+#include "scene/scene.h"
+#include "stats/tech_image.h"
+
+/* MLT_PITP: MMLT with the path-invariant technique perturbation before every small step (thesis
+ * §5.2, core/pitp.h); every MMLT option applies. */
+enum mlt_method { MLT_PSSMLT, MLT_MMLT, MLT_PITP };
+
+/* MMLT's large step: fresh numbers (MMLT), the multiple correlated-try large step of thesis §4.3
+ * (Eq. 4.2-4.7: trace both subpaths to length k, pick one of the k + 1 connections in proportion to
+ * its target, accept with min(1, sum_i pi(y_i) / sum_i pi(x_i))), or MMLT below hybrid_length and
+ * MCTLS from it on. */
+enum large_step { LARGE_MMLT, LARGE_MCTLS, LARGE_HYBRID };
+
+struct mlt_opts {
+    enum mlt_method method;
+    struct pss_opts pss;
+    double p_large;
+    long mutations;        /* total over all threads; ignored when seconds > 0 */
+    double seconds;        /* equal-time budget */
+    long seed_paths;
+    uint64_t seed;
+    int threads;
+    int max_length;
+    int min_length;        /* paths shorter than this (segments) are left out */
+    bool progress;
+    enum large_step large_step;  /* MMLT only */
+    int hybrid_length;
+    bool uniform_lengths;        /* MMLT: every length gets the same share of mutations, not b_k */
+    bool time_proposals;         /* record each proposal's time in the statistics (two clock reads) */
+    bool max_heuristic;          /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */
+    /* MMLT's small step: the lazy primary-sample-space step, or thesis §5.3's controlled step
+     * (Alg. 4) or root perturbation (Alg. 3), see controlled_step.h. Controlled and root need the
+     * Gaussian kernel without --cdc, and MMLT large steps. */
+    enum small_step small_step;
+    bool angle_stats;            /* MMLT: angle change of every small step (angle_change.h) */
+    bool ctrl_unit_ratio;        /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
+    /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a mutation
+     * budget a resumed run ends bit-identical to an uninterrupted one; with a time budget it runs
+     * for what the checkpointed run had left. The seed pass is not checkpointed (a checkpoint
+     * holds the normalisation it found). */
+    struct ckpt_ctl *ckpt;
+    int technique_k;             /* > 0: per-technique images of this path length (pssmlt, mmlt; tech_image.h) */
+};
+
+struct mlt_result {
+    struct image *img;     /* final units, like render_mc */
+    struct mlt_stats stats;
+    double b;              /* total normalisation sum_k b_k */
+    double b_k[MAX_PATH_LENGTH + 1];
+    long mutations;
+    double seconds, seed_seconds;
+    long nonfinite;
+    bool partial;          /* interrupted: fewer mutations than asked (the image stays unbiased) */
+    struct angle_acc *angle; /* with angle_stats */
+    long ctrl_fail_forward, ctrl_fail_reverse; /* controlled steps: impossible inversions */
+    struct tech_acc *tech;                     /* with technique_k */
+};
+
+/* Returns false (with a message) when the seed pass finds no light at all. */
+bool mlt_render(const struct scene *sc, const struct mlt_opts *o, struct mlt_result *r, char *err, size_t errlen);
+void mlt_result_free(struct mlt_result *r);
+
+/* MCTLS's two decisions, exposed for the detailed-balance test: the trial picked in proportion to
+ * its target pi[0..n-1] (u uniform; sum > 0), and the generalised acceptance ratio of Eq. 4.7. */
+int mctls_pick(const double *pi, int n, double u);
+double mctls_accept(double ysum, double xsum);
+
+#endif

@@ -1,0 +1,49 @@
+/* The state of MLT's chains and of the thread that runs them (core/mlt.c), shared with the code
+ * that checkpoints it (core/mlt_checkpoint.c). */
+#ifndef MLT_CHAIN_H
+#define MLT_CHAIN_H
+
+#include "stats/angle_change.h"
+#include "io/checkpoint.h"
+#include "mcmc/controlled_step.h"
+#include "stats/mlt_stats.h"
+#include "mcmc/pitp.h"
+#include "sampler/pss.h"
+#include "path/splat.h"
+#include "stats/tech_image.h"
+
+struct chain {
+    struct pss_sampler pss;
+    struct splat_list cur;
+    double f;
+    int k, tech;
+    double scale;      /* b_k / P(k): the chain's splat weight */
+    double xsum;       /* MCTLS: sum over techniques of the current numbers' targets */
+    double pending;    /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
+    bool xsum_valid;
+    struct ctrl_path *path; /* controlled steps and angle statistics: the current subpaths */
+    struct pitp_path *x;    /* PITP: the current path in its technique's form (swapped with a spare on accept) */
+};
+
+/* Everything one worker thread carries from one iteration to the next. Scratch buffers (walks,
+ * the proposal's splats and path) are rewritten by every proposal before they are read, so they
+ * are not part of it. */
+struct mlt_thread {
+    struct chain *ch;  /* nk chains; path and x allocated as the run needs them */
+    int nk;
+    rng *r;            /* length selection, step kind, acceptance */
+    long *n;           /* iterations done */
+    long *nonfinite;
+    struct mlt_stats *st;
+    long *ctrl_fail;   /* [2]: forward, reverse */
+    struct image *img;
+    struct angle_acc *angle; /* or NULL */
+    struct tech_acc *tech;   /* or NULL */
+};
+
+/* Replaces b's contents with the thread's state. */
+void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t);
+/* False when the bytes do not fit this run's layout. */
+bool mlt_thread_load(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t);
+
+#endif

@@ -1,0 +1,127 @@
+/* A worker thread's MLT state in and out of a checkpoint payload; see mlt_chain.h. */
+#include "mcmc/mlt_chain.h"
+#include <string.h>
+
+static void put_chain(struct ckpt_buf *b, const struct scene *sc, const struct chain *c)
+{
+    CKPT_PUT(b, c->pss);
+    CKPT_PUT(b, c->cur);
+    CKPT_PUT(b, c->f);
+    CKPT_PUT(b, c->k);
+    CKPT_PUT(b, c->tech);
+    CKPT_PUT(b, c->scale);
+    CKPT_PUT(b, c->xsum);
+    CKPT_PUT(b, c->pending);
+    CKPT_PUT(b, c->xsum_valid);
+    if (c->path) {
+        CKPT_PUT(b, c->path->t);
+        CKPT_PUT(b, c->path->s);
+        ckpt_put_vertices(b, sc, c->path->cam, MAX_SUBPATH_VERTS);
+        ckpt_put_vertices(b, sc, c->path->emi, MAX_SUBPATH_VERTS);
+    }
+    if (c->x) {
+        CKPT_PUT(b, c->x->k);
+        CKPT_PUT(b, c->x->t);
+        CKPT_PUT(b, c->x->s);
+        CKPT_PUT(b, c->x->complete);
+        CKPT_PUT(b, c->x->ratios);
+        ckpt_put_vertices(b, sc, c->x->cam, MAX_SUBPATH_VERTS);
+        ckpt_put_vertices(b, sc, c->x->emi, MAX_SUBPATH_VERTS);
+    }
+}
+
+static bool get_chain(struct ckpt_buf *b, const struct scene *sc, struct chain *c)
+{
+    /* the sampler's function table is this process's */
+    const struct sampler_ops *ops = c->pss.base.ops;
+    CKPT_GET(b, c->pss);
+    c->pss.base.ops = ops;
+    CKPT_GET(b, c->cur);
+    CKPT_GET(b, c->f);
+    CKPT_GET(b, c->k);
+    CKPT_GET(b, c->tech);
+    CKPT_GET(b, c->scale);
+    CKPT_GET(b, c->xsum);
+    CKPT_GET(b, c->pending);
+    CKPT_GET(b, c->xsum_valid);
+    if (c->path) {
+        CKPT_GET(b, c->path->t);
+        CKPT_GET(b, c->path->s);
+        ckpt_get_vertices(b, sc, c->path->cam, MAX_SUBPATH_VERTS);
+        ckpt_get_vertices(b, sc, c->path->emi, MAX_SUBPATH_VERTS);
+    }
+    if (c->x) {
+        CKPT_GET(b, c->x->k);
+        CKPT_GET(b, c->x->t);
+        CKPT_GET(b, c->x->s);
+        CKPT_GET(b, c->x->complete);
+        CKPT_GET(b, c->x->ratios);
+        ckpt_get_vertices(b, sc, c->x->cam, MAX_SUBPATH_VERTS);
+        ckpt_get_vertices(b, sc, c->x->emi, MAX_SUBPATH_VERTS);
+    }
+    return !b->short_read && c->cur.n >= 0 && c->cur.n <= MAX_SPLATS;
+}
+
+void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t)
+{
+    b->len = 0; /* the slot's previous state, its memory kept */
+    CKPT_PUT(b, t->nk);
+    for (int i = 0; i < t->nk; i++) put_chain(b, sc, &t->ch[i]);
+    CKPT_PUT(b, *t->r);
+    CKPT_PUT(b, *t->n);
+    CKPT_PUT(b, *t->nonfinite);
+    CKPT_PUT(b, *t->st);
+    ckpt_put(b, t->ctrl_fail, 2 * sizeof *t->ctrl_fail);
+    ckpt_put_image(b, t->img);
+    if (t->angle) {
+        size_t np = (size_t)t->angle->w * t->angle->h;
+        ckpt_put(b, t->angle->sum, np * sizeof(double));
+        ckpt_put(b, t->angle->count, np * sizeof(double));
+        CKPT_PUT(b, t->angle->len);
+        CKPT_PUT(b, t->angle->skipped);
+    }
+    if (t->tech) {
+        const struct tech_acc *a = t->tech;
+        for (int i = 1; i <= a->k + 1; i++) {
+            ckpt_put_image(b, a->contrib[i]);
+            ckpt_put(b, a->count[i], (size_t)a->w * a->h * sizeof(double));
+        }
+        CKPT_PUT(b, a->samples);
+        CKPT_PUT(b, a->cur);
+        CKPT_PUT(b, a->prop);
+        CKPT_PUT(b, a->active);
+    }
+}
+
+bool mlt_thread_load(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t)
+{
+    int nk = 0;
+    if (!CKPT_GET(b, nk) || nk != t->nk) return false;
+    for (int i = 0; i < t->nk; i++)
+        if (!get_chain(b, sc, &t->ch[i])) return false;
+    CKPT_GET(b, *t->r);
+    CKPT_GET(b, *t->n);
+    CKPT_GET(b, *t->nonfinite);
+    CKPT_GET(b, *t->st);
+    ckpt_get(b, t->ctrl_fail, 2 * sizeof *t->ctrl_fail);
+    ckpt_get_image(b, t->img);
+    if (t->angle) {
+        size_t np = (size_t)t->angle->w * t->angle->h;
+        ckpt_get(b, t->angle->sum, np * sizeof(double));
+        ckpt_get(b, t->angle->count, np * sizeof(double));
+        CKPT_GET(b, t->angle->len);
+        CKPT_GET(b, t->angle->skipped);
+    }
+    if (t->tech) {
+        struct tech_acc *a = t->tech;
+        for (int i = 1; i <= a->k + 1; i++) {
+            ckpt_get_image(b, a->contrib[i]);
+            ckpt_get(b, a->count[i], (size_t)a->w * a->h * sizeof(double));
+        }
+        CKPT_GET(b, a->samples);
+        CKPT_GET(b, a->cur);
+        CKPT_GET(b, a->prop);
+        CKPT_GET(b, a->active);
+    }
+    return !b->short_read;
+}

@@ -1,0 +1,303 @@
+/* PITP's technique perturbation (see pitp.h): choice of j, partial inversion with a retrace of
+ * each gained vertex, the reverse move's check, and the update of the chain's numbers. */
+#include "mcmc/pitp.h"
+#include "mcmc/mlt.h"
+
+bool mmlt_eval(const struct path_ctx *pc, struct sampler *s, int k, struct pitp_path *x, struct connection *c)
+{
+    sampler_begin(s, STREAM_TECHNIQUE, 0);
+    int t = 1 + (int)((k + 1) * sampler_next(s, DIM_TECHNIQUE));
+    if (t > k + 1) t = k + 1;
+    int sv = k + 1 - t;
+    x->k = k;
+    x->t = t;
+    x->s = sv;
+    int nz = walk_camera(pc, s, x->cam, t);
+    int ny = sv > 0 ? walk_emitter(pc, s, x->emi, sv) : 0;
+    x->complete = nz == t && ny == sv;
+    return x->complete && connect_st(pc, x->emi, sv, x->cam, t, k, c, x->ratios);
+}
+
+void pitp_scratch_init(struct pitp_scratch *w, const struct scene *sc)
+{
+    w->tol = 1e-4 * maxd(1.0, vlen(vsub(sc->bbox_max, sc->bbox_min)));
+}
+
+/* One block of numbers: written by an inversion, then read back by the forward step that must
+ * retrace the vertex inverted toward. Reading anything the inversion did not write is an error. */
+struct block_sampler {
+    struct sampler base;
+    rng *r;
+    int stream, vertex, n;
+    bool bad;
+    double u[SAMPLER_BLOCK];
+};
+
+static double blk_next(struct sampler *s, enum dim_kind kind)
+{
+    struct block_sampler *b = (struct block_sampler *)s;
+    (void)kind;
+    if (s->stream != b->stream || s->vertex != b->vertex || s->offset >= b->n) {
+        b->bad = true;
+        return 0.5;
+    }
+    return b->u[s->offset];
+}
+
+static void blk_put(struct sampler *s, enum dim_kind kind, double u)
+{
+    struct block_sampler *b = (struct block_sampler *)s;
+    (void)kind;
+    if (b->stream < 0) {
+        b->stream = s->stream;
+        b->vertex = s->vertex;
+    } else if (b->stream != s->stream || b->vertex != s->vertex) {
+        b->bad = true;
+        return;
+    }
+    b->u[s->offset] = u;
+    if (s->offset + 1 > b->n) b->n = s->offset + 1;
+}
+
+static double blk_fresh(struct sampler *s) { return rng_uniform(((struct block_sampler *)s)->r); }
+static const struct sampler_ops blk_ops = {blk_next, blk_put, blk_fresh};
+
+static void blk_reset(struct block_sampler *b)
+{
+    b->stream = -1;
+    b->n = 0;
+}
+
+/* Blocks of numbers an extension wrote, committed to the chain only when the move is taken. */
+struct block_rec {
+    int stream, vertex, n;
+    double u[SAMPLER_BLOCK];
+};
+
+/* The same vertex within the retrace tolerance: same primitive, and the same position (for a
+ * vertex at infinity, the same direction). A camera hit on an emitter and the emitter vertex of
+ * the same point count as the same vertex. */
+static bool same_vertex(const struct vertex *a, const struct vertex *b, double tol)
+{
+    if (a->prim != b->prim) return false;
+    if (a->kind == VK_ENV || b->kind == VK_ENV) return a->kind == b->kind && vlen(vsub(a->ng, b->ng)) <= 1e-4;
+    return vlen(vsub(a->p, b->p)) <= tol;
+}
+
+/* The end vertex of a camera subpath that reached an emitter, as the first vertex of an emitter
+ * subpath: its emitting-side normal; at infinity the same direction, with a point on the ray that
+ * the inversion projects onto the origin disc. */
+static struct vertex as_emitter_origin(const struct vertex *z)
+{
+    struct vertex y = *z;
+    if (z->kind != VK_ENV) {
+        y.kind = VK_EMITTER;
+        y.ng = z->flipped ? vneg(z->ng) : z->ng;
+    }
+    return y;
+}
+
+/* Extends subpath v (n vertices of stream st) through the vertices tgt[0..m-1], one block at a time:
+ * invert the block of the last vertex toward the next target, then step the walk with exactly
+ * those numbers and require that it reaches the target. An emitter subpath of at most one vertex
+ * re-inverts its block 0 whole (light choice, position and direction are one block). */
+static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, const struct vertex *const *tgt, int m,
+                   struct block_sampler *b, struct block_rec *rec, int *nrec, double tol)
+{
+    *nrec = 0;
+    for (int c = 0; c < m;) {
+        blk_reset(b);
+        b->bad = false;
+        int take, len;
+        bool ok;
+        if (st == STREAM_EMITTER && n <= 1) {
+            struct vertex y[2];
+            take = n == 0;
+            y[0] = n == 0 ? as_emitter_origin(tgt[c]) : v[0];
+            len = 1;
+            /* From no vertex, y_0 alone first: the direction is inverted in the frame of the normal
+             * the emitter's own sampler gives y_0 (a camera hit's normal can differ from it in the
+             * sign of a zero component, which turns the frame), by the next pass with n = 1. */
+            if (n == 1 && c + take < m) {
+                y[1] = *tgt[c + take];
+                take++;
+                len = 2;
+                /* the environment's origin is a point of the disc on the line through y_1 (for
+                 * s = 1 it was any point: a lone y_0 is only connected to along its direction) */
+                if (y[0].kind == VK_ENV) y[0].p = y[1].p;
+            }
+            ok = invert_emitter(pc, y, len, 0, &b->base) && walk_emitter(pc, &b->base, v, len) == len && !b->bad &&
+                 same_vertex(&v[0], &y[0], tol) && (len < 2 || same_vertex(&v[1], &y[1], tol));
+        } else {
+            v[n] = *tgt[c]; /* the inversion reads the direction toward it */
+            ok = st == STREAM_CAMERA ? invert_camera(pc, v, n + 1, n - 1, &b->base) : invert_emitter(pc, v, n + 1, n - 1, &b->base);
+            ok = ok && walk_extend(pc, &b->base, v, n, n + 1, st) == n + 1 && !b->bad && same_vertex(&v[n], tgt[c], tol);
+            take = 1;
+            len = n + 1;
+        }
+        if (!ok) return false;
+        struct block_rec *r = &rec[(*nrec)++];
+        r->stream = b->stream;
+        r->vertex = b->vertex;
+        r->n = b->n;
+        for (int i = 0; i < b->n; i++) r->u[i] = b->u[i];
+        c += take;
+        n = len;
+    }
+    return true;
+}
+
+/* Marks fresh the numbers a subpath of stream st stops using when it shrinks from n to n_new
+ * vertices. A camera subpath of n vertices reads blocks 0..n-2; an emitter subpath blocks
+ * 0..n-2 and, with a single vertex, the light choice and position at the start of block 0. */
+static void forget_dropped(const struct path_ctx *pc, struct pss_sampler *p, int st, int n, int n_new)
+{
+    int first = n_new - 1, last = st == STREAM_EMITTER && n >= 1 ? (n >= 2 ? n - 2 : 0) : n - 2;
+    if (st == STREAM_EMITTER && n_new == 1) {
+        /* block 0 keeps what y_0 reads: replay its sampling on the current numbers to count them */
+        struct vertex y;
+        sampler_begin(&p->base, STREAM_EMITTER, 0);
+        sample_emitter_vertex(pc->sc, &p->base, &y);
+        for (int o = p->base.offset; o < SAMPLER_BLOCK; o++) pss_forget(p, st, o);
+        first = 1;
+    }
+    if (first < 0) first = 0;
+    for (int blk = first; blk <= last; blk++)
+        for (int o = 0; o < SAMPLER_BLOCK; o++) pss_forget(p, st, blk * SAMPLER_BLOCK + o);
+}
+
+/* Thesis Eq. 5.6: the technique number becomes a uniform point of t's interval, nudged so that
+ * MMLT's own mapping t = 1 + floor((k + 1) u) gives t back in floating point. */
+static double technique_number(int t, int k, rng *r)
+{
+    double u = invert_discrete((double)(t - 1) / (k + 1), (double)t / (k + 1), rng_uniform(r));
+    while (1 + (int)((k + 1) * u) < t) u = nextafter(u, 1.0);
+    while (1 + (int)((k + 1) * u) > t) u = nextafter(u, 0.0);
+    return u;
+}
+
+/* Whether the target of the path can change with the technique: through a refracting BSDF (its
+ * eta^2 factor is applied in radiance mode only, so f changes when the vertex changes subpath), or
+ * a delta vertex (the MIS code counts a Dirac density as 1, but the light side's Dirac sits on the
+ * vertex after it and the camera side's on the vertex before it, with different area conversions:
+ * the weights sum to one but are not p_j / sum p, and w_j C_j varies with j, by up to 14x on
+ * scenes/materials, measured by tests/test_pitp.c). Other paths keep (k + 1) f / sum_l p_l. */
+static bool target_may_change(const struct pitp_path *x)
+{
+    for (int i = 0; i < x->t + x->s; i++) {
+        const struct vertex *v = i < x->t ? &x->cam[i] : &x->emi[i - x->t];
+        if (!v->bc.b) continue;
+        enum bsdf_type ty = v->bc.b->type;
+        if (ty == BSDF_DIELECTRIC || ty == BSDF_ROUGH_DIELECTRIC || v->delta || bsdf_ops_for(ty)->delta_only) return true;
+    }
+    return false;
+}
+
+/* The factor a refracting vertex carries in radiance mode, (eta on the camera side / eta on the
+ * light side)^2 (bsdf_dielectric.c, bsdf_rough_dielectric.c), 1 in importance mode and wherever it
+ * does not refract. wc, wl: unit directions toward its camera-side and light-side neighbours. */
+static double radiance_factor(const struct vertex *v, vec3 wc, vec3 wl)
+{
+    if (v->kind != VK_SURFACE || !v->bc.b) return 1;
+    enum bsdf_type ty = v->bc.b->type;
+    if (ty != BSDF_DIELECTRIC && ty != BSDF_ROUGH_DIELECTRIC) return 1;
+    bool out_c = vdot(wc, v->sh.n) > 0, out_l = vdot(wl, v->sh.n) > 0; /* transmissive: never flipped */
+    if (out_c == out_l) return 1;
+    double ec = out_c ? 1 : v->bc.b->ior, el = out_l ? 1 : v->bc.b->ior;
+    return sqr(ec / el);
+}
+
+/* f_j / f_i for the path x in technique i's form: the vertices x_l between the two connections
+ * change transport mode (l = i..j-1 from radiance to importance when j > i, the reverse when
+ * j < i), and only a refraction's factor depends on the mode. With T(i -> j) = w_j, the MIS
+ * weights cancel against the Jacobian p_j / p_i (in whatever convention the weights were computed,
+ * as long as both moves use the same one), so this is Eq. 5.18's whole ratio. */
+static double f_ratio(const struct pitp_path *x, int sj)
+{
+    const struct vertex *pv[2 * MAX_SUBPATH_VERTS];
+    int k = x->k, si = x->s;
+    for (int l = 0; l <= k; l++) pv[l] = l < si ? &x->emi[l] : &x->cam[k - l];
+    double r = 1;
+    int lo = si < sj ? si : sj, hi = si < sj ? sj : si;
+    for (int l = lo > 1 ? lo : 1; l < hi; l++) {
+        double d2;
+        double fl = radiance_factor(pv[l], edge_dir(pv[l], pv[l + 1], &d2), edge_dir(pv[l], pv[l - 1], &d2));
+        r = sj > si ? r / fl : r * fl;
+    }
+    return r;
+}
+
+enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct pitp_path *x,
+                               struct pitp_scratch *w, double u_pick, int *j, double *a,
+                               struct connection *c, bool *c_new)
+{
+    int k = x->k, si = x->s;
+    int sj = mctls_pick(x->ratios, k + 1, u_pick); /* w_j = ratio_j / sum of ratios (Eq. 5.22-5.25) */
+    *j = sj;
+    *a = 1;
+    *c_new = false;
+    if (sj == si) return PITP_SAME;
+    int tj = k + 1 - sj;
+    bool to_emitter = sj > si; /* the emitter subpath gains vertices, the camera subpath loses them */
+    int gs = to_emitter ? STREAM_EMITTER : STREAM_CAMERA, ss = to_emitter ? STREAM_CAMERA : STREAM_EMITTER;
+    struct vertex *grow = to_emitter ? x->emi : x->cam, *shrink = to_emitter ? x->cam : x->emi;
+    int ng = to_emitter ? si : x->t, ns = to_emitter ? x->t : si, ns_new = to_emitter ? tj : sj;
+    int d = ns - ns_new;
+    struct block_sampler b = {.base = {&blk_ops, 0, 0, 0}, .r = &p->r};
+    struct block_rec rec[MAX_SUBPATH_VERTS];
+    int nrec, nrev;
+
+    /* Eq. 5.18: r = f_j / f_i, 1 unless the path refracts between the two connections; decided
+     * first, on the path in i's form, so that a rejection costs no ray */
+    *a = mind(1.0, f_ratio(x, sj));
+    if (*a < 1 && !(rng_uniform(&p->r) < *a)) return PITP_REJECTED;
+    bool may_change = target_may_change(x);
+    /* forward: the vertices the shrinking subpath loses, in the growing subpath's order */
+    for (int m = 0; m < d; m++) w->tgt[m] = &shrink[ns - 1 - m];
+    /* what the extension rewrites of the growing subpath: from fewer than 2 vertices it walks
+     * afresh, else it sets the last vertex's delta and the one before's reverse density */
+    bool afresh = ng < 2;
+    bool last_delta = afresh ? false : grow[ng - 1].delta;
+    double before_pdf_rev = afresh ? 0 : grow[ng - 2].pdf_rev;
+    for (int i = 0; afresh && i < ng; i++) w->save[i] = grow[i];
+    bool ok = extend(pc, gs, grow, ng, w->tgt, d, &b, rec, &nrec, w->tol);
+    if (ok) {
+        /* reverse: from (j, v) the move back to i must succeed as well, or the pair is not symmetric */
+        int rlo = ns_new >= 2 ? ns_new - 2 : 0;
+        for (int i = rlo; i < ns_new; i++) w->rev[i] = shrink[i];
+        for (int m = 0; m < d; m++) w->tgt[m] = &grow[ng + d - 1 - m]; /* rev is written, grow only read */
+        struct block_rec rrec[MAX_SUBPATH_VERTS];
+        ok = extend(pc, ss, w->rev, ns_new, w->tgt, d, &b, rrec, &nrev, w->tol);
+    }
+    if (ok && may_change) {
+        /* the new state's target: the same path, but (k + 1) w_j C_j need not equal the old one */
+        const struct vertex *ye = to_emitter ? grow : shrink, *yc = to_emitter ? shrink : grow;
+        double f = 0;
+        if (connect_st(pc, ye, sj, yc, tj, k, c, w->ratios)) f = luminance(vscale(c->f, c->w * (k + 1)));
+        *c_new = isfinite(f) && f > 0;
+        if (!*c_new) ok = false; /* the retraced connection lost the path (occluded in float) */
+    }
+    if (!ok) {
+        for (int i = 0; afresh && i < ng; i++) grow[i] = w->save[i];
+        if (!afresh) {
+            grow[ng - 1].delta = last_delta;
+            grow[ng - 2].pdf_rev = before_pdf_rev;
+        }
+        *a = 0;
+        return PITP_FAILED;
+    }
+    /* the move is taken: the gained blocks' numbers, fresh dropped numbers, the technique number */
+    for (int r = 0; r < nrec; r++)
+        for (int i = 0; i < rec[r].n; i++) pss_replace(p, rec[r].stream, rec[r].vertex * SAMPLER_BLOCK + i, rec[r].u[i]);
+    forget_dropped(pc, p, ss, ns, ns_new);
+    pss_replace(p, STREAM_TECHNIQUE, 0, technique_number(tj, k, &p->r));
+    if (*c_new) {
+        for (int i = 0; i <= k; i++) x->ratios[i] = w->ratios[i];
+    } else {
+        double rj = x->ratios[sj];
+        for (int i = 0; i <= k; i++) x->ratios[i] /= rj;
+    }
+    x->s = sj;
+    x->t = tj;
+    return PITP_MOVED;
+}

@@ -1,0 +1,166 @@
+/* Inverse random walks, thesis Alg. 2: the numbers that make walk_camera / walk_emitter retrace
+ * given vertices. Each block is inverted independently (fixed layout), so a suffix can be
+ * re-inverted while the numbers of earlier vertices stay as they are.
+ *
+ * Closed loop. Alg. 2 inverts block i at the given vertex x_i, aiming at x_{i+1}; but the forward
+ * walk scatters from its own hit point, which is a single-precision ray hit off x_i in the last
+ * bits (which bits depends on Embree's kernels, so on the CPU: accel.h). Inverted open loop, the
+ * walk keeps that offset and grazing bounces (1/cos) and curved surfaces (spheres turn their normal
+ * and shading frame with the offset; delta lobes on them double it) grow it at every vertex: on
+ * scenes/materials the vertex before a walk's first miss was a median 850x further off than its
+ * first hit (README). So each block is inverted at the vertex the walk will actually reach: the
+ * block's numbers are replayed through the forward sampling and the ray is traced with walk_hit,
+ * exactly as walk_* does. A non-delta vertex then aims from where the walk is, and only one ray's
+ * rounding separates each retraced vertex from its target. Costs one ray per inverted block. */
+#include "camera/camera.h"
+#include "emitter/emitter.h"
+#include "path/path.h"
+
+static vec3 dir_to(const struct vertex *a, const struct vertex *b)
+{
+    double dist2;
+    return edge_dir(a, b, &dist2);
+}
+
+/* Passes every number put to the caller's writer and keeps the block's copy; then, begun again,
+ * replays that copy to the forward sampling functions. */
+struct tee {
+    struct sampler base;
+    struct sampler *w;
+    double u[SAMPLER_BLOCK];
+    int n;        /* numbers put in the block */
+    bool short_;  /* the replay read a number the inversion did not put */
+};
+
+static double tee_next(struct sampler *s, enum dim_kind kind)
+{
+    (void)kind;
+    struct tee *t = (struct tee *)s;
+    if (s->offset < t->n) return t->u[s->offset];
+    t->short_ = true;
+    return 0.5;
+}
+
+static void tee_put(struct sampler *s, enum dim_kind kind, double u)
+{
+    struct tee *t = (struct tee *)s;
+    t->u[s->offset] = u;
+    t->n = s->offset + 1;
+    sampler_put(t->w, kind, u);
+}
+
+static double tee_fresh(struct sampler *s) { return sampler_fresh(((struct tee *)s)->w); }
+
+static const struct sampler_ops tee_ops = {tee_next, tee_put, tee_fresh};
+
+static void tee_begin(struct tee *t, struct sampler *w, int stream, int vertex)
+{
+    *t = (struct tee){.base = {&tee_ops, 0, 0, 0}, .w = w};
+    sampler_begin(&t->base, stream, vertex);
+    sampler_begin(w, stream, vertex);
+}
+
+static void tee_replay(struct tee *t) { sampler_begin(&t->base, t->base.stream, t->base.vertex); }
+
+/* The numbers of block i that make the BSDF sample at `at` (the walk's vertex i) leave along wo. */
+static bool invert_dir(const struct vertex *at, vec3 wo, int i, struct tee *t)
+{
+    tee_begin(t, t->w, t->base.stream, i);
+    return bsdf_invert(&at->bc, frame_to_local(&at->sh, at->wi), frame_to_local(&at->sh, wo), &t->base);
+}
+
+/* Block i, first aimed from the walk's vertex `at` at v[i+1] (closed loop). A delta lobe accepts
+ * only its own direction, which an offset hit point turns by about twice the offset over the
+ * sphere's radius: then its numbers (the lobe) come from v[i] itself, and the walk follows the lobe
+ * from `at`. Last, the direction the walk left v[i] in (-v[i+1].wi, exact where the two points are
+ * not: a segment of 0.4 mm from the glass sphere to the floor it touches spans 1e-4 rad of hit
+ * rounding), if v[i+1] lies on that ray to within a hit point's rounding. */
+static bool scatter(const struct vertex *at, const struct vertex *v, int i, struct tee *t)
+{
+    if (!at->bc.b || !v[i].bc.b) return false;
+    if (invert_dir(at, dir_to(at, &v[i + 1]), i, t) || invert_dir(&v[i], dir_to(&v[i], &v[i + 1]), i, t)) return true;
+    vec3 wo = vneg(v[i + 1].wi), e = vsub(v[i + 1].p, v[i].p);
+    return v[i + 1].kind == VK_SURFACE && vdot(e, wo) > 0 && vlen(vcross(e, wo)) <= ray_eps(v[i + 1].p) &&
+           invert_dir(&v[i], wo, i, t);
+}
+
+/* The direction the walk leaves `at` in, from the block just inverted. */
+static bool replay_scatter(const struct vertex *at, struct tee *t, enum transport mode, vec3 *d)
+{
+    tee_replay(t);
+    struct bsdf_sample bs;
+    if (!bsdf_sample(&at->bc, frame_to_local(&at->sh, at->wi), &t->base, mode, &bs)) return false;
+    *d = frame_to_world(&at->sh, bs.wo);
+    return true;
+}
+
+/* The vertex the walk reaches from `at` along d, which the next block is inverted at: the retraced
+ * hit when it lies on the target's primitive, else (a miss, another primitive, or a replay that
+ * ran short) the target itself, as open-loop inversion would. */
+static void follow(const struct scene *sc, struct vertex *at, bool have_d, vec3 d, const struct tee *t,
+                   const struct vertex *target)
+{
+    struct vertex hit;
+    if (have_d && !t->short_ && walk_hit(sc, at, d, &hit) && hit.prim == target->prim) *at = hit;
+    else *at = *target;
+}
+
+bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w)
+{
+    const struct camera *cam = &pc->sc->cam;
+    struct vertex at = v[from];
+    struct tee t;
+    for (int i = from; i < n - 1; i++) {
+        tee_begin(&t, w, STREAM_CAMERA, i);
+        vec3 d = v3s(0);
+        bool have_d = true;
+        if (i == 0) {
+            double px, py, pdf;
+            if (!(camera_raster(cam, dir_to(&at, &v[1]), &px, &py) > 0)) return false;
+            camera_invert(cam, px, py, &t.base);
+            tee_replay(&t);
+            d = camera_sample_dir(cam, &t.base, &px, &py, &pdf);
+        } else {
+            if (!scatter(&at, v, i, &t)) return false;
+            have_d = replay_scatter(&at, &t, TRANSPORT_RADIANCE, &d);
+        }
+        if (i + 1 < n - 1) follow(pc->sc, &at, have_d, d, &t, &v[i + 1]);
+    }
+    return true;
+}
+
+bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w)
+{
+    const struct scene *sc = pc->sc;
+    struct vertex at = v[from];
+    struct tee t;
+    for (int i = from; i < n; i++) {
+        tee_begin(&t, w, STREAM_EMITTER, i);
+        vec3 d = v3s(0);
+        bool have_d = true;
+        if (i == 0 && v[0].kind == VK_ENV) {
+            if (!emitter_pick_invert(sc, v[0].prim, &t.base) || !env_invert_dir(sc, env_dir(&v[0]), &t.base) ||
+                !env_invert_origin(sc, env_dir(&v[0]), v[0].p, &t.base))
+                return false;
+            tee_replay(&t);
+            have_d = sample_emitter_vertex(sc, &t.base, &at);
+            d = vneg(env_dir(&at));
+        } else if (i == 0) {
+            struct emitter_pos pos = {v[0].p, v[0].ng, 0, v[0].tri};
+            if (!emitter_pick_invert(sc, v[0].prim, &t.base) || !emitter_invert_pos(sc, v[0].prim, &pos, &t.base))
+                return false;
+            if (n > 1 && !emitter_invert_dir(v[0].ng, dir_to(&v[0], &v[1]), &t.base)) return false;
+            if (n > 1) {
+                double pdf;
+                tee_replay(&t);
+                have_d = sample_emitter_vertex(sc, &t.base, &at);
+                if (have_d) d = emitter_sample_dir(at.ng, &t.base, &pdf);
+            }
+        } else if (i < n - 1) {
+            if (!scatter(&at, v, i, &t)) return false;
+            have_d = replay_scatter(&at, &t, TRANSPORT_IMPORTANCE, &d);
+        }
+        if (i + 1 < n - 1) follow(sc, &at, have_d, d, &t, &v[i + 1]);
+    }
+    return true;
+}

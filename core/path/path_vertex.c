@@ -1,0 +1,119 @@
+/* Vertices from ray hits, density conversion, emission and visibility between vertices. */
+#include "scene/accel.h"
+#include "emitter/emitter.h"
+#include "path/path.h"
+
+/* Self-intersection offset relative to the coordinates' magnitude (Embree works in float). */
+double ray_eps(vec3 p) { return 2e-5 * maxd(fabs(p.z), maxd(fabs(p.y), maxd(fabs(p.x), 1.0))); }
+
+/* Tungsten's sphere parametrisation: poles on the local Z axis, u = atan2(y, x) / 2pi + 0.5,
+ * v = acos(z) / pi of the local unit normal. */
+void sphere_uv(const struct prim *pr, vec3 n, double uv[2])
+{
+    vec3 l = v3(vdot(pr->sphere_axis[0], n), vdot(pr->sphere_axis[1], n), vdot(pr->sphere_axis[2], n));
+    uv[0] = atan2(l.y, l.x) * (0.5 / M_PI) + 0.5;
+    uv[1] = acos(fmin(1.0, fmax(-1.0, l.z))) * (1 / M_PI);
+}
+
+void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *h, struct vertex *v)
+{
+    const struct prim *pr = &sc->prims[h->prim];
+    v->kind = VK_SURFACE;
+    v->prim = h->prim;
+    v->tri = pr->kind == PRIM_SPHERE ? -1 : h->tri;
+    v->b1 = h->b1;
+    v->b2 = h->b2;
+    v->bc.b = pr->bsdf >= 0 && sc->bsdfs[pr->bsdf].type != BSDF_NULL ? &sc->bsdfs[pr->bsdf] : NULL;
+    const struct texture *tex = v->bc.b ? v->bc.b->albedo_tex : NULL;
+    vec3 ns;
+    double uv[2] = {0, 0};
+    if (pr->kind == PRIM_SPHERE) {
+        vec3 q = vsub(vmad(o, d, h->t), pr->center);
+        v->ng = vnorm(q);
+        v->p = vmad(pr->center, v->ng, pr->radius); /* back onto the sphere in double precision */
+        ns = v->ng;
+        if (tex) sphere_uv(pr, v->ng, uv);
+    } else {
+        const int *t = pr->tri + 3 * v->tri;
+        vec3 p0 = pr->p[t[0]], p1 = pr->p[t[1]], p2 = pr->p[t[2]];
+        double b0 = 1.0 - h->b1 - h->b2;
+        v->p = vadd(p0, vadd(vscale(vsub(p1, p0), h->b1), vscale(vsub(p2, p0), h->b2)));
+        v->ng = pr->tri_n[v->tri];
+        ns = v->ng;
+        if (pr->n) {
+            vec3 n = vadd(vadd(vscale(pr->n[t[0]], b0), vscale(pr->n[t[1]], h->b1)), vscale(pr->n[t[2]], h->b2));
+            if (vlen2(n) > 0) ns = vnorm(n);
+            if (vdot(ns, v->ng) < 0) ns = vneg(ns);
+        }
+        if (pr->uv && tex) /* only textures read them */
+            for (int c = 0; c < 2; c++)
+                uv[c] = b0 * pr->uv[2 * t[0] + c] + h->b1 * pr->uv[2 * t[1] + c] + h->b2 * pr->uv[2 * t[2] + c];
+    }
+    v->wi = vneg(d);
+    v->front = vdot(v->ng, v->wi) > 0;
+    v->bc.albedo = v->bc.b ? v->bc.b->albedo : v3s(0);
+    if (tex) v->bc.albedo = texture_lookup(tex, uv[0], uv[1]);
+    /* Two-sided shading: opaque surfaces seen from the back shade as if seen from the front. */
+    v->flipped = false;
+    if (!v->front && v->bc.b && sc->two_sided_shading && !bsdf_ops_for(v->bc.b->type)->transmissive) {
+        v->ng = vneg(v->ng);
+        ns = vneg(ns);
+        v->flipped = true;
+    }
+    v->sh = frame_from_normal(ns);
+    v->delta = false;
+    v->pdf_fwd = v->pdf_rev = 0;
+}
+
+double adjoint_shading_factor(const struct vertex *v, vec3 wi, vec3 wo)
+{
+    vec3 ns = v->sh.n, ng = v->ng;
+    if (ns.x == ng.x && ns.y == ng.y && ns.z == ng.z) return 1.0;
+    double den = fabs(vdot(wi, ng)) * fabs(vdot(wo, ns));
+    return den > 0 ? fabs(vdot(wi, ns)) * fabs(vdot(wo, ng)) / den : 0.0;
+}
+
+double edge_pdf(double pdf, const struct vertex *from, const struct vertex *to, vec3 d, double dist2)
+{
+    if (to->kind == VK_ENV) return pdf;
+    double c = to->kind == VK_CAMERA ? 1.0 : fabs(vdot(to->ng, d));
+    if (from->kind == VK_ENV) return pdf * c;
+    return dist2 > 0 ? pdf * c / dist2 : 0;
+}
+
+vec3 edge_dir(const struct vertex *a, const struct vertex *b, double *dist2)
+{
+    if (b->kind == VK_ENV || a->kind == VK_ENV) {
+        *dist2 = 1;
+        return b->kind == VK_ENV ? env_dir(b) : vneg(env_dir(a));
+    }
+    vec3 d = vsub(b->p, a->p);
+    *dist2 = vlen2(d);
+    return *dist2 > 0 ? vscale(d, 1.0 / sqrt(*dist2)) : d;
+}
+
+rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w)
+{
+    if (v->kind == VK_ENV) return env_radiance(sc, env_dir(v));
+    const struct prim *pr = &sc->prims[v->prim];
+    if (!pr->emissive) return v3s(0);
+    /* ng may be flipped by two-sided shading; emission follows the geometry's own front. */
+    vec3 n = v->flipped ? vneg(v->ng) : v->ng;
+    return emitter_radiance(sc, v->prim, n, w);
+}
+
+bool visible(const struct scene *sc, const struct vertex *a, const struct vertex *b)
+{
+    if (a->kind == VK_ENV || b->kind == VK_ENV) {
+        const struct vertex *f = a->kind == VK_ENV ? b : a, *e = a->kind == VK_ENV ? a : b;
+        double eps = f->kind == VK_CAMERA ? 0 : ray_eps(f->p);
+        return !accel_occluded(sc->accel, f->p, env_dir(e), eps, INFINITY);
+    }
+    vec3 d = vsub(b->p, a->p);
+    double dist = vlen(d);
+    if (dist == 0) return false;
+    d = vscale(d, 1.0 / dist);
+    double ea = a->kind == VK_CAMERA ? 0 : ray_eps(a->p), eb = b->kind == VK_CAMERA ? 0 : ray_eps(b->p);
+    if (dist <= ea + eb) return true;
+    return !accel_occluded(sc->accel, a->p, d, ea, dist - eb);
+}

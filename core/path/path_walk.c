@@ -1,0 +1,151 @@
+/* Random walks, thesis Alg. 1: every number comes from the sampler, in fixed per-vertex blocks. */
+#include "camera/camera.h"
+#include "emitter/emitter.h"
+#include "path/path.h"
+
+bool walk_hit(const struct scene *sc, const struct vertex *prev, vec3 d, struct vertex *out)
+{
+    struct hit h;
+    double eps = prev->kind == VK_CAMERA ? 0 : ray_eps(prev->p);
+    if (!accel_intersect(sc->accel, prev->p, d, eps, INFINITY, &h)) return false;
+    surface_from_hit(sc, prev->p, d, &h, out);
+    return true;
+}
+
+/* Samples the direction leaving v[n-1] (n >= 2, a surface with a BSDF) from its block: the
+ * outgoing direction *d, its solid-angle density *pdf_sa (0 for a delta lobe) and the throughput
+ * *beta the next vertex receives; sets v[n-1].delta and v[n-2].pdf_rev. False ends the walk. The
+ * incoming direction is -v[n-1].wi, bit for bit the ray that reached it. */
+static inline bool scatter_at(struct sampler *s, struct vertex *v, int n, enum transport mode, int stream, vec3 *d,
+                              double *pdf_sa, rgb *beta)
+{
+    struct vertex *prev = &v[n - 2], *cur = &v[n - 1];
+    sampler_begin(s, stream, n - 1);
+    vec3 wi = frame_to_local(&cur->sh, cur->wi);
+    struct bsdf_sample bs;
+    if (!bsdf_sample(&cur->bc, wi, s, mode, &bs)) return false;
+    vec3 wo = frame_to_world(&cur->sh, bs.wo);
+    /* A shading normal may disagree with the geometry: such directions would leak light. */
+    if ((vdot(wo, cur->ng) > 0) != (bs.wo.z > 0)) return false;
+    rgb b = vmul(cur->beta, bs.weight);
+    if (mode == TRANSPORT_IMPORTANCE) b = vscale(b, adjoint_shading_factor(cur, cur->wi, wo));
+    if (vzero(b) || !vfinite(b)) return false;
+    cur->delta = bs.delta;
+    double dist2 = vlen2(vsub(cur->p, prev->p));
+    prev->pdf_rev = bs.delta ? 0 : edge_pdf(bsdf_pdf(&cur->bc, bs.wo, wi), cur, prev, vneg(cur->wi), dist2);
+    *d = wo;
+    *pdf_sa = bs.delta ? 0 : bs.pdf;
+    *beta = b;
+    return true;
+}
+
+/* Extends a subpath whose last vertex v[n-1] emits direction d with solid-angle density pdf_sa
+ * (0 for a delta lobe); beta is the throughput the next vertex receives. */
+static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts,
+                 vec3 d, double pdf_sa, rgb beta, enum transport mode, int stream)
+{
+    const struct scene *sc = pc->sc;
+    while (n < max_verts) {
+        struct vertex *prev = &v[n - 1], *cur = &v[n];
+        if (!walk_hit(sc, prev, d, cur)) {
+            /* A camera subpath that leaves the scene ends on the environment. */
+            if (stream == STREAM_CAMERA && sc->env_prim >= 0) {
+                *cur = (struct vertex){.kind = VK_ENV, .p = prev->p, .ng = vneg(d), .sh = frame_from_normal(vneg(d)),
+                                       .front = true, .prim = sc->env_prim, .tri = -1, .wi = vneg(d), .beta = beta,
+                                       .pdf_fwd = pdf_sa};
+                n++;
+            }
+            break;
+        }
+        double dist2 = vlen2(vsub(cur->p, prev->p));
+        cur->beta = beta;
+        cur->pdf_fwd = pdf_sa > 0 ? edge_pdf(pdf_sa, prev, cur, d, dist2) : 0;
+        n++;
+        if (!cur->bc.b || n >= max_verts) break;
+        if (!scatter_at(s, v, n, mode, stream, &d, &pdf_sa, &beta)) break;
+    }
+    return n;
+}
+
+int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream)
+{
+    if (n < 2) return stream == STREAM_CAMERA ? walk_camera(pc, s, v, max_verts) : walk_emitter(pc, s, v, max_verts);
+    if (n >= max_verts || !v[n - 1].bc.b) return n;
+    enum transport mode = stream == STREAM_CAMERA ? TRANSPORT_RADIANCE : TRANSPORT_IMPORTANCE;
+    vec3 d;
+    double pdf_sa;
+    rgb beta;
+    if (!scatter_at(s, v, n, mode, stream, &d, &pdf_sa, &beta)) return n;
+    return trace(pc, s, v, n, max_verts, d, pdf_sa, beta, mode, stream);
+}
+
+int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts)
+{
+    const struct camera *cam = &pc->sc->cam;
+    if (max_verts < 1) return 0;
+    sampler_begin(s, STREAM_CAMERA, 0);
+    struct vertex *z = &v[0];
+    *z = (struct vertex){.kind = VK_CAMERA, .p = cam->pos, .ng = cam->basis.n, .sh = cam->basis,
+                         .front = true, .prim = -1, .tri = -1, .beta = v3s(1), .pdf_fwd = 1};
+    /* A lone camera vertex (light tracing's t = 1) gets its raster position from the connection:
+     * drawing a direction would cost two numbers (and, under MCMC, two mutations) for nothing. */
+    if (max_verts == 1) return 1;
+    double pdf;
+    vec3 d = camera_sample_dir(cam, s, &z->px, &z->py, &pdf);
+    return trace(pc, s, v, 1, max_verts, d, pdf, v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA);
+}
+
+/* A point on area emitter `prim`, chosen with probability pick. */
+static bool sample_area_emitter(const struct scene *sc, int prim, double pick, struct sampler *s, struct vertex *y)
+{
+    struct emitter_pos pos;
+    if (!emitter_sample_pos(sc, prim, s, &pos) || !(pos.pdf > 0)) return false;
+    *y = (struct vertex){.kind = VK_EMITTER, .p = pos.p, .ng = pos.n, .sh = frame_from_normal(pos.n),
+                         .front = true, .prim = prim, .tri = pos.tri, .pdf_fwd = pick * pos.pdf};
+    y->beta = v3s(1.0 / y->pdf_fwd);
+    return true;
+}
+
+bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
+{
+    double pick;
+    int prim = emitter_pick(sc, s, &pick);
+    if (prim < 0) return false;
+    return prim == sc->env_prim ? sample_env_emitter(sc, pick, s, y) : sample_area_emitter(sc, prim, pick, s, y);
+}
+
+bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, struct vertex *y)
+{
+    vec3 d;
+    double pdf, pdf_disc;
+    if (!env_sample_dir(sc, s, &d, &pdf) || !(pdf > 0)) return false;
+    vec3 origin = env_sample_origin(sc, d, s, &pdf_disc);
+    *y = (struct vertex){.kind = VK_ENV, .p = origin, .ng = vneg(d), .sh = frame_from_normal(vneg(d)), .front = true,
+                         .prim = sc->env_prim, .tri = -1, .wi = vneg(d), .pdf_fwd = pick * pdf};
+    y->beta = v3s(1.0 / y->pdf_fwd);
+    return true;
+}
+
+int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts)
+{
+    const struct scene *sc = pc->sc;
+    if (max_verts < 1) return 0;
+    sampler_begin(s, STREAM_EMITTER, 0);
+    if (!sample_emitter_vertex(sc, s, &v[0])) return 0;
+    /* A lone emitter vertex (s = 1) is only connected to: the direction it would emit along is
+     * never used (as for the camera in walk_camera). */
+    if (max_verts == 1) return 1;
+    if (v[0].kind == VK_ENV) {
+        /* rays leave the origin disc (area density 1 / (pi R^2), cosine 1) against env_dir */
+        double pdf_disc = 1.0 / (M_PI * sqr(env_radius(sc)));
+        rgb beta = vscale(vmul(v[0].beta, env_radiance(sc, env_dir(&v[0]))), 1.0 / pdf_disc);
+        return trace(pc, s, v, 1, max_verts, vneg(env_dir(&v[0])), pdf_disc, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER);
+    }
+    double pdf_dir;
+    vec3 d = emitter_sample_dir(v[0].ng, s, &pdf_dir);
+    rgb le = emitter_radiance(sc, v[0].prim, v[0].ng, d);
+    double c = fabs(vdot(d, v[0].ng));
+    if (!(pdf_dir > 0) || vzero(le)) return 1;
+    rgb beta = vscale(vmul(v[0].beta, le), c / pdf_dir);
+    return trace(pc, s, v, 1, max_verts, d, pdf_dir, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER);
+}

@@ -1,0 +1,130 @@
+/* The scene model: what the loader (scene_load.c) produces and everything else reads.
+ * Geometry is in world space after loading; transforms are applied once by the loader.
+ * Quads, cubes and meshes are triangle meshes (quads keep their parallelogram for analytic
+ * emitter sampling); spheres are analytic; infinite_sphere is the environment emitter. */
+#ifndef SCENE_H
+#define SCENE_H
+
+#include "base/vecmath.h"
+#include <stddef.h>
+
+enum bsdf_type {
+    BSDF_NULL,            /* no scattering: the path ends here (see README, "null") */
+    BSDF_LAMBERT,
+    BSDF_MIRROR,
+    BSDF_CONDUCTOR,
+    BSDF_ROUGH_CONDUCTOR,
+    BSDF_DIELECTRIC,
+    BSDF_ROUGH_DIELECTRIC,
+    BSDF_PLASTIC,
+    BSDF_ROUGH_PLASTIC
+};
+
+enum mf_dist { MF_BECKMANN, MF_GGX };
+
+/* RGB float bitmap, row 0 at the top (as OpenImageIO reads it), Tungsten's BitmapTexture
+ * conventions (README, "Textures"). */
+struct texture {
+    int w, h;
+    float *rgb; /* w*h*3, linear */
+    int bits;   /* bits per channel of an integer-format file (gamma-decoded at load), 0 for float */
+};
+/* Bilinear lookup with wrap-around: texel (i, j) (row j from the top) has its centre at
+ * u = (i + 0.5) / w, v = 1 - (j + 0.5) / h, so v = 0 is the bottom edge (OBJ convention). */
+rgb texture_lookup(const struct texture *t, double u, double v);
+/* Tungsten's 8-bit gamma table: floor(255 (code/255)^2.2) / 255 (a 2.2 power, not sRGB). */
+float texture_gamma_decode(int code);
+void texture_free(struct texture *t);
+/* Reads an image file (OpenImageIO) into a texture; NULL and a message in err on failure. */
+struct texture *texture_load(const char *path, char *err, size_t errlen);
+
+struct bsdf {
+    enum bsdf_type type;
+    char name[64];
+    rgb albedo;                    /* lambert, mirror, conductor tint, plastic substrate, ... */
+    struct texture *albedo_tex;    /* owned; NULL = constant albedo */
+    rgb eta, k;                    /* conductors (from `material` or explicit) */
+    double ior;                    /* dielectrics and plastics (relative, outside = 1) */
+    bool enable_refraction;        /* dielectrics */
+    enum mf_dist dist;             /* rough_* */
+    double roughness;              /* alpha, as Tungsten's `roughness` */
+    double thickness;              /* plastics */
+    rgb sigma_a;                   /* plastics */
+    /* Derived by bsdf_prepare() after loading; never read from JSON. */
+    double diffuse_fresnel;        /* plastics: hemispherical average of the coat's Fresnel (inside) */
+};
+
+enum prim_kind { PRIM_MESH, PRIM_QUAD, PRIM_SPHERE, PRIM_INFINITE_SPHERE };
+
+struct prim {
+    enum prim_kind kind;
+    int bsdf;                  /* index into scene.bsdfs; -1 for the infinite sphere */
+    rgb emission;              /* constant radiance, front side only; zero = not an emitter */
+    bool emissive;
+    /* triangles: PRIM_MESH and PRIM_QUAD (two triangles) */
+    int nverts, ntris;
+    vec3 *p;                   /* world positions */
+    vec3 *n;                   /* world vertex normals when smooth, else NULL */
+    double *uv;                /* 2 per vertex or NULL */
+    int *tri;                  /* 3 per triangle, counter-clockwise seen from the front */
+    vec3 *tri_n;               /* unit geometric normal per triangle (built by scene_load) */
+    /* PRIM_QUAD: p = base + a * edge0 + b * edge1, (a, b) in [0,1]^2; normal = edge1 x edge0 (unit) */
+    vec3 quad_base, quad_edge0, quad_edge1, quad_normal;
+    /* PRIM_SPHERE */
+    vec3 center;
+    double radius;
+    vec3 sphere_axis[3];       /* unit columns of the transform; local normal = (axis[i] . n), for uv */
+    /* PRIM_INFINITE_SPHERE: emission map (NULL = constant `emission`) and its frame */
+    struct texture *env_tex;   /* owned, lat-long */
+    mat4 env_to_world, env_to_local;
+    double area;               /* world surface area (0 for the infinite sphere) */
+};
+
+enum recon_filter { FILTER_BOX, FILTER_TENT };
+
+struct camera {
+    vec3 pos;
+    frame basis;               /* s = image right, t = image up, n = viewing direction */
+    double fov_deg;            /* horizontal */
+    int width, height;
+    double tan_half_fov;       /* horizontal */
+    double aspect;             /* width / height */
+    enum recon_filter filter;
+};
+
+struct emitter_table;          /* light selection, built by emitters_build() (emitter.h) */
+struct accel;                  /* Embree scene, built by accel_build() (accel.h) */
+
+/* The largest image a run renders, 8192 x 8192: every thread holds a framebuffer of 3 doubles per
+ * pixel (1.6 GB at this size). */
+#define SCENE_MAX_PIXELS (1L << 26)
+
+struct scene {
+    char *file;                /* the scene file, for messages */
+    struct bsdf *bsdfs;
+    int nbsdfs;
+    struct prim *prims;
+    int nprims;
+    struct camera cam;
+    /* Defaults from the integrator/renderer blocks (command-line options override). */
+    int max_length;            /* path length cap in segments (from Tungsten's max_bounces) */
+    int min_length;
+    int spp;
+    bool two_sided_shading;    /* integrator.enable_two_sided_shading, default true */
+    vec3 bbox_min, bbox_max;   /* of all finite geometry */
+    int env_prim;              /* index of the infinite sphere or -1 */
+    struct emitter_table *emitters;
+    struct accel *accel;
+};
+
+/* Loads a Tungsten JSON scene. On bad input returns NULL and writes one line into err:
+ * "FILE: JSON.PATH: what was expected". Warnings for unsupported-but-valid features go to stderr.
+ * The result has emitters and accel built (ready to render). */
+struct scene *scene_load(const char *path, char *err, size_t errlen);
+/* Same, without building emitters and accel (loader tests, tools). */
+struct scene *scene_load_model(const char *path, char *err, size_t errlen);
+void scene_free(struct scene *s);
+/* Frees what scene_load_model allocated (not emitters/accel); NULL is a no-op. */
+void scene_model_free(struct scene *s);
+
+#endif

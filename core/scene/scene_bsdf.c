@@ -1,0 +1,255 @@
+/* BSDF blocks of a Tungsten scene: types, parameters and Tungsten's defaults
+ * (the constructors in src/core/bsdfs/): albedo 1; conductors Cu; rough_conductor and rough_dielectric
+ * ggx with roughness 0.1; rough_plastic ggx with roughness 0.02; dielectrics and plastics ior 1.5;
+ * plastics thickness 1, sigma_a 0; enable_refraction true. */
+#include "scene/metals.h"
+#include "scene/scene_load_internal.h"
+#include "base/util.h"
+#include <stdio.h>
+#include <string.h>
+
+static const char *const type_names[] = {
+    [BSDF_NULL] = "null",
+    [BSDF_LAMBERT] = "lambert",
+    [BSDF_MIRROR] = "mirror",
+    [BSDF_CONDUCTOR] = "conductor",
+    [BSDF_ROUGH_CONDUCTOR] = "rough_conductor",
+    [BSDF_DIELECTRIC] = "dielectric",
+    [BSDF_ROUGH_DIELECTRIC] = "rough_dielectric",
+    [BSDF_PLASTIC] = "plastic",
+    [BSDF_ROUGH_PLASTIC] = "rough_plastic",
+};
+#define NTYPES ((int)(sizeof type_names / sizeof type_names[0]))
+
+static void set_defaults(struct bsdf *b, enum bsdf_type t)
+{
+    memset(b, 0, sizeof *b);
+    b->type = t;
+    b->albedo = v3s(1);
+    metal_lookup("Cu", &b->eta, &b->k);
+    b->ior = 1.5;
+    b->enable_refraction = true;
+    b->dist = MF_GGX;
+    b->roughness = t == BSDF_ROUGH_PLASTIC ? 0.02 : 0.1;
+    b->thickness = 1;
+    b->sigma_a = v3s(0);
+}
+
+static bool nonneg(struct jctx *c, const char *path, const char *key, vec3 v)
+{
+    char p[JPATH_MAX];
+    jpath_key(p, path, key);
+    if (v.x < 0 || v.y < 0 || v.z < 0) return jfail(c, p, "expected non-negative values");
+    return true;
+}
+
+bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out)
+{
+    const char *file = NULL;
+    char fpath[JPATH_MAX];
+    snprintf(fpath, sizeof fpath, "%s", path);
+    if (cJSON_IsString(v)) {
+        file = v->valuestring;
+    } else {
+        const char *type = NULL;
+        if (!jget_string(&L->c, v, path, "type", true, &type)) return false;
+        if (strcmp(type, "bitmap") != 0)
+            return jfail(&L->c, path, "texture type '%s' is not supported (expected a bitmap)", type);
+        if (!jget_string(&L->c, v, path, "file", true, &file)) return false;
+        jpath_key(fpath, path, "file");
+    }
+    char full[8192], err[1024];
+    if (!loader_resource(L, file, full, sizeof full)) return jfail(&L->c, fpath, "path too long");
+    *out = texture_load(full, err, sizeof err);
+    if (!*out) return jfail(&L->c, fpath, "cannot load texture: %s", err);
+    return true;
+}
+
+/* albedo: number, RGB array, image file name or bitmap object. */
+static bool parse_albedo(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, "albedo");
+    if (!v) return true;
+    char p[JPATH_MAX];
+    jpath_key(p, path, "albedo");
+    if (cJSON_IsString(v) || cJSON_IsObject(v)) {
+        /* The texture replaces the constant; albedo stays 1 so that either reading is right. */
+        b->albedo = v3s(1);
+        return load_texture_value(L, v, p, &b->albedo_tex);
+    }
+    if (!cJSON_IsNumber(v) && !cJSON_IsArray(v))
+        return jfail(&L->c, p, "expected a number, an array of 3 numbers, an image file name or a bitmap texture");
+    return jval_vec3(&L->c, v, p, &b->albedo) && nonneg(&L->c, path, "albedo", b->albedo);
+}
+
+static bool parse_distribution(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    const char *d = NULL;
+    if (!jget_string(&L->c, j, path, "distribution", false, &d)) return false;
+    if (!d) return true;
+    char p[JPATH_MAX];
+    jpath_key(p, path, "distribution");
+    if (strcmp(d, "ggx") == 0)
+        b->dist = MF_GGX;
+    else if (strcmp(d, "beckmann") == 0)
+        b->dist = MF_BECKMANN;
+    else
+        return jfail(&L->c, p, "expected \"ggx\" or \"beckmann\" (got \"%s\")", d);
+    return true;
+}
+
+static bool parse_roughness(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    const cJSON *r = cJSON_GetObjectItemCaseSensitive(j, "roughness");
+    if (!r) return true;
+    char p[JPATH_MAX];
+    jpath_key(p, path, "roughness");
+    if (cJSON_IsString(r) || cJSON_IsObject(r))
+        return jfail(&L->c, p, "textured roughness is not supported (expected a number)");
+    if (!jval_number(&L->c, r, p, &b->roughness)) return false;
+    if (b->roughness < 0) return jfail(&L->c, p, "expected a non-negative number");
+    return true;
+}
+
+static bool parse_metal(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    if (!jget_vec3(&L->c, j, path, "eta", false, &b->eta) || !jget_vec3(&L->c, j, path, "k", false, &b->k))
+        return false;
+    const char *m = NULL;
+    if (!jget_string(&L->c, j, path, "material", false, &m)) return false;
+    if (m && !metal_lookup(m, &b->eta, &b->k)) {
+        char p[JPATH_MAX];
+        jpath_key(p, path, "material");
+        return jfail(&L->c, p, "unknown metal \"%s\" (known: Ag Al Au Be Cr Cu Cu_palik Hg Ir K Li Mo Nb "
+                               "Ni_palik Rh Ta TiN V_palik W)", m);
+    }
+    return true;
+}
+
+static bool parse_ior(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    if (!jget_number(&L->c, j, path, "ior", false, &b->ior)) return false;
+    char p[JPATH_MAX];
+    jpath_key(p, path, "ior");
+    if (b->ior <= 0) return jfail(&L->c, p, "expected a positive number");
+    return true;
+}
+
+/* Parses one bsdf object into b (which must be zeroed: texture ownership starts here). */
+static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const char *default_name,
+                       struct bsdf *b)
+{
+    struct jctx *c = &L->c;
+    if (!cJSON_IsObject(j)) return jfail(c, path, "expected a bsdf object");
+    const char *type = NULL, *name = NULL;
+    if (!jget_string(c, j, path, "type", true, &type) || !jget_string(c, j, path, "name", false, &name))
+        return false;
+    int t = 0;
+    while (t < NTYPES && strcmp(type_names[t], type) != 0) t++;
+    if (t == NTYPES) {
+        char p[JPATH_MAX];
+        jpath_key(p, path, "type");
+        return jfail(c, p, "unknown bsdf type \"%s\" (supported: null lambert mirror conductor rough_conductor "
+                           "dielectric rough_dielectric plastic rough_plastic)", type);
+    }
+    set_defaults(b, (enum bsdf_type)t);
+    snprintf(b->name, sizeof b->name, "%s", name ? name : default_name);
+    if (cJSON_GetObjectItemCaseSensitive(j, "bump")) jwarn(c, path, "bump mapping is not supported; ignored");
+    if (!parse_albedo(L, j, path, b)) return false;
+    switch (b->type) {
+    case BSDF_ROUGH_CONDUCTOR:
+        if (!parse_distribution(L, j, path, b) || !parse_roughness(L, j, path, b)) return false;
+        /* fall through */
+    case BSDF_CONDUCTOR:
+        return parse_metal(L, j, path, b);
+    case BSDF_ROUGH_DIELECTRIC:
+        if (!parse_distribution(L, j, path, b) || !parse_roughness(L, j, path, b)) return false;
+        /* fall through */
+    case BSDF_DIELECTRIC:
+        return parse_ior(L, j, path, b) &&
+               jget_bool(c, j, path, "enable_refraction", false, &b->enable_refraction);
+    case BSDF_ROUGH_PLASTIC:
+        if (!parse_distribution(L, j, path, b) || !parse_roughness(L, j, path, b)) return false;
+        /* fall through */
+    case BSDF_PLASTIC: {
+        if (!parse_ior(L, j, path, b) || !jget_number(c, j, path, "thickness", false, &b->thickness) ||
+            !jget_vec3(c, j, path, "sigma_a", false, &b->sigma_a))
+            return false;
+        char p[JPATH_MAX];
+        jpath_key(p, path, "thickness");
+        if (b->thickness < 0) return jfail(c, p, "expected a non-negative number");
+        return nonneg(c, path, "sigma_a", b->sigma_a);
+    }
+    default:
+        return true;
+    }
+}
+
+static int add_bsdf(struct loader *L)
+{
+    ASSERT(L->s->nbsdfs < L->bsdf_cap);
+    return L->s->nbsdfs++;
+}
+
+bool load_bsdfs(struct loader *L)
+{
+    const cJSON *arr = L->bsdfs_json;
+    if (!arr) return true;
+    if (!cJSON_IsArray(arr)) return jfail(&L->c, "bsdfs", "expected an array of bsdf objects");
+    int i = 0;
+    for (const cJSON *j = arr->child; j; j = j->next, i++) {
+        char p[JPATH_MAX], def[32];
+        jpath_idx(p, "bsdfs", i);
+        snprintf(def, sizeof def, "bsdfs[%d]", i);
+        int k = add_bsdf(L);
+        if (!parse_bsdf(L, j, p, def, &L->s->bsdfs[k])) return false;
+    }
+    return true;
+}
+
+/* Index of the first top-level bsdf named `name` (Tungsten's findObject), or -1. */
+static int find_named(const struct loader *L, const char *name)
+{
+    int i = 0;
+    for (const cJSON *j = L->bsdfs_json ? L->bsdfs_json->child : NULL; j; j = j->next, i++) {
+        const cJSON *n = cJSON_GetObjectItemCaseSensitive(j, "name");
+        if (cJSON_IsString(n) && strcmp(n->valuestring, name) == 0) return i;
+    }
+    return -1;
+}
+
+bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(prim, "bsdf");
+    char p[JPATH_MAX];
+    jpath_key(p, path, "bsdf");
+    if (!v) {
+        /* Tungsten gives such primitives a shared default lambert (Primitive::_defaultBsdf). */
+        if (L->default_bsdf < 0) {
+            L->default_bsdf = add_bsdf(L);
+            set_defaults(&L->s->bsdfs[L->default_bsdf], BSDF_LAMBERT);
+            snprintf(L->s->bsdfs[L->default_bsdf].name, sizeof L->s->bsdfs[0].name, "default");
+        }
+        *out = L->default_bsdf;
+        return true;
+    }
+    if (cJSON_IsArray(v)) {
+        if (cJSON_GetArraySize(v) != 1)
+            return jfail(&L->c, p, "per-triangle bsdf arrays are not supported (expected one bsdf)");
+        v = v->child;
+        char key[JPATH_MAX];
+        jpath_key(key, path, "bsdf");
+        jpath_idx(p, key, 0);
+    }
+    if (cJSON_IsString(v)) {
+        int i = find_named(L, v->valuestring);
+        if (i < 0) return jfail(&L->c, p, "undefined bsdf \"%s\" (not in the top-level bsdfs)", v->valuestring);
+        *out = i;
+        return true;
+    }
+    if (!cJSON_IsObject(v)) return jfail(&L->c, p, "expected a bsdf name or a bsdf object");
+    char def[32];
+    snprintf(def, sizeof def, "inline:%d", prim_index);
+    *out = add_bsdf(L);
+    return parse_bsdf(L, v, p, def, &L->s->bsdfs[*out]);
+}

@@ -1,0 +1,32 @@
+/* Shared state of the scene loader files (scene_load.c, scene_bsdf.c, scene_prims.c,
+ * json_transform.c). Not a public interface. */
+#ifndef SCENE_LOAD_INTERNAL_H
+#define SCENE_LOAD_INTERNAL_H
+
+#include "io/json_get.h"
+#include "scene/scene.h"
+
+struct loader {
+    struct jctx c;
+    struct scene *s;
+    const cJSON *bsdfs_json; /* top-level "bsdfs" array (or NULL): names resolve against it */
+    char dir[4096];          /* directory of the scene file: resources are relative to it */
+    int bsdf_cap;            /* s->bsdfs is allocated once with this many slots */
+    int default_bsdf;        /* lambert albedo 1 for primitives without "bsdf", or -1 */
+};
+
+/* Resolves a resource name relative to the scene file; false if the result does not fit. */
+bool loader_resource(const struct loader *L, const char *rel, char *out, size_t n);
+
+bool load_bsdfs(struct loader *L);
+/* Resolves prim.bsdf (name, inline object, or absent → Tungsten's default lambert). */
+bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out);
+/* A bitmap given as a file name or {"type": "bitmap", "file": ...}; v is the value at path. */
+bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out);
+
+bool load_primitives(struct loader *L, const cJSON *arr);
+
+/* Tungsten transform: {"position", "scale", "rotation", "look_at", "up", "x_axis", ...} or 16 numbers. */
+bool jval_transform(struct jctx *c, const cJSON *v, const char *path, mat4 *out);
+
+#endif

@@ -1,0 +1,58 @@
+/* Acceptance statistics keyed by (proposal kind, path length, technique changed), with batch-means
+ * standard errors of the mean acceptance probability E[min(1, a)] (autocorrelation-aware). */
+#ifndef MLT_STATS_H
+#define MLT_STATS_H
+
+#include "sampler/sampler.h"
+#include <stdbool.h>
+#include <stdio.h>
+
+/* PROPOSAL_PITP records PITP's technique perturbations (core/pitp.c): "accepted" means carried
+ * out; a is 1, or min(1, f_j / f_i) on paths refracting between the connections, and 0 for a
+ * failed inversion or retrace (counted in `failed`); technique_changed is j != i. */
+enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_KINDS };
+#define STATS_LENGTHS (MAX_PATH_LENGTH + 1) /* index 0 = all lengths (PSSMLT states) */
+#define STATS_BATCH 2048 /* proposals per batch: long enough for chains stuck ~1/acceptance steps */
+
+struct accept_cell {
+    long attempts, accepted, nonzero;
+    double sum_a;                /* sum of min(1, a) */
+    double batch_sum;            /* running batch */
+    long batch_n;
+    long nbatches;
+    double bsum, bsum2;          /* sums of batch means and their squares */
+    long failed;                 /* proposals that could not be constructed (PITP: inversion or retrace) */
+    double sum_dtech;            /* sum of |t' - t|: how far proposals move the technique */
+    double seconds;              /* time spent on these proposals (not in the CSV rows: they reproduce exactly) */
+};
+
+/* Every proposal is recorded three times, each cell a contiguous subsequence of the chain so that
+ * batch means apply: by (kind, length, technique changed), by (kind, length), and by kind. */
+struct mlt_stats {
+    struct accept_cell cell[PROPOSAL_KINDS][STATS_LENGTHS][2];
+    struct accept_cell any[PROPOSAL_KINDS][STATS_LENGTHS];
+    struct accept_cell total[PROPOSAL_KINDS];
+    long nonfinite;
+};
+
+void stats_clear(struct mlt_stats *s);
+void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool technique_changed, double a,
+                  bool accepted, bool nonzero, double seconds);
+/* The same with the technique distance |t' - t| of the proposal and whether it failed to be
+ * constructed (stats_record: 0 and false). */
+void stats_record_dt(struct mlt_stats *s, enum proposal_kind kind, int length, bool technique_changed, int dtech,
+                     bool failed, double a, bool accepted, bool nonzero, double seconds);
+/* Adds src into dst (threads are merged in a fixed order). */
+void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src);
+/* One value into a cell's mean and batches (also for other per-proposal statistics, such as the
+ * angle change of angle_change.h), and a cell added into another. */
+void cell_add(struct accept_cell *c, double x);
+void cell_merge(struct accept_cell *dst, const struct accept_cell *src);
+/* Mean acceptance, its batch-means standard error (NAN with fewer than 2 batches). */
+double cell_mean(const struct accept_cell *c);
+double cell_stderr(const struct accept_cell *c);
+/* CSV rows (see README "Statistics CSV"); header once when `header`. */
+void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, bool header);
+const char *proposal_name(enum proposal_kind k);
+
+#endif

@@ -1,0 +1,204 @@
+/* bin/fig4_1: thesis Figure 4.1. PSSMLT small steps on a diffuse wall (scenes/wall) at 16:9, the
+ * isotropic kernel against resolution-aware proposals (--rap: image steps scaled by the aspect
+ * ratio), equal mutations. Measures the shape of the noise: the normalised autocorrelation of the
+ * error image (render - PT reference, luminance, render scaled to the reference's mean) along x and
+ * y, the correlation lengths where it falls below 1/e, and their ratio, over several seeds.
+ * Writes OUT/fig4.1.csv (variant,quantity,seeds,mean,se), OUT/fig4.1-runs.csv (one row per run),
+ * OUT/fig4.1-profiles.csv (variant,lag,rho_x,rho_x_se,rho_y,rho_y_se), and the first seed's
+ * images {iso,rap}.{exr,png}, error-{iso,rap}.png and reference.{exr,png}. */
+#include "camera/camera.h"
+#include "ch4/ch4_common.h"
+#include "common/cli.h"
+#include "ch4/noise_corr.h"
+#include "base/parallel.h"
+#include "base/util.h"
+#include "version.h"
+#include "ch4/wall_noise.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *usage =
+    "usage: fig4_1 [options]\n"
+    "  --scene FILE         (default scenes/wall/scene.json)\n"
+    "  --scale quick|paper  sizes (default: $SCALE, else quick)\n"
+    "  --resolution WxH     (quick 320x180, paper 640x360)\n"
+    "  --mpp N              PSSMLT mutations per pixel (quick 8, paper 64)\n"
+    "  --seeds N            runs per variant, seeds S..S+N-1 (quick 8, paper 16)\n"
+    "  --p-large P          large-step probability (default 0.1)\n"
+    "  --max-lag L          autocorrelation lags 0..L pixels (default 40)\n"
+    "  --reference FILE     cached PT reference EXR (default results/reference/wall-pt-WxH-SPP.exr)\n"
+    "  --reference-spp N    PT samples per pixel of the reference (quick 64, paper 1024)\n"
+    "  --seed S  --threads T  --out DIR (default results/fig4.1)\n";
+
+#define NVAR 2
+
+int main(int argc, char **argv)
+{
+    const char *prog = "fig4_1";
+    struct ch4_args a;
+    ch4_args_init(&a, "scenes/wall/scene.json", "results/fig4.1");
+    const char *refpath = NULL;
+    int W = -1, H = -1, maxlag = 40;
+    double mpp = -1;
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (ch4_option(prog, argc, argv, &i, &a))
+            continue;
+        else if (!strcmp(o, "--resolution"))
+            ch4_resolution(prog, cli_value(prog, argc, argv, &i), 8, &W, &H);
+        else if (!strcmp(o, "--mpp"))
+            mpp = cli_double(prog, o, cli_value(prog, argc, argv, &i), 0.01, 1e6);
+        else if (!strcmp(o, "--max-lag"))
+            maxlag = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 4096);
+        else if (!strcmp(o, "--reference"))
+            refpath = cli_value(prog, argc, argv, &i);
+        else
+            cli_fail(prog, "unknown option '%s' (see --help)", o);
+    }
+    bool paper = ch4_paper(prog, &a);
+    const char *scene = a.scene, *scale = a.scale, *out = a.out;
+    int seeds = a.seeds, refspp = a.refspp, threads = a.threads;
+    double p_large = a.p_large;
+    uint64_t seed = a.seed;
+    if (W < 0) W = paper ? 640 : 320, H = paper ? 360 : 180;
+    if (mpp < 0) mpp = paper ? 64 : 8;
+    if (seeds < 0) seeds = paper ? 16 : 8;
+    if (refspp < 0) refspp = paper ? 1024 : 64;
+    if (maxlag >= W || maxlag >= H) cli_fail(prog, "--max-lag %d: must be below the image's width and height", maxlag);
+    cli_require_image_output(prog);
+    char err[1024], defref[256];
+    snprintf(defref, sizeof defref, "results/reference/wall-pt-%dx%d-%d.exr", W, H, refspp);
+    if (!refpath) refpath = defref;
+    struct scene *sc = scene_load(scene, err, sizeof err);
+    if (!sc) {
+        fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    camera_resize(&sc->cam, W, H);
+    if (!ch4_mkdir(out, err, sizeof err)) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    struct image *ref = ch4_reference(sc, METHOD_PT, refspp, refpath, threads, prog, err, sizeof err);
+    if (!ref || !ch4_write_pair(ref, out, "reference", err, sizeof err)) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    double ref_var = ch4_pixel_noise_var(ref);
+
+    const char *names[NVAR] = {"iso", "rap"};
+    struct wall_cfg cfg = {
+        .p_large = p_large, .mpp = mpp, .seed_paths = paper ? 1000000 : 100000, .threads = threads, .maxlag = maxlag};
+    int L = maxlag + 1;
+    /* per run: the quantities of the summary, then the error variance */
+    enum { Q_LX, Q_LY, Q_RATIO, Q_RHO1X, Q_RHO1Y, Q_RELMSE, Q_ACCEPT, NQ };
+    const char *qn[NQ] = {"l_x", "l_y", "ratio", "rho1_x", "rho1_y", "relmse", "small_accept"};
+    double *q[NQ];
+    for (int i = 0; i < NQ; i++)
+        q[i] = xcalloc((size_t)NVAR * seeds, sizeof(double));
+    double *evar = xcalloc((size_t)NVAR * seeds, sizeof *evar);
+    double *rx = xcalloc((size_t)NVAR * seeds * L, sizeof *rx), *ry = xcalloc((size_t)NVAR * seeds * L, sizeof *ry);
+    double range = 0;
+    for (int v = 0; v < NVAR; v++) {
+        cfg.rap = v == 1;
+        for (int s = 0; s < seeds; s++) {
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[v], (unsigned long long)(seed + s), s + 1,
+                    seeds);
+            struct wall_meas m;
+            struct image *img = wall_run(sc, &cfg, seed + s, ref, &m, err, sizeof err);
+            if (!img) {
+                fprintf(stderr, "%s: %s\n", prog, err);
+                return 1;
+            }
+            int k = v * seeds + s;
+            q[Q_LX][k] = m.lx, q[Q_LY][k] = m.ly, q[Q_RATIO][k] = m.lx / m.ly, q[Q_RHO1X][k] = m.rho1_x;
+            q[Q_RHO1Y][k] = m.rho1_y, q[Q_RELMSE][k] = m.relmse, q[Q_ACCEPT][k] = m.accept;
+            evar[k] = m.err_var;
+            memcpy(rx + (size_t)k * L, m.rho_x, L * sizeof(double));
+            memcpy(ry + (size_t)k * L, m.rho_y, L * sizeof(double));
+            if (s == 0) {
+                char path[4096];
+                snprintf(path, sizeof path, "%s/error-%s.png", out, names[v]);
+                if (!ch4_write_pair(img, out, names[v], err, sizeof err) ||
+                    !ch4_write_error_png(m.err, W, H, &range, path, err, sizeof err)) {
+                    fprintf(stderr, "%s: %s\n", prog, err);
+                    return 1;
+                }
+            }
+            wall_meas_free(&m);
+            img_destroy(img);
+        }
+    }
+
+    /* per-run rows, summary, profiles */
+    char *rb = NULL, *sb = NULL, *pb = NULL;
+    size_t rl = 0, sl = 0, pl = 0;
+    FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl), *fp = open_memstream(&pb, &pl);
+    FILE *all[3] = {fr, fs, fp};
+    for (int i = 0; i < 3; i++) {
+        fprintf(all[i],
+                "# fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)\n");
+        fprintf(all[i], "# scene %s\n# commit %s\n# scale %s\n# resolution %dx%d\n# mutations_per_pixel %g\n", scene,
+                GIT_COMMIT, scale, W, H, mpp);
+        fprintf(all[i], "# p_large %g\n# kernel kelemen s1 1/1024 s2 1/64\n# seeds %llu..%llu\n# threads %d\n", p_large,
+                (unsigned long long)seed, (unsigned long long)(seed + seeds - 1), threads);
+        fprintf(all[i], "# reference %s (PT %d spp); its pixel-noise variance %.4g\n", refpath, refspp, ref_var);
+        fprintf(all[i], "# error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
+                        " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)\n");
+    }
+    fprintf(fr, "variant,seed");
+    for (int i = 0; i < NQ; i++)
+        fprintf(fr, ",%s", qn[i]);
+    fprintf(fr, ",error_var\n");
+    fprintf(fs, "variant,quantity,seeds,mean,se\n");
+    fprintf(fp, "variant,lag,rho_x,rho_x_se,rho_y,rho_y_se\n");
+    double *tmp = xmalloc(seeds * sizeof *tmp);
+    for (int v = 0; v < NVAR; v++) {
+        for (int s = 0; s < seeds; s++) {
+            int k = v * seeds + s;
+            fprintf(fr, "%s,%llu", names[v], (unsigned long long)(seed + s));
+            for (int i = 0; i < NQ; i++)
+                fprintf(fr, ",%.6g", q[i][k]);
+            fprintf(fr, ",%.6g\n", evar[k]);
+        }
+        for (int i = 0; i < NQ; i++) {
+            double mean, se;
+            ch4_mean_se(q[i] + v * seeds, seeds, &mean, &se);
+            fprintf(fs, "%s,%s,%d,%.6g,%.6g\n", names[v], qn[i], seeds, mean, se);
+        }
+        for (int d = 0; d < L; d++) {
+            double mx, sx, my, sy;
+            for (int s = 0; s < seeds; s++)
+                tmp[s] = rx[(size_t)(v * seeds + s) * L + d];
+            ch4_mean_se(tmp, seeds, &mx, &sx);
+            for (int s = 0; s < seeds; s++)
+                tmp[s] = ry[(size_t)(v * seeds + s) * L + d];
+            ch4_mean_se(tmp, seeds, &my, &sy);
+            fprintf(fp, "%s,%d,%.6g,%.6g,%.6g,%.6g\n", names[v], d, mx, sx, my, sy);
+        }
+    }
+    fclose(fr), fclose(fs), fclose(fp);
+    char p1[4096], p2[4096], p3[4096];
+    snprintf(p1, sizeof p1, "%s/fig4.1-runs.csv", out);
+    snprintf(p2, sizeof p2, "%s/fig4.1.csv", out);
+    snprintf(p3, sizeof p3, "%s/fig4.1-profiles.csv", out);
+    bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err) &&
+              write_text_atomic(p3, pb, err, sizeof err);
+    free(rb), free(sb), free(pb), free(tmp);
+    for (int i = 0; i < NQ; i++)
+        free(q[i]);
+    free(evar), free(rx), free(ry);
+    img_destroy(ref);
+    scene_free(sc);
+    if (!ok) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    fprintf(stderr, "%s: wrote %s, %s, %s\n", prog, p2, p1, p3);
+    return 0;
+}

@@ -1,0 +1,206 @@
+/* bin/fig4_3: thesis Figure 4.3. A room seen only by its reflection in a window over darkness
+ * (scenes/window): BDPT, PSSMLT and PSSMLT with constrained discrete choices (--cdc: small steps
+ * leave the numbers of discrete decisions, here the dielectric's reflect/refract choice, unchanged)
+ * at an equal number of samples per pixel (mutations for the MCMC methods), against a BDPT
+ * reference rendered once and cached. Over several seeds: relMSE, and the small-step acceptance of
+ * each MCMC variant. Writes OUT/fig4.3.csv (method,quantity,seeds,mean,se), OUT/fig4.3-runs.csv
+ * (one row per run, with its wall-clock seconds, which the statistics leave out: they do not reproduce),
+ * the first seed's images {bdpt,pssmlt,pssmlt-cdc}.{exr,png}, their acceptance statistics
+ * {pssmlt,pssmlt-cdc}-stats.csv (the render tool's CSV rows) and reference.{exr,png}. */
+#include "camera/camera.h"
+#include "ch4/ch4_common.h"
+#include "common/cli.h"
+#include "mcmc/mlt.h"
+#include "base/parallel.h"
+#include "base/util.h"
+#include "version.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char *usage =
+    "usage: fig4_3 [options]\n"
+    "  --scene FILE         (default scenes/window/scene.json)\n"
+    "  --scale quick|paper  sizes (default: $SCALE, else quick)\n"
+    "  --resolution WxH     (default: the scene's at quick, 256x144 at paper)\n"
+    "  --spp N              samples (mutations) per pixel of every method (default 64)\n"
+    "  --seeds N            runs per method, seeds S..S+N-1 (quick 6, paper 16)\n"
+    "  --p-large P          PSSMLT large-step probability (default 0.1)\n"
+    "  --reference FILE     cached BDPT reference EXR (default results/reference/window-bdpt-WxH-SPP.exr)\n"
+    "  --reference-spp N    BDPT samples per pixel of the reference (quick 1024, paper 16384)\n"
+    "  --seed S  --threads T  --out DIR (default results/fig4.3)\n";
+
+#define NMETH 3
+
+static bool write_stats(const struct mlt_stats *st, const char *method, const char *dir, char *err, size_t n)
+{
+    char *buf = NULL, path[4096];
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    stats_write_csv(f, method, st, true);
+    fclose(f);
+    snprintf(path, sizeof path, "%s/%s-stats.csv", dir, method);
+    bool ok = write_text_atomic(path, buf, err, n);
+    free(buf);
+    return ok;
+}
+
+int main(int argc, char **argv)
+{
+    const char *prog = "fig4_3";
+    struct ch4_args a;
+    ch4_args_init(&a, "scenes/window/scene.json", "results/fig4.3");
+    const char *refpath = NULL;
+    int W = -1, H = -1, spp = 64;
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (ch4_option(prog, argc, argv, &i, &a))
+            continue;
+        else if (!strcmp(o, "--resolution"))
+            ch4_resolution(prog, cli_value(prog, argc, argv, &i), 1, &W, &H);
+        else if (!strcmp(o, "--spp"))
+            spp = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1 << 20);
+        else if (!strcmp(o, "--reference"))
+            refpath = cli_value(prog, argc, argv, &i);
+        else
+            cli_fail(prog, "unknown option '%s' (see --help)", o);
+    }
+    bool paper = ch4_paper(prog, &a);
+    const char *scene = a.scene, *scale = a.scale, *out = a.out;
+    int seeds = a.seeds, refspp = a.refspp, threads = a.threads;
+    double p_large = a.p_large;
+    uint64_t seed = a.seed;
+    if (seeds < 0) seeds = paper ? 16 : 6;
+    if (refspp < 0) refspp = paper ? 16384 : 1024;
+    cli_require_image_output(prog);
+    char err[1024];
+    struct scene *sc = scene_load(scene, err, sizeof err);
+    if (!sc) {
+        fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    if (W < 0 && paper) W = 256, H = 144;
+    if (W > 0) camera_resize(&sc->cam, W, H);
+    W = sc->cam.width, H = sc->cam.height;
+    char defref[256];
+    snprintf(defref, sizeof defref, "results/reference/window-bdpt-%dx%d-%d.exr", W, H, refspp);
+    if (!refpath) refpath = defref;
+    if (!ch4_mkdir(out, err, sizeof err)) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    struct image *ref = ch4_reference(sc, METHOD_BDPT, refspp, refpath, threads, prog, err, sizeof err);
+    if (!ref || !ch4_write_pair(ref, out, "reference", err, sizeof err)) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    const char *names[NMETH] = {"bdpt", "pssmlt", "pssmlt-cdc"};
+    double *rel = xcalloc((size_t)NMETH * seeds, sizeof *rel), *acc = xcalloc((size_t)NMETH * seeds, sizeof *acc);
+    double *sec = xcalloc((size_t)NMETH * seeds, sizeof *sec);
+    for (int m = 0; m < NMETH; m++)
+        for (int s = 0; s < seeds; s++) {
+            int k = m * seeds + s;
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[m], (unsigned long long)(seed + s), s + 1,
+                    seeds);
+            struct image *img;
+            acc[k] = NAN;
+            if (m == 0) {
+                struct render_opts o = {.method = METHOD_BDPT,
+                                        .spp = spp,
+                                        .seed = seed + s,
+                                        .threads = threads,
+                                        .max_length = sc->max_length,
+                                        .progress = isatty(2)};
+                struct render_stats st;
+                img = render_mc(sc, &o, &st);
+                sec[k] = st.seconds;
+            } else {
+                struct mlt_opts o = {.method = MLT_PSSMLT,
+                                     .p_large = p_large,
+                                     .mutations = (long)spp * W * H,
+                                     .seed_paths = paper ? 1000000 : 100000,
+                                     .seed = seed + s,
+                                     .threads = threads,
+                                     .max_length = sc->max_length,
+                                     .progress = isatty(2)};
+                pss_opts_default(&o.pss, W, H);
+                o.pss.cdc = m == 2;
+                struct mlt_result r;
+                if (!mlt_render(sc, &o, &r, err, sizeof err)) {
+                    fprintf(stderr, "%s: %s\n", prog, err);
+                    return 1;
+                }
+                acc[k] = cell_mean(&r.stats.total[PROPOSAL_SMALL]);
+                sec[k] = r.seconds + r.seed_seconds;
+                if (s == 0 && !write_stats(&r.stats, names[m], out, err, sizeof err)) {
+                    fprintf(stderr, "%s: %s\n", prog, err);
+                    return 1;
+                }
+                img = r.img;
+                r.img = NULL;
+                mlt_result_free(&r);
+            }
+            rel[k] = img_relmse(img, ref, 0.01);
+            if (s == 0 && !ch4_write_pair(img, out, names[m], err, sizeof err)) {
+                fprintf(stderr, "%s: %s\n", prog, err);
+                return 1;
+            }
+            img_destroy(img);
+        }
+    char *rb = NULL, *sb = NULL;
+    size_t rl = 0, sl = 0;
+    FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
+    FILE *all[2] = {fr, fs};
+    for (int i = 0; i < 2; i++) {
+        fprintf(
+            all[i],
+            "# fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel\n");
+        fprintf(all[i], "# scene %s\n# commit %s\n# scale %s\n# resolution %dx%d\n# spp %d\n# p_large %g\n", scene,
+                GIT_COMMIT, scale, W, H, spp, p_large);
+        fprintf(all[i], "# seeds %llu..%llu\n# threads %d\n# reference %s (BDPT %d spp)\n", (unsigned long long)seed,
+                (unsigned long long)(seed + seeds - 1), threads, refpath, refspp);
+        fprintf(all[i], "# relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
+                        "min(1, a) of small steps\n");
+    }
+    fprintf(fr, "method,seed,relmse,small_accept,seconds\n");
+    fprintf(fs, "method,quantity,seeds,mean,se\n");
+    for (int m = 0; m < NMETH; m++) {
+        for (int s = 0; s < seeds; s++) {
+            int k = m * seeds + s;
+            fprintf(fr, "%s,%llu,%.6g,%.6g,%.3f\n", names[m], (unsigned long long)(seed + s), rel[k], acc[k], sec[k]);
+        }
+        double mean, se;
+        ch4_mean_se(rel + m * seeds, seeds, &mean, &se);
+        fprintf(fs, "%s,relmse,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
+        if (m > 0) {
+            ch4_mean_se(acc + m * seeds, seeds, &mean, &se);
+            fprintf(fs, "%s,small_accept,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
+        }
+        if (m == 0) {
+            /* relMSE(BDPT, R) = V (1/spp + 1/refspp) for BDPT's per-sample variance term V: the
+             * reference's own share V / refspp is part of every method's relMSE */
+            ch4_mean_se(rel, seeds, &mean, &se);
+            fprintf(fs, "reference,relmse_own,%d,%.6g,%.6g\n", seeds, mean * spp / (spp + refspp),
+                    se * spp / (spp + refspp));
+        }
+    }
+    fclose(fr), fclose(fs);
+    char p1[4096], p2[4096];
+    snprintf(p1, sizeof p1, "%s/fig4.3-runs.csv", out);
+    snprintf(p2, sizeof p2, "%s/fig4.3.csv", out);
+    bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err);
+    free(rb), free(sb), free(rel), free(acc), free(sec);
+    img_destroy(ref);
+    scene_free(sc);
+    if (!ok) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    fprintf(stderr, "%s: wrote %s, %s\n", prog, p2, p1);
+    return 0;
+}

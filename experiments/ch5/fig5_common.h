@@ -1,0 +1,32 @@
+/* What bin/fig5_5 and bin/fig5_6 share: their options, one MMLT run of either small step on the
+ * jewelry scene, and image output. */
+#ifndef FIG5_COMMON_H
+#define FIG5_COMMON_H
+
+#include "mcmc/mlt.h"
+
+struct fig5_cfg {
+    const char *prog, *scene, *out, *scale;
+    int width, height, seeds, threads, max_length;
+    long mpp, seed_paths;
+    double p_large;
+    uint64_t seed;
+};
+
+/* Parses the shared options (see the usage text each tool prints); scale presets fill what was
+ * not given: quick or paper, from --scale, else $SCALE, else quick. */
+void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *usage, long mpp_quick, long mpp_paper,
+                int seeds_quick, int seeds_paper);
+/* Loads the scene at the configured resolution (exits with one error line on failure). */
+struct scene *fig5_scene(const struct fig5_cfg *c);
+/* One MMLT run: Gaussian kernel (sigma 1/64) for both small-step kinds, same everything else. */
+void fig5_run(const struct scene *sc, const struct fig5_cfg *c, enum small_step kind, uint64_t seed, bool angle,
+              struct mlt_result *r);
+extern const char *const fig5_kind_name[3];
+/* An 8-bit PNG whose grey level is linear in v / white, clamped (the thesis's "black = 0,
+ * white >= 0.5 rad"); the image's first channel is used. Atomic, like every image write. */
+bool fig5_write_linear_png(const struct image *im, double white, const char *path, char *err, size_t errlen);
+/* Writes text to DIR/NAME atomically; exits on failure. */
+void fig5_write_text(const struct fig5_cfg *c, const char *name, const char *text);
+
+#endif

@@ -1,0 +1,564 @@
+/* Table 1 and Figure 3 of the CMLT paper (Pantaleoni, "Charted Metropolis Light Transport", §5):
+ * RMSE against a reference of PSS-MLT-1, PSS-MLT-2, PSS-MLT-AVG, PSS-MLT-MIX, CMLT-EPSM and CMLT on
+ * the two-light toy (experiments/cmlt/cmlt_scene.h), at two sample budgets, over several seeds.
+ * Writes into --out: table1.csv (algorithm,n,rmse: mean over seeds), table1_stats.csv (mean, standard
+ * error, seeds, throughput; what `make check-table1-cmlt` compares), table1_seeds.csv, table1.md,
+ * reference.exr/.png (cached, keyed by reference.key), and <algo>_<n>.exr/.png of the first seed.
+ * --bench instead times every algorithm on one core and prints chain steps per second. */
+#include "cmlt/cmlt_mcmc.h"
+#include "cmlt/cmlt_reference.h"
+#include "cmlt/cmlt_scene.h"
+#include "common/cli.h"
+#include "io/image.h"
+#include "base/util.h"
+#include <errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#define MAX_BUDGETS 4
+
+struct opts {
+    const char *scale, *out, *commit;
+    uint64_t budgets[MAX_BUDGETS];
+    int nbudgets, seeds, threads, res, ref_spp, swap_every, bench;
+    uint64_t seed;
+    double p_large, seed_frac;
+};
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: table1_cmlt [options]\n"
+            "Reproduces Table 1 and Figure 3 of the CMLT paper on its two-light toy: RMSE of six MCMC\n"
+            "algorithms (PSS-MLT-1/2/AVG/MIX, CMLT-EPSM, CMLT) against a Monte Carlo reference.\n"
+            "  --scale quick|paper  defaults for budgets and seeds (default $SCALE or quick)\n"
+            "  --budgets LIST       comma-separated total samples per algorithm, suffix k or M\n"
+            "                       (quick: 1M,8M; paper: 16M,128M)\n"
+            "  --seeds K            independent runs per algorithm and budget (quick 10, paper 8)\n"
+            "  --seed S             base seed (default 1)\n"
+            "  --threads T          worker threads (default 2)\n"
+            "  --res N              image resolution N x N (default 128)\n"
+            "  --ref-spp N          reference samples per pixel (quick 16384, paper 65536)\n"
+            "  --p-large P          large-step probability (default 0.1)\n"
+            "  --swap-every K       CMLT chart swap every K iterations (default 4)\n"
+            "  --seed-frac F        seed-pass samples per chart = F * n (default 0.0625)\n"
+            "  --out DIR            output directory (default results/table1-cmlt)\n"
+            "  --commit ID          recorded in the CSV metadata\n"
+            "  --bench              time each algorithm on one thread, print steps/s; no table\n"
+            "  --help               this text\n");
+}
+
+static void bad(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "table1_cmlt: ");
+    vfprintf(stderr, fmt, ap);
+    fprintf(stderr, " (see --help)\n");
+    va_end(ap);
+    exit(2);
+}
+
+static long parse_int(const char *opt, const char *s, long lo, long hi)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < lo || v > hi) bad("%s: expected an integer in [%ld, %ld], got '%s'", opt, lo, hi, s);
+    return v;
+}
+
+static double parse_double(const char *opt, const char *s, double lo, double hi)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (errno || end == s || *end || !(v >= lo && v <= hi)) bad("%s: expected a number in [%g, %g], got '%s'", opt, lo, hi, s);
+    return v;
+}
+
+static int parse_budgets(const char *s, uint64_t *out)
+{
+    int n = 0;
+    const char *p = s;
+    while (*p) {
+        char *end;
+        errno = 0;
+        double v = strtod(p, &end);
+        if (errno || end == p) bad("--budgets: cannot read a number in '%s'", s);
+        if (*end == 'k' || *end == 'K') v *= 1e3, end++;
+        else if (*end == 'M' || *end == 'm') v *= 1e6, end++;
+        if (*end && *end != ',') bad("--budgets: unexpected '%c' in '%s'", *end, s);
+        if (!(v >= 1024 && v <= 1e12)) bad("--budgets: each budget must be in [1024, 1e12], got '%s'", s);
+        if (n == MAX_BUDGETS) bad("--budgets: at most %d budgets", MAX_BUDGETS);
+        out[n++] = (uint64_t)v;
+        p = *end ? end + 1 : end;
+    }
+    if (!n) bad("--budgets: empty list");
+    return n;
+}
+
+static void parse(int argc, char **argv, struct opts *o)
+{
+    const char *env = getenv("SCALE");
+    *o = (struct opts){.scale = env && *env ? env : "quick", .out = "results/table1-cmlt", .commit = "unknown",
+                       .seeds = -1, .threads = 2, .res = 128, .ref_spp = -1, .swap_every = 4,
+                       .seed = 1, .p_large = 0.1, .seed_frac = 0.0625};
+    const char *budgets = NULL;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage(stdout);
+            exit(0);
+        }
+        if (!strcmp(a, "--bench")) {
+            o->bench = 1;
+            continue;
+        }
+        if (a[0] != '-' || a[1] != '-') bad("unexpected argument '%s'", a);
+        if (i + 1 >= argc) bad("%s needs a value", a);
+        const char *v = argv[++i];
+        if (!strcmp(a, "--scale")) o->scale = v;
+        else if (!strcmp(a, "--budgets")) budgets = v;
+        else if (!strcmp(a, "--seeds")) o->seeds = (int)parse_int(a, v, 1, 1000);
+        else if (!strcmp(a, "--seed")) o->seed = (uint64_t)parse_int(a, v, 0, 1L << 40);
+        else if (!strcmp(a, "--threads")) o->threads = (int)parse_int(a, v, 1, 256);
+        else if (!strcmp(a, "--res")) o->res = (int)parse_int(a, v, 1, 4096);
+        else if (!strcmp(a, "--ref-spp")) o->ref_spp = (int)parse_int(a, v, 1, 1 << 24);
+        else if (!strcmp(a, "--p-large")) o->p_large = parse_double(a, v, 0, 1);
+        else if (!strcmp(a, "--swap-every")) o->swap_every = (int)parse_int(a, v, 1, 1 << 20);
+        else if (!strcmp(a, "--seed-frac")) o->seed_frac = parse_double(a, v, 1e-6, 1);
+        else if (!strcmp(a, "--out")) o->out = v;
+        else if (!strcmp(a, "--commit")) o->commit = v;
+        else bad("unknown option '%s'", a);
+    }
+    int paper;
+    if (!strcmp(o->scale, "quick")) paper = 0;
+    else if (!strcmp(o->scale, "paper")) paper = 1;
+    else bad("--scale: expected quick or paper, got '%s'", o->scale);
+    o->nbudgets = parse_budgets(budgets ? budgets : paper ? "16M,128M" : "1M,8M", o->budgets);
+    if (o->seeds < 0) o->seeds = paper ? 8 : 10;
+    if (o->ref_spp < 0) o->ref_spp = paper ? 65536 : 16384;
+}
+
+/* ---- small output helpers ---------------------------------------------------------------- */
+
+struct text {
+    char *buf;
+    size_t len, cap;
+};
+
+static void tprintf(struct text *t, const char *fmt, ...)
+{
+    va_list ap;
+    for (;;) {
+        va_start(ap, fmt);
+        int n = vsnprintf(t->buf + t->len, t->cap - t->len, fmt, ap);
+        va_end(ap);
+        ASSERT(n >= 0);
+        if (t->len + (size_t)n < t->cap) {
+            t->len += (size_t)n;
+            return;
+        }
+        t->cap = 2 * (t->cap + (size_t)n + 64);
+        t->buf = xrealloc(t->buf, t->cap);
+    }
+}
+
+static bool write_text_cb(const char *tmp, void *ctx, char *err, size_t errlen)
+{
+    const struct text *t = ctx;
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        snprintf(err, errlen, "%s: %s", tmp, strerror(errno));
+        return false;
+    }
+    bool ok = fwrite(t->buf, 1, t->len, f) == t->len;
+    ok = (fclose(f) == 0) && ok;
+    if (!ok) snprintf(err, errlen, "%s: write failed", tmp);
+    return ok;
+}
+
+static void write_text(const char *path, struct text *t)
+{
+    char err[512];
+    if (!t->buf) tprintf(t, "%s", "");
+    if (!atomic_write(path, write_text_cb, t, err, sizeof err)) {
+        fprintf(stderr, "table1_cmlt: %s\n", err);
+        exit(1);
+    }
+}
+
+static void mkdirs(const char *dir)
+{
+    char *p = xstrdup(dir);
+    for (char *s = p + 1; *s; s++)
+        if (*s == '/') {
+            *s = 0;
+            mkdir(p, 0777);
+            *s = '/';
+        }
+    if (mkdir(p, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "table1_cmlt: cannot create %s: %s\n", p, strerror(errno));
+        exit(1);
+    }
+    free(p);
+}
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static volatile sig_atomic_t g_stop = 0;
+static void on_sigint(int sig)
+{
+    (void)sig;
+    g_stop = 1;
+}
+
+/* Progress bar on stderr while `progress` climbs to `total`; returns when *finished is set. */
+static void progress_bar(const char *what, _Atomic uint64_t *progress, uint64_t total, _Atomic int *finished, double t0)
+{
+    int tty = isatty(2);
+    double last = -1;
+    while (!atomic_load(finished)) {
+        struct timespec ts = {0, 200 * 1000 * 1000};
+        nanosleep(&ts, NULL);
+        double t = now() - t0;
+        if (!tty && t - last < 10) continue; /* logs: a line every 10 s */
+        last = t;
+        double f = total ? (double)atomic_load(progress) / total : 1;
+        if (f > 1) f = 1;
+        int w = 30, k = (int)(f * w);
+        fprintf(stderr, "%s%s [%.*s%*s] %5.1f%% %6.1fs%s", tty ? "\r" : "", what, k,
+                "##############################", w - k, "", 100 * f, t, tty ? "" : "\n");
+    }
+    fprintf(stderr, "%s%s done in %.1fs%*s\n", tty ? "\r" : "", what, now() - t0, 30, "");
+}
+
+/* ---- reference --------------------------------------------------------------------------- */
+
+struct ref_thread {
+    int w, h, spp, threads;
+    uint64_t seed;
+    double *img;
+    struct cmlt_ref_result res;
+    _Atomic uint64_t progress;
+    _Atomic int finished;
+};
+
+static void *ref_thread_main(void *arg)
+{
+    struct ref_thread *r = arg;
+    cmlt_reference(r->w, r->h, r->spp, r->seed, r->threads, r->img, &r->res, &r->progress);
+    atomic_store(&r->finished, 1);
+    return NULL;
+}
+
+/* Loads the cached reference if its key matches, else computes and caches it. */
+static struct image *get_reference(const struct opts *o, struct cmlt_ref_result *res)
+{
+    char path[1024], keypath[1024], key[512], err[512];
+    snprintf(path, sizeof path, "%s/reference.exr", o->out);
+    snprintf(keypath, sizeof keypath, "%s/reference.key", o->out);
+    snprintf(key, sizeof key,
+             "cmlt-toy-v2 res=%d spp=%d L1Y=%g A1=%g K1=%g strip=%g,%g,%g hole=%g,%g,%g L2=%g,%g rho=%g\n",
+             o->res, o->ref_spp, CMLT_L1_Y, CMLT_A1, CMLT_K1, CMLT_STRIP_Y, CMLT_STRIP_X0, CMLT_STRIP_X1, CMLT_HOLE_X,
+             CMLT_HOLE_Z, CMLT_HOLE_R, CMLT_L2_Y, CMLT_LE2, CMLT_RHO);
+    FILE *f = fopen(keypath, "r");
+    if (f) {
+        char line[1024] = "";
+        double b0, b1, b2, nr;
+        bool ok = fgets(line, sizeof line, f) && !strcmp(line, key) &&
+                  fscanf(f, "%lf %lf %lf %lf", &b0, &b1, &b2, &nr) == 4;
+        fclose(f);
+        if (ok) {
+            struct image *im = img_read(path, err, sizeof err);
+            if (im && im->w == o->res && im->h == o->res) {
+                *res = (struct cmlt_ref_result){{b0, b1, b2}, nr};
+                fprintf(stderr, "reference: cached %s\n", path);
+                return im;
+            }
+            img_destroy(im);
+        }
+    }
+    struct image *im = img_create(o->res, o->res);
+    struct ref_thread rt = {.w = o->res, .h = o->res, .spp = o->ref_spp, .threads = o->threads,
+                            .seed = 0xC3117ull, .img = im->px};
+    atomic_init(&rt.progress, 0);
+    atomic_init(&rt.finished, 0);
+    int sq = (int)sqrt((double)o->ref_spp);
+    pthread_t t;
+    double t0 = now();
+    ASSERT(pthread_create(&t, NULL, ref_thread_main, &rt) == 0);
+    progress_bar("reference", &rt.progress, (uint64_t)o->res * o->res * sq * sq, &rt.finished, t0);
+    pthread_join(t, NULL);
+    *res = rt.res;
+    if (!img_write_exr(im, 1.0, path, err, sizeof err)) {
+        fprintf(stderr, "table1_cmlt: %s\n", err);
+        exit(1);
+    }
+    snprintf(path, sizeof path, "%s/reference.png", o->out);
+    if (!img_write_png(im, 1.0, path, err, sizeof err)) {
+        fprintf(stderr, "table1_cmlt: %s\n", err);
+        exit(1);
+    }
+    struct text kt = {0};
+    tprintf(&kt, "%s%.17g %.17g %.17g %.17g\n", key, res->b[0], res->b[1], res->b[2], res->noise_rmse);
+    write_text(keypath, &kt);
+    free(kt.buf);
+    return im;
+}
+
+/* ---- jobs -------------------------------------------------------------------------------- */
+
+struct job {
+    int algo, bidx, seed_idx;
+    uint64_t n;
+    double rmse;
+    struct cmlt_stats st;
+};
+
+struct pool {
+    const struct opts *o;
+    const struct image *ref;
+    struct job *jobs;
+    int njobs;
+    _Atomic int next;
+    _Atomic uint64_t progress;
+    _Atomic int finished;
+    _Atomic int running;
+    double **keep; /* [bidx * CMLT_NALGO + algo]: image of seed 0 */
+};
+
+static double rmse(const double *a, const double *b, size_t n)
+{
+    double s = 0;
+    for (size_t i = 0; i < n; i++) s += (a[i] - b[i]) * (a[i] - b[i]);
+    return sqrt(s / n);
+}
+
+static void *worker(void *arg)
+{
+    struct pool *p = arg;
+    const struct opts *o = p->o;
+    size_t npx = 3 * (size_t)o->res * o->res;
+    double *scratch = xmalloc(sizeof(double) * npx);
+    for (;;) {
+        int k = atomic_fetch_add(&p->next, 1);
+        if (k >= p->njobs) break;
+        struct job *J = &p->jobs[k];
+        struct cmlt_config c;
+        cmlt_config_default(&c);
+        c.w = c.h = o->res;
+        c.n = J->n;
+        c.n_seed = (uint64_t)(o->seed_frac * J->n);
+        if (c.n_seed < 1024) c.n_seed = 1024;
+        c.p_large = o->p_large;
+        c.swap_every = o->swap_every;
+        double *img = J->seed_idx == 0 ? p->keep[J->bidx * CMLT_NALGO + J->algo] : scratch;
+        uint64_t seed = o->seed * 1000003ull + (uint64_t)J->seed_idx;
+        uint64_t stream = (uint64_t)J->bidx * 64 + (uint64_t)J->algo;
+        cmlt_run((enum cmlt_algo)J->algo, &c, seed, stream, img, &J->st, &p->progress, &g_stop);
+        J->rmse = p->ref ? rmse(img, p->ref->px, npx) : 0;
+    }
+    free(scratch);
+    if (atomic_fetch_sub(&p->running, 1) == 1) atomic_store(&p->finished, 1);
+    return NULL;
+}
+
+static int cmp_job(const void *a, const void *b)
+{
+    const struct job *x = a, *y = b; /* largest budgets first, then seed, algorithm: load balance */
+    if (x->n != y->n) return x->n < y->n ? 1 : -1;
+    if (x->seed_idx != y->seed_idx) return x->seed_idx - y->seed_idx;
+    return x->algo - y->algo;
+}
+
+static void run_pool(struct pool *p, const char *what)
+{
+    const struct opts *o = p->o;
+    uint64_t total = 0;
+    for (int i = 0; i < p->njobs; i++) total += p->jobs[i].n - p->jobs[i].n % (p->jobs[i].algo == CMLT_PSS1 || p->jobs[i].algo == CMLT_PSS2 || p->jobs[i].algo == CMLT_EPSM ? 1 : 2);
+    atomic_init(&p->next, 0);
+    atomic_init(&p->progress, 0);
+    atomic_init(&p->finished, 0);
+    atomic_init(&p->running, o->threads);
+    pthread_t *t = xmalloc(sizeof *t * (size_t)o->threads);
+    double t0 = now();
+    for (int i = 0; i < o->threads; i++) ASSERT(pthread_create(&t[i], NULL, worker, p) == 0);
+    progress_bar(what, &p->progress, total, &p->finished, t0);
+    for (int i = 0; i < o->threads; i++) pthread_join(t[i], NULL);
+    free(t);
+}
+
+static const char *fmt_n(uint64_t n, char *buf, size_t len)
+{
+    if (n % 1000000 == 0) snprintf(buf, len, "%lluM", (unsigned long long)(n / 1000000));
+    else if (n % 1000 == 0) snprintf(buf, len, "%lluk", (unsigned long long)(n / 1000));
+    else snprintf(buf, len, "%llu", (unsigned long long)n);
+    return buf;
+}
+
+static void bench(const struct opts *o)
+{
+    uint64_t n = o->budgets[0];
+    printf("# bench-cmlt: chain steps per second on one core, n = %llu steps, %dx%d image\n",
+           (unsigned long long)n, o->res, o->res);
+    printf("algorithm,steps_per_s\n");
+    double *img = xmalloc(sizeof(double) * 3 * o->res * o->res);
+    for (int a = 0; a < CMLT_NALGO; a++) {
+        struct cmlt_config c;
+        cmlt_config_default(&c);
+        c.w = c.h = o->res;
+        c.n = n;
+        c.n_seed = 1024;
+        c.p_large = o->p_large;
+        c.swap_every = o->swap_every;
+        struct cmlt_stats st;
+        double t0 = now();
+        cmlt_run((enum cmlt_algo)a, &c, o->seed, (uint64_t)a, img, &st, NULL, NULL);
+        double dt = now() - t0;
+        printf("%s,%.4g\n", cmlt_algo_names[a], st.steps / dt);
+        fflush(stdout);
+    }
+    free(img);
+}
+
+int main(int argc, char **argv)
+{
+    struct opts o;
+    parse(argc, argv, &o);
+    if (o.bench) {
+        bench(&o);
+        return 0;
+    }
+    signal(SIGINT, on_sigint);
+    mkdirs(o.out);
+    cli_require_image_output("table1_cmlt");
+    double t_start = now();
+    struct cmlt_ref_result rr;
+    struct image *ref = get_reference(&o, &rr);
+    fprintf(stderr, "reference: b = %.6g (w1: %.6g, w2: %.6g), own noise RMSE ~ %.3g\n", rr.b[0], rr.b[1],
+            rr.b[2], rr.noise_rmse);
+
+    struct pool p = {.o = &o, .ref = ref};
+    p.njobs = o.seeds * o.nbudgets * CMLT_NALGO;
+    p.jobs = xcalloc((size_t)p.njobs, sizeof *p.jobs);
+    int k = 0;
+    for (int s = 0; s < o.seeds; s++)
+        for (int b = 0; b < o.nbudgets; b++)
+            for (int a = 0; a < CMLT_NALGO; a++) p.jobs[k++] = (struct job){.algo = a, .bidx = b, .seed_idx = s, .n = o.budgets[b]};
+    qsort(p.jobs, (size_t)p.njobs, sizeof *p.jobs, cmp_job);
+    size_t npx = 3 * (size_t)o.res * o.res;
+    p.keep = xmalloc(sizeof(double *) * o.nbudgets * CMLT_NALGO);
+    for (int i = 0; i < o.nbudgets * CMLT_NALGO; i++) p.keep[i] = xmalloc(sizeof(double) * npx);
+    run_pool(&p, "chains");
+    int partial = g_stop != 0;
+    double wall = now() - t_start;
+
+    /* statistics per (algorithm, budget) */
+    struct text csv = {0}, stats = {0}, seeds = {0}, md = {0};
+    char meta[512], nb[32];
+    snprintf(meta, sizeof meta,
+             "# table1_cmlt commit=%s seed=%llu scale=%s seeds=%d threads=%d res=%d ref_spp=%d p_large=%g "
+             "swap_every=%d seed_frac=%g seconds=%.1f%s\n",
+             o.commit, (unsigned long long)o.seed, o.scale, o.seeds, o.threads, o.res, o.ref_spp, o.p_large,
+             o.swap_every, o.seed_frac, wall, partial ? " PARTIAL (interrupted)" : "");
+    tprintf(&csv, "%salgorithm,n,rmse\n", meta);
+    tprintf(&stats, "%salgorithm,n,seeds,rmse_mean,rmse_se,steps_per_s,acceptance,swap_acceptance\n", meta);
+    tprintf(&seeds, "%salgorithm,n,seed,rmse,b,b1,b2,acceptance,swap_acceptance,seconds\n", meta);
+    static const double paper[2][CMLT_NALGO] = {{8.287e-2, 4.073e-2, 4.106e-2, 3.663e-2, 3.924e-2, 3.502e-2},
+                                                {3.212e-2, 1.488e-2, 1.587e-2, 1.405e-2, 1.467e-2, 1.374e-2}};
+    double mean[MAX_BUDGETS][CMLT_NALGO], se[MAX_BUDGETS][CMLT_NALGO];
+    for (int a = 0; a < CMLT_NALGO; a++)
+        for (int b = 0; b < o.nbudgets; b++) {
+            double s1 = 0, s2 = 0, steps = 0, secs = 0, acc = 0, swaps = 0, swacc = 0;
+            int m = 0;
+            for (int j = 0; j < p.njobs; j++) {
+                const struct job *J = &p.jobs[j];
+                if (J->algo != a || J->bidx != b) continue;
+                s1 += J->rmse;
+                s2 += J->rmse * J->rmse;
+                steps += J->st.steps;
+                secs += J->st.seconds;
+                acc += J->st.acc_sum;
+                swaps += J->st.swaps;
+                swacc += J->st.swap_acc_sum;
+                m++;
+            }
+            for (int s = 0; s < o.seeds; s++)
+                for (int j = 0; j < p.njobs; j++) {
+                    const struct job *J = &p.jobs[j];
+                    if (J->algo != a || J->bidx != b || J->seed_idx != s) continue;
+                    tprintf(&seeds, "%s,%llu,%d,%.6e,%.6g,%.6g,%.6g,%.4f,%.4f,%.2f\n", cmlt_algo_names[a],
+                            (unsigned long long)J->n, s, J->rmse, J->st.b[0], J->st.b[1], J->st.b[2],
+                            J->st.steps ? J->st.acc_sum / J->st.steps : 0,
+                            J->st.swaps ? J->st.swap_acc_sum / J->st.swaps : 0, J->st.seconds);
+                }
+            mean[b][a] = s1 / m;
+            se[b][a] = m > 1 ? sqrt(fmax(0.0, (s2 - s1 * s1 / m) / (m - 1)) / m) : 0;
+            tprintf(&csv, "%s,%llu,%.6e\n", cmlt_algo_names[a], (unsigned long long)o.budgets[b], mean[b][a]);
+            tprintf(&stats, "%s,%llu,%d,%.6e,%.6e,%.4g,%.4f,%.4f\n", cmlt_algo_names[a],
+                    (unsigned long long)o.budgets[b], m, mean[b][a], se[b][a], secs > 0 ? steps / secs : 0,
+                    steps > 0 ? acc / steps : 0, swaps > 0 ? swacc / swaps : 0);
+        }
+    /* Markdown table: ours (mean ± standard error over seeds) next to the paper's Table 1 */
+    tprintf(&md, "RMSE against the reference (mean ± standard error over %d seeds; same total samples n per "
+                 "algorithm), next to the paper's Table 1 (their toy, one run).\n\n| algorithm |", o.seeds);
+    for (int b = 0; b < o.nbudgets; b++) tprintf(&md, " n = %s |", fmt_n(o.budgets[b], nb, sizeof nb));
+    tprintf(&md, " paper n = 16M | paper n = 128M |\n| --- |");
+    for (int b = 0; b < o.nbudgets; b++) tprintf(&md, " ---: |");
+    tprintf(&md, " ---: | ---: |\n");
+    for (int a = 0; a < CMLT_NALGO; a++) {
+        tprintf(&md, "| %s |", cmlt_algo_names[a]);
+        for (int b = 0; b < o.nbudgets; b++) tprintf(&md, " %.3e ± %.1e |", mean[b][a], se[b][a]);
+        tprintf(&md, " %.3e | %.3e |\n", paper[0][a], paper[1][a]);
+    }
+    tprintf(&md, "\nReference: %d spp stratified MC, own noise RMSE ≈ %.2e. Wall time %.1f s on %d threads.%s\n",
+            o.ref_spp, rr.noise_rmse, wall, o.threads, partial ? " **PARTIAL: interrupted.**" : "");
+    char path[1024], err[512];
+    snprintf(path, sizeof path, "%s/table1_seeds.csv", o.out);
+    write_text(path, &seeds);
+    snprintf(path, sizeof path, "%s/table1_stats.csv", o.out);
+    write_text(path, &stats);
+    snprintf(path, sizeof path, "%s/table1.md", o.out);
+    write_text(path, &md);
+    snprintf(path, sizeof path, "%s/table1.csv", o.out);
+    write_text(path, &csv);
+    for (int b = 0; b < o.nbudgets; b++)
+        for (int a = 0; a < CMLT_NALGO; a++) {
+            struct image im = {.w = o.res, .h = o.res, .px = p.keep[b * CMLT_NALGO + a]};
+            const char *ext[2] = {"exr", "png"};
+            for (int e = 0; e < 2; e++) {
+                snprintf(path, sizeof path, "%s/%s_%s.%s", o.out, cmlt_algo_names[a],
+                         fmt_n(o.budgets[b], nb, sizeof nb), ext[e]);
+                bool ok = e ? img_write_png(&im, 1.0, path, err, sizeof err) : img_write_exr(&im, 1.0, path, err, sizeof err);
+                if (!ok) {
+                    fprintf(stderr, "table1_cmlt: %s\n", err);
+                    return 1;
+                }
+            }
+        }
+    fputs(md.buf, stderr);
+    free(csv.buf);
+    free(stats.buf);
+    free(seeds.buf);
+    free(md.buf);
+    for (int i = 0; i < o.nbudgets * CMLT_NALGO; i++) free(p.keep[i]);
+    free(p.keep);
+    free(p.jobs);
+    img_destroy(ref);
+    return partial ? 130 : 0;
+}
