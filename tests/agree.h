@@ -3,7 +3,7 @@
 #ifndef AGREE_H
 #define AGREE_H
 
-#include "image.h"
+#include "io/image.h"
 #include <stdint.h>
 
 #define AGREE_MAX_REPS 16

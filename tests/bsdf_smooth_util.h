@@ -3,11 +3,11 @@
 #ifndef BSDF_SMOOTH_UTIL_H
 #define BSDF_SMOOTH_UTIL_H
 
-#include "bsdf.h"
-#include "bsdf_smooth.h"
-#include "rng.h"
+#include "base/rng.h"
+#include "bsdf/bsdf.h"
+#include "bsdf/bsdf_smooth.h"
 #include "rng_sampler.h"
-#include "sampler.h"
+#include "sampler/sampler.h"
 #include <string.h>
 
 

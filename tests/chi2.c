@@ -1,6 +1,6 @@
 /* Chi-square goodness of fit: binning, Simpson integration of the density, pooling, GSL tail. */
 #include "chi2.h"
-#include "util.h"
+#include "base/util.h"
 #include <gsl/gsl_cdf.h>
 #include <stdio.h>
 #include <stdlib.h>

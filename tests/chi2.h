@@ -10,8 +10,8 @@
 #ifndef CHI2_H
 #define CHI2_H
 
-#include "rng.h"
-#include "vecmath.h"
+#include "base/rng.h"
+#include "base/vecmath.h"
 #include <stdbool.h>
 
 /* Total statistical cases across the test suite, for the Sidak correction: every chi2 case uses

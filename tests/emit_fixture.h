@@ -5,8 +5,8 @@
 #ifndef EMIT_FIXTURE_H
 #define EMIT_FIXTURE_H
 
-#include "camera.h"
-#include "emitter.h"
+#include "camera/camera.h"
+#include "emitter/emitter.h"
 
 enum { FX_QUAD = 0, FX_MESH = 1, FX_SPHERE = 2, FX_PLAIN = 3, FX_ENV = 4 };
 enum fx_env { FX_ENV_NONE, FX_ENV_MAP, FX_ENV_CONST };

@@ -1,5 +1,5 @@
 #include "isa.h"
-#include "accel.h"
+#include "scene/accel.h"
 #include <criterion/criterion.h>
 #include <stdlib.h>
 

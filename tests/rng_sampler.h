@@ -3,8 +3,8 @@
 #ifndef RNG_SAMPLER_H
 #define RNG_SAMPLER_H
 
-#include "rng.h"
-#include "sampler.h"
+#include "base/rng.h"
+#include "sampler/sampler.h"
 
 struct rng_sampler {
     struct sampler base;

@@ -3,11 +3,11 @@
 #ifndef ROUGH_UTIL_H
 #define ROUGH_UTIL_H
 
-#include "bsdf.h"
-#include "microfacet.h"
-#include "rng.h"
+#include "base/rng.h"
+#include "bsdf/bsdf.h"
+#include "bsdf/microfacet.h"
 #include "rng_sampler.h"
-#include "sampler.h"
+#include "sampler/sampler.h"
 #include <stdio.h>
 #include <string.h>
 

@@ -3,7 +3,7 @@
 #ifndef TEST_SCENES_H
 #define TEST_SCENES_H
 
-#include "scene.h"
+#include "scene/scene.h"
 
 /* Loads or fails the current test with the loader's message. */
 struct scene *test_scene(const char *path);

@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel.h"
-#include "rng.h"
+#include "base/rng.h"
+#include "scene/accel.h"
 #include "scenes.h"
 
 static bool listed(const char *isa)

@@ -7,8 +7,8 @@
  * harness's "other" cell, whose expected count is n (1 - integral of pdf). */
 #include <criterion/criterion.h>
 
+#include "bsdf/fresnel.h"
 #include "chi2.h"
-#include "fresnel.h"
 #include <gsl/gsl_cdf.h>
 #include "rough_util.h"
 #include <stdlib.h>

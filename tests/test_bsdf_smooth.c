@@ -5,9 +5,9 @@
  * test_bsdf_smooth_stat.c. */
 #include <criterion/criterion.h>
 
+#include "bsdf/fresnel.h"
 #include "bsdf_smooth_util.h"
-#include "fresnel.h"
-#include "warp.h"
+#include "sampling/warp.h"
 
 static double rel_err(double a, double b) { return fabs(a - b) / fmax(fabs(b), 1e-300); }
 

@@ -11,9 +11,9 @@
 #include <criterion/criterion.h>
 #include <gsl/gsl_cdf.h>
 
+#include "bsdf/fresnel.h"
 #include "bsdf_smooth_util.h"
 #include "chi2.h"
-#include "fresnel.h"
 
 #define N_CHI2 1000000L
 #define N_INV 100000L

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <sys/wait.h>
 
-#include "ch6_stats.h"
+#include "ch6/ch6_stats.h"
 
 Test(ch6_stats, mean_and_standard_error)
 {

@@ -4,9 +4,9 @@
  * another build, scene or options is refused, and a truncated or corrupted one is detected. */
 #include <criterion/criterion.h>
 
-#include "checkpoint.h"
-#include "image.h"
-#include "rng.h"
+#include "base/rng.h"
+#include "io/checkpoint.h"
+#include "io/image.h"
 #include "tmpdir.h"
 #include <signal.h>
 #include <stdio.h>

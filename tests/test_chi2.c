@@ -2,7 +2,7 @@
 #include <criterion/criterion.h>
 
 #include "chi2.h"
-#include "warp.h"
+#include "sampling/warp.h"
 
 static bool cos_sample(void *ctx, rng *r, vec3 *d)
 {

@@ -2,7 +2,7 @@
  * no output files, and a seed reproduces the image bit for bit (EXR pixels, PNG file, CSV rows). */
 #include <criterion/criterion.h>
 
-#include "image.h"
+#include "io/image.h"
 #include "tmpdir.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -6,11 +6,11 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "cmlt_charts.h"
-#include "cmlt_mcmc.h"
-#include "cmlt_reference.h"
-#include "cmlt_scene.h"
-#include "rng.h"
+#include "base/rng.h"
+#include "cmlt/cmlt_charts.h"
+#include "cmlt/cmlt_mcmc.h"
+#include "cmlt/cmlt_reference.h"
+#include "cmlt/cmlt_scene.h"
 
 static bool same_path(const struct cmlt_path *a, const struct cmlt_path *b, double tol)
 {

@@ -20,8 +20,8 @@
 #include <criterion/parameterized.h>
 
 #include "agree.h"
-#include "image.h"
-#include "render.h"
+#include "io/image.h"
+#include "mc/render.h"
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <stdio.h>

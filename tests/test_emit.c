@@ -4,8 +4,8 @@
 #include <criterion/criterion.h>
 
 #include "emit_fixture.h"
-#include "emitter_table.h"
-#include "warp.h"
+#include "emitter/emitter_table.h"
+#include "sampling/warp.h"
 #include <string.h>
 
 #define NRT 100000

@@ -8,8 +8,8 @@
 
 #include "chi2.h"
 #include "emit_fixture.h"
-#include "emitter_table.h"
-#include "warp.h"
+#include "emitter/emitter_table.h"
+#include "sampling/warp.h"
 
 #define N 1000000
 

@@ -6,9 +6,9 @@
 #include <criterion/criterion.h>
 
 #include "agree.h"
-#include "camera.h"
-#include "mlt.h"
-#include "render.h"
+#include "camera/camera.h"
+#include "mc/render.h"
+#include "mcmc/mlt.h"
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
 

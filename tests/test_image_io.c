@@ -4,10 +4,10 @@
  * "not yet loaded" is a property of this test alone. */
 #include <criterion/criterion.h>
 
-#include "camera.h"
-#include "image.h"
-#include "oiio.h"
-#include "render.h"
+#include "camera/camera.h"
+#include "io/image.h"
+#include "io/oiio.h"
+#include "mc/render.h"
 #include "scenes.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -4,8 +4,8 @@
  * on pixels outside it. */
 #include <criterion/criterion.h>
 
-#include "image.h"
-#include "rng.h"
+#include "base/rng.h"
+#include "io/image.h"
 
 static double total(const struct image *im)
 {

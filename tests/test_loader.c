@@ -4,11 +4,11 @@
 
 #include "tmpdir.h"
 
-#include "accel.h"
-#include "camera.h"
-#include "image.h"
-#include "path.h"
-#include "scene.h"
+#include "camera/camera.h"
+#include "io/image.h"
+#include "path/path.h"
+#include "scene/accel.h"
+#include "scene/scene.h"
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>

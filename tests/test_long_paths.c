@@ -5,9 +5,9 @@
 #include <criterion/criterion.h>
 
 #include "agree.h"
-#include "mlt.h"
-#include "render.h"
-#include "scene.h"
+#include "mc/render.h"
+#include "mcmc/mlt.h"
+#include "scene/scene.h"
 #include "scenes.h"
 #include "tmpdir.h"
 #include <gsl/gsl_cdf.h>

@@ -1,11 +1,11 @@
 /* Unit tests: vectors, transforms, RNG, warps and their inverses, samplers, Fresnel. */
 #include <criterion/criterion.h>
 
-#include "fresnel.h"
-#include "rng.h"
-#include "sampler.h"
-#include "vecmath.h"
-#include "warp.h"
+#include "base/rng.h"
+#include "base/vecmath.h"
+#include "bsdf/fresnel.h"
+#include "sampler/sampler.h"
+#include "sampling/warp.h"
 
 Test(math, frame_is_orthonormal)
 {

@@ -2,7 +2,7 @@
  * that calls it, rather than blaming the size of the seed pass. */
 #include <criterion/criterion.h>
 
-#include "mlt.h"
+#include "mcmc/mlt.h"
 #include "scenes.h"
 #include <string.h>
 

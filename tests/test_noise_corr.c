@@ -6,8 +6,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "noise_corr.h"
-#include "rng.h"
+#include "base/rng.h"
+#include "ch4/noise_corr.h"
 
 static double gauss(rng *r)
 {

@@ -4,7 +4,7 @@
  * of a diffuse wall at z = -1, seen from z = 5. */
 #include <criterion/criterion.h>
 
-#include "connect.h"
+#include "path/connect.h"
 #include "scenes.h"
 
 static struct vertex at(vec3 p)

@@ -1,5 +1,5 @@
 /* The pass barrier that time-budgeted PT and BDPT runs use between passes. */
-#include "parallel.h"
+#include "base/parallel.h"
 #include <criterion/criterion.h>
 
 #define THREADS 4

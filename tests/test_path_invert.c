@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "isa.h"
-#include "path.h"
+#include "path/path.h"
 #include "scenes.h"
 
 /* Fills every slot with fresh numbers: blocks the inversion cannot determine (a direction that

@@ -5,7 +5,7 @@
 #include <criterion/criterion.h>
 
 #include "isa.h"
-#include "pitp.h"
+#include "mcmc/pitp.h"
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <stdio.h>

@@ -3,9 +3,9 @@
 #include <criterion/criterion.h>
 #include <gsl/gsl_cdf.h>
 
+#include "base/vecmath.h"
 #include "chi2.h"
-#include "pss.h"
-#include "vecmath.h"
+#include "sampler/pss.h"
 #include <math.h>
 #include <string.h>
 

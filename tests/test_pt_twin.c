@@ -10,8 +10,8 @@
  * significance level; the tolerance is rounding (1e-9 relative per pixel). */
 #include <criterion/criterion.h>
 
-#include "connect.h"
-#include "integrator.h"
+#include "mc/integrator.h"
+#include "path/connect.h"
 #include "scenes.h"
 
 /* Thesis-machinery path tracer: z_0..z_{n-1}, then for t = 2..n the emission hit (s = 0) and the

@@ -3,8 +3,8 @@
 #include <criterion/criterion.h>
 
 #include "agree.h"
-#include "camera.h"
-#include "render.h"
+#include "camera/camera.h"
+#include "mc/render.h"
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
 

@@ -3,8 +3,8 @@
  * statistics on accumulators built by hand. */
 #include <criterion/criterion.h>
 
-#include "camera.h"
-#include "mlt.h"
+#include "camera/camera.h"
+#include "mcmc/mlt.h"
 #include "scenes.h"
 #include <math.h>
 #include <string.h>

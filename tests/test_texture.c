@@ -4,11 +4,11 @@
 
 #include "tmpdir.h"
 
-#include "accel.h"
-#include "mesh_io.h"
-#include "oiio.h"
-#include "path.h"
-#include "scene.h"
+#include "io/mesh_io.h"
+#include "io/oiio.h"
+#include "path/path.h"
+#include "scene/accel.h"
+#include "scene/scene.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -13,8 +13,8 @@
 #ifndef MICROFACET_H
 #define MICROFACET_H
 
-#include "scene/scene.h"
 #include "base/vecmath.h"
+#include "scene/scene.h"
 
 /* Tungsten's roughnessToAlpha floor: alpha below this is raised to it (a model choice, applied to
  * eval, pdf and sample alike, so it changes the material, not the estimator). */

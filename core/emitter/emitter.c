@@ -9,8 +9,8 @@
  * (a along edge0, b along edge1), spheres 2 (warp_uniform_sphere); area emitters then take the
  * emitted direction, 2 DIM_CONTINUOUS (cosine about n). */
 #include "emitter/emitter.h"
-#include "emitter/emitter_table.h"
 #include "base/util.h"
+#include "emitter/emitter_table.h"
 #include "sampling/warp.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -17,9 +17,9 @@
  *
  * Emitter subpaths start on the disc of radius R (bounding sphere of the finite geometry,
  * enlarged by 0.1 %) perpendicular to d, centred at centre + R d, and travel along -d. */
+#include "base/util.h"
 #include "emitter/emitter.h"
 #include "emitter/emitter_table.h"
-#include "base/util.h"
 #include "sampling/warp.h"
 #include <stdio.h>
 #include <stdlib.h>

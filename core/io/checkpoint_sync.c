@@ -1,7 +1,7 @@
 /* The threads' rendezvous for periodic checkpoints; see checkpoint.h. */
-#include "io/checkpoint.h"
 #include "base/parallel.h"
 #include "base/util.h"
+#include "io/checkpoint.h"
 #include <stdlib.h>
 
 void ckpt_sync_init(struct ckpt_sync *s, int threads, double every, void (*save)(void *ctx), void *ctx)

@@ -1,7 +1,7 @@
 /* Framebuffers, splatting and atomic EXR/PNG output. */
 #include "io/image.h"
-#include "io/oiio.h"
 #include "base/util.h"
+#include "io/oiio.h"
 #include <stdio.h>
 #include <stdlib.h>
 

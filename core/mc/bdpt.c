@@ -1,7 +1,7 @@
 /* Bidirectional path tracer: one camera and one emitter subpath per sample, all (s, t) with
  * 1 <= s + t - 1 <= max_length; t = 1 contributions land at the connection's raster position. */
-#include "path/connect.h"
 #include "mc/integrator.h"
+#include "path/connect.h"
 
 void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct splat_list *out)
 {

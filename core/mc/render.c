@@ -1,10 +1,10 @@
 #include "mc/render.h"
-#include "camera/camera.h"
 #include "base/dist.h"
-#include "stats/dist_merge.h"
-#include "mc/integrator.h"
 #include "base/parallel.h"
 #include "base/util.h"
+#include "camera/camera.h"
+#include "mc/integrator.h"
+#include "stats/dist_merge.h"
 #include <stdlib.h>
 #include <string.h>
 

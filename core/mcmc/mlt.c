@@ -1,16 +1,16 @@
 /* PSSMLT and MMLT drivers: seed pass, chain start by resampling, Metropolis iterations with
  * expected-value splatting, statistics. See mlt.h for the method definitions. */
 #include "mcmc/mlt.h"
-#include "mcmc/mlt_chain.h"
-#include "camera/camera.h"
-#include "path/connect.h"
 #include "base/dist.h"
-#include "stats/dist_merge.h"
+#include "base/parallel.h"
+#include "base/util.h"
+#include "camera/camera.h"
 #include "emitter/emitter.h"
 #include "mc/integrator.h"
-#include "base/parallel.h"
+#include "mcmc/mlt_chain.h"
 #include "mcmc/pitp.h"
-#include "base/util.h"
+#include "path/connect.h"
+#include "stats/dist_merge.h"
 #include <stdlib.h>
 #include <string.h>
 

@@ -19,13 +19,13 @@
 #ifndef MLT_H
 #define MLT_H
 
-#include "stats/angle_change.h"
 #include "io/checkpoint.h"
-#include "mcmc/controlled_step.h"
 #include "io/image.h"
-#include "stats/mlt_stats.h"
+#include "mcmc/controlled_step.h"
 #include "sampler/pss.h"
 #include "scene/scene.h"
+#include "stats/angle_change.h"
+#include "stats/mlt_stats.h"
 #include "stats/tech_image.h"
 
 /* MLT_PITP: MMLT with the path-invariant technique perturbation before every small step (thesis

@@ -3,13 +3,13 @@
 #ifndef MLT_CHAIN_H
 #define MLT_CHAIN_H
 
-#include "stats/angle_change.h"
 #include "io/checkpoint.h"
 #include "mcmc/controlled_step.h"
-#include "stats/mlt_stats.h"
 #include "mcmc/pitp.h"
-#include "sampler/pss.h"
 #include "path/splat.h"
+#include "sampler/pss.h"
+#include "stats/angle_change.h"
+#include "stats/mlt_stats.h"
 #include "stats/tech_image.h"
 
 struct chain {

@@ -14,9 +14,9 @@
 #ifndef PATH_H
 #define PATH_H
 
-#include "scene/accel.h"
 #include "bsdf/bsdf.h"
 #include "sampler/sampler.h"
+#include "scene/accel.h"
 #include "scene/scene.h"
 
 /* VK_ENV is a vertex at infinity on the environment emitter: the end of a camera subpath that left

@@ -1,7 +1,7 @@
 /* Vertices from ray hits, density conversion, emission and visibility between vertices. */
-#include "scene/accel.h"
 #include "emitter/emitter.h"
 #include "path/path.h"
+#include "scene/accel.h"
 
 /* Self-intersection offset relative to the coordinates' magnitude (Embree works in float). */
 double ray_eps(vec3 p) { return 2e-5 * maxd(fabs(p.z), maxd(fabs(p.y), maxd(fabs(p.x), 1.0))); }

@@ -1,9 +1,9 @@
 /* A render-ready scene: the loaded model plus its emitter table and ray-query structure. */
-#include "scene/accel.h"
-#include "bsdf/bsdf.h"
-#include "emitter/emitter.h"
 #include "scene/scene.h"
 #include "base/util.h"
+#include "bsdf/bsdf.h"
+#include "emitter/emitter.h"
+#include "scene/accel.h"
 #include <stdio.h>
 #include <stdlib.h>
 

@@ -3,9 +3,9 @@
 #ifndef SPLAT_H
 #define SPLAT_H
 
-#include "sampler/sampler.h"
 #include "base/util.h"
 #include "base/vecmath.h"
+#include "sampler/sampler.h"
 
 #define MAX_SPLATS (MAX_PATH_LENGTH + 2)
 

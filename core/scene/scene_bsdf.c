@@ -2,9 +2,9 @@
  * (the constructors in src/core/bsdfs/): albedo 1; conductors Cu; rough_conductor and rough_dielectric
  * ggx with roughness 0.1; rough_plastic ggx with roughness 0.02; dielectrics and plastics ior 1.5;
  * plastics thickness 1, sigma_a 0; enable_refraction true. */
+#include "base/util.h"
 #include "scene/metals.h"
 #include "scene/scene_load_internal.h"
-#include "base/util.h"
 #include <stdio.h>
 #include <string.h>
 

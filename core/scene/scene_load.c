@@ -6,10 +6,10 @@
  * contributes only while bounce < max_bounces (resp. bounce + 1 < max_bounces) and bounce >= min_bounces.
  * A path of k segments has its emitter hit at bounce = k - 1, so max_bounces is the maximum number of
  * segments and min_bounces + 1 the minimum: max_length = max_bounces, min_length = min_bounces + 1. */
+#include "base/util.h"
 #include "camera/camera.h"
 #include "sampler/sampler.h"
 #include "scene/scene_load_internal.h"
-#include "base/util.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -8,9 +8,9 @@
  * - mesh (TriangleMesh.cpp): front side = counter-clockwise winding of the world-space triangle;
  * - emitters emit on the front side only; "power" becomes radiance through
  *   powerToRadianceFactor: 1/(pi area) for finite shapes, 1/(4 pi) for the infinite sphere. */
+#include "base/util.h"
 #include "io/mesh_io.h"
 #include "scene/scene_load_internal.h"
-#include "base/util.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -1,8 +1,8 @@
 /* Bitmap textures as Tungsten's BitmapTexture reads them: loading through OpenImageIO, the 2.2 gamma
  * table for integer (LDR) files, bilinear lookup with wrap-around. */
+#include "base/util.h"
 #include "io/image.h"
 #include "scene/scene.h"
-#include "base/util.h"
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>

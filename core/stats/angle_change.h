@@ -11,8 +11,8 @@
 #ifndef ANGLE_CHANGE_H
 #define ANGLE_CHANGE_H
 
-#include "mcmc/controlled_step.h"
 #include "io/image.h"
+#include "mcmc/controlled_step.h"
 #include "stats/mlt_stats.h"
 #include <stdio.h>
 

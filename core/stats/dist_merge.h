@@ -5,8 +5,8 @@
 #ifndef DIST_MERGE_H
 #define DIST_MERGE_H
 
-#include "stats/angle_change.h"
 #include "io/image.h"
+#include "stats/angle_change.h"
 #include "stats/mlt_stats.h"
 
 struct thread_results {

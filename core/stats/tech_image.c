@@ -1,7 +1,7 @@
 /* Per-technique contribution and sample-count images of one path length (tech_image.h). */
 #include "stats/tech_image.h"
-#include "path/connect.h"
 #include "base/util.h"
+#include "path/connect.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -1,8 +1,8 @@
 /* Shared pieces of the chapter-4 figure tools (ch4_common.h). */
 #include "ch4/ch4_common.h"
-#include "common/cli.h"
 #include "base/parallel.h"
 #include "base/util.h"
+#include "common/cli.h"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>

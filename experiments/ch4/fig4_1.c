@@ -6,14 +6,14 @@
  * Writes OUT/fig4.1.csv (variant,quantity,seeds,mean,se), OUT/fig4.1-runs.csv (one row per run),
  * OUT/fig4.1-profiles.csv (variant,lag,rho_x,rho_x_se,rho_y,rho_y_se), and the first seed's
  * images {iso,rap}.{exr,png}, error-{iso,rap}.png and reference.{exr,png}. */
-#include "camera/camera.h"
-#include "ch4/ch4_common.h"
-#include "common/cli.h"
-#include "ch4/noise_corr.h"
 #include "base/parallel.h"
 #include "base/util.h"
-#include "version.h"
+#include "camera/camera.h"
+#include "ch4/ch4_common.h"
+#include "ch4/noise_corr.h"
 #include "ch4/wall_noise.h"
+#include "common/cli.h"
+#include "version.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -6,13 +6,13 @@
  * resolution, small-step acceptance.
  * Writes OUT/fig4.2.csv (config,resolution,quantity,seeds,mean,se), OUT/fig4.2-runs.csv and the
  * first seed's images {pssmlt-1024,pssmlt-512,pssmlt-256,rap-resolution-256}.{exr,png}. */
-#include "camera/camera.h"
-#include "ch4/ch4_common.h"
-#include "common/cli.h"
 #include "base/parallel.h"
 #include "base/util.h"
-#include "version.h"
+#include "camera/camera.h"
+#include "ch4/ch4_common.h"
 #include "ch4/wall_noise.h"
+#include "common/cli.h"
+#include "version.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -7,12 +7,12 @@
  * (one row per run, with its wall-clock seconds, which the statistics leave out: they do not reproduce),
  * the first seed's images {bdpt,pssmlt,pssmlt-cdc}.{exr,png}, their acceptance statistics
  * {pssmlt,pssmlt-cdc}-stats.csv (the render tool's CSV rows) and reference.{exr,png}. */
+#include "base/parallel.h"
+#include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
 #include "common/cli.h"
 #include "mcmc/mlt.h"
-#include "base/parallel.h"
-#include "base/util.h"
 #include "version.h"
 #include <math.h>
 #include <stdio.h>

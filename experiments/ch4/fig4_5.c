@@ -3,10 +3,10 @@
  * with equal expected mutation budgets per length and the same seeds.
  * Writes OUT/fig4.5.csv: method,length,attempts,mean_accept,stderr,accepted_fraction,seconds
  * (seconds: CPU time spent on that length's proposals). */
-#include "common/cli.h"
-#include "mcmc/mlt.h"
 #include "base/parallel.h"
 #include "base/util.h"
+#include "common/cli.h"
+#include "mcmc/mlt.h"
 #include "version.h"
 #include <unistd.h>
 #include <stdio.h>

@@ -3,11 +3,11 @@
  * steps; relative MSE against a BDPT reference rendered once and cached.
  * Writes OUT/{mmlt-large,mctls,hybrid}.{exr,png}, OUT/fig4.6.csv (method,seconds,mutations,relmse)
  * and OUT/reference.png; the side-by-side PNG and the table come from the Makefile's scripts. */
-#include "common/cli.h"
-#include "mcmc/mlt.h"
 #include "base/parallel.h"
-#include "mc/render.h"
 #include "base/util.h"
+#include "common/cli.h"
+#include "mc/render.h"
+#include "mcmc/mlt.h"
 #include "version.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,8 +1,8 @@
 /* Edge mask from primary hits at pixel centres (see edge_mask.h). */
 #include "ch5/edge_mask.h"
+#include "base/util.h"
 #include "camera/camera.h"
 #include "path/path.h"
-#include "base/util.h"
 #include <stdlib.h>
 
 /* The two image numbers of one pixel centre. */

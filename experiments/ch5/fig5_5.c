@@ -9,9 +9,9 @@
  *   fig5.5.csv   kind,region,mean,stderr,seeds  (region all / edge / elsewhere: mean over the
  *                pixels of the region that saw a step; ratio: edge / elsewhere; stderr over seeds)
  *   fig5.5-lengths.csv  kind,length,steps,mean_dpsi,stderr  (steps pooled, stderr over seeds) */
+#include "base/util.h"
 #include "ch5/edge_mask.h"
 #include "ch5/fig5_common.h"
-#include "base/util.h"
 #include "version.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,9 +1,9 @@
 /* Shared options, runs and outputs of the Figure 5.5 and 5.6 tools (see fig5_common.h). */
 #include "ch5/fig5_common.h"
-#include "camera/camera.h"
-#include "common/cli.h"
 #include "base/parallel.h"
 #include "base/util.h"
+#include "camera/camera.h"
+#include "common/cli.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -14,11 +14,11 @@
  * Writes OUT/runs.csv (one row per run), OUT/summary.csv (mean +- standard error over seeds per method
  * and budget), OUT/NAME.md (the table and the claims), OUT/reference.png and OUT/<method>.png (seed 1,
  * budget T); all atomically. */
+#include "base/dist.h"
+#include "base/util.h"
 #include "ch6/ch6_stats.h"
 #include "common/cli.h"
-#include "base/dist.h"
 #include "io/image.h"
-#include "base/util.h"
 #include "version.h"
 #include <errno.h>
 #include <math.h>

@@ -10,10 +10,10 @@
  * sample counts against that mean with tech_follow: tv (half the L1 distance of the technique
  * shares) and r (correlation of the within-block shares over B x B blocks). Writes
  * `run,tv,r,cells,references` rows to OUT.csv (atomically). */
+#include "base/util.h"
 #include "common/cli.h"
 #include "io/image.h"
 #include "stats/tech_image.h"
-#include "base/util.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

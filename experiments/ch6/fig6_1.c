@@ -8,10 +8,10 @@
  * (stderr: batch-means over the merged runs; run_se: standard error of the runs' means; cells with
  * fewer than 16000 proposals are left out), and OUT/fig6.1-pitp.csv: per length, PITP's perturbations, the fraction with j != i, the
  * inversion failures and the mean |j - i|. */
-#include "common/cli.h"
-#include "mcmc/mlt.h"
 #include "base/parallel.h"
 #include "base/util.h"
+#include "common/cli.h"
+#include "mcmc/mlt.h"
 #include "version.h"
 #include <stdio.h>
 #include <stdlib.h>

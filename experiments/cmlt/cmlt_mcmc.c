@@ -1,8 +1,8 @@
 /* The six MCMC algorithms of CMLT §5; see cmlt_mcmc.h for the equations each one follows. */
 #include "cmlt/cmlt_mcmc.h"
-#include "cmlt/cmlt_charts.h"
 #include "base/rng.h"
 #include "base/util.h"
+#include "cmlt/cmlt_charts.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

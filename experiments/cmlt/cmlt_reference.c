@@ -1,8 +1,8 @@
 /* Reference image of the CMLT toy; see cmlt_reference.h. */
 #include "cmlt/cmlt_reference.h"
-#include "cmlt/cmlt_scene.h"
 #include "base/rng.h"
 #include "base/util.h"
+#include "cmlt/cmlt_scene.h"
 #include <math.h>
 #include <stdlib.h>
 #include <pthread.h>

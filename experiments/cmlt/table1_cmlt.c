@@ -5,12 +5,12 @@
  * error, seeds, throughput; what `make check-table1-cmlt` compares), table1_seeds.csv, table1.md,
  * reference.exr/.png (cached, keyed by reference.key), and <algo>_<n>.exr/.png of the first seed.
  * --bench instead times every algorithm on one core and prints chain steps per second. */
+#include "base/util.h"
 #include "cmlt/cmlt_mcmc.h"
 #include "cmlt/cmlt_reference.h"
 #include "cmlt/cmlt_scene.h"
 #include "common/cli.h"
 #include "io/image.h"
-#include "base/util.h"
 #include <errno.h>
 #include <math.h>
 #include <pthread.h>

@@ -1,6 +1,6 @@
 /* The options every acceptance figure tool shares (fig4_5, fig6_1): see cli.h. */
-#include "common/cli.h"
 #include "base/parallel.h"
+#include "common/cli.h"
 #include "sampler/sampler.h"
 #include "scene/scene.h"
 #include <stdio.h>

@@ -3,13 +3,13 @@
  * by default), the speed-up, the rays each sample or mutation casts, and peak memory with and
  * without image output; or, given several scenes, a table of the 1-thread figures. Numbers are
  * medians over --runs repetitions. */
-#include "scene/accel.h"
+#include "base/parallel.h"
 #include "camera/camera.h"
 #include "common/cli.h"
-#include "mcmc/mlt.h"
-#include "base/parallel.h"
 #include "mc/render.h"
+#include "mcmc/mlt.h"
 #include "sampling/warp.h"
+#include "scene/accel.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

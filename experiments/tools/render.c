@@ -1,16 +1,16 @@
 /* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
  * MCMC methods, PREFIX.csv with acceptance statistics. Built with MPI=1 and started by mpirun, its
  * ranks share the render (core/dist.h) and rank 0 alone writes the outputs and the summary. */
-#include "scene/accel.h"
-#include "io/checkpoint.h"
+#include "mc/render.h"
+#include "base/dist.h"
+#include "base/parallel.h"
+#include "base/util.h"
 #include "camera/camera.h"
 #include "common/cli.h"
-#include "base/dist.h"
 #include "emitter/emitter.h"
+#include "io/checkpoint.h"
 #include "mcmc/mlt.h"
-#include "base/parallel.h"
-#include "mc/render.h"
-#include "base/util.h"
+#include "scene/accel.h"
 #include "version.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -4,8 +4,8 @@
  * not hangs, when a rank is killed. Every job is oversubscribed on one machine. */
 #include <criterion/criterion.h>
 
-#include "image.h"
-#include "util.h"
+#include "base/util.h"
+#include "io/image.h"
 #include <ctype.h>
 #include <dirent.h>
 #include <signal.h>
