@@ -1,4 +1,5 @@
 #include "scenes.h"
+#include "path/scene_ready.h"
 #include <criterion/criterion.h>
 #include <glob.h>
 #include <stdlib.h>

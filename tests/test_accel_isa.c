@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "base/rng.h"
+#include "path/scene_ready.h"
 #include "scene/accel.h"
 #include "scenes.h"
 

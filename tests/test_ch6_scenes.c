@@ -8,6 +8,7 @@
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 
 struct ch6_run {

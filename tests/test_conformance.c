@@ -22,6 +22,7 @@
 #include "agree.h"
 #include "io/image.h"
 #include "mc/render.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <stdio.h>

@@ -8,6 +8,7 @@
 #include "io/image.h"
 #include "io/oiio.h"
 #include "mc/render.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 #include <stdio.h>
 #include <stdlib.h>

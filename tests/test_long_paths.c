@@ -7,6 +7,7 @@
 #include "agree.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "scene/scene.h"
 #include "scenes.h"
 #include "tmpdir.h"

@@ -6,6 +6,7 @@
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <stdio.h>

@@ -3,6 +3,7 @@
 #include <criterion/criterion.h>
 
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 #include <string.h>
 

@@ -5,6 +5,7 @@
 #include <criterion/criterion.h>
 
 #include "path/connect.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 
 static struct vertex at(vec3 p)

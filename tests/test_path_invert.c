@@ -6,6 +6,7 @@
 
 #include "isa.h"
 #include "path/path.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 
 /* Fills every slot with fresh numbers: blocks the inversion cannot determine (a direction that

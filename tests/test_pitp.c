@@ -6,6 +6,7 @@
 
 #include "isa.h"
 #include "mcmc/pitp.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <stdio.h>

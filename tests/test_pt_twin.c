@@ -12,6 +12,7 @@
 
 #include "mc/integrator.h"
 #include "path/connect.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 
 /* Thesis-machinery path tracer: z_0..z_{n-1}, then for t = 2..n the emission hit (s = 0) and the

@@ -5,6 +5,7 @@
 #include "agree.h"
 #include "camera/camera.h"
 #include "mc/render.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 #include <gsl/gsl_cdf.h>
 

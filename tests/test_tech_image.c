@@ -5,6 +5,7 @@
 
 #include "camera/camera.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "scenes.h"
 #include <math.h>
 #include <string.h>

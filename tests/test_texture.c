@@ -2,6 +2,7 @@
  * bilinear lookup with wrap-around, and the uv of quads, cubes and spheres. */
 #include <criterion/criterion.h>
 
+#include "path/scene_ready.h"
 #include "tmpdir.h"
 
 #include "io/mesh_io.h"

@@ -1,4 +1,4 @@
-/* Pinhole camera, box or tent filter (camera.h). camera_setup() lives with the loader.
+/* Pinhole camera, box or tent filter (camera.h). camera_setup() is the model's (scene/camera_setup.c).
  *
  * Tungsten's PinholeCamera: the image plane at distance 1/tan(fov/2) spans x in [-1, 1] across the
  * width (fov is horizontal) and y in [-H/W, H/W]; raster x grows along +x and raster y grows

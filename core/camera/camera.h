@@ -32,10 +32,4 @@ void camera_invert(const struct camera *c, double px, double py, struct sampler 
 /* Solid-angle density of camera_sample_dir (0 outside the film). */
 double camera_pdf_dir(const struct camera *c, vec3 d);
 
-/* Builds the basis from position, look_at and up as Tungsten does; computes derived fields. */
-void camera_setup(struct camera *c, vec3 pos, vec3 look_at, vec3 up, double fov_deg, int w, int h);
-
-/* Changes the resolution keeping position, basis and horizontal fov. */
-void camera_resize(struct camera *c, int w, int h);
-
 #endif

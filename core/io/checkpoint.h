@@ -12,13 +12,12 @@
  *
  * Payloads are raw struct bytes: a checkpoint is only ever read by the build that wrote it. The
  * one thing that does not survive a restart is a pointer; path vertices go through
- * ckpt_put_vertices, which stores their BSDF as an index. */
+ * ckpt_put_vertices (path/path_checkpoint.h), which stores their BSDF as an index. The scene's
+ * identity is scene/scene_hash.h's. */
 #ifndef CHECKPOINT_H
 #define CHECKPOINT_H
 
 #include "io/image.h"
-#include "path/path.h"
-#include "scene/scene.h"
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdint.h>
@@ -39,8 +38,6 @@ void ckpt_put_buf(struct ckpt_buf *b, const struct ckpt_buf *inner);
 bool ckpt_get_buf(struct ckpt_buf *b, struct ckpt_buf *inner); /* inner borrows b's bytes */
 void ckpt_put_image(struct ckpt_buf *b, const struct image *im);
 bool ckpt_get_image(struct ckpt_buf *b, struct image *im); /* same size as written, else false */
-void ckpt_put_vertices(struct ckpt_buf *b, const struct scene *sc, const struct vertex *v, int n);
-bool ckpt_get_vertices(struct ckpt_buf *b, const struct scene *sc, struct vertex *v, int n);
 
 /* What a checkpoint belongs to. */
 struct ckpt_id {
@@ -49,7 +46,6 @@ struct ckpt_id {
 };
 /* The running executable's hash (0 if it cannot be read: then no checkpoint is accepted). */
 uint64_t ckpt_build_hash(void);
-uint64_t ckpt_scene_hash(const struct scene *sc);
 uint64_t hash64(uint64_t h, const void *p, size_t n);
 
 bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ckpt_buf *payload, char *err, size_t errlen);

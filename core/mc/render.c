@@ -3,8 +3,8 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
+#include "io/image_merge.h"
 #include "mc/integrator.h"
-#include "stats/dist_merge.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -253,7 +253,7 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     }
     free(j.resume);
     struct image *out = img_create(W, H);
-    merge_thread_results(&(struct thread_results){.threads = T, .img = j.img, .scale = 1.0 / spp}, out, NULL, NULL);
+    merge_thread_results(&(struct thread_results){.threads = T, .img = j.img, .scale = 1.0 / spp}, out);
     /* over the job's threads: integers, exact in any order */
     long counts[4] = {0, 0, interrupted(), atomic_load(&j.resume_bad)};
     for (int i = 0; i < T; i++) {

@@ -6,11 +6,11 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "emitter/emitter.h"
+#include "io/image_merge.h"
 #include "mc/integrator.h"
 #include "mcmc/mlt_chain.h"
 #include "mcmc/pitp.h"
 #include "path/connect.h"
-#include "stats/dist_merge.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -507,6 +507,21 @@ static bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_
     return true;
 }
 
+/* The threads' statistics, merged with their images (io/image_merge.h). */
+struct stats_merge {
+    const struct mlt_stats *stats;
+    const struct angle_acc *angle; /* or NULL */
+    struct mlt_stats *stats_out;
+    struct angle_acc *angle_out;
+};
+
+static void add_thread_stats(void *p, int i)
+{
+    struct stats_merge *m = p;
+    stats_merge(m->stats_out, &m->stats[i]);
+    if (m->angle) angle_acc_merge(m->angle_out, &m->angle[i]);
+}
+
 bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_result *r, char *err, size_t errlen)
 {
     struct mlt_opts o = *o_in;
@@ -610,8 +625,18 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         angle_acc_init(r->angle, W, H);
     }
     double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
-    merge_thread_results(&(struct thread_results){.threads = T, .img = rj.img, .scale = scale, .stats = rj.stats, .angle = rj.angle},
-                         r->img, &r->stats, r->angle);
+    struct stats_merge sm = {rj.stats, rj.angle, &r->stats, r->angle};
+    struct thread_results tr = {.threads = T, .img = rj.img, .scale = scale, .add = add_thread_stats, .ctx = &sm};
+    /* every field the merges add travels; the statistics are flat structs of counts and sums */
+    tr.extra[tr.nextra++] = (struct dist_buf){&r->stats, sizeof r->stats};
+    if (r->angle) {
+        size_t cells = (size_t)W * H;
+        tr.extra[tr.nextra++] = (struct dist_buf){r->angle->sum, cells * sizeof *r->angle->sum};
+        tr.extra[tr.nextra++] = (struct dist_buf){r->angle->count, cells * sizeof *r->angle->count};
+        tr.extra[tr.nextra++] = (struct dist_buf){r->angle->len, sizeof r->angle->len};
+        tr.extra[tr.nextra++] = (struct dist_buf){&r->angle->skipped, sizeof r->angle->skipped};
+    }
+    merge_thread_results(&tr, r->img);
     for (int i = 0; i < T; i++) img_destroy(rj.img[i]);
     if (o.angle_stats) {
         for (int i = 0; i < T; i++) angle_acc_free(&rj.angle[i]);

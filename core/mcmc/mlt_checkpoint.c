@@ -1,5 +1,6 @@
 /* A worker thread's MLT state in and out of a checkpoint payload; see mlt_chain.h. */
 #include "mcmc/mlt_chain.h"
+#include "path/path_checkpoint.h"
 #include <string.h>
 
 static void put_chain(struct ckpt_buf *b, const struct scene *sc, const struct chain *c)

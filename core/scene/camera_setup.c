@@ -2,7 +2,7 @@
  * JsonPtr.cpp orthonormalises (forward, up) by Gram-Schmidt and Camera.cpp negates the x axis,
  * so image right = forward x up. With n = forward, t = up, s = n x t the frame is left-handed
  * (s x t = -n): looking down -z with up +y, image right is +x. */
-#include "camera/camera.h"
+#include "scene/scene.h"
 
 /* Tungsten's fallback when up is (nearly) parallel to the viewing direction. */
 static vec3 any_ortho(vec3 a)

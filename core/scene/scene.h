@@ -92,6 +92,12 @@ struct camera {
     enum recon_filter filter;
 };
 
+/* The camera's set-up (camera_setup.c), part of the model: the basis from position, look_at and
+ * up as Tungsten builds it, with the derived fields; camera_resize changes the resolution keeping
+ * position, basis and horizontal fov. Sampling and projection are camera/camera.h's. */
+void camera_setup(struct camera *c, vec3 pos, vec3 look_at, vec3 up, double fov_deg, int w, int h);
+void camera_resize(struct camera *c, int w, int h);
+
 struct emitter_table;          /* light selection, built by emitters_build() (emitter.h) */
 struct accel;                  /* Embree scene, built by accel_build() (accel.h) */
 
@@ -117,13 +123,11 @@ struct scene {
     struct accel *accel;
 };
 
-/* Loads a Tungsten JSON scene. On bad input returns NULL and writes one line into err:
- * "FILE: JSON.PATH: what was expected". Warnings for unsupported-but-valid features go to stderr.
- * The result has emitters and accel built (ready to render). */
-struct scene *scene_load(const char *path, char *err, size_t errlen);
-/* Same, without building emitters and accel (loader tests, tools). */
+/* Loads a Tungsten JSON scene's model: geometry, BSDF parameters, textures, camera, settings,
+ * without emitter table and accel (path/scene_ready.h builds those). On bad input returns NULL and
+ * writes one line into err: "FILE: JSON.PATH: what was expected". Warnings for
+ * unsupported-but-valid features go to stderr. */
 struct scene *scene_load_model(const char *path, char *err, size_t errlen);
-void scene_free(struct scene *s);
 /* Frees what scene_load_model allocated (not emitters/accel); NULL is a no-op. */
 void scene_model_free(struct scene *s);
 

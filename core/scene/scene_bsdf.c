@@ -43,28 +43,6 @@ static bool nonneg(struct jctx *c, const char *path, const char *key, vec3 v)
     return true;
 }
 
-bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out)
-{
-    const char *file = NULL;
-    char fpath[JPATH_MAX];
-    snprintf(fpath, sizeof fpath, "%s", path);
-    if (cJSON_IsString(v)) {
-        file = v->valuestring;
-    } else {
-        const char *type = NULL;
-        if (!jget_string(&L->c, v, path, "type", true, &type)) return false;
-        if (strcmp(type, "bitmap") != 0)
-            return jfail(&L->c, path, "texture type '%s' is not supported (expected a bitmap)", type);
-        if (!jget_string(&L->c, v, path, "file", true, &file)) return false;
-        jpath_key(fpath, path, "file");
-    }
-    char full[8192], err[1024];
-    if (!loader_resource(L, file, full, sizeof full)) return jfail(&L->c, fpath, "path too long");
-    *out = texture_load(full, err, sizeof err);
-    if (!*out) return jfail(&L->c, fpath, "cannot load texture: %s", err);
-    return true;
-}
-
 /* albedo: number, RGB array, image file name or bitmap object. */
 static bool parse_albedo(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
 {

@@ -7,7 +7,6 @@
  * A path of k segments has its emitter hit at bounce = k - 1, so max_bounces is the maximum number of
  * segments and min_bounces + 1 the minimum: max_length = max_bounces, min_length = min_bounces + 1. */
 #include "base/util.h"
-#include "camera/camera.h"
 #include "sampler/sampler.h"
 #include "scene/scene_load_internal.h"
 #include <errno.h>
@@ -17,12 +16,6 @@
 
 #define MAX_RESOLUTION 65536
 #define MAX_BOUNCES 65536
-
-bool loader_resource(const struct loader *L, const char *rel, char *out, size_t n)
-{
-    int k = rel[0] == '/' || !L->dir[0] ? snprintf(out, n, "%s", rel) : snprintf(out, n, "%s/%s", L->dir, rel);
-    return k >= 0 && (size_t)k < n;
-}
 
 static char *read_text(const char *path, char *err, size_t errlen)
 {

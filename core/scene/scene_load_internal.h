@@ -1,5 +1,6 @@
-/* Shared state of the scene loader files (scene_load.c, scene_bsdf.c, scene_prims.c,
- * json_transform.c). Not a public interface. */
+/* Shared state of the scene loader files. Not a public interface. Calls run one way:
+ * scene_load.c (the entry) -> scene_prims.c -> scene_bsdf.c -> load_resource.c (files the scene
+ * names), json_transform.c beside them. */
 #ifndef SCENE_LOAD_INTERNAL_H
 #define SCENE_LOAD_INTERNAL_H
 
@@ -15,14 +16,15 @@ struct loader {
     int default_bsdf;        /* lambert albedo 1 for primitives without "bsdf", or -1 */
 };
 
-/* Resolves a resource name relative to the scene file; false if the result does not fit. */
+/* load_resource.c: a resource name resolved relative to the scene file (false if the result does
+ * not fit), and a bitmap given as a file name or {"type": "bitmap", "file": ...} (v is the value
+ * at path). */
 bool loader_resource(const struct loader *L, const char *rel, char *out, size_t n);
+bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out);
 
 bool load_bsdfs(struct loader *L);
 /* Resolves prim.bsdf (name, inline object, or absent → Tungsten's default lambert). */
 bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out);
-/* A bitmap given as a file name or {"type": "bitmap", "file": ...}; v is the value at path. */
-bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out);
 
 bool load_primitives(struct loader *L, const cJSON *arr);
 

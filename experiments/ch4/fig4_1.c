@@ -13,6 +13,7 @@
 #include "ch4/noise_corr.h"
 #include "ch4/wall_noise.h"
 #include "common/cli.h"
+#include "path/scene_ready.h"
 #include "version.h"
 #include <math.h>
 #include <stdio.h>

@@ -12,6 +12,7 @@
 #include "ch4/ch4_common.h"
 #include "ch4/wall_noise.h"
 #include "common/cli.h"
+#include "path/scene_ready.h"
 #include "version.h"
 #include <math.h>
 #include <stdio.h>

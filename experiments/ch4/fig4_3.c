@@ -13,6 +13,7 @@
 #include "ch4/ch4_common.h"
 #include "common/cli.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "version.h"
 #include <math.h>
 #include <stdio.h>

@@ -7,6 +7,7 @@
 #include "base/util.h"
 #include "common/cli.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "version.h"
 #include <unistd.h>
 #include <stdio.h>

@@ -8,6 +8,7 @@
 #include "common/cli.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "version.h"
 #include <stdio.h>
 #include <stdlib.h>

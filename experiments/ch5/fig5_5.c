@@ -12,6 +12,7 @@
 #include "base/util.h"
 #include "ch5/edge_mask.h"
 #include "ch5/fig5_common.h"
+#include "path/scene_ready.h"
 #include "version.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -6,6 +6,7 @@
  * pixels and channels of (I - R)^2 / (R^2 + 0.01), averaged over seeds, stderr over seeds. */
 #include "ch5/fig5_common.h"
 #include "mc/render.h"
+#include "path/scene_ready.h"
 #include "version.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -4,6 +4,7 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "common/cli.h"
+#include "path/scene_ready.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -12,6 +12,7 @@
 #include "base/util.h"
 #include "common/cli.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "version.h"
 #include <stdio.h>
 #include <stdlib.h>

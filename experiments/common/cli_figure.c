@@ -1,6 +1,7 @@
 /* The options every acceptance figure tool shares (fig4_5, fig6_1): see cli.h. */
 #include "base/parallel.h"
 #include "common/cli.h"
+#include "path/scene_ready.h"
 #include "sampler/sampler.h"
 #include "scene/scene.h"
 #include <stdio.h>

@@ -8,6 +8,7 @@
 #include "common/cli.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "sampling/warp.h"
 #include "scene/accel.h"
 #include <stdio.h>

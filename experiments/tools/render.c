@@ -1,7 +1,6 @@
 /* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
  * MCMC methods, PREFIX.csv with acceptance statistics. Built with MPI=1 and started by mpirun, its
  * ranks share the render (core/dist.h) and rank 0 alone writes the outputs and the summary. */
-#include "mc/render.h"
 #include "base/dist.h"
 #include "base/parallel.h"
 #include "base/util.h"
@@ -9,8 +8,11 @@
 #include "common/cli.h"
 #include "emitter/emitter.h"
 #include "io/checkpoint.h"
+#include "mc/render.h"
 #include "mcmc/mlt.h"
+#include "path/scene_ready.h"
 #include "scene/accel.h"
+#include "scene/scene_hash.h"
 #include "version.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,5 +1,5 @@
-/* A render-ready scene: the loaded model plus its emitter table and ray-query structure. */
-#include "scene/scene.h"
+/* The render-ready scene (scene_ready.h). */
+#include "path/scene_ready.h"
 #include "base/util.h"
 #include "bsdf/bsdf.h"
 #include "emitter/emitter.h"

@@ -1,6 +1,7 @@
 /* The scene's identity for checkpoints: a hash of the loaded data (camera, BSDFs, their textures,
  * geometry and emission), field by field so that struct padding never enters it. A scene file
  * edited in a way that changes nothing loaded still resumes; a changed mesh or texture does not. */
+#include "scene/scene_hash.h"
 #include "io/checkpoint.h"
 
 #define H(x) (h = hash64(h, &(x), sizeof(x)))
