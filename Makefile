@@ -94,7 +94,10 @@ LIBCORE := $(BUILD)/libcore.a
 # A copy beside every directory of executables: core/io/oiio_load.c looks for it there.
 OIIO_MODULE := $(BIN)/oiio.so
 
-TEST_SRC := $(wildcard tests/*.c)
+# Tests mirror the folders they test (tests/mcmc/, tests/ch4/, ...); their shared helpers are in
+# tests/support/, included as "support/agree.h"; tests/mpi/ is the MPI runner's own.
+TEST_SRC := $(wildcard tests/*/*.c)
+TEST_SRC := $(filter-out tests/mpi/%,$(TEST_SRC))
 TEST_OBJ := $(patsubst %,$(BUILD)/%.o,$(TEST_SRC))
 TEST_BIN := $(BUILD)/tests/run-tests
 TEST_OIIO_MODULE := $(BUILD)/tests/oiio.so
@@ -190,7 +193,7 @@ $(EXP_COMMON_LIB): $(patsubst %,$(BUILD)/%.o,$(EXP_COMMON_SRC))
 
 # End-to-end tests run the tools of the same build. Test objects are not link-time optimised: LTO
 # drops the registration records of Criterion's parameterised tests, and tests gain nothing from it.
-$(BUILD)/tests/%.c.o: CPPFLAGS += -DBIN_DIR='"$(BIN)"'
+$(BUILD)/tests/%.c.o: CPPFLAGS += -Itests -DBIN_DIR='"$(BIN)"'
 $(BUILD)/tests/%.c.o: CFLAGS += -fno-lto
 $(TEST_BIN): | tools
 # TEST_LIBS: the experiments' libraries some tests exercise (added by their .mk files).
@@ -242,47 +245,35 @@ test-san: deps
 # ---- figures: each writes results/<target>/, its check-<target> compares with results/baselines/ ----
 CHECK_STATS := $(BIN)/check_stats
 
-# Thesis Figure 4.5: acceptance of MMLT large steps vs MCTLS per path length (scenes/ajar).
-.PHONY: fig4.5 check-fig4.5
-fig4.5: deps $(BIN)/fig4_5
-	$(BIN)/fig4_5 --out results/fig4.5
-	gnuplot -e "csv='results/fig4.5/fig4.5.csv'; out='results/fig4.5/fig4.5'" scripts/fig4.5.gp
-	bash scripts/fig4.5-table.sh results/fig4.5/fig4.5.csv > results/fig4.5/fig4.5.md
-	@cat results/fig4.5/fig4.5.md
+# $(call TO_FILE,FILE,COMMAND): COMMAND's standard output into FILE through a temporary beside it,
+# so that FILE is either the old or the complete new one.
+TO_FILE = $(2) > $(1).tmp && mv -f $(1).tmp $(1)
+# $(call GNUPLOT,SCRIPT,CSV,OUT): OUT.png and OUT.pdf from a gnuplot script, through temporaries.
+GNUPLOT = gnuplot -e "csv='$(2)'; out='$(3).tmp'" $(1) && mv -f $(3).tmp.png $(3).png && mv -f $(3).tmp.pdf $(3).pdf
 
-# Reruns the quick experiment with its own seed and compares every (method, length) acceptance
-# with the baseline: z-test with batch-means errors, Sidak-corrected alpha = 0.01.
-check-fig4.5: deps $(BIN)/fig4_5 $(CHECK_STATS)
-	$(BIN)/fig4_5 --scale quick --seed 2 --out results/check-fig4.5
-	$(CHECK_STATS) --key method,length --mean mean_accept --se stderr --alpha 0.01 \
-	  --out results/check-fig4.5/check.md results/baselines/fig4.5/fig4.5.csv results/check-fig4.5/fig4.5.csv
-CHECK_TARGETS += check-fig4.5
+# $(call FIGURE,TARGET,TOOL): `make TARGET` runs bin/TOOL into results/TARGET/ (the tools write
+# every file atomically), then the lines of TARGET_POST (plots, montages), then the Markdown
+# table that the command TARGET_TABLE prints, into results/TARGET/TARGET.md.
+define FIGURE
+.PHONY: $(1)
+$(1): deps $$(BIN)/$(2)
+	$$(BIN)/$(2) --out results/$(1)
+	$$($(1)_POST)
+	$$(call TO_FILE,results/$(1)/$(1).md,$$($(1)_TABLE))
+	@cat results/$(1)/$(1).md
+endef
 
-# Thesis Figure 6.1: small-step acceptance per path length, MMLT vs PITP, split by technique change.
-.PHONY: fig6.1 check-fig6.1
-fig6.1: deps $(BIN)/fig6_1
-	$(BIN)/fig6_1 --out results/fig6.1
-	gnuplot -e "csv='results/fig6.1/fig6.1.csv'; out='results/fig6.1/fig6.1'" scripts/fig6.1.gp
-	bash scripts/fig6.1-table.sh results/fig6.1/fig6.1.csv > results/fig6.1/fig6.1.md
-	@cat results/fig6.1/fig6.1.md
-
-# Reruns the quick experiment with its own seed and compares every (method, length, technique
-# changed) acceptance with the baseline: Welch t over the 4 runs of each, Sidak-corrected alpha = 0.01.
-check-fig6.1: deps $(BIN)/fig6_1 $(CHECK_STATS)
-	$(BIN)/fig6_1 --scale quick --seed 2 --out results/check-fig6.1
-	$(CHECK_STATS) --key method,length,technique_changed --mean mean_accept --se run_se --count runs --alpha 0.01 \
-	  --out results/check-fig6.1/check.md results/baselines/fig6.1/fig6.1.csv results/check-fig6.1/fig6.1.csv
-CHECK_TARGETS += check-fig6.1
-
-# Thesis Figure 4.6: equal-time renders, MMLT large steps vs MCTLS vs the hybrid, relMSE vs BDPT.
-.PHONY: fig4.6
-fig4.6: deps $(BIN)/fig4_6
-	$(BIN)/fig4_6 --out results/fig4.6
-	oiiotool results/fig4.6/reference.png results/fig4.6/mmlt-large.png results/fig4.6/mctls.png \
-	  results/fig4.6/hybrid.png --mosaic:pad=4 2x2 -o results/fig4.6/fig4.6.png
-	bash scripts/fig4.6-table.sh results/fig4.6/fig4.6.csv > results/fig4.6/fig4.6.md
-	@echo "results/fig4.6/fig4.6.png: top reference (BDPT), MMLT large steps; bottom MCTLS, hybrid"
-	@cat results/fig4.6/fig4.6.md
+# $(call CHECK,TARGET,TOOL,SEED): `make check-TARGET` reruns the quick experiment with its own seed
+# and tests every statistic of its CSV results/check-TARGET/TARGET.csv against the baseline
+# results/baselines/TARGET/TARGET.csv with bin/check_stats and the options CHECK_TARGET (key,
+# mean, standard error, count and alpha: check_stats --help); the verdicts go to check.md.
+define CHECK
+.PHONY: check-$(1)
+check-$(1): deps $$(BIN)/$(2) $$(CHECK_STATS)
+	$$(BIN)/$(2) --scale quick --seed $(3) --out results/check-$(1)
+	$$(CHECK_STATS) $$(CHECK_$(1)) --out results/check-$(1)/check.md results/baselines/$(1)/$(1).csv results/check-$(1)/$(1).csv
+CHECK_TARGETS += check-$(1)
+endef
 
 # Experiments in subfolders add their figure, check and bench rules here.
 -include experiments/*/*.mk

@@ -3,8 +3,17 @@
 # bin/render accepts (pitp once merged) needs no change here.
 $(eval $(call TOOLS,ch6,ch6_assets ch6_equal ch6_tech fig6_1))
 
-# tests/test_ch6_stats.c links the analysis code.
+# tests/ch6/test_ch6_stats.c links the analysis code.
 TEST_LIBS += $(ch6_LIB)
+
+# Thesis Figure 6.1: small-step acceptance per path length, MMLT vs PITP, split by technique change.
+fig6.1_POST = $(call GNUPLOT,scripts/fig6.1.gp,results/fig6.1/fig6.1.csv,results/fig6.1/fig6.1)
+fig6.1_TABLE := bash scripts/fig6.1-table.sh results/fig6.1/fig6.1.csv
+$(eval $(call FIGURE,fig6.1,fig6_1))
+# Its own seed; every (method, length, technique changed) acceptance: Welch t over the 4 runs of
+# each, Sidak alpha = 0.01.
+CHECK_fig6.1 := --key method,length,technique_changed --mean mean_accept --se run_se --count runs --alpha 0.01
+$(eval $(call CHECK,fig6.1,fig6_1,2))
 
 # The generated assets are committed (small; the skies stored as half-float EXR by oiiotool);
 # `make ch6-assets` regenerates them.

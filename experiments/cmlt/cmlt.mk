@@ -5,8 +5,8 @@ CMLT_COMMIT := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 
 $(eval $(call TOOLS,cmlt,table1_cmlt))
 
-# tests/test_cmlt*.c link the toy's library.
-$(BUILD)/tests/test_cmlt_check.c.o: CPPFLAGS += -DCHECK_STATS_BIN='"$(BIN)/check_stats"' -DCMLT_BASELINE='"$(CMLT_BASE)/stats-quick.csv"'
+# tests/cmlt/test_cmlt*.c link the toy's library.
+$(BUILD)/tests/cmlt/test_cmlt_check.c.o: CPPFLAGS += -DCHECK_STATS_BIN='"$(BIN)/check_stats"' -DCMLT_BASELINE='"$(CMLT_BASE)/stats-quick.csv"'
 TEST_LIBS += $(cmlt_LIB)
 $(TEST_BIN): $(BIN)/check_stats
 

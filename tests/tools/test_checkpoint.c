@@ -1,0 +1,289 @@
+/* Checkpoint and resume (core/checkpoint.h, bin/render --checkpoint/--resume): a run killed with
+ * SIGKILL at random moments and resumed from its last checkpoint, or stopped with Ctrl-C and
+ * resumed, ends with the same image bits and statistics as a run never stopped; a checkpoint from
+ * another build, scene or options is refused, and a truncated or corrupted one is detected. */
+#include <criterion/criterion.h>
+
+#include "base/rng.h"
+#include "io/checkpoint.h"
+#include "io/image.h"
+#include "support/tmpdir.h"
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#ifndef BIN_DIR
+#define BIN_DIR "bin"
+#endif
+
+static char dir[64];
+
+static void make_dir(void) { tmpdir_make(dir, sizeof dir, "ckpt-test"); }
+static void remove_dir(void) { tmpdir_remove(dir); }
+TestSuite(checkpoint, .init = make_dir, .fini = remove_dir);
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+/* Starts bin/render with the words of `args` (space-separated) and `extra`, stdout and stderr to
+ * DIR/stdout and DIR/stderr. */
+static pid_t start(const char *args, const char *extra)
+{
+    char line[2048];
+    snprintf(line, sizeof line, "%s %s --quiet", args, extra);
+    char *argv[64];
+    int argc = 0;
+    argv[argc++] = BIN_DIR "/render";
+    for (char *t = strtok(line, " "); t && argc < 63; t = strtok(NULL, " ")) argv[argc++] = t;
+    argv[argc] = NULL;
+    pid_t pid = fork();
+    cr_assert(pid >= 0);
+    if (pid == 0) {
+        char p[128];
+        snprintf(p, sizeof p, "%s/stdout", dir);
+        if (!freopen(p, "w", stdout)) _exit(99);
+        snprintf(p, sizeof p, "%s/stderr", dir);
+        if (!freopen(p, "w", stderr)) _exit(99);
+        execv(argv[0], argv);
+        _exit(98);
+    }
+    return pid;
+}
+
+static int finish(pid_t pid)
+{
+    int st;
+    cr_assert_eq(waitpid(pid, &st, 0), pid);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+}
+
+static void path_of(char *p, size_t n, const char *name) { snprintf(p, n, "%s/%s", dir, name); }
+
+static bool exists(const char *name)
+{
+    char p[256];
+    path_of(p, sizeof p, name);
+    return access(p, F_OK) == 0;
+}
+
+static void read_text(const char *name, char *buf, size_t n)
+{
+    char p[256];
+    path_of(p, sizeof p, name);
+    FILE *f = fopen(p, "r");
+    size_t got = f ? fread(buf, 1, n - 1, f) : 0;
+    buf[got] = 0;
+    if (f) fclose(f);
+}
+
+/* The EXR's pixels bit for bit (the file's header holds a date). */
+static void assert_same_pixels(const char *a, const char *b)
+{
+    char pa[256], pb[256], err[512];
+    path_of(pa, sizeof pa, a);
+    path_of(pb, sizeof pb, b);
+    struct image *x = img_read(pa, err, sizeof err), *y = img_read(pb, err, sizeof err);
+    cr_assert(x && y, "%s", err);
+    cr_assert(x->w == y->w && x->h == y->h);
+    cr_assert(!memcmp(x->px, y->px, 3 * sizeof(double) * (size_t)x->w * x->h), "%s and %s differ", a, b);
+    img_destroy(x);
+    img_destroy(y);
+}
+
+/* The CSV's statistics rows and counters; timings differ from run to run and are left out. */
+static void assert_same_stats(const char *a, const char *b)
+{
+    static char x[1 << 16], y[1 << 16];
+    read_text(a, x, sizeof x);
+    read_text(b, y, sizeof y);
+    cr_assert(x[0]);
+    char *sx, *sy;
+    char *lx = strtok_r(x, "\n", &sx), *ly = strtok_r(y, "\n", &sy);
+    for (; lx && ly; lx = strtok_r(NULL, "\n", &sx), ly = strtok_r(NULL, "\n", &sy))
+        if (!strstr(lx, "seconds") && !strstr(lx, "per_second")) cr_assert_str_eq(lx, ly);
+    cr_assert(!lx && !ly, "%s and %s have different lengths", a, b);
+}
+
+/* One uninterrupted run, then the same run killed (SIGKILL) `kills` times at random moments, each
+ * time resumed from its latest checkpoint (or restarted when none was written yet), and at last
+ * completed. Checkpoints every 50 ms; the kill moments are drawn from a fixed-seed generator over
+ * the uninterrupted run's duration. Returns how many resumes started from a checkpoint. */
+static int kill_and_resume(const char *args, bool mcmc, int kills, uint64_t seed)
+{
+    char ref[2048], run[2048], resume[2048], old[256];
+    path_of(old, sizeof old, "run.ckpt");
+    unlink(old); /* the previous method's */
+    snprintf(ref, sizeof ref, "%s --out %s/ref", args, dir);
+    double t0 = now();
+    cr_assert_eq(finish(start(ref, "")), 0);
+    double span = now() - t0;
+    snprintf(run, sizeof run, "%s --out %s/run --checkpoint 0.05", args, dir);
+    snprintf(resume, sizeof resume, "--resume %s/run.ckpt", dir);
+    rng r;
+    rng_seed(&r, seed, 7);
+    int resumed = 0;
+    for (int i = 0; i <= kills; i++) {
+        bool from_ckpt = exists("run.ckpt");
+        resumed += from_ckpt;
+        pid_t pid = start(run, from_ckpt ? resume : "");
+        if (i == kills) {
+            char err[1024];
+            int st = finish(pid);
+            read_text("stderr", err, sizeof err);
+            cr_assert_eq(st, 0, "%s", err);
+            break;
+        }
+        double wait = (0.2 + 0.6 * rng_uniform(&r)) * span;
+        usleep((useconds_t)(1e6 * wait));
+        kill(pid, SIGKILL);
+        finish(pid);
+    }
+    assert_same_pixels("ref.exr", "run.exr");
+    if (mcmc) assert_same_stats("ref.csv", "run.csv");
+    return resumed;
+}
+
+#define COMMON "scenes/cornell-box/scene.json --resolution 48x36 --threads 2 --seed 4"
+
+/* Each method with a budget that takes the uninterrupted run about a second (more under the
+ * sanitizers, and the kill moments scale with it); three kills each. Timing decides where the
+ * kills land, so the test asserts that at least one resume per method started from a checkpoint. */
+Test(checkpoint, sigkill_and_resume_is_bit_identical_pt_bdpt, .timeout = 600)
+{
+    cr_assert_gt(kill_and_resume(COMMON " --method pt --spp 400", false, 3, 1), 0);
+    cr_assert_gt(kill_and_resume(COMMON " --method bdpt --spp 120", false, 3, 2), 0);
+}
+
+Test(checkpoint, sigkill_and_resume_is_bit_identical_mcmc, .timeout = 600)
+{
+    const char *mc = COMMON " --seed-paths 20000 --spp 300 --method ";
+    char a[512];
+    const char *m[] = {"pssmlt --spp 100", "mmlt --technique-images 3", "pitp --small-step controlled --angle-stats",
+                       "mmlt --large-step hybrid --hybrid-length 3", "pitp"};
+    for (int i = 0; i < 5; i++) {
+        snprintf(a, sizeof a, "%s%s", mc, m[i]);
+        cr_assert_gt(kill_and_resume(a, true, 3, 10 + (uint64_t)i), 0, "%s", m[i]);
+        if (i == 1) {
+            assert_same_pixels("ref.tech-t2.exr", "run.tech-t2.exr");
+            assert_same_pixels("ref.count-t3.exr", "run.count-t3.exr");
+            assert_same_stats("ref.tech.csv", "run.tech.csv");
+        }
+        if (i == 2) assert_same_pixels("ref.angle.exr", "run.angle.exr");
+    }
+}
+
+/* Ctrl-C keeps its behaviour (the partial image, exit status 130) and leaves a checkpoint that
+ * resumes to the uninterrupted result. The signal comes at 60 % of the uninterrupted run's time
+ * (earlier if the run was already over). */
+Test(checkpoint, ctrl_c_leaves_a_resumable_checkpoint, .timeout = 300)
+{
+    const char *args = COMMON " --method mmlt --seed-paths 20000 --spp 600";
+    char ref[1024], run[1024], resume[512], err[1024];
+    snprintf(ref, sizeof ref, "%s --out %s/ref", args, dir);
+    double t0 = now();
+    cr_assert_eq(finish(start(ref, "")), 0);
+    double span = now() - t0;
+    snprintf(run, sizeof run, "%s --out %s/run", args, dir);
+    /* a loaded machine can make the first run slower than this one: then the signal comes too
+     * late, and it is sent earlier */
+    int st = 0;
+    for (double at = 0.6; st == 0 && at > 0.01; at /= 2) {
+        pid_t pid = start(run, "");
+        usleep((useconds_t)(1e6 * at * span));
+        kill(pid, SIGINT);
+        st = finish(pid);
+    }
+    read_text("stderr", err, sizeof err);
+    cr_assert_eq(st, 130, "exit %d: %s", st, err);
+    cr_assert(exists("run.exr") && exists("run.ckpt"));
+    cr_assert(strstr(err, "--resume"), "%s", err);
+    snprintf(resume, sizeof resume, "--resume %s/run.ckpt", dir);
+    cr_assert_eq(finish(start(run, resume)), 0);
+    assert_same_pixels("ref.exr", "run.exr");
+    assert_same_stats("ref.csv", "run.csv");
+}
+
+static int lines(const char *s)
+{
+    int n = 0;
+    for (; *s; s++) n += *s == '\n';
+    return n;
+}
+
+/* Resuming refuses, with one line and exit status 2: other options, another scene, a corrupted or
+ * truncated file. */
+Test(checkpoint, refuses_other_options_scene_and_damaged_files, .timeout = 300)
+{
+    char cmd[1024], resume[512], err[1024], path[256];
+    snprintf(cmd, sizeof cmd, "%s --out %s/run --spp 100000", COMMON " --method pt", dir);
+    pid_t pid = start(cmd, "");
+    usleep(500000);
+    kill(pid, SIGINT);
+    cr_assert_eq(finish(pid), 130);
+    cr_assert(exists("run.ckpt"));
+    snprintf(resume, sizeof resume, "--resume %s/run.ckpt", dir);
+    const struct {
+        const char *args, *says;
+    } cases[] = {
+        {COMMON " --method pt --spp 99999", "other options"},
+        {COMMON " --method bdpt --spp 100000", "other options"},
+        {"scenes/furnace/scene.json --resolution 48x36 --threads 2 --seed 4 --method pt --spp 100000", "another scene"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        snprintf(cmd, sizeof cmd, "%s --out %s/other", cases[i].args, dir);
+        cr_assert_eq(finish(start(cmd, resume)), 2, "%s", cases[i].args);
+        read_text("stderr", err, sizeof err);
+        cr_assert(strstr(err, cases[i].says) && lines(err) == 1, "%s: %s", cases[i].args, err);
+        cr_assert(!exists("other.exr"));
+    }
+    /* one byte flipped in the middle, then the file cut short */
+    path_of(path, sizeof path, "run.ckpt");
+    struct stat sb;
+    cr_assert_eq(stat(path, &sb), 0);
+    FILE *f = fopen(path, "r+b");
+    cr_assert(f);
+    fseek(f, sb.st_size / 2, SEEK_SET);
+    int c = fgetc(f);
+    fseek(f, sb.st_size / 2, SEEK_SET);
+    fputc(c ^ 0x10, f);
+    fclose(f);
+    snprintf(cmd, sizeof cmd, "%s --out %s/other --spp 100000", COMMON " --method pt", dir);
+    for (int pass = 0; pass < 2; pass++) {
+        cr_assert_eq(finish(start(cmd, resume)), 2);
+        read_text("stderr", err, sizeof err);
+        cr_assert(strstr(err, "truncated or corrupted") && lines(err) == 1, "%s", err);
+        cr_assert(!exists("other.exr"));
+        cr_assert_eq(truncate(path, sb.st_size - 1000), 0);
+    }
+}
+
+/* The file format in-process: a round trip, and a checkpoint of another build refused by name. */
+Test(checkpoint, file_round_trip_and_build_check)
+{
+    struct ckpt_buf p = {0}, q;
+    for (int i = 0; i < 1000; i++) CKPT_PUT(&p, i);
+    char path[256], err[512];
+    path_of(path, sizeof path, "x.ckpt");
+    struct ckpt_id id = {42, 7, "method=pt spp=1"}, other = id;
+    cr_assert(ckpt_write_file(path, &id, &p, err, sizeof err), "%s", err);
+    cr_assert(ckpt_read_file(path, &id, &q, err, sizeof err), "%s", err);
+    cr_assert(q.len == p.len && !memcmp(q.p, p.p, p.len));
+    int v;
+    for (int i = 0; i < 1000; i++) cr_assert(CKPT_GET(&q, v) && v == i);
+    cr_assert(!CKPT_GET(&q, v) && q.short_read, "a read past the end is reported");
+    ckpt_buf_free(&q);
+    other.build = 43;
+    cr_assert(!ckpt_read_file(path, &other, &q, err, sizeof err));
+    cr_assert(strstr(err, "another build"), "%s", err);
+    cr_assert_eq(q.len, 0u);
+    ckpt_buf_free(&p);
+}
