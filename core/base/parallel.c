@@ -1,3 +1,4 @@
+/* Worker threads, the interrupt flag, pass barriers and the progress bar (parallel.h). */
 #include "base/parallel.h"
 #include "base/util.h"
 #include <pthread.h>

@@ -1,3 +1,4 @@
+/* PCG32 seeding and stepping (rng.h). */
 #include "base/rng.h"
 
 void rng_seed(rng *r, uint64_t seed, uint64_t stream)

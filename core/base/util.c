@@ -1,3 +1,4 @@
+/* Allocation that cannot fail silently, assertions and atomic file writes (util.h). */
 #include "base/util.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,3 +1,5 @@
+/* The Monte Carlo render driver for PT and BDPT (render.h): rows dealt to threads, spp or time
+ * budgets in whole passes, checkpoints, the merge over threads and ranks. */
 #include "mc/render.h"
 #include "base/dist.h"
 #include "base/parallel.h"
