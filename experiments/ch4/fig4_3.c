@@ -11,26 +11,14 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "mcmc/mlt.h"
-#include "version.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-
-static const char *usage =
-    "usage: fig4_3 [options]\n"
-    "  --scene FILE         (default scenes/window/scene.json)\n"
-    "  --scale quick|paper  sizes (default: $SCALE, else quick)\n"
-    "  --resolution WxH     (default: the scene's at quick, 256x144 at paper)\n"
-    "  --spp N              samples (mutations) per pixel of every method (default 64)\n"
-    "  --seeds N            runs per method, seeds S..S+N-1 (quick 6, paper 16)\n"
-    "  --p-large P          PSSMLT large-step probability (default 0.1)\n"
-    "  --reference FILE     cached BDPT reference EXR (default results/reference/window-bdpt-WxH-SPP.exr)\n"
-    "  --reference-spp N    BDPT samples per pixel of the reference (quick 1024, paper 16384)\n"
-    "  --seed S  --threads T  --out DIR (default results/fig4.3)\n";
 
 #define NMETH 3
 
@@ -49,42 +37,33 @@ static bool write_stats(const struct mlt_stats *st, const char *method, const ch
 
 int main(int argc, char **argv)
 {
-    const char *prog = "fig4_3";
-    struct ch4_args a;
-    ch4_args_init(&a, "scenes/window/scene.json", "results/fig4.3");
-    const char *refpath = NULL;
-    int W = -1, H = -1, spp = 64;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (ch4_option(prog, argc, argv, &i, &a))
-            continue;
-        else if (!strcmp(o, "--resolution"))
-            ch4_resolution(prog, cli_value(prog, argc, argv, &i), 1, &W, &H);
-        else if (!strcmp(o, "--spp"))
-            spp = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1 << 20);
-        else if (!strcmp(o, "--reference"))
-            refpath = cli_value(prog, argc, argv, &i);
-        else
-            cli_fail(prog, "unknown option '%s' (see --help)", o);
-    }
-    bool paper = ch4_paper(prog, &a);
-    const char *scene = a.scene, *scale = a.scale, *out = a.out;
-    int seeds = a.seeds, refspp = a.refspp, threads = a.threads;
-    double p_large = a.p_large;
-    uint64_t seed = a.seed;
-    if (seeds < 0) seeds = paper ? 16 : 6;
-    if (refspp < 0) refspp = paper ? 16384 : 1024;
-    cli_require_image_output(prog);
+    const char *prog = "fig4_3", *refpath = NULL;
+    struct opts_figure fo;
+    int res[2] = {-1, -1}, spp, seeds, refspp;
+    double p_large;
+    const struct opt opts[] = {
+        OPTS_FIGURE(fo, "scenes/window/scene.json", "results/fig4.3"),
+        OPT_RESOLUTION(res, .lo = 1, .hi = 1 << 14, .help = "image size (default: the scene's at quick)", .paper = "256x144"),
+        {"--spp", OPT_INT, OPT_DST(spp), .arg = "N", .lo = 1, .hi = 1 << 20,
+         .help = "samples (mutations) per pixel of every method", .def = "64"},
+        OPT_SEEDS(seeds, .help = "runs per method, seeds S..S+N-1", .def = "6", .paper = "16"),
+        OPT_P_LARGE(p_large),
+        OPT_REFERENCE(refpath, .help = "cached BDPT reference EXR (default results/reference/window-bdpt-WxH-SPP.exr)"),
+        OPT_REFERENCE_SPP(refspp, .help = "BDPT samples per pixel of the reference", .def = "1024", .paper = "16384"),
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_3 [options]\n", .opts = opts, .paper = &fo.paper},
+               argc, argv);
+    const char *scene = fo.scene, *out = fo.out;
+    int W = res[0], H = res[1], threads = fo.threads;
+    bool paper = fo.paper;
+    uint64_t seed = fo.seed;
+    opts_require_image_output(prog);
     char err[1024];
     struct scene *sc = scene_load(scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
-    if (W < 0 && paper) W = 256, H = 144;
     if (W > 0) camera_resize(&sc->cam, W, H);
     W = sc->cam.width, H = sc->cam.height;
     char defref[256];
@@ -157,15 +136,15 @@ int main(int argc, char **argv)
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
     FILE *all[2] = {fr, fs};
     for (int i = 0; i < 2; i++) {
-        fprintf(
-            all[i],
-            "# fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel\n");
-        fprintf(all[i], "# scene %s\n# commit %s\n# scale %s\n# resolution %dx%d\n# spp %d\n# p_large %g\n", scene,
-                GIT_COMMIT, scale, W, H, spp, p_large);
-        fprintf(all[i], "# seeds %llu..%llu\n# threads %d\n# reference %s (BDPT %d spp)\n", (unsigned long long)seed,
-                (unsigned long long)(seed + seeds - 1), threads, refpath, refspp);
-        fprintf(all[i], "# relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
-                        "min(1, a) of small steps\n");
+        csv_meta_head(all[i], "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
+                      scene, fo.scale);
+        csv_meta(all[i], "resolution", "%dx%d", W, H);
+        csv_meta(all[i], "spp", "%d", spp);
+        csv_meta(all[i], "p_large", "%g", p_large);
+        ch4_meta_runs(all[i], seed, seeds, threads);
+        csv_meta(all[i], "reference", "%s (BDPT %d spp)", refpath, refspp);
+        csv_meta(all[i], NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
+                               "min(1, a) of small steps");
     }
     fprintf(fr, "method,seed,relmse,small_accept,seconds\n");
     fprintf(fs, "method,quantity,seeds,mean,se\n");

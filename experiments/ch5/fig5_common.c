@@ -3,7 +3,9 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,44 +14,40 @@
 
 const char *const fig5_kind_name[3] = {"mmlt", "controlled", "root"};
 
-void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *usage, long mpp_quick, long mpp_paper,
-                int seeds_quick, int seeds_paper)
+void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *about)
 {
-    const char *prog = c->prog;
-    c->scene = "scenes/jewelry/scene.json";
-    c->scale = getenv("SCALE") && *getenv("SCALE") ? getenv("SCALE") : "quick";
-    c->threads = cpu_count();
-    c->seed = 1;
-    c->mpp = c->seeds = c->width = -1;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            exit(0);
-        } else if (!strcmp(o, "--scene")) c->scene = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--scale")) c->scale = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--mpp")) c->mpp = cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1L << 30);
-        else if (!strcmp(o, "--seeds")) c->seeds = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 1000);
-        else if (!strcmp(o, "--seed")) c->seed = cli_u64(prog, o, cli_value(prog, argc, argv, &i));
-        else if (!strcmp(o, "--threads")) c->threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1024);
-        else if (!strcmp(o, "--out")) c->out = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--resolution")) {
-            const char *v = cli_value(prog, argc, argv, &i);
-            if (sscanf(v, "%dx%d", &c->width, &c->height) != 2 || c->width < 8 || c->height < 8)
-                cli_fail(prog, "--resolution: expected WxH, got '%s'", v);
-        } else cli_fail(prog, "unknown option '%s' (see --help)", o);
-    }
-    bool paper = !strcmp(c->scale, "paper");
-    if (!paper && strcmp(c->scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", c->scale);
-    if (c->mpp < 0) c->mpp = paper ? mpp_paper : mpp_quick;
-    if (c->seeds < 0) c->seeds = paper ? seeds_paper : seeds_quick;
-    if (c->width < 0) {
-        c->width = paper ? 320 : 160;
-        c->height = paper ? 240 : 120;
-    }
-    c->seed_paths = paper ? 1000000 : 100000;
+    struct opts_figure fo;
+    int res[2];
+    const struct opt opts[] = {
+        OPTS_FIGURE(fo, "scenes/jewelry/scene.json", c->out),
+        OPT_RESOLUTION(res, .lo = 8, .hi = INT_MAX, .expect = "WxH", .help = "image size", .def = "160x120", .paper = "320x240"),
+        {"--mpp", OPT_INT, OPT_DST(c->mpp), .arg = "N", .lo = 1, .hi = 1L << 30, .help = "mutations per pixel", .def = "64",
+         .paper = "1024"},
+        OPT_SEEDS(c->seeds, .help = "independent runs of each small-step kind, seeds S..S+N-1", .def = "4", .paper = "8"),
+        {0}};
+    char usage[64];
+    snprintf(usage, sizeof usage, "usage: %s [options]\n", c->prog);
+    opts_parse(&(struct opts_spec){.prog = c->prog, .usage = usage, .about = about, .opts = opts, .paper = &fo.paper}, argc,
+               argv);
+    c->scene = fo.scene, c->scale = fo.scale, c->out = fo.out;
+    c->seed = fo.seed, c->threads = fo.threads;
+    c->width = res[0], c->height = res[1];
+    c->seed_paths = fo.paper ? 1000000 : 100000;
     c->max_length = 8;
     mkdir(c->out, 0777);
+}
+
+void fig5_meta_head(FILE *f, const struct fig5_cfg *c, const char *title)
+{
+    csv_meta_head(f, title, c->scene, c->scale);
+    csv_meta(f, "resolution", "%dx%d", c->width, c->height);
+    csv_meta(f, "mutations_per_pixel", "%ld", c->mpp);
+}
+
+void fig5_meta_runs(FILE *f, const struct fig5_cfg *c)
+{
+    csv_meta(f, "seeds", "%d from %llu", c->seeds, (unsigned long long)c->seed);
+    csv_meta(f, "threads", "%d", c->threads);
 }
 
 struct scene *fig5_scene(const struct fig5_cfg *c)
