@@ -35,32 +35,28 @@ int main(int argc, char **argv)
         OPT_P_LARGE(p_large),
         {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 4096, .help = "autocorrelation lags 0..L pixels",
          .def = "40"},
-        OPT_REFERENCE(refpath, .help = "cached PT reference EXR (default results/reference/wall-pt-WxH-SPP.exr)"),
-        OPT_REFERENCE_SPP(refspp, .help = "PT samples per pixel of the reference", .def = "64", .paper = "1024"),
+        OPTS_REFERENCE(refpath, refspp, "PT", "results/reference/wall-pt-WxH-SPP.exr", "64", "1024"),
         {0}};
     opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_1 [options]\n", .opts = opts, .paper = &fo.paper},
                argc, argv);
-    const char *scene = fo.scene, *out = fo.out;
-    int W = res[0], H = res[1], threads = fo.threads;
-    bool paper = fo.paper;
-    uint64_t seed = fo.seed;
+    int W = res[0], H = res[1];
     if (maxlag >= W || maxlag >= H) opts_fail(prog, "--max-lag %d: must be below the image's width and height", maxlag);
     opts_require_image_output(prog);
     char err[1024], defref[256];
     snprintf(defref, sizeof defref, "results/reference/wall-pt-%dx%d-%d.exr", W, H, refspp);
     if (!refpath) refpath = defref;
-    struct scene *sc = scene_load(scene, err, sizeof err);
+    struct scene *sc = scene_load(fo.scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
     camera_resize(&sc->cam, W, H);
-    if (!ch4_mkdir(out, err, sizeof err)) {
+    if (!ch4_mkdir(fo.out, err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
-    struct image *ref = ch4_reference(sc, METHOD_PT, refspp, refpath, threads, prog, err, sizeof err);
-    if (!ref || !ch4_write_pair(ref, out, "reference", err, sizeof err)) {
+    struct image *ref = ch4_reference(sc, METHOD_PT, refspp, refpath, fo.threads, prog, err, sizeof err);
+    if (!ref || !ch4_write_pair(ref, fo.out, "reference", err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
@@ -68,7 +64,7 @@ int main(int argc, char **argv)
 
     const char *names[NVAR] = {"iso", "rap"};
     struct wall_cfg cfg = {
-        .p_large = p_large, .mpp = mpp, .seed_paths = paper ? 1000000 : 100000, .threads = threads, .maxlag = maxlag};
+        .p_large = p_large, .mpp = mpp, .seed_paths = fo.paper ? 1000000 : 100000, .threads = fo.threads, .maxlag = maxlag};
     int L = maxlag + 1;
     /* per run: the quantities of the summary, then the error variance */
     enum { Q_LX, Q_LY, Q_RATIO, Q_RHO1X, Q_RHO1Y, Q_RELMSE, Q_ACCEPT, NQ };
@@ -82,10 +78,10 @@ int main(int argc, char **argv)
     for (int v = 0; v < NVAR; v++) {
         cfg.rap = v == 1;
         for (int s = 0; s < seeds; s++) {
-            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[v], (unsigned long long)(seed + s), s + 1,
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[v], (unsigned long long)(fo.seed + s), s + 1,
                     seeds);
             struct wall_meas m;
-            struct image *img = wall_run(sc, &cfg, seed + s, ref, &m, err, sizeof err);
+            struct image *img = wall_run(sc, &cfg, fo.seed + s, ref, &m, err, sizeof err);
             if (!img) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
@@ -98,8 +94,8 @@ int main(int argc, char **argv)
             memcpy(ry + (size_t)k * L, m.rho_y, L * sizeof(double));
             if (s == 0) {
                 char path[4096];
-                snprintf(path, sizeof path, "%s/error-%s.png", out, names[v]);
-                if (!ch4_write_pair(img, out, names[v], err, sizeof err) ||
+                snprintf(path, sizeof path, "%s/error-%s.png", fo.out, names[v]);
+                if (!ch4_write_pair(img, fo.out, names[v], err, sizeof err) ||
                     !ch4_write_error_png(m.err, W, H, &range, path, err, sizeof err)) {
                     fprintf(stderr, "%s: %s\n", prog, err);
                     return 1;
@@ -117,12 +113,12 @@ int main(int argc, char **argv)
     FILE *all[3] = {fr, fs, fp};
     for (int i = 0; i < 3; i++) {
         csv_meta_head(all[i], "fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)",
-                      scene, fo.scale);
+                      fo.scene, fo.scale);
         csv_meta(all[i], "resolution", "%dx%d", W, H);
         csv_meta(all[i], "mutations_per_pixel", "%g", mpp);
         csv_meta(all[i], "p_large", "%g", p_large);
         csv_meta(all[i], "kernel", "kelemen s1 1/1024 s2 1/64");
-        ch4_meta_runs(all[i], seed, seeds, threads);
+        ch4_meta_runs(all[i], fo.seed, seeds, fo.threads);
         csv_meta(all[i], "reference", "%s (PT %d spp); its pixel-noise variance %.4g", refpath, refspp, ref_var);
         csv_meta(all[i], NULL, "error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
                                " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)");
@@ -137,7 +133,7 @@ int main(int argc, char **argv)
     for (int v = 0; v < NVAR; v++) {
         for (int s = 0; s < seeds; s++) {
             int k = v * seeds + s;
-            fprintf(fr, "%s,%llu", names[v], (unsigned long long)(seed + s));
+            fprintf(fr, "%s,%llu", names[v], (unsigned long long)(fo.seed + s));
             for (int i = 0; i < NQ; i++)
                 fprintf(fr, ",%.6g", q[i][k]);
             fprintf(fr, ",%.6g\n", evar[k]);
@@ -160,9 +156,9 @@ int main(int argc, char **argv)
     }
     fclose(fr), fclose(fs), fclose(fp);
     char p1[4096], p2[4096], p3[4096];
-    snprintf(p1, sizeof p1, "%s/fig4.1-runs.csv", out);
-    snprintf(p2, sizeof p2, "%s/fig4.1.csv", out);
-    snprintf(p3, sizeof p3, "%s/fig4.1-profiles.csv", out);
+    snprintf(p1, sizeof p1, "%s/fig4.1-runs.csv", fo.out);
+    snprintf(p2, sizeof p2, "%s/fig4.1.csv", fo.out);
+    snprintf(p3, sizeof p3, "%s/fig4.1-profiles.csv", fo.out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err) &&
               write_text_atomic(p3, pb, err, sizeof err);
     free(rb), free(sb), free(pb), free(tmp);

@@ -41,25 +41,21 @@ int main(int argc, char **argv)
         {0}};
     opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_2 [options]\n", .opts = opts, .paper = &fo.paper},
                argc, argv);
-    const char *scene = fo.scene, *out = fo.out;
-    int threads = fo.threads;
-    bool paper = fo.paper;
-    uint64_t seed = fo.seed;
     opts_require_image_output(prog);
     char err[1024];
-    struct scene *sc = scene_load(scene, err, sizeof err);
+    struct scene *sc = scene_load(fo.scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
-    if (!ch4_mkdir(out, err, sizeof err)) {
+    if (!ch4_mkdir(fo.out, err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
     const char *names[NCONF] = {"pssmlt-1024", "pssmlt-512", "pssmlt-256", "rap-resolution-256"};
     const int res[NCONF] = {1024, 512, 256, 256};
     struct wall_cfg cfg = {
-        .p_large = p_large, .mpp = mpp, .seed_paths = paper ? 1000000 : 100000, .threads = threads, .maxlag = maxlag};
+        .p_large = p_large, .mpp = mpp, .seed_paths = fo.paper ? 1000000 : 100000, .threads = fo.threads, .maxlag = maxlag};
     double *q[NQ];
     for (int i = 0; i < NQ; i++)
         q[i] = xcalloc((size_t)NCONF * seeds, sizeof(double));
@@ -71,7 +67,7 @@ int main(int argc, char **argv)
             char refpath[256];
             snprintf(refpath, sizeof refpath, "results/reference/wall-pt-%dx%d-%d.exr", res[c], res[c], refspp);
             img_destroy(ref);
-            ref = ch4_reference(sc, METHOD_PT, refspp, refpath, threads, prog, err, sizeof err);
+            ref = ch4_reference(sc, METHOD_PT, refspp, refpath, fo.threads, prog, err, sizeof err);
             if (!ref) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
@@ -80,10 +76,10 @@ int main(int argc, char **argv)
         refvar[c] = ch4_pixel_noise_var(ref);
         cfg.rap = cfg.rap_resolution = c == 3;
         for (int s = 0; s < seeds; s++) {
-            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[c], (unsigned long long)(seed + s), s + 1,
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[c], (unsigned long long)(fo.seed + s), s + 1,
                     seeds);
             struct wall_meas m;
-            struct image *img = wall_run(sc, &cfg, seed + s, ref, &m, err, sizeof err);
+            struct image *img = wall_run(sc, &cfg, fo.seed + s, ref, &m, err, sizeof err);
             if (!img) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
@@ -92,7 +88,7 @@ int main(int argc, char **argv)
             q[Q_LX][k] = m.lx, q[Q_LY][k] = m.ly, q[Q_L][k] = 0.5 * (m.lx + m.ly);
             q[Q_RHO1][k] = 0.5 * (m.rho1_x + m.rho1_y), q[Q_RELMSE][k] = m.relmse, q[Q_ACCEPT][k] = m.accept;
             errvar[c] += m.err_var / seeds;
-            if (s == 0 && !ch4_write_pair(img, out, names[c], err, sizeof err)) {
+            if (s == 0 && !ch4_write_pair(img, fo.out, names[c], err, sizeof err)) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
             }
@@ -107,11 +103,11 @@ int main(int argc, char **argv)
     FILE *all[2] = {fr, fs};
     for (int i = 0; i < 2; i++) {
         csv_meta_head(all[i], "fig4.2: PSSMLT small steps on a square diffuse wall at 1024, 512, 256 and with"
-                              " --rap-resolution (reference 1024 px) at 256", scene, fo.scale);
+                              " --rap-resolution (reference 1024 px) at 256", fo.scene, fo.scale);
         csv_meta(all[i], "mutations_per_pixel", "%g", mpp);
         csv_meta(all[i], "p_large", "%g", p_large);
         csv_meta(all[i], "kernel", "kelemen s1 1/1024 s2 1/64");
-        ch4_meta_runs(all[i], seed, seeds, threads);
+        ch4_meta_runs(all[i], fo.seed, seeds, fo.threads);
         csv_meta(all[i], "reference", "PT %d spp", refspp);
         for (int c = 0; c < NCONF; c++)
             csv_meta(all[i], NULL, "%s: reference pixel-noise variance %.4g, error variance %.4g", names[c], refvar[c],
@@ -126,7 +122,7 @@ int main(int argc, char **argv)
     fprintf(fs, "config,resolution,quantity,seeds,mean,se\n");
     for (int c = 0; c < NCONF; c++) {
         for (int s = 0; s < seeds; s++) {
-            fprintf(fr, "%s,%d,%llu", names[c], res[c], (unsigned long long)(seed + s));
+            fprintf(fr, "%s,%d,%llu", names[c], res[c], (unsigned long long)(fo.seed + s));
             for (int i = 0; i < NQ; i++)
                 fprintf(fr, ",%.6g", q[i][c * seeds + s]);
             fprintf(fr, "\n");
@@ -139,8 +135,8 @@ int main(int argc, char **argv)
     }
     fclose(fr), fclose(fs);
     char p1[4096], p2[4096];
-    snprintf(p1, sizeof p1, "%s/fig4.2-runs.csv", out);
-    snprintf(p2, sizeof p2, "%s/fig4.2.csv", out);
+    snprintf(p1, sizeof p1, "%s/fig4.2-runs.csv", fo.out);
+    snprintf(p2, sizeof p2, "%s/fig4.2.csv", fo.out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err);
     free(rb), free(sb);
     for (int i = 0; i < NQ; i++)

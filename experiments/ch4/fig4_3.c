@@ -48,18 +48,14 @@ int main(int argc, char **argv)
          .help = "samples (mutations) per pixel of every method", .def = "64"},
         OPT_SEEDS(seeds, .help = "runs per method, seeds S..S+N-1", .def = "6", .paper = "16"),
         OPT_P_LARGE(p_large),
-        OPT_REFERENCE(refpath, .help = "cached BDPT reference EXR (default results/reference/window-bdpt-WxH-SPP.exr)"),
-        OPT_REFERENCE_SPP(refspp, .help = "BDPT samples per pixel of the reference", .def = "1024", .paper = "16384"),
+        OPTS_REFERENCE(refpath, refspp, "BDPT", "results/reference/window-bdpt-WxH-SPP.exr", "1024", "16384"),
         {0}};
     opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_3 [options]\n", .opts = opts, .paper = &fo.paper},
                argc, argv);
-    const char *scene = fo.scene, *out = fo.out;
-    int W = res[0], H = res[1], threads = fo.threads;
-    bool paper = fo.paper;
-    uint64_t seed = fo.seed;
+    int W = res[0], H = res[1];
     opts_require_image_output(prog);
     char err[1024];
-    struct scene *sc = scene_load(scene, err, sizeof err);
+    struct scene *sc = scene_load(fo.scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
@@ -69,12 +65,12 @@ int main(int argc, char **argv)
     char defref[256];
     snprintf(defref, sizeof defref, "results/reference/window-bdpt-%dx%d-%d.exr", W, H, refspp);
     if (!refpath) refpath = defref;
-    if (!ch4_mkdir(out, err, sizeof err)) {
+    if (!ch4_mkdir(fo.out, err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
-    struct image *ref = ch4_reference(sc, METHOD_BDPT, refspp, refpath, threads, prog, err, sizeof err);
-    if (!ref || !ch4_write_pair(ref, out, "reference", err, sizeof err)) {
+    struct image *ref = ch4_reference(sc, METHOD_BDPT, refspp, refpath, fo.threads, prog, err, sizeof err);
+    if (!ref || !ch4_write_pair(ref, fo.out, "reference", err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
@@ -84,15 +80,15 @@ int main(int argc, char **argv)
     for (int m = 0; m < NMETH; m++)
         for (int s = 0; s < seeds; s++) {
             int k = m * seeds + s;
-            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[m], (unsigned long long)(seed + s), s + 1,
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[m], (unsigned long long)(fo.seed + s), s + 1,
                     seeds);
             struct image *img;
             acc[k] = NAN;
             if (m == 0) {
                 struct render_opts o = {.method = METHOD_BDPT,
                                         .spp = spp,
-                                        .seed = seed + s,
-                                        .threads = threads,
+                                        .seed = fo.seed + s,
+                                        .threads = fo.threads,
                                         .max_length = sc->max_length,
                                         .progress = isatty(2)};
                 struct render_stats st;
@@ -102,9 +98,9 @@ int main(int argc, char **argv)
                 struct mlt_opts o = {.method = MLT_PSSMLT,
                                      .p_large = p_large,
                                      .mutations = (long)spp * W * H,
-                                     .seed_paths = paper ? 1000000 : 100000,
-                                     .seed = seed + s,
-                                     .threads = threads,
+                                     .seed_paths = fo.paper ? 1000000 : 100000,
+                                     .seed = fo.seed + s,
+                                     .threads = fo.threads,
                                      .max_length = sc->max_length,
                                      .progress = isatty(2)};
                 pss_opts_default(&o.pss, W, H);
@@ -116,7 +112,7 @@ int main(int argc, char **argv)
                 }
                 acc[k] = cell_mean(&r.stats.total[PROPOSAL_SMALL]);
                 sec[k] = r.seconds + r.seed_seconds;
-                if (s == 0 && !write_stats(&r.stats, names[m], out, err, sizeof err)) {
+                if (s == 0 && !write_stats(&r.stats, names[m], fo.out, err, sizeof err)) {
                     fprintf(stderr, "%s: %s\n", prog, err);
                     return 1;
                 }
@@ -125,7 +121,7 @@ int main(int argc, char **argv)
                 mlt_result_free(&r);
             }
             rel[k] = img_relmse(img, ref, 0.01);
-            if (s == 0 && !ch4_write_pair(img, out, names[m], err, sizeof err)) {
+            if (s == 0 && !ch4_write_pair(img, fo.out, names[m], err, sizeof err)) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
             }
@@ -137,11 +133,11 @@ int main(int argc, char **argv)
     FILE *all[2] = {fr, fs};
     for (int i = 0; i < 2; i++) {
         csv_meta_head(all[i], "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
-                      scene, fo.scale);
+                      fo.scene, fo.scale);
         csv_meta(all[i], "resolution", "%dx%d", W, H);
         csv_meta(all[i], "spp", "%d", spp);
         csv_meta(all[i], "p_large", "%g", p_large);
-        ch4_meta_runs(all[i], seed, seeds, threads);
+        ch4_meta_runs(all[i], fo.seed, seeds, fo.threads);
         csv_meta(all[i], "reference", "%s (BDPT %d spp)", refpath, refspp);
         csv_meta(all[i], NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
                                "min(1, a) of small steps");
@@ -151,7 +147,7 @@ int main(int argc, char **argv)
     for (int m = 0; m < NMETH; m++) {
         for (int s = 0; s < seeds; s++) {
             int k = m * seeds + s;
-            fprintf(fr, "%s,%llu,%.6g,%.6g,%.3f\n", names[m], (unsigned long long)(seed + s), rel[k], acc[k], sec[k]);
+            fprintf(fr, "%s,%llu,%.6g,%.6g,%.3f\n", names[m], (unsigned long long)(fo.seed + s), rel[k], acc[k], sec[k]);
         }
         double mean, se;
         ch4_mean_se(rel + m * seeds, seeds, &mean, &se);
@@ -170,8 +166,8 @@ int main(int argc, char **argv)
     }
     fclose(fr), fclose(fs);
     char p1[4096], p2[4096];
-    snprintf(p1, sizeof p1, "%s/fig4.3-runs.csv", out);
-    snprintf(p2, sizeof p2, "%s/fig4.3.csv", out);
+    snprintf(p1, sizeof p1, "%s/fig4.3-runs.csv", fo.out);
+    snprintf(p2, sizeof p2, "%s/fig4.3.csv", fo.out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err);
     free(rb), free(sb), free(rel), free(acc), free(sec);
     img_destroy(ref);

@@ -15,27 +15,20 @@
 
 int main(int argc, char **argv)
 {
-    struct opts_figure fo;
-    long mutations;
-    int K;
-    const struct opt opts[] = {
-        OPTS_FIGURE(fo, "scenes/ajar/scene.json", "results/fig4.5"),
-        OPT_MUTATIONS(mutations, .help = "mutations per method, over all lengths", .def = "3000000", .paper = "100000000"),
-        OPT_MAX_LENGTH(K, .help = "longest path length", .def = "12"),
-        {0}};
-    opts_parse(&(struct opts_spec){.prog = "fig4_5", .usage = "usage: fig4_5 [options]\n", .opts = opts, .paper = &fo.paper},
-               argc, argv);
-    struct scene *sc = opts_figure_scene(&fo);
-    const char *out = fo.out;
-    bool paper = fo.paper;
-    int threads = fo.threads;
-    uint64_t seed = fo.seed;
+    struct opts_accept a;
+    struct scene *sc = opts_accept_parse(&a, "fig4_5", "scenes/ajar/scene.json", "results/fig4.5", "3000000", "100000000",
+                                         argc, argv);
+    const char *out = a.fig.out;
+    bool paper = a.fig.paper;
+    long mutations = a.mutations;
+    int K = a.max_length, threads = a.fig.threads;
+    uint64_t seed = a.fig.seed;
     char err[1024];
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets", fo.scene,
-                  fo.scale);
+    csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets", a.fig.scene,
+                  a.fig.scale);
     csv_meta(f, "seed", "%llu", (unsigned long long)seed);
     csv_meta(f, "threads", "%d", threads);
     csv_meta(f, "mutations_per_method", "%ld", mutations);

@@ -61,37 +61,32 @@ int main(int argc, char **argv)
         OPTS_FIGURE(fo, "scenes/ajar/scene.json", "results/fig4.6"),
         {"--seconds", OPT_DOUBLE, OPT_DST(seconds), .arg = "S", .lo = 0.01, .hi = 1e6, .help = "render time per method",
          .def = "20", .paper = "600"},
-        OPT_REFERENCE(refpath, .help = "cached BDPT reference EXR (default results/reference/ajar-bdpt-<spp>.exr)"),
-        OPT_REFERENCE_SPP(refspp, .help = "BDPT samples per pixel of the reference", .def = "256", .paper = "16384"),
+        OPTS_REFERENCE(refpath, refspp, "BDPT", "results/reference/ajar-bdpt-<spp>.exr", "256", "16384"),
         OPT_HYBRID_LENGTH(hybrid, .help = "hybrid: MCTLS from path length K on, MMLT large steps below", .def = "6"),
         {0}};
     opts_parse(&(struct opts_spec){.prog = "fig4_6", .usage = "usage: fig4_6 [options]\n", .opts = opts, .paper = &fo.paper},
                argc, argv);
     opts_require_image_output("fig4_6");
-    const char *scene = fo.scene, *out = fo.out;
-    bool paper = fo.paper;
-    int threads = fo.threads;
-    uint64_t seed = fo.seed;
     char err[1024], defref[256];
     snprintf(defref, sizeof defref, "results/reference/ajar-bdpt-%d.exr", refspp);
     if (!refpath) refpath = defref;
-    struct scene *sc = scene_load(scene, err, sizeof err);
+    struct scene *sc = scene_load(fo.scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
-    mkdir(out, 0777);
-    struct image *ref = reference(sc, refpath, refspp, threads, err, sizeof err);
-    if (!ref || !write_pair(ref, out, "reference", err, sizeof err)) {
+    mkdir(fo.out, 0777);
+    struct image *ref = reference(sc, refpath, refspp, fo.threads, err, sizeof err);
+    if (!ref || !write_pair(ref, fo.out, "reference", err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         return 1;
     }
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    csv_meta_head(f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps)", scene, fo.scale);
-    csv_meta(f, "seed", "%llu", (unsigned long long)seed);
-    csv_meta(f, "threads", "%d", threads);
+    csv_meta_head(f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps)", fo.scene, fo.scale);
+    csv_meta(f, "seed", "%llu", (unsigned long long)fo.seed);
+    csv_meta(f, "threads", "%d", fo.threads);
     csv_meta(f, "reference", "%s (%d spp BDPT)", refpath, refspp);
     csv_meta(f, "hybrid_length", "%d", hybrid);
     csv_meta(f, NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01)");
@@ -99,13 +94,13 @@ int main(int argc, char **argv)
     const char *names[3] = {"mmlt-large", "mctls", "hybrid"};
     const enum large_step kinds[3] = {LARGE_MMLT, LARGE_MCTLS, LARGE_HYBRID};
     for (int m = 0; m < 3; m++) {
-        struct mlt_opts o = {.method = MLT_MMLT, .p_large = 1, .seconds = seconds, .seed_paths = paper ? 1000000 : 100000,
-                             .seed = seed, .threads = threads, .max_length = sc->max_length, .progress = isatty(2),
+        struct mlt_opts o = {.method = MLT_MMLT, .p_large = 1, .seconds = seconds, .seed_paths = fo.paper ? 1000000 : 100000,
+                             .seed = fo.seed, .threads = fo.threads, .max_length = sc->max_length, .progress = isatty(2),
                              .large_step = kinds[m], .hybrid_length = hybrid};
         pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
         fprintf(stderr, "fig4.6: %s for %.0f s\n", names[m], seconds);
         struct mlt_result r;
-        if (!mlt_render(sc, &o, &r, err, sizeof err) || !write_pair(r.img, out, names[m], err, sizeof err)) {
+        if (!mlt_render(sc, &o, &r, err, sizeof err) || !write_pair(r.img, fo.out, names[m], err, sizeof err)) {
             fprintf(stderr, "%s\n", err);
             return 1;
         }
@@ -114,7 +109,7 @@ int main(int argc, char **argv)
     }
     fclose(f);
     char path[4096];
-    snprintf(path, sizeof path, "%s/fig4.6.csv", out);
+    snprintf(path, sizeof path, "%s/fig4.6.csv", fo.out);
     bool ok = write_text_atomic(path, buf, err, sizeof err);
     free(buf);
     img_destroy(ref);

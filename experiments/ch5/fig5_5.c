@@ -32,7 +32,7 @@ static void mean_se(const double *x, int n, double *m, double *se)
 
 int main(int argc, char **argv)
 {
-    struct fig5_cfg c = {.prog = "fig5_5", .out = "results/fig5.5", .p_large = 0.1};
+    struct fig5_cfg c = {.prog = "fig5_5", .fig.out = "results/fig5.5", .p_large = 0.1};
     fig5_parse(argc, argv, &c, NULL);
     struct scene *sc = fig5_scene(&c);
     int W = c.width, H = c.height;
@@ -41,7 +41,7 @@ int main(int argc, char **argv)
     struct image *mi = img_create(W, H);
     for (int i = 0; i < W * H; i++)
         if (mask[i]) img_add(mi, i % W, i / W, v3s(1));
-    snprintf(path, sizeof path, "%s/edges.png", c.out);
+    snprintf(path, sizeof path, "%s/edges.png", c.fig.out);
     if (!fig5_write_linear_png(mi, 1, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
     img_destroy(mi);
 
@@ -52,7 +52,7 @@ int main(int argc, char **argv)
         struct image *avg = img_create(W, H);
         for (int s = 0; s < c.seeds; s++) {
             struct mlt_result r;
-            fig5_run(sc, &c, (enum small_step)kind, c.seed + (uint64_t)s, true, &r);
+            fig5_run(sc, &c, (enum small_step)kind, c.fig.seed + (uint64_t)s, true, &r);
             struct image *a = angle_acc_image(r.angle);
             img_accumulate(avg, a, 1.0 / c.seeds);
             double sum[3] = {0}, n[3] = {0};
@@ -72,9 +72,9 @@ int main(int argc, char **argv)
             img_destroy(a);
             mlt_result_free(&r);
         }
-        snprintf(path, sizeof path, "%s/%s.angle.exr", c.out, fig5_kind_name[kind]);
+        snprintf(path, sizeof path, "%s/%s.angle.exr", c.fig.out, fig5_kind_name[kind]);
         bool ok = img_write_exr(avg, 1.0, path, err, sizeof err);
-        snprintf(path, sizeof path, "%s/%s.angle.png", c.out, fig5_kind_name[kind]);
+        snprintf(path, sizeof path, "%s/%s.angle.png", c.fig.out, fig5_kind_name[kind]);
         if (!ok || !fig5_write_linear_png(avg, 0.5, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
         img_destroy(avg);
     }

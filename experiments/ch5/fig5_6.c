@@ -23,7 +23,7 @@ static struct image *reference(const struct scene *sc, const struct fig5_cfg *c,
     if (ref && ref->w == c->width && ref->h == c->height) return ref;
     img_destroy(ref);
     fprintf(stderr, "fig5_6: rendering the BDPT reference (%d spp) into %s\n", spp, path);
-    struct render_opts o = {.method = METHOD_BDPT, .spp = spp, .seed = 777, .threads = c->threads, .max_length = c->max_length};
+    struct render_opts o = {.method = METHOD_BDPT, .spp = spp, .seed = 777, .threads = c->fig.threads, .max_length = c->max_length};
     struct render_stats st;
     ref = render_mc(sc, &o, &st);
     if (!img_write_exr(ref, 1.0, path, err, sizeof err)) fprintf(stderr, "%s\n", err);
@@ -32,13 +32,13 @@ static struct image *reference(const struct scene *sc, const struct fig5_cfg *c,
 
 int main(int argc, char **argv)
 {
-    struct fig5_cfg c = {.prog = "fig5_6", .out = "results/fig5.6", .p_large = 0.01};
+    struct fig5_cfg c = {.prog = "fig5_6", .fig.out = "results/fig5.6", .p_large = 0.01};
     fig5_parse(argc, argv, &c, "The BDPT reference: 1024 spp at --scale quick, 16384 at paper.\n");
     struct scene *sc = fig5_scene(&c);
-    int spp = !strcmp(c.scale, "paper") ? 16384 : 1024;
+    int spp = !strcmp(c.fig.scale, "paper") ? 16384 : 1024;
     struct image *ref = reference(sc, &c, spp);
     char err[1024], path[4096];
-    snprintf(path, sizeof path, "%s/reference.png", c.out);
+    snprintf(path, sizeof path, "%s/reference.png", c.fig.out);
     if (!img_write_png(ref, 1.0, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
     char *buf = NULL;
     size_t len = 0;
@@ -54,16 +54,16 @@ int main(int argc, char **argv)
         double s = 0, s2 = 0, acc = 0, rate = 0;
         for (int i = 0; i < c.seeds; i++) {
             struct mlt_result r;
-            fig5_run(sc, &c, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, c.seed + (uint64_t)i, false, &r);
+            fig5_run(sc, &c, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, c.fig.seed + (uint64_t)i, false, &r);
             double e = img_relmse(r.img, ref, 0.01);
             s += e;
             s2 += e * e;
             acc += cell_mean(&r.stats.total[PROPOSAL_SMALL]) / c.seeds;
             rate += r.mutations / r.seconds / c.seeds;
             if (i == 0) {
-                snprintf(path, sizeof path, "%s/%s.png", c.out, fig5_kind_name[kind]);
+                snprintf(path, sizeof path, "%s/%s.png", c.fig.out, fig5_kind_name[kind]);
                 if (!img_write_png(r.img, 1.0, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
-                snprintf(path, sizeof path, "%s/%s.exr", c.out, fig5_kind_name[kind]);
+                snprintf(path, sizeof path, "%s/%s.exr", c.fig.out, fig5_kind_name[kind]);
                 if (!img_write_exr(r.img, 1.0, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
             }
             mlt_result_free(&r);

@@ -3,20 +3,21 @@
 #ifndef FIG5_COMMON_H
 #define FIG5_COMMON_H
 
+#include "common/opts.h"
 #include "mcmc/mlt.h"
 #include <stdio.h>
 
 struct fig5_cfg {
-    const char *prog, *scene, *out, *scale;
-    int width, height, seeds, threads, max_length;
+    const char *prog;
+    struct opts_figure fig; /* scene, scale, seed, threads, out */
+    int width, height, seeds, max_length;
     long mpp, seed_paths;
     double p_large;
-    uint64_t seed;
 };
 
 /* Parses the shared options (opts.h: OPTS_FIGURE, --resolution, --mpp, --seeds; `about` follows the
- * usage line of --help); the scale presets fill what was not given. c->prog and c->out (the default
- * folder) are set first. */
+ * usage line of --help); the scale presets fill what was not given. c->prog and c->fig.out (the
+ * default folder) are set first. */
 void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *about);
 /* The metadata lines (csv_meta.h) the figures share: at the top, "# TITLE", scene, commit, scale,
  * "# resolution WxH", "# mutations_per_pixel N"; fig5_meta_runs: "# seeds N from S", "# threads T". */

@@ -36,20 +36,13 @@ static bool write_file(const char *dir, const char *name, const char *text)
 
 int main(int argc, char **argv)
 {
-    struct opts_figure fo;
-    long mutations;
-    int K;
-    const struct opt opts[] = {
-        OPTS_FIGURE(fo, "scenes/ajar/scene.json", "results/fig6.1"),
-        OPT_MUTATIONS(mutations, .help = "mutations per method, over all lengths", .def = "8000000", .paper = "100000000"),
-        OPT_MAX_LENGTH(K, .help = "longest path length", .def = "12"),
-        {0}};
-    opts_parse(&(struct opts_spec){.prog = "fig6_1", .usage = "usage: fig6_1 [options]\n", .opts = opts, .paper = &fo.paper},
-               argc, argv);
-    struct scene *sc = opts_figure_scene(&fo);
-    bool paper = fo.paper;
-    int threads = fo.threads;
-    uint64_t seed = fo.seed;
+    struct opts_accept a;
+    struct scene *sc = opts_accept_parse(&a, "fig6_1", "scenes/ajar/scene.json", "results/fig6.1", "8000000", "100000000",
+                                         argc, argv);
+    bool paper = a.fig.paper;
+    long mutations = a.mutations;
+    int K = a.max_length, threads = a.fig.threads;
+    uint64_t seed = a.fig.seed;
     char err[1024];
     char *buf = NULL, *pbuf = NULL;
     size_t len = 0, plen = 0;
@@ -57,7 +50,7 @@ int main(int argc, char **argv)
     const char *head = "fig6.1: small-step acceptance, MMLT vs PITP, p_large = 0.1, uniform length budgets";
     for (int q = 0; q < 2; q++) {
         FILE *g = q ? pf : f;
-        csv_meta_head(g, head, fo.scene, fo.scale);
+        csv_meta_head(g, head, a.fig.scene, a.fig.scale);
         csv_meta(g, "seed", "%llu", (unsigned long long)seed);
         csv_meta(g, "threads", "%d", threads);
         csv_meta(g, "mutations_per_method", "%ld", mutations);
@@ -119,7 +112,7 @@ int main(int argc, char **argv)
     }
     fclose(f);
     fclose(pf);
-    bool ok = write_file(fo.out, "fig6.1.csv", buf) && write_file(fo.out, "fig6.1-pitp.csv", pbuf);
+    bool ok = write_file(a.fig.out, "fig6.1.csv", buf) && write_file(a.fig.out, "fig6.1-pitp.csv", pbuf);
     free(buf);
     free(pbuf);
     scene_free(sc);

@@ -265,3 +265,18 @@ struct scene *opts_figure_scene(const struct opts_figure *f)
     mkdir(f->out, 0777);
     return sc;
 }
+
+struct scene *opts_accept_parse(struct opts_accept *a, const char *prog, const char *scene, const char *out,
+                                const char *mutations_quick, const char *mutations_paper, int argc, char **argv)
+{
+    const struct opt opts[] = {
+        OPTS_FIGURE(a->fig, scene, out),
+        OPT_MUTATIONS(a->mutations, .help = "mutations per method, over all lengths", .def = mutations_quick,
+                      .paper = mutations_paper),
+        OPT_MAX_LENGTH(a->max_length, .help = "longest path length", .def = "12"),
+        {0}};
+    char usage[64];
+    snprintf(usage, sizeof usage, "usage: %s [options]\n", prog);
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = usage, .opts = opts, .paper = &a->fig.paper}, argc, argv);
+    return opts_figure_scene(&a->fig);
+}

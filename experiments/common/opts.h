@@ -117,11 +117,26 @@ extern const char *const opts_scales[]; /* quick, paper */
 #define OPT_RESOLUTION(d, ...) {"--resolution", OPT_WXH, OPT_DST(d), .arg = "WxH", __VA_ARGS__}
 #define OPT_REFERENCE(d, ...) {"--reference", OPT_STRING, OPT_DST(d), .arg = "FILE", __VA_ARGS__}
 #define OPT_REFERENCE_SPP(d, ...) {"--reference-spp", OPT_INT, OPT_DST(d), .arg = "N", .lo = 1, .hi = 1 << 24, __VA_ARGS__}
+/* A reference image cached as FILE, rendered with METHOD at N samples per pixel when missing */
+#define OPTS_REFERENCE(path, spp, method, path_pattern, quick, paper_)                                        \
+    OPT_REFERENCE(path, .help = "cached " method " reference EXR (default " path_pattern ")"),                    \
+        OPT_REFERENCE_SPP(spp, .help = method " samples per pixel of the reference", .def = quick, .paper = paper_)
 #define OPT_MUTATIONS(d, ...) {"--mutations", OPT_INT, OPT_DST(d), .arg = "N", .lo = 1, .hi = 1L << 40, __VA_ARGS__}
 #define OPT_MPP(d, ...) {"--mpp", OPT_DOUBLE, OPT_DST(d), .arg = "N", __VA_ARGS__}
 #define OPT_HYBRID_LENGTH(d, ...) {"--hybrid-length", OPT_INT, OPT_DST(d), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, __VA_ARGS__}
 
 /* The figure's scene (a load error is one line and exit status 2), with its output folder created. */
 struct scene *opts_figure_scene(const struct opts_figure *f);
+
+/* The acceptance figures (fig4_5, fig6_1): OPTS_FIGURE, --mutations N per method over all lengths
+ * (defaults mutations_quick and mutations_paper), --max-length K (default 12). Parses argv, then
+ * loads the scene and creates the output folder (opts_figure_scene). */
+struct opts_accept {
+    struct opts_figure fig;
+    long mutations;
+    int max_length;
+};
+struct scene *opts_accept_parse(struct opts_accept *a, const char *prog, const char *scene, const char *out,
+                                const char *mutations_quick, const char *mutations_paper, int argc, char **argv);
 
 #endif
