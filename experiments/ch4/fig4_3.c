@@ -43,7 +43,7 @@ int main(int argc, char **argv)
     double p_large;
     const struct opt opts[] = {
         OPTS_FIGURE(fo, "scenes/window/scene.json", "results/fig4.3"),
-        OPT_RESOLUTION(res, .lo = 1, .hi = 1 << 14, .help = "image size (default: the scene's at quick)", .paper = "256x144"),
+        OPT_RESOLUTION(res, .lo = 1, .hi = 1 << 14, .help = "image size; quick: the scene's", .paper = "256x144"),
         {"--spp", OPT_INT, OPT_DST(spp), .arg = "N", .lo = 1, .hi = 1 << 20,
          .help = "samples (mutations) per pixel of every method", .def = "64"},
         OPT_SEEDS(seeds, .help = "runs per method, seeds S..S+N-1", .def = "6", .paper = "16"),
