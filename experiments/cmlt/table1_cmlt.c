@@ -9,6 +9,7 @@
 #include "cmlt/cmlt_mcmc.h"
 #include "cmlt/cmlt_reference.h"
 #include "cmlt/cmlt_scene.h"
+#include "common/csv_meta.h"
 #include "common/opts.h"
 #include "io/image.h"
 #include <errno.h>
@@ -354,8 +355,8 @@ static const char *fmt_n(uint64_t n, char *buf, size_t len)
 static void bench(const struct opts *o)
 {
     uint64_t n = o->budgets[0];
-    printf("# bench-cmlt: chain steps per second on one core, n = %llu steps, %dx%d image\n",
-           (unsigned long long)n, o->res, o->res);
+    csv_meta(stdout, NULL, "bench-cmlt: chain steps per second on one core, n = %llu steps, %dx%d image",
+             (unsigned long long)n, o->res, o->res);
     printf("algorithm,steps_per_s\n");
     double *img = xmalloc(sizeof(double) * 3 * o->res * o->res);
     for (int a = 0; a < CMLT_NALGO; a++) {
@@ -411,11 +412,13 @@ int main(int argc, char **argv)
     /* statistics per (algorithm, budget) */
     struct text csv = {0}, stats = {0}, seeds = {0}, md = {0};
     char meta[512], nb[32];
-    snprintf(meta, sizeof meta,
-             "# table1_cmlt commit=%s seed=%llu scale=%s seeds=%d threads=%d res=%d ref_spp=%d p_large=%g "
-             "swap_every=%d seed_frac=%g seconds=%.1f%s\n",
+    FILE *mf = fmemopen(meta, sizeof meta, "w");
+    csv_meta(mf, "table1_cmlt",
+             "commit=%s seed=%llu scale=%s seeds=%d threads=%d res=%d ref_spp=%d p_large=%g swap_every=%d seed_frac=%g "
+             "seconds=%.1f%s",
              o.commit, (unsigned long long)o.seed, o.scale, o.seeds, o.threads, o.res, o.ref_spp, o.p_large,
              o.swap_every, o.seed_frac, wall, partial ? " PARTIAL (interrupted)" : "");
+    fclose(mf);
     tprintf(&csv, "%salgorithm,n,rmse\n", meta);
     tprintf(&stats, "%salgorithm,n,seeds,rmse_mean,rmse_se,steps_per_s,acceptance,swap_acceptance\n", meta);
     tprintf(&seeds, "%salgorithm,n,seed,rmse,b,b1,b2,acceptance,swap_acceptance,seconds\n", meta);
