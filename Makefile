@@ -69,7 +69,7 @@ endif
 CC ?= cc
 CXX ?= c++
 WARN := -Wall -Wextra $(if $(WERROR),-Werror)
-# Includes name their folder: "path/path.h" from core/, "common/cli.h" from experiments/.
+# Includes name their folder: "path/path.h" from core/, "common/opts.h" from experiments/.
 CPPFLAGS := -Icore -Iexperiments -D_DEFAULT_SOURCE -MMD -MP
 CFLAGS := -std=c11 $(OPT) $(WARN) -pthread
 # pkg-config is asked when a recipe runs, not when the Makefile is read: on a fresh machine the

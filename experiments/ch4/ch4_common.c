@@ -2,7 +2,7 @@
 #include "ch4/ch4_common.h"
 #include "base/parallel.h"
 #include "base/util.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -126,53 +126,8 @@ double ch4_pixel_noise_var(const struct image *ref)
     return n ? s / n / 2 : 0;
 }
 
-void ch4_args_init(struct ch4_args *a, const char *scene, const char *out)
+void ch4_meta_runs(FILE *f, uint64_t seed, int seeds, int threads)
 {
-    const char *env = getenv("SCALE");
-    *a = (struct ch4_args){.scene = scene,
-                           .scale = env && *env ? env : "quick",
-                           .out = out,
-                           .seeds = -1,
-                           .refspp = -1,
-                           .threads = cpu_count(),
-                           .p_large = 0.1,
-                           .seed = 1};
-}
-
-bool ch4_option(const char *prog, int argc, char **argv, int *i, struct ch4_args *a)
-{
-    const char *o = argv[*i];
-    if (!strcmp(o, "--scene"))
-        a->scene = cli_value(prog, argc, argv, i);
-    else if (!strcmp(o, "--scale"))
-        a->scale = cli_value(prog, argc, argv, i);
-    else if (!strcmp(o, "--out"))
-        a->out = cli_value(prog, argc, argv, i);
-    else if (!strcmp(o, "--seeds"))
-        a->seeds = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 2, 1000);
-    else if (!strcmp(o, "--reference-spp"))
-        a->refspp = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1 << 24);
-    else if (!strcmp(o, "--threads"))
-        a->threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, i), 1, 1024);
-    else if (!strcmp(o, "--p-large"))
-        a->p_large = cli_double(prog, o, cli_value(prog, argc, argv, i), 0, 1);
-    else if (!strcmp(o, "--seed"))
-        a->seed = cli_u64(prog, o, cli_value(prog, argc, argv, i));
-    else
-        return false;
-    return true;
-}
-
-bool ch4_paper(const char *prog, const struct ch4_args *a)
-{
-    if (!strcmp(a->scale, "paper")) return true;
-    if (strcmp(a->scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", a->scale);
-    return false;
-}
-
-void ch4_resolution(const char *prog, const char *v, int min, int *w, int *h)
-{
-    char extra;
-    if (sscanf(v, "%dx%d%c", w, h, &extra) != 2 || *w < min || *h < min || *w > 1 << 14 || *h > 1 << 14)
-        cli_fail(prog, "--resolution: expected WxH with integers in %d..16384, got '%s'", min, v);
+    csv_meta(f, "seeds", "%llu..%llu", (unsigned long long)seed, (unsigned long long)(seed + seeds - 1));
+    csv_meta(f, "threads", "%d", threads);
 }

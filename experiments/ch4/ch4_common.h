@@ -7,23 +7,10 @@
 #include "mc/render.h"
 #include "scene/scene.h"
 #include <stdint.h>
+#include <stdio.h>
 
-/* The options every chapter-4 tool takes; -1 (NULL for strings) means the tool's default. */
-struct ch4_args {
-    const char *scene, *scale, *out;
-    int seeds, refspp, threads;
-    double p_large;
-    uint64_t seed;
-};
-/* Defaults: scale from $SCALE (else quick), p_large 0.1, seed 1, all cores. */
-void ch4_args_init(struct ch4_args *a, const char *scene, const char *out);
-/* Consumes argv[*i] (and its value) when it is --scene, --scale, --seeds, --p-large,
- * --reference-spp, --seed, --threads or --out; bad values exit 2 (cli.h). */
-bool ch4_option(const char *prog, int argc, char **argv, int *i, struct ch4_args *a);
-/* Checks --scale; true for paper. */
-bool ch4_paper(const char *prog, const struct ch4_args *a);
-/* Parses WxH with both in min..16384 (exit 2 otherwise). */
-void ch4_resolution(const char *prog, const char *v, int min, int *w, int *h);
+/* The metadata lines "# seeds S..S+N-1" and "# threads T" (csv_meta.h). */
+void ch4_meta_runs(FILE *f, uint64_t seed, int seeds, int threads);
 
 /* Reads `path` when it holds an image of the scene camera's size; otherwise renders the scene
  * with `method` at `spp` (fixed seed 12345), writes it to `path` (atomically) and returns it. */

@@ -12,81 +12,52 @@
 #include "ch4/ch4_common.h"
 #include "ch4/noise_corr.h"
 #include "ch4/wall_noise.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "path/scene_ready.h"
-#include "version.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const char *usage =
-    "usage: fig4_1 [options]\n"
-    "  --scene FILE         (default scenes/wall/scene.json)\n"
-    "  --scale quick|paper  sizes (default: $SCALE, else quick)\n"
-    "  --resolution WxH     (quick 320x180, paper 640x360)\n"
-    "  --mpp N              PSSMLT mutations per pixel (quick 8, paper 64)\n"
-    "  --seeds N            runs per variant, seeds S..S+N-1 (quick 8, paper 16)\n"
-    "  --p-large P          large-step probability (default 0.1)\n"
-    "  --max-lag L          autocorrelation lags 0..L pixels (default 40)\n"
-    "  --reference FILE     cached PT reference EXR (default results/reference/wall-pt-WxH-SPP.exr)\n"
-    "  --reference-spp N    PT samples per pixel of the reference (quick 64, paper 1024)\n"
-    "  --seed S  --threads T  --out DIR (default results/fig4.1)\n";
-
 #define NVAR 2
 
 int main(int argc, char **argv)
 {
-    const char *prog = "fig4_1";
-    struct ch4_args a;
-    ch4_args_init(&a, "scenes/wall/scene.json", "results/fig4.1");
-    const char *refpath = NULL;
-    int W = -1, H = -1, maxlag = 40;
-    double mpp = -1;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (ch4_option(prog, argc, argv, &i, &a))
-            continue;
-        else if (!strcmp(o, "--resolution"))
-            ch4_resolution(prog, cli_value(prog, argc, argv, &i), 8, &W, &H);
-        else if (!strcmp(o, "--mpp"))
-            mpp = cli_double(prog, o, cli_value(prog, argc, argv, &i), 0.01, 1e6);
-        else if (!strcmp(o, "--max-lag"))
-            maxlag = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 4096);
-        else if (!strcmp(o, "--reference"))
-            refpath = cli_value(prog, argc, argv, &i);
-        else
-            cli_fail(prog, "unknown option '%s' (see --help)", o);
-    }
-    bool paper = ch4_paper(prog, &a);
-    const char *scene = a.scene, *scale = a.scale, *out = a.out;
-    int seeds = a.seeds, refspp = a.refspp, threads = a.threads;
-    double p_large = a.p_large;
-    uint64_t seed = a.seed;
-    if (W < 0) W = paper ? 640 : 320, H = paper ? 360 : 180;
-    if (mpp < 0) mpp = paper ? 64 : 8;
-    if (seeds < 0) seeds = paper ? 16 : 8;
-    if (refspp < 0) refspp = paper ? 1024 : 64;
-    if (maxlag >= W || maxlag >= H) cli_fail(prog, "--max-lag %d: must be below the image's width and height", maxlag);
-    cli_require_image_output(prog);
+    const char *prog = "fig4_1", *refpath = NULL;
+    struct opts_figure fo;
+    int res[2], seeds, refspp, maxlag;
+    double mpp, p_large;
+    const struct opt opts[] = {
+        OPTS_FIGURE(fo, "scenes/wall/scene.json", "results/fig4.1"),
+        OPT_RESOLUTION(res, .lo = 8, .hi = 1 << 14, .help = "image size", .def = "320x180", .paper = "640x360"),
+        OPT_MPP(mpp, .lo = 0.01, .hi = 1e6, .help = "PSSMLT mutations per pixel", .def = "8", .paper = "64"),
+        OPT_SEEDS(seeds, .help = "runs per variant, seeds S..S+N-1", .def = "8", .paper = "16"),
+        OPT_P_LARGE(p_large),
+        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 4096, .help = "autocorrelation lags 0..L pixels",
+         .def = "40"},
+        OPTS_REFERENCE(refpath, refspp, "PT", "results/reference/wall-pt-WxH-SPP.exr", "64", "1024"),
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_1 [options]\n", .opts = opts, .paper = &fo.paper},
+               argc, argv);
+    int W = res[0], H = res[1];
+    if (maxlag >= W || maxlag >= H) opts_fail(prog, "--max-lag %d: must be below the image's width and height", maxlag);
+    opts_require_image_output(prog);
     char err[1024], defref[256];
     snprintf(defref, sizeof defref, "results/reference/wall-pt-%dx%d-%d.exr", W, H, refspp);
     if (!refpath) refpath = defref;
-    struct scene *sc = scene_load(scene, err, sizeof err);
+    struct scene *sc = scene_load(fo.scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
     camera_resize(&sc->cam, W, H);
-    if (!ch4_mkdir(out, err, sizeof err)) {
+    if (!ch4_mkdir(fo.out, err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
-    struct image *ref = ch4_reference(sc, METHOD_PT, refspp, refpath, threads, prog, err, sizeof err);
-    if (!ref || !ch4_write_pair(ref, out, "reference", err, sizeof err)) {
+    struct image *ref = ch4_reference(sc, METHOD_PT, refspp, refpath, fo.threads, prog, err, sizeof err);
+    if (!ref || !ch4_write_pair(ref, fo.out, "reference", err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
@@ -94,7 +65,7 @@ int main(int argc, char **argv)
 
     const char *names[NVAR] = {"iso", "rap"};
     struct wall_cfg cfg = {
-        .p_large = p_large, .mpp = mpp, .seed_paths = paper ? 1000000 : 100000, .threads = threads, .maxlag = maxlag};
+        .p_large = p_large, .mpp = mpp, .seed_paths = fo.paper ? 1000000 : 100000, .threads = fo.threads, .maxlag = maxlag};
     int L = maxlag + 1;
     /* per run: the quantities of the summary, then the error variance */
     enum { Q_LX, Q_LY, Q_RATIO, Q_RHO1X, Q_RHO1Y, Q_RELMSE, Q_ACCEPT, NQ };
@@ -108,10 +79,10 @@ int main(int argc, char **argv)
     for (int v = 0; v < NVAR; v++) {
         cfg.rap = v == 1;
         for (int s = 0; s < seeds; s++) {
-            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[v], (unsigned long long)(seed + s), s + 1,
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[v], (unsigned long long)(fo.seed + s), s + 1,
                     seeds);
             struct wall_meas m;
-            struct image *img = wall_run(sc, &cfg, seed + s, ref, &m, err, sizeof err);
+            struct image *img = wall_run(sc, &cfg, fo.seed + s, ref, &m, err, sizeof err);
             if (!img) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
@@ -124,8 +95,8 @@ int main(int argc, char **argv)
             memcpy(ry + (size_t)k * L, m.rho_y, L * sizeof(double));
             if (s == 0) {
                 char path[4096];
-                snprintf(path, sizeof path, "%s/error-%s.png", out, names[v]);
-                if (!ch4_write_pair(img, out, names[v], err, sizeof err) ||
+                snprintf(path, sizeof path, "%s/error-%s.png", fo.out, names[v]);
+                if (!ch4_write_pair(img, fo.out, names[v], err, sizeof err) ||
                     !ch4_write_error_png(m.err, W, H, &range, path, err, sizeof err)) {
                     fprintf(stderr, "%s: %s\n", prog, err);
                     return 1;
@@ -142,15 +113,16 @@ int main(int argc, char **argv)
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl), *fp = open_memstream(&pb, &pl);
     FILE *all[3] = {fr, fs, fp};
     for (int i = 0; i < 3; i++) {
-        fprintf(all[i],
-                "# fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)\n");
-        fprintf(all[i], "# scene %s\n# commit %s\n# scale %s\n# resolution %dx%d\n# mutations_per_pixel %g\n", scene,
-                GIT_COMMIT, scale, W, H, mpp);
-        fprintf(all[i], "# p_large %g\n# kernel kelemen s1 1/1024 s2 1/64\n# seeds %llu..%llu\n# threads %d\n", p_large,
-                (unsigned long long)seed, (unsigned long long)(seed + seeds - 1), threads);
-        fprintf(all[i], "# reference %s (PT %d spp); its pixel-noise variance %.4g\n", refpath, refspp, ref_var);
-        fprintf(all[i], "# error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
-                        " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)\n");
+        csv_meta_head(all[i], "fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)",
+                      fo.scene, fo.scale);
+        csv_meta(all[i], "resolution", "%dx%d", W, H);
+        csv_meta(all[i], "mutations_per_pixel", "%g", mpp);
+        csv_meta(all[i], "p_large", "%g", p_large);
+        csv_meta(all[i], "kernel", "kelemen s1 1/1024 s2 1/64");
+        ch4_meta_runs(all[i], fo.seed, seeds, fo.threads);
+        csv_meta(all[i], "reference", "%s (PT %d spp); its pixel-noise variance %.4g", refpath, refspp, ref_var);
+        csv_meta(all[i], NULL, "error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
+                               " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)");
     }
     fprintf(fr, "variant,seed");
     for (int i = 0; i < NQ; i++)
@@ -162,7 +134,7 @@ int main(int argc, char **argv)
     for (int v = 0; v < NVAR; v++) {
         for (int s = 0; s < seeds; s++) {
             int k = v * seeds + s;
-            fprintf(fr, "%s,%llu", names[v], (unsigned long long)(seed + s));
+            fprintf(fr, "%s,%llu", names[v], (unsigned long long)(fo.seed + s));
             for (int i = 0; i < NQ; i++)
                 fprintf(fr, ",%.6g", q[i][k]);
             fprintf(fr, ",%.6g\n", evar[k]);
@@ -185,9 +157,9 @@ int main(int argc, char **argv)
     }
     fclose(fr), fclose(fs), fclose(fp);
     char p1[4096], p2[4096], p3[4096];
-    snprintf(p1, sizeof p1, "%s/fig4.1-runs.csv", out);
-    snprintf(p2, sizeof p2, "%s/fig4.1.csv", out);
-    snprintf(p3, sizeof p3, "%s/fig4.1-profiles.csv", out);
+    snprintf(p1, sizeof p1, "%s/fig4.1-runs.csv", fo.out);
+    snprintf(p2, sizeof p2, "%s/fig4.1.csv", fo.out);
+    snprintf(p3, sizeof p3, "%s/fig4.1-profiles.csv", fo.out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err) &&
               write_text_atomic(p3, pb, err, sizeof err);
     free(rb), free(sb), free(pb), free(tmp);

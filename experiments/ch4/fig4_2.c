@@ -11,25 +11,13 @@
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
 #include "ch4/wall_noise.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "path/scene_ready.h"
-#include "version.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static const char *usage =
-    "usage: fig4_2 [options]\n"
-    "  --scene FILE         (default scenes/wall/scene.json)\n"
-    "  --scale quick|paper  sizes (default: $SCALE, else quick)\n"
-    "  --mpp N              PSSMLT mutations per pixel (quick 4, paper 64)\n"
-    "  --seeds N            runs per configuration, seeds S..S+N-1 (quick 4, paper 8)\n"
-    "  --p-large P          large-step probability (default 0.1)\n"
-    "  --max-lag L          autocorrelation lags 0..L pixels (default 64)\n"
-    "  --reference-spp N    PT samples per pixel of the references (quick 32, paper 1024), cached as\n"
-    "                       results/reference/wall-pt-NxN-SPP.exr\n"
-    "  --seed S  --threads T  --out DIR (default results/fig4.2)\n";
 
 #define NCONF 4
 
@@ -39,47 +27,36 @@ static const char *qn[NQ] = {"l_x", "l_y", "l", "rho1", "relmse", "small_accept"
 int main(int argc, char **argv)
 {
     const char *prog = "fig4_2";
-    struct ch4_args a;
-    ch4_args_init(&a, "scenes/wall/scene.json", "results/fig4.2");
-    int maxlag = 64;
-    double mpp = -1;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (ch4_option(prog, argc, argv, &i, &a))
-            continue;
-        else if (!strcmp(o, "--mpp"))
-            mpp = cli_double(prog, o, cli_value(prog, argc, argv, &i), 0.01, 1e6);
-        else if (!strcmp(o, "--max-lag"))
-            maxlag = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 255);
-        else
-            cli_fail(prog, "unknown option '%s' (see --help)", o);
-    }
-    bool paper = ch4_paper(prog, &a);
-    const char *scene = a.scene, *scale = a.scale, *out = a.out;
-    int seeds = a.seeds, refspp = a.refspp, threads = a.threads;
-    double p_large = a.p_large;
-    uint64_t seed = a.seed;
-    if (mpp < 0) mpp = paper ? 64 : 4;
-    if (seeds < 0) seeds = paper ? 8 : 4;
-    if (refspp < 0) refspp = paper ? 1024 : 32;
-    cli_require_image_output(prog);
+    struct opts_figure fo;
+    int seeds, refspp, maxlag;
+    double mpp, p_large;
+    const struct opt opts[] = {
+        OPTS_FIGURE(fo, "scenes/wall/scene.json", "results/fig4.2"),
+        OPT_MPP(mpp, .lo = 0.01, .hi = 1e6, .help = "PSSMLT mutations per pixel", .def = "4", .paper = "64"),
+        OPT_SEEDS(seeds, .help = "runs per configuration, seeds S..S+N-1", .def = "4", .paper = "8"),
+        OPT_P_LARGE(p_large),
+        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 255, .help = "autocorrelation lags 0..L pixels",
+         .def = "64"},
+        OPT_REFERENCE_SPP(refspp, .help = "PT samples per pixel of the references, cached as "
+                                          "results/reference/wall-pt-NxN-SPP.exr", .def = "32", .paper = "1024"),
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_2 [options]\n", .opts = opts, .paper = &fo.paper},
+               argc, argv);
+    opts_require_image_output(prog);
     char err[1024];
-    struct scene *sc = scene_load(scene, err, sizeof err);
+    struct scene *sc = scene_load(fo.scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
-    if (!ch4_mkdir(out, err, sizeof err)) {
+    if (!ch4_mkdir(fo.out, err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
     const char *names[NCONF] = {"pssmlt-1024", "pssmlt-512", "pssmlt-256", "rap-resolution-256"};
     const int res[NCONF] = {1024, 512, 256, 256};
     struct wall_cfg cfg = {
-        .p_large = p_large, .mpp = mpp, .seed_paths = paper ? 1000000 : 100000, .threads = threads, .maxlag = maxlag};
+        .p_large = p_large, .mpp = mpp, .seed_paths = fo.paper ? 1000000 : 100000, .threads = fo.threads, .maxlag = maxlag};
     double *q[NQ];
     for (int i = 0; i < NQ; i++)
         q[i] = xcalloc((size_t)NCONF * seeds, sizeof(double));
@@ -91,7 +68,7 @@ int main(int argc, char **argv)
             char refpath[256];
             snprintf(refpath, sizeof refpath, "results/reference/wall-pt-%dx%d-%d.exr", res[c], res[c], refspp);
             img_destroy(ref);
-            ref = ch4_reference(sc, METHOD_PT, refspp, refpath, threads, prog, err, sizeof err);
+            ref = ch4_reference(sc, METHOD_PT, refspp, refpath, fo.threads, prog, err, sizeof err);
             if (!ref) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
@@ -100,10 +77,10 @@ int main(int argc, char **argv)
         refvar[c] = ch4_pixel_noise_var(ref);
         cfg.rap = cfg.rap_resolution = c == 3;
         for (int s = 0; s < seeds; s++) {
-            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[c], (unsigned long long)(seed + s), s + 1,
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[c], (unsigned long long)(fo.seed + s), s + 1,
                     seeds);
             struct wall_meas m;
-            struct image *img = wall_run(sc, &cfg, seed + s, ref, &m, err, sizeof err);
+            struct image *img = wall_run(sc, &cfg, fo.seed + s, ref, &m, err, sizeof err);
             if (!img) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
@@ -112,7 +89,7 @@ int main(int argc, char **argv)
             q[Q_LX][k] = m.lx, q[Q_LY][k] = m.ly, q[Q_L][k] = 0.5 * (m.lx + m.ly);
             q[Q_RHO1][k] = 0.5 * (m.rho1_x + m.rho1_y), q[Q_RELMSE][k] = m.relmse, q[Q_ACCEPT][k] = m.accept;
             errvar[c] += m.err_var / seeds;
-            if (s == 0 && !ch4_write_pair(img, out, names[c], err, sizeof err)) {
+            if (s == 0 && !ch4_write_pair(img, fo.out, names[c], err, sizeof err)) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
             }
@@ -126,18 +103,18 @@ int main(int argc, char **argv)
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
     FILE *all[2] = {fr, fs};
     for (int i = 0; i < 2; i++) {
-        fprintf(all[i], "# fig4.2: PSSMLT small steps on a square diffuse wall at 1024, 512, 256 and with"
-                        " --rap-resolution (reference 1024 px) at 256\n");
-        fprintf(all[i], "# scene %s\n# commit %s\n# scale %s\n# mutations_per_pixel %g\n# p_large %g\n", scene,
-                GIT_COMMIT, scale, mpp, p_large);
-        fprintf(all[i], "# kernel kelemen s1 1/1024 s2 1/64\n# seeds %llu..%llu\n# threads %d\n# reference PT %d spp\n",
-                (unsigned long long)seed, (unsigned long long)(seed + seeds - 1), threads, refspp);
+        csv_meta_head(all[i], "fig4.2: PSSMLT small steps on a square diffuse wall at 1024, 512, 256 and with"
+                              " --rap-resolution (reference 1024 px) at 256", fo.scene, fo.scale);
+        csv_meta(all[i], "mutations_per_pixel", "%g", mpp);
+        csv_meta(all[i], "p_large", "%g", p_large);
+        csv_meta(all[i], "kernel", "kelemen s1 1/1024 s2 1/64");
+        ch4_meta_runs(all[i], fo.seed, seeds, fo.threads);
+        csv_meta(all[i], "reference", "PT %d spp", refspp);
         for (int c = 0; c < NCONF; c++)
-            fprintf(all[i], "# %s: reference pixel-noise variance %.4g, error variance %.4g\n", names[c], refvar[c],
-                    errvar[c]);
-        fprintf(all[i],
-                "# l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
-                " l = their mean; rho1 = mean lag-1 autocorrelation\n");
+            csv_meta(all[i], NULL, "%s: reference pixel-noise variance %.4g, error variance %.4g", names[c], refvar[c],
+                     errvar[c]);
+        csv_meta(all[i], NULL, "l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
+                               " l = their mean; rho1 = mean lag-1 autocorrelation");
     }
     fprintf(fr, "config,resolution,seed");
     for (int i = 0; i < NQ; i++)
@@ -146,7 +123,7 @@ int main(int argc, char **argv)
     fprintf(fs, "config,resolution,quantity,seeds,mean,se\n");
     for (int c = 0; c < NCONF; c++) {
         for (int s = 0; s < seeds; s++) {
-            fprintf(fr, "%s,%d,%llu", names[c], res[c], (unsigned long long)(seed + s));
+            fprintf(fr, "%s,%d,%llu", names[c], res[c], (unsigned long long)(fo.seed + s));
             for (int i = 0; i < NQ; i++)
                 fprintf(fr, ",%.6g", q[i][c * seeds + s]);
             fprintf(fr, "\n");
@@ -159,8 +136,8 @@ int main(int argc, char **argv)
     }
     fclose(fr), fclose(fs);
     char p1[4096], p2[4096];
-    snprintf(p1, sizeof p1, "%s/fig4.2-runs.csv", out);
-    snprintf(p2, sizeof p2, "%s/fig4.2.csv", out);
+    snprintf(p1, sizeof p1, "%s/fig4.2-runs.csv", fo.out);
+    snprintf(p2, sizeof p2, "%s/fig4.2.csv", fo.out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err);
     free(rb), free(sb);
     for (int i = 0; i < NQ; i++)

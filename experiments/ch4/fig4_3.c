@@ -11,27 +11,15 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
-#include "version.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-
-static const char *usage =
-    "usage: fig4_3 [options]\n"
-    "  --scene FILE         (default scenes/window/scene.json)\n"
-    "  --scale quick|paper  sizes (default: $SCALE, else quick)\n"
-    "  --resolution WxH     (default: the scene's at quick, 256x144 at paper)\n"
-    "  --spp N              samples (mutations) per pixel of every method (default 64)\n"
-    "  --seeds N            runs per method, seeds S..S+N-1 (quick 6, paper 16)\n"
-    "  --p-large P          PSSMLT large-step probability (default 0.1)\n"
-    "  --reference FILE     cached BDPT reference EXR (default results/reference/window-bdpt-WxH-SPP.exr)\n"
-    "  --reference-spp N    BDPT samples per pixel of the reference (quick 1024, paper 16384)\n"
-    "  --seed S  --threads T  --out DIR (default results/fig4.3)\n";
 
 #define NMETH 3
 
@@ -50,53 +38,40 @@ static bool write_stats(const struct mlt_stats *st, const char *method, const ch
 
 int main(int argc, char **argv)
 {
-    const char *prog = "fig4_3";
-    struct ch4_args a;
-    ch4_args_init(&a, "scenes/window/scene.json", "results/fig4.3");
-    const char *refpath = NULL;
-    int W = -1, H = -1, spp = 64;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (ch4_option(prog, argc, argv, &i, &a))
-            continue;
-        else if (!strcmp(o, "--resolution"))
-            ch4_resolution(prog, cli_value(prog, argc, argv, &i), 1, &W, &H);
-        else if (!strcmp(o, "--spp"))
-            spp = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1 << 20);
-        else if (!strcmp(o, "--reference"))
-            refpath = cli_value(prog, argc, argv, &i);
-        else
-            cli_fail(prog, "unknown option '%s' (see --help)", o);
-    }
-    bool paper = ch4_paper(prog, &a);
-    const char *scene = a.scene, *scale = a.scale, *out = a.out;
-    int seeds = a.seeds, refspp = a.refspp, threads = a.threads;
-    double p_large = a.p_large;
-    uint64_t seed = a.seed;
-    if (seeds < 0) seeds = paper ? 16 : 6;
-    if (refspp < 0) refspp = paper ? 16384 : 1024;
-    cli_require_image_output(prog);
+    const char *prog = "fig4_3", *refpath = NULL;
+    struct opts_figure fo;
+    int res[2] = {-1, -1}, spp, seeds, refspp;
+    double p_large;
+    const struct opt opts[] = {
+        OPTS_FIGURE(fo, "scenes/window/scene.json", "results/fig4.3"),
+        OPT_RESOLUTION(res, .lo = 1, .hi = 1 << 14, .help = "image size; quick: the scene's", .paper = "256x144"),
+        {"--spp", OPT_INT, OPT_DST(spp), .arg = "N", .lo = 1, .hi = 1 << 20,
+         .help = "samples (mutations) per pixel of every method", .def = "64"},
+        OPT_SEEDS(seeds, .help = "runs per method, seeds S..S+N-1", .def = "6", .paper = "16"),
+        OPT_P_LARGE(p_large),
+        OPTS_REFERENCE(refpath, refspp, "BDPT", "results/reference/window-bdpt-WxH-SPP.exr", "1024", "16384"),
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_3 [options]\n", .opts = opts, .paper = &fo.paper},
+               argc, argv);
+    int W = res[0], H = res[1];
+    opts_require_image_output(prog);
     char err[1024];
-    struct scene *sc = scene_load(scene, err, sizeof err);
+    struct scene *sc = scene_load(fo.scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
-    if (W < 0 && paper) W = 256, H = 144;
     if (W > 0) camera_resize(&sc->cam, W, H);
     W = sc->cam.width, H = sc->cam.height;
     char defref[256];
     snprintf(defref, sizeof defref, "results/reference/window-bdpt-%dx%d-%d.exr", W, H, refspp);
     if (!refpath) refpath = defref;
-    if (!ch4_mkdir(out, err, sizeof err)) {
+    if (!ch4_mkdir(fo.out, err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
-    struct image *ref = ch4_reference(sc, METHOD_BDPT, refspp, refpath, threads, prog, err, sizeof err);
-    if (!ref || !ch4_write_pair(ref, out, "reference", err, sizeof err)) {
+    struct image *ref = ch4_reference(sc, METHOD_BDPT, refspp, refpath, fo.threads, prog, err, sizeof err);
+    if (!ref || !ch4_write_pair(ref, fo.out, "reference", err, sizeof err)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 1;
     }
@@ -106,15 +81,15 @@ int main(int argc, char **argv)
     for (int m = 0; m < NMETH; m++)
         for (int s = 0; s < seeds; s++) {
             int k = m * seeds + s;
-            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[m], (unsigned long long)(seed + s), s + 1,
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[m], (unsigned long long)(fo.seed + s), s + 1,
                     seeds);
             struct image *img;
             acc[k] = NAN;
             if (m == 0) {
                 struct render_opts o = {.method = METHOD_BDPT,
                                         .spp = spp,
-                                        .seed = seed + s,
-                                        .threads = threads,
+                                        .seed = fo.seed + s,
+                                        .threads = fo.threads,
                                         .max_length = sc->max_length,
                                         .progress = isatty(2)};
                 struct render_stats st;
@@ -124,9 +99,9 @@ int main(int argc, char **argv)
                 struct mlt_opts o = {.method = MLT_PSSMLT,
                                      .p_large = p_large,
                                      .mutations = (long)spp * W * H,
-                                     .seed_paths = paper ? 1000000 : 100000,
-                                     .seed = seed + s,
-                                     .threads = threads,
+                                     .seed_paths = fo.paper ? 1000000 : 100000,
+                                     .seed = fo.seed + s,
+                                     .threads = fo.threads,
                                      .max_length = sc->max_length,
                                      .progress = isatty(2)};
                 pss_opts_default(&o.pss, W, H);
@@ -138,7 +113,7 @@ int main(int argc, char **argv)
                 }
                 acc[k] = cell_mean(&r.stats.total[PROPOSAL_SMALL]);
                 sec[k] = r.seconds + r.seed_seconds;
-                if (s == 0 && !write_stats(&r.stats, names[m], out, err, sizeof err)) {
+                if (s == 0 && !write_stats(&r.stats, names[m], fo.out, err, sizeof err)) {
                     fprintf(stderr, "%s: %s\n", prog, err);
                     return 1;
                 }
@@ -147,7 +122,7 @@ int main(int argc, char **argv)
                 mlt_result_free(&r);
             }
             rel[k] = img_relmse(img, ref, 0.01);
-            if (s == 0 && !ch4_write_pair(img, out, names[m], err, sizeof err)) {
+            if (s == 0 && !ch4_write_pair(img, fo.out, names[m], err, sizeof err)) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 return 1;
             }
@@ -158,22 +133,22 @@ int main(int argc, char **argv)
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
     FILE *all[2] = {fr, fs};
     for (int i = 0; i < 2; i++) {
-        fprintf(
-            all[i],
-            "# fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel\n");
-        fprintf(all[i], "# scene %s\n# commit %s\n# scale %s\n# resolution %dx%d\n# spp %d\n# p_large %g\n", scene,
-                GIT_COMMIT, scale, W, H, spp, p_large);
-        fprintf(all[i], "# seeds %llu..%llu\n# threads %d\n# reference %s (BDPT %d spp)\n", (unsigned long long)seed,
-                (unsigned long long)(seed + seeds - 1), threads, refpath, refspp);
-        fprintf(all[i], "# relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
-                        "min(1, a) of small steps\n");
+        csv_meta_head(all[i], "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
+                      fo.scene, fo.scale);
+        csv_meta(all[i], "resolution", "%dx%d", W, H);
+        csv_meta(all[i], "spp", "%d", spp);
+        csv_meta(all[i], "p_large", "%g", p_large);
+        ch4_meta_runs(all[i], fo.seed, seeds, fo.threads);
+        csv_meta(all[i], "reference", "%s (BDPT %d spp)", refpath, refspp);
+        csv_meta(all[i], NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
+                               "min(1, a) of small steps");
     }
     fprintf(fr, "method,seed,relmse,small_accept,seconds\n");
     fprintf(fs, "method,quantity,seeds,mean,se\n");
     for (int m = 0; m < NMETH; m++) {
         for (int s = 0; s < seeds; s++) {
             int k = m * seeds + s;
-            fprintf(fr, "%s,%llu,%.6g,%.6g,%.3f\n", names[m], (unsigned long long)(seed + s), rel[k], acc[k], sec[k]);
+            fprintf(fr, "%s,%llu,%.6g,%.6g,%.3f\n", names[m], (unsigned long long)(fo.seed + s), rel[k], acc[k], sec[k]);
         }
         double mean, se;
         ch4_mean_se(rel + m * seeds, seeds, &mean, &se);
@@ -192,8 +167,8 @@ int main(int argc, char **argv)
     }
     fclose(fr), fclose(fs);
     char p1[4096], p2[4096];
-    snprintf(p1, sizeof p1, "%s/fig4.3-runs.csv", out);
-    snprintf(p2, sizeof p2, "%s/fig4.3.csv", out);
+    snprintf(p1, sizeof p1, "%s/fig4.3-runs.csv", fo.out);
+    snprintf(p2, sizeof p2, "%s/fig4.3.csv", fo.out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err);
     free(rb), free(sb), free(rel), free(acc), free(sec);
     img_destroy(ref);

@@ -5,42 +5,34 @@
  * (seconds: CPU time spent on that length's proposals). */
 #include "base/parallel.h"
 #include "base/util.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
-#include "version.h"
 #include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const char *usage =
-    "usage: fig4_5 [options]\n"
-    "  --scene FILE         (default scenes/ajar/scene.json)\n"
-    "  --scale quick|paper  budgets (default: $SCALE, else quick)\n"
-    "  --mutations N        mutations per method, over all lengths (quick 3000000, paper 100000000)\n"
-    "  --max-length K       longest path length (default 12)\n"
-    "  --seed S             (default 1)\n"
-    "  --threads T          (default: all cores)\n"
-    "  --out DIR            (default results/fig4.5)\n";
-
 int main(int argc, char **argv)
 {
-    struct cli_figure fo = {.scene = "scenes/ajar/scene.json", .out = "results/fig4.5"};
-    cli_figure_parse("fig4_5", usage, argc, argv, &fo);
-    struct scene *sc = cli_figure_scene(&fo);
-    const char *scene = fo.scene, *out = fo.out, *scale = fo.scale;
-    bool paper = fo.paper;
-    long mutations = fo.mutations >= 0 ? fo.mutations : paper ? 100000000 : 3000000;
-    int K = fo.max_length, threads = fo.threads;
-    uint64_t seed = fo.seed;
+    struct opts_accept a;
+    struct scene *sc = opts_accept_parse(&a, "fig4_5", "scenes/ajar/scene.json", "results/fig4.5", "3000000", "100000000",
+                                         argc, argv);
+    const char *out = a.fig.out;
+    bool paper = a.fig.paper;
+    long mutations = a.mutations;
+    int K = a.max_length, threads = a.fig.threads;
+    uint64_t seed = a.fig.seed;
     char err[1024];
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    fprintf(f, "# fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets\n");
-    fprintf(f, "# scene %s\n# commit %s\n# scale %s\n# seed %llu\n# threads %d\n# mutations_per_method %ld\n", scene,
-            GIT_COMMIT, scale, (unsigned long long)seed, threads, mutations);
+    csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets", a.fig.scene,
+                  a.fig.scale);
+    csv_meta(f, "seed", "%llu", (unsigned long long)seed);
+    csv_meta(f, "threads", "%d", threads);
+    csv_meta(f, "mutations_per_method", "%ld", mutations);
     fprintf(f, "method,length,attempts,mean_accept,stderr,accepted_fraction,seconds\n");
     const char *names[2] = {"mmlt-large", "mctls"};
     for (int m = 0; m < 2; m++) {

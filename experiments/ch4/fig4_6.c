@@ -5,26 +5,16 @@
  * and OUT/reference.png; the side-by-side PNG and the table come from the Makefile's scripts. */
 #include "base/parallel.h"
 #include "base/util.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
-#include "version.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-static const char *usage =
-    "usage: fig4_6 [options]\n"
-    "  --scene FILE         (default scenes/ajar/scene.json)\n"
-    "  --scale quick|paper  budgets (default: $SCALE, else quick)\n"
-    "  --seconds S          render time per method (quick 20, paper 600)\n"
-    "  --reference FILE     cached BDPT reference EXR (default results/reference/ajar-bdpt-<spp>.exr)\n"
-    "  --reference-spp N    BDPT samples per pixel of the reference (quick 256, paper 16384)\n"
-    "  --hybrid-length K    (default 6)\n"
-    "  --seed S  --threads T  --out DIR (default results/fig4.6)\n";
 
 /* DIR/NAME.exr and DIR/NAME.png */
 static bool write_pair(const struct image *im, const char *dir, const char *name, char *err, size_t n)
@@ -64,66 +54,54 @@ static struct image *reference(const struct scene *sc, const char *path, int spp
 
 int main(int argc, char **argv)
 {
-    const char *prog = "fig4_6", *scene = "scenes/ajar/scene.json", *out = "results/fig4.6", *refpath = NULL;
-    const char *scale = getenv("SCALE") && *getenv("SCALE") ? getenv("SCALE") : "quick";
-    double seconds = -1;
-    int refspp = -1, threads = cpu_count(), hybrid = 6;
-    uint64_t seed = 1;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-#define VALUE cli_value(prog, argc, argv, &i)
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (!strcmp(o, "--scene")) scene = VALUE;
-        else if (!strcmp(o, "--scale")) scale = VALUE;
-        else if (!strcmp(o, "--seconds")) seconds = cli_double(prog, o, VALUE, 0.01, 1e6);
-        else if (!strcmp(o, "--reference")) refpath = VALUE;
-        else if (!strcmp(o, "--reference-spp")) refspp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
-        else if (!strcmp(o, "--hybrid-length")) hybrid = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
-        else if (!strcmp(o, "--seed")) seed = cli_u64(prog, o, VALUE);
-        else if (!strcmp(o, "--threads")) threads = (int)cli_long(prog, o, VALUE, 1, 1024);
-        else if (!strcmp(o, "--out")) out = VALUE;
-        else cli_fail(prog, "unknown option '%s' (see --help)", o);
-#undef VALUE
-    }
-    bool paper = !strcmp(scale, "paper");
-    if (!paper && strcmp(scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", scale);
-    cli_require_image_output(prog);
-    if (seconds < 0) seconds = paper ? 600 : 20;
-    if (refspp < 0) refspp = paper ? 16384 : 256;
+    const char *refpath = NULL;
+    struct opts_figure fo;
+    double seconds;
+    int refspp, hybrid;
+    const struct opt opts[] = {
+        OPTS_FIGURE(fo, "scenes/ajar/scene.json", "results/fig4.6"),
+        {"--seconds", OPT_DOUBLE, OPT_DST(seconds), .arg = "S", .lo = 0.01, .hi = 1e6, .help = "render time per method",
+         .def = "20", .paper = "600"},
+        OPTS_REFERENCE(refpath, refspp, "BDPT", "results/reference/ajar-bdpt-<spp>.exr", "256", "16384"),
+        OPT_HYBRID_LENGTH(hybrid, .help = "hybrid: MCTLS from path length K on, MMLT large steps below", .def = "6"),
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = "fig4_6", .usage = "usage: fig4_6 [options]\n", .opts = opts, .paper = &fo.paper},
+               argc, argv);
+    opts_require_image_output("fig4_6");
     char err[1024], defref[256];
     snprintf(defref, sizeof defref, "results/reference/ajar-bdpt-%d.exr", refspp);
     if (!refpath) refpath = defref;
-    struct scene *sc = scene_load(scene, err, sizeof err);
+    struct scene *sc = scene_load(fo.scene, err, sizeof err);
     if (!sc) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
-    mkdir(out, 0777);
-    struct image *ref = reference(sc, refpath, refspp, threads, err, sizeof err);
-    if (!ref || !write_pair(ref, out, "reference", err, sizeof err)) {
+    mkdir(fo.out, 0777);
+    struct image *ref = reference(sc, refpath, refspp, fo.threads, err, sizeof err);
+    if (!ref || !write_pair(ref, fo.out, "reference", err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         return 1;
     }
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    fprintf(f, "# fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps)\n");
-    fprintf(f, "# scene %s\n# commit %s\n# scale %s\n# seed %llu\n# threads %d\n# reference %s (%d spp BDPT)\n", scene,
-            GIT_COMMIT, scale, (unsigned long long)seed, threads, refpath, refspp);
-    fprintf(f, "# hybrid_length %d\n# relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01)\n", hybrid);
+    csv_meta_head(f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps)", fo.scene, fo.scale);
+    csv_meta(f, "seed", "%llu", (unsigned long long)fo.seed);
+    csv_meta(f, "threads", "%d", fo.threads);
+    csv_meta(f, "reference", "%s (%d spp BDPT)", refpath, refspp);
+    csv_meta(f, "hybrid_length", "%d", hybrid);
+    csv_meta(f, NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01)");
     fprintf(f, "method,seconds,mutations,relmse\n");
     const char *names[3] = {"mmlt-large", "mctls", "hybrid"};
     const enum large_step kinds[3] = {LARGE_MMLT, LARGE_MCTLS, LARGE_HYBRID};
     for (int m = 0; m < 3; m++) {
-        struct mlt_opts o = {.method = MLT_MMLT, .p_large = 1, .seconds = seconds, .seed_paths = paper ? 1000000 : 100000,
-                             .seed = seed, .threads = threads, .max_length = sc->max_length, .progress = isatty(2),
+        struct mlt_opts o = {.method = MLT_MMLT, .p_large = 1, .seconds = seconds, .seed_paths = fo.paper ? 1000000 : 100000,
+                             .seed = fo.seed, .threads = fo.threads, .max_length = sc->max_length, .progress = isatty(2),
                              .large_step = kinds[m], .hybrid_length = hybrid};
         pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
         fprintf(stderr, "fig4.6: %s for %.0f s\n", names[m], seconds);
         struct mlt_result r;
-        if (!mlt_render(sc, &o, &r, err, sizeof err) || !write_pair(r.img, out, names[m], err, sizeof err)) {
+        if (!mlt_render(sc, &o, &r, err, sizeof err) || !write_pair(r.img, fo.out, names[m], err, sizeof err)) {
             fprintf(stderr, "%s\n", err);
             return 1;
         }
@@ -132,7 +110,7 @@ int main(int argc, char **argv)
     }
     fclose(f);
     char path[4096];
-    snprintf(path, sizeof path, "%s/fig4.6.csv", out);
+    snprintf(path, sizeof path, "%s/fig4.6.csv", fo.out);
     bool ok = write_text_atomic(path, buf, err, sizeof err);
     free(buf);
     img_destroy(ref);

@@ -12,19 +12,11 @@
 #include "base/util.h"
 #include "ch5/edge_mask.h"
 #include "ch5/fig5_common.h"
+#include "common/csv_meta.h"
 #include "path/scene_ready.h"
-#include "version.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static const char *usage =
-    "usage: fig5_5 [options]\n"
-    "  --scene FILE         (default scenes/jewelry/scene.json)\n"
-    "  --scale quick|paper  sizes (default: $SCALE, else quick): quick 160x120, 64 mutations per\n"
-    "                       pixel, 4 seeds; paper 320x240, 1024, 8 seeds\n"
-    "  --resolution WxH  --mpp N  --seeds N  --seed S (first seed, default 1)  --threads T\n"
-    "  --out DIR            (default results/fig5.5)\n";
 
 enum { R_ALL, R_EDGE, R_ELSE, R_RATIO, REGIONS };
 enum { NK = 3 }; /* small-step kinds, in enum small_step's order: MMLT's, controlled, root */
@@ -41,8 +33,8 @@ static void mean_se(const double *x, int n, double *m, double *se)
 
 int main(int argc, char **argv)
 {
-    struct fig5_cfg c = {.prog = "fig5_5", .out = "results/fig5.5", .p_large = 0.1};
-    fig5_parse(argc, argv, &c, usage, 64, 1024, 4, 8);
+    struct fig5_cfg c = {.prog = "fig5_5", .fig.out = "results/fig5.5", .p_large = 0.1};
+    fig5_parse(argc, argv, &c, NULL);
     struct scene *sc = fig5_scene(&c);
     int W = c.width, H = c.height;
     bool *mask = edge_mask(sc, 2);
@@ -50,7 +42,7 @@ int main(int argc, char **argv)
     struct image *mi = img_create(W, H);
     for (int i = 0; i < W * H; i++)
         if (mask[i]) img_add(mi, i % W, i / W, v3s(1));
-    snprintf(path, sizeof path, "%s/edges.png", c.out);
+    snprintf(path, sizeof path, "%s/edges.png", c.fig.out);
     if (!fig5_write_linear_png(mi, 1, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
     img_destroy(mi);
 
@@ -61,7 +53,7 @@ int main(int argc, char **argv)
         struct image *avg = img_create(W, H);
         for (int s = 0; s < c.seeds; s++) {
             struct mlt_result r;
-            fig5_run(sc, &c, (enum small_step)kind, c.seed + (uint64_t)s, true, &r);
+            fig5_run(sc, &c, (enum small_step)kind, c.fig.seed + (uint64_t)s, true, &r);
             struct image *a = angle_acc_image(r.angle);
             img_accumulate(avg, a, 1.0 / c.seeds);
             double sum[3] = {0}, n[3] = {0};
@@ -81,19 +73,18 @@ int main(int argc, char **argv)
             img_destroy(a);
             mlt_result_free(&r);
         }
-        snprintf(path, sizeof path, "%s/%s.angle.exr", c.out, fig5_kind_name[kind]);
+        snprintf(path, sizeof path, "%s/%s.angle.exr", c.fig.out, fig5_kind_name[kind]);
         bool ok = img_write_exr(avg, 1.0, path, err, sizeof err);
-        snprintf(path, sizeof path, "%s/%s.angle.png", c.out, fig5_kind_name[kind]);
+        snprintf(path, sizeof path, "%s/%s.angle.png", c.fig.out, fig5_kind_name[kind]);
         if (!ok || !fig5_write_linear_png(avg, 0.5, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
         img_destroy(avg);
     }
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    fprintf(f, "# fig5.5: mean angle change per pixel, MMLT vs controlled small steps, Gaussian sigma 1/64\n");
-    fprintf(f, "# scene %s\n# commit %s\n# scale %s\n# resolution %dx%d\n# mutations_per_pixel %ld\n# p_large %g\n"
-               "# seeds %d from %llu\n# threads %d\n",
-            c.scene, GIT_COMMIT, c.scale, W, H, c.mpp, c.p_large, c.seeds, (unsigned long long)c.seed, c.threads);
+    fig5_meta_head(f, &c, "fig5.5: mean angle change per pixel, MMLT vs controlled small steps, Gaussian sigma 1/64");
+    csv_meta(f, "p_large", "%g", c.p_large);
+    fig5_meta_runs(f, &c);
     fprintf(f, "kind,region,mean,stderr,seeds\n");
     for (int kind = 0; kind < NK; kind++)
         for (int g = 0; g < REGIONS; g++) {

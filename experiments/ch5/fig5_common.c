@@ -3,8 +3,9 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
-#include "common/cli.h"
-#include "path/scene_ready.h"
+#include <limits.h>
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,54 +14,42 @@
 
 const char *const fig5_kind_name[3] = {"mmlt", "controlled", "root"};
 
-void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *usage, long mpp_quick, long mpp_paper,
-                int seeds_quick, int seeds_paper)
+void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *about)
 {
-    const char *prog = c->prog;
-    c->scene = "scenes/jewelry/scene.json";
-    c->scale = getenv("SCALE") && *getenv("SCALE") ? getenv("SCALE") : "quick";
-    c->threads = cpu_count();
-    c->seed = 1;
-    c->mpp = c->seeds = c->width = -1;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            exit(0);
-        } else if (!strcmp(o, "--scene")) c->scene = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--scale")) c->scale = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--mpp")) c->mpp = cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1L << 30);
-        else if (!strcmp(o, "--seeds")) c->seeds = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 2, 1000);
-        else if (!strcmp(o, "--seed")) c->seed = cli_u64(prog, o, cli_value(prog, argc, argv, &i));
-        else if (!strcmp(o, "--threads")) c->threads = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 1024);
-        else if (!strcmp(o, "--out")) c->out = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--resolution")) {
-            const char *v = cli_value(prog, argc, argv, &i);
-            if (sscanf(v, "%dx%d", &c->width, &c->height) != 2 || c->width < 8 || c->height < 8)
-                cli_fail(prog, "--resolution: expected WxH, got '%s'", v);
-        } else cli_fail(prog, "unknown option '%s' (see --help)", o);
-    }
-    bool paper = !strcmp(c->scale, "paper");
-    if (!paper && strcmp(c->scale, "quick")) cli_fail(prog, "--scale: expected quick or paper, got '%s'", c->scale);
-    if (c->mpp < 0) c->mpp = paper ? mpp_paper : mpp_quick;
-    if (c->seeds < 0) c->seeds = paper ? seeds_paper : seeds_quick;
-    if (c->width < 0) {
-        c->width = paper ? 320 : 160;
-        c->height = paper ? 240 : 120;
-    }
-    c->seed_paths = paper ? 1000000 : 100000;
+    int res[2];
+    const struct opt opts[] = {
+        OPTS_FIGURE(c->fig, "scenes/jewelry/scene.json", c->fig.out),
+        OPT_RESOLUTION(res, .lo = 8, .hi = INT_MAX, .expect = "WxH", .help = "image size", .def = "160x120", .paper = "320x240"),
+        {"--mpp", OPT_INT, OPT_DST(c->mpp), .arg = "N", .lo = 1, .hi = 1L << 30, .help = "mutations per pixel", .def = "64",
+         .paper = "1024"},
+        OPT_SEEDS(c->seeds, .help = "independent runs of each small-step kind, seeds S..S+N-1", .def = "4", .paper = "8"),
+        {0}};
+    char usage[64];
+    snprintf(usage, sizeof usage, "usage: %s [options]\n", c->prog);
+    opts_parse(&(struct opts_spec){.prog = c->prog, .usage = usage, .about = about, .opts = opts, .paper = &c->fig.paper},
+               argc, argv);
+    c->width = res[0], c->height = res[1];
+    c->seed_paths = c->fig.paper ? 1000000 : 100000;
     c->max_length = 8;
-    mkdir(c->out, 0777);
+    mkdir(c->fig.out, 0777);
+}
+
+void fig5_meta_head(FILE *f, const struct fig5_cfg *c, const char *title)
+{
+    csv_meta_head(f, title, c->fig.scene, c->fig.scale);
+    csv_meta(f, "resolution", "%dx%d", c->width, c->height);
+    csv_meta(f, "mutations_per_pixel", "%ld", c->mpp);
+}
+
+void fig5_meta_runs(FILE *f, const struct fig5_cfg *c)
+{
+    csv_meta(f, "seeds", "%d from %llu", c->seeds, (unsigned long long)c->fig.seed);
+    csv_meta(f, "threads", "%d", c->fig.threads);
 }
 
 struct scene *fig5_scene(const struct fig5_cfg *c)
 {
-    char err[1024];
-    struct scene *sc = scene_load(c->scene, err, sizeof err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err);
-        exit(2);
-    }
+    struct scene *sc = opts_figure_scene(&c->fig);
     camera_resize(&sc->cam, c->width, c->height);
     return sc;
 }
@@ -69,7 +58,7 @@ void fig5_run(const struct scene *sc, const struct fig5_cfg *c, enum small_step 
               struct mlt_result *r)
 {
     struct mlt_opts o = {.method = MLT_MMLT, .p_large = c->p_large, .mutations = c->mpp * c->width * c->height,
-                         .seed_paths = c->seed_paths, .seed = seed, .threads = c->threads, .max_length = c->max_length,
+                         .seed_paths = c->seed_paths, .seed = seed, .threads = c->fig.threads, .max_length = c->max_length,
                          .progress = isatty(2), .small_step = kind, .angle_stats = angle};
     pss_opts_default(&o.pss, camera_film_width(&sc->cam), camera_film_height(&sc->cam));
     o.pss.kernel = KERNEL_GAUSSIAN;
@@ -100,7 +89,7 @@ bool fig5_write_linear_png(const struct image *im, double white, const char *pat
 void fig5_write_text(const struct fig5_cfg *c, const char *name, const char *text)
 {
     char path[4096], err[1024];
-    snprintf(path, sizeof path, "%s/%s", c->out, name);
+    snprintf(path, sizeof path, "%s/%s", c->fig.out, name);
     if (!write_text_atomic(path, text, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         exit(1);

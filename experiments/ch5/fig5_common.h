@@ -3,20 +3,26 @@
 #ifndef FIG5_COMMON_H
 #define FIG5_COMMON_H
 
+#include "common/opts.h"
 #include "mcmc/mlt.h"
+#include <stdio.h>
 
 struct fig5_cfg {
-    const char *prog, *scene, *out, *scale;
-    int width, height, seeds, threads, max_length;
+    const char *prog;
+    struct opts_figure fig; /* scene, scale, seed, threads, out */
+    int width, height, seeds, max_length;
     long mpp, seed_paths;
     double p_large;
-    uint64_t seed;
 };
 
-/* Parses the shared options (see the usage text each tool prints); scale presets fill what was
- * not given: quick or paper, from --scale, else $SCALE, else quick. */
-void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *usage, long mpp_quick, long mpp_paper,
-                int seeds_quick, int seeds_paper);
+/* Parses the shared options (opts.h: OPTS_FIGURE, --resolution, --mpp, --seeds; `about` follows the
+ * usage line of --help); the scale presets fill what was not given. c->prog and c->fig.out (the
+ * default folder) are set first. */
+void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *about);
+/* The metadata lines (csv_meta.h) the figures share: at the top, "# TITLE", scene, commit, scale,
+ * "# resolution WxH", "# mutations_per_pixel N"; fig5_meta_runs: "# seeds N from S", "# threads T". */
+void fig5_meta_head(FILE *f, const struct fig5_cfg *c, const char *title);
+void fig5_meta_runs(FILE *f, const struct fig5_cfg *c);
 /* Loads the scene at the configured resolution (exits with one error line on failure). */
 struct scene *fig5_scene(const struct fig5_cfg *c);
 /* One MMLT run: Gaussian kernel (sigma 1/64) for both small-step kinds, same everything else. */

@@ -4,18 +4,12 @@
  *     it (column = atan2(z, x) / 2pi + 0.5, row = theta / pi from +y).
  *   wood PNG: rough-plastic albedo texture, growth rings distorted by noise, streaks along u.
  * Deterministic (fixed hash noise, no RNG state), so rerunning reproduces the committed files. */
-#include "common/cli.h"
+#include "common/opts.h"
 #include "io/image.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static const char *usage =
-    "usage: ch6_assets --sky FILE.exr --sun X,Y,Z [--size WxH] | --wood FILE.png [--size WxH]\n"
-    "  --sky FILE   equirectangular HDR sky with a sun toward direction X,Y,Z (y up)\n"
-    "  --wood FILE  wood albedo texture (8-bit PNG, sRGB)\n"
-    "  --size WxH   (sky default 256x128, wood default 128x128)\n";
 
 static double hash2(int x, int y, int seed)
 {
@@ -95,35 +89,36 @@ static struct image *wood(int w, int h)
     return im;
 }
 
+/* --sun X,Y,Z: a direction, not all zero */
+static bool parse_sun(const char *v, void *dst, char *why, size_t n)
+{
+    vec3 *sun = dst;
+    if (sscanf(v, "%lf,%lf,%lf", &sun->x, &sun->y, &sun->z) == 3 && sun->x * sun->x + sun->y * sun->y + sun->z * sun->z > 0)
+        return true;
+    snprintf(why, n, "expected X,Y,Z (not all zero), got '%s'", v);
+    return false;
+}
+
 int main(int argc, char **argv)
 {
     const char *prog = "ch6_assets", *skyp = NULL, *woodp = NULL;
-    int w = 0, h = 0;
-    vec3 sun = {0, 1, 0};
-    bool have_sun = false;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-#define VALUE cli_value(prog, argc, argv, &i)
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (!strcmp(o, "--sky")) skyp = VALUE;
-        else if (!strcmp(o, "--wood")) woodp = VALUE;
-        else if (!strcmp(o, "--sun")) {
-            const char *v = VALUE;
-            if (sscanf(v, "%lf,%lf,%lf", &sun.x, &sun.y, &sun.z) != 3 || !(sun.x * sun.x + sun.y * sun.y + sun.z * sun.z > 0))
-                cli_fail(prog, "--sun: expected X,Y,Z (not all zero), got '%s'", v);
-            have_sun = true;
-        } else if (!strcmp(o, "--size")) {
-            const char *v = VALUE;
-            if (sscanf(v, "%dx%d", &w, &h) != 2 || w < 8 || h < 4 || w > 8192 || h > 8192)
-                cli_fail(prog, "--size: expected WxH between 8x4 and 8192x8192, got '%s'", v);
-        } else cli_fail(prog, "unknown option '%s' (see --help)", o);
-#undef VALUE
-    }
-    if (!skyp == !woodp) cli_fail(prog, "give exactly one of --sky or --wood (see --help)");
-    if (skyp && !have_sun) cli_fail(prog, "--sky needs --sun X,Y,Z");
-    cli_require_image_output(prog);
+    int size[2] = {0, 0};
+    vec3 sun = {0, 0, 0}; /* stays 0 unless --sun is given */
+    const struct opt opts[] = {
+        {"--sky", OPT_STRING, OPT_DST(skyp), .arg = "FILE", .help = "equirectangular HDR sky with a sun toward direction X,Y,Z (y up)"},
+        {"--sun", OPT_CALL, .dst = &sun, .call = parse_sun, .arg = "X,Y,Z", .help = "the sun's direction (needed by --sky)"},
+        {"--wood", OPT_STRING, OPT_DST(woodp), .arg = "FILE", .help = "wood albedo texture (8-bit PNG, sRGB)"},
+        {"--size", OPT_WXH, OPT_DST(size), .arg = "WxH", .lo = 8, .hi = 8192, .lo2 = 4, .hi2 = 8192,
+         .expect = "WxH between 8x4 and 8192x8192", .help = "(sky default 256x128, wood default 128x128)"},
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: ch6_assets --sky FILE.exr --sun X,Y,Z [--size WxH] | --wood FILE.png [--size WxH]\n",
+                                   .opts = opts},
+               argc, argv);
+    bool have_sun = sun.x || sun.y || sun.z;
+    int w = size[0], h = size[1];
+    if (!skyp == !woodp) opts_fail(prog, "give exactly one of --sky or --wood (see --help)");
+    if (skyp && !have_sun) opts_fail(prog, "--sky needs --sun X,Y,Z");
+    opts_require_image_output(prog);
     char err[1024];
     bool ok;
     if (skyp) {

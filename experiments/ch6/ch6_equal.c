@@ -17,10 +17,11 @@
 #include "base/dist.h"
 #include "base/util.h"
 #include "ch6/ch6_stats.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "io/image.h"
-#include "version.h"
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,28 +29,6 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-static const char *usage =
-    "usage: ch6_equal --scene FILE --out DIR [options]\n"
-    "  --scene FILE          scene JSON\n"
-    "  --name NAME           label in the outputs (default: the scene's folder name)\n"
-    "  --out DIR             output folder\n"
-    "  --methods LIST        comma-separated methods (default pssmlt,mmlt,pitp); an item NAME=ARGS runs\n"
-    "                        bin/render with ARGS (spaces separate them), e.g. 'mctls=--method mmlt --large-step mctls'\n"
-    "  --seeds N             seeds 1..N per method and budget (default 4)\n"
-    "  --time T              largest budget in seconds per run (default 8)\n"
-    "  --t0 S                smallest budget; budgets double from it up to T (default T: one budget)\n"
-    "  --resolution WxH      override the camera (also for the reference)\n"
-    "  --reference FILE      cached BDPT reference EXR, re-rendered when older than the scene file\n"
-    "                        (default results/reference/NAME-bdpt-WxH-minK-SPP.exr)\n"
-    "  --reference-spp N     BDPT samples per pixel of the reference (default 256)\n"
-    "  --min-length K        paths of K segments or more only, reference and runs (default 1: all;\n"
-    "                        the thesis's chapter 6 uses 3: no direct lighting)\n"
-    "  --render-args ARGS    extra bin/render options for every run (default '--p-large 0.1')\n"
-    "  --block B             block size of the error spread (default 16)\n"
-    "  --threads T           threads per run (default 2)\n"
-    "  --render PATH         the renderer (default: bin/render beside this tool)\n"
-    "  --reuse               keep the run files already in OUT/runs (same names) instead of rendering\n";
 
 #define MAX_METHODS 16
 #define MAX_BUDGETS 16
@@ -147,51 +126,55 @@ static void fail(const char *msg1, const char *msg2)
 int main(int argc, char **argv)
 {
     const char *prog = "ch6_equal", *scene = NULL, *out = NULL, *name = NULL, *refpath = NULL, *res = NULL;
-    char methods_s[4096] = "pssmlt,mmlt,pitp", extra_s[1024] = "--p-large 0.1", render[4096] = "";
-    int seeds = 4, refspp = 256, blk = 16, threads = 2, minlen = 1;
-    double T = 8, t0 = -1;
+    const char *methods_arg, *extra_arg, *render_arg = NULL;
+    char methods_s[4096], extra_s[1024], render[4096] = "";
+    int seeds, refspp, blk, threads, minlen;
+    double T, t0 = -1;
     bool reuse = false;
+    const struct opt opts[] = {
+        OPT_SCENE(scene, .help = "scene JSON"),
+        {"--name", OPT_STRING, OPT_DST(name), .arg = "NAME", .help = "label in the outputs (default: the scene's folder name)"},
+        OPT_OUT(out, .arg = "DIR", .help = "output folder"),
+        {"--methods", OPT_STRING, OPT_DST(methods_arg), .arg = "LIST", .def = "pssmlt,mmlt,pitp",
+         .help = "comma-separated methods; an item NAME=ARGS runs bin/render with ARGS (spaces separate them), e.g. "
+                 "'mctls=--method mmlt --large-step mctls'"},
+        {"--seeds", OPT_INT, OPT_DST(seeds), .arg = "N", .lo = 2, .hi = MAX_SEEDS, .help = "seeds 1..N per method and budget",
+         .def = "4"},
+        {"--time", OPT_DOUBLE, OPT_DST(T), .arg = "T", .lo = 0.01, .hi = 1e6, .help = "largest budget in seconds per run",
+         .def = "8"},
+        {"--t0", OPT_DOUBLE, OPT_DST(t0), .arg = "S", .lo = 0.01, .hi = 1e6,
+         .help = "smallest budget; budgets double from it up to T (default T: one budget)"},
+        {"--resolution", OPT_WXH, .str = &res, .arg = "WxH", .lo = 1, .hi = INT_MAX, .expect = "WxH with positive integers",
+         .help = "override the camera (also for the reference)"},
+        OPT_REFERENCE(refpath, .help = "cached BDPT reference EXR, re-rendered when older than the scene file (default "
+                                       "results/reference/NAME-bdpt-WxH-minK-SPP.exr)"),
+        OPT_REFERENCE_SPP(refspp, .help = "BDPT samples per pixel of the reference", .def = "256"),
+        OPT_MIN_LENGTH(minlen, .hi = 64, .def = "1",
+                       .help = "paths of K segments or more only, reference and runs (1: all; the thesis's chapter 6 uses "
+                               "3: no direct lighting)"),
+        {"--render-args", OPT_STRING, OPT_DST(extra_arg), .arg = "ARGS", .help = "extra bin/render options for every run",
+         .def = "--p-large 0.1"},
+        {"--block", OPT_INT, OPT_DST(blk), .arg = "B", .lo = 2, .hi = 1024, .help = "block size of the error spread", .def = "16"},
+        OPT_THREADS(threads, .hi = 1024, .help = "threads per run", .def = "2"),
+        {"--render", OPT_STRING, OPT_DST(render_arg), .arg = "PATH", .help = "the renderer (default: bin/render beside this tool)"},
+        {"--reuse", OPT_FLAG, OPT_DST(reuse), .help = "keep the run files already in OUT/runs (same names) instead of rendering"},
+        {0}};
     /* Several copies would each run every render; MPI goes through --render instead (README MPI). */
     dist_refuse_ranks();
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-#define VALUE cli_value(prog, argc, argv, &i)
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (!strcmp(o, "--scene")) scene = VALUE;
-        else if (!strcmp(o, "--name")) name = VALUE;
-        else if (!strcmp(o, "--out")) out = VALUE;
-        else if (!strcmp(o, "--methods")) snprintf(methods_s, sizeof methods_s, "%s", VALUE);
-        else if (!strcmp(o, "--seeds")) seeds = (int)cli_long(prog, o, VALUE, 2, MAX_SEEDS);
-        else if (!strcmp(o, "--time")) T = cli_double(prog, o, VALUE, 0.01, 1e6);
-        else if (!strcmp(o, "--t0")) t0 = cli_double(prog, o, VALUE, 0.01, 1e6);
-        else if (!strcmp(o, "--resolution")) res = VALUE;
-        else if (!strcmp(o, "--reference")) refpath = VALUE;
-        else if (!strcmp(o, "--reference-spp")) refspp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
-        else if (!strcmp(o, "--render-args")) snprintf(extra_s, sizeof extra_s, "%s", VALUE);
-        else if (!strcmp(o, "--min-length")) minlen = (int)cli_long(prog, o, VALUE, 1, 64);
-        else if (!strcmp(o, "--block")) blk = (int)cli_long(prog, o, VALUE, 2, 1024);
-        else if (!strcmp(o, "--threads")) threads = (int)cli_long(prog, o, VALUE, 1, 1024);
-        else if (!strcmp(o, "--reuse")) reuse = true;
-        else if (!strcmp(o, "--render")) snprintf(render, sizeof render, "%s", VALUE);
-        else cli_fail(prog, "unknown option '%s' (see --help)", o);
-#undef VALUE
-    }
-    if (!scene || !out) cli_fail(prog, "--scene and --out are required (see --help)");
-    if (strlen(out) > 2000) cli_fail(prog, "--out: path too long");
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: ch6_equal --scene FILE --out DIR [options]\n", .opts = opts},
+               argc, argv);
+    snprintf(methods_s, sizeof methods_s, "%s", methods_arg);
+    snprintf(extra_s, sizeof extra_s, "%s", extra_arg);
+    if (render_arg) snprintf(render, sizeof render, "%s", render_arg);
+    if (!scene || !out) opts_fail(prog, "--scene and --out are required (see --help)");
+    if (strlen(out) > 2000) opts_fail(prog, "--out: path too long");
     if (t0 < 0) t0 = T;
-    if (t0 > T) cli_fail(prog, "--t0 %g is larger than --time %g", t0, T);
+    if (t0 > T) opts_fail(prog, "--t0 %g is larger than --time %g", t0, T);
     int nb = 0;
     double budgets[MAX_BUDGETS];
     for (double b = t0; b <= T * (1 + 1e-9) && nb < MAX_BUDGETS; b *= 2) budgets[nb++] = b;
     if (fabs(budgets[nb - 1] - T) > 1e-9 * T && nb < MAX_BUDGETS) budgets[nb++] = T;
-    if (res) {
-        int w, h;
-        if (sscanf(res, "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0)
-            cli_fail(prog, "--resolution: expected WxH with positive integers, got '%s'", res);
-    }
-    if (access(scene, R_OK)) cli_fail(prog, "--scene: cannot read '%s'", scene);
+    if (access(scene, R_OK)) opts_fail(prog, "--scene: cannot read '%s'", scene);
     char sname[256];
     if (!name) {
         snprintf(sname, sizeof sname, "%s", scene);
@@ -209,15 +192,15 @@ int main(int argc, char **argv)
         *sl = 0;
         snprintf(render, sizeof render, "%s/render", self);
     }
-    if (access(render, X_OK)) cli_fail(prog, "--render: '%s' is not executable", render);
-    cli_require_image_output(prog);
+    if (access(render, X_OK)) opts_fail(prog, "--render: '%s' is not executable", render);
+    opts_require_image_output(prog);
 
     /* Methods: parse and probe. */
     struct method ms[MAX_METHODS];
     int nm = 0;
     char *mdup = xstrdup(methods_s), *save = NULL;
     for (char *item = strtok_r(mdup, ",", &save); item; item = strtok_r(NULL, ",", &save)) {
-        if (nm == MAX_METHODS) cli_fail(prog, "--methods: at most %d", MAX_METHODS);
+        if (nm == MAX_METHODS) opts_fail(prog, "--methods: at most %d", MAX_METHODS);
         struct method *m = &ms[nm++];
         memset(m, 0, sizeof *m);
         char *eq = strchr(item, '=');
@@ -229,7 +212,7 @@ int main(int argc, char **argv)
             m->argv[m->argc++] = item;
         }
         snprintf(m->name, sizeof m->name, "%s", item);
-        if (!*m->name || m->argc == 0) cli_fail(prog, "--methods: empty item in '%s'", methods_s);
+        if (!*m->name || m->argc == 0) opts_fail(prog, "--methods: empty item in '%s'", methods_s);
         /* probe: bin/render [method args] --help exits 0 when it accepts them */
         char *pv[MAX_ARGS + 4];
         int pc = 0;
@@ -346,12 +329,15 @@ int main(int argc, char **argv)
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    fprintf(f, "# ch6_equal: equal-time renders of %s\n# commit %s\n# reference %s (%d spp BDPT)\n# render args %s\n",
-            scene, GIT_COMMIT, refpath, refspp, extra_s);
-    fprintf(f, "# min_length %d\n# relmse eps = 0.01 * (reference mean luminance %.6g)^2\n", minlen, mlum);
-    fprintf(f, "# budgets are separate runs with the same seed (no snapshots); wall-clock --time on a shared machine\n");
+    csv_meta(f, NULL, "ch6_equal: equal-time renders of %s", scene);
+    csv_meta_commit(f);
+    csv_meta(f, "reference", "%s (%d spp BDPT)", refpath, refspp);
+    csv_meta(f, "render args", "%s", extra_s);
+    csv_meta(f, "min_length", "%d", minlen);
+    csv_meta(f, "relmse eps", "= 0.01 * (reference mean luminance %.6g)^2", mlum);
+    csv_meta(f, NULL, "budgets are separate runs with the same seed (no snapshots); wall-clock --time on a shared machine");
     for (int mi = 0; mi < nm; mi++)
-        if (!ms[mi].available) fprintf(f, "# method %s not available in this build (skipped)\n", ms[mi].name);
+        if (!ms[mi].available) csv_meta(f, "method", "%s not available in this build (skipped)", ms[mi].name);
     fprintf(f, "scene,method,seed,budget,seconds,mutations,mutations_per_s,relmse,block_spread,nonzero,large_nonzero\n");
     for (int mi = 0; mi < nm; mi++)
         if (ms[mi].available)
@@ -368,7 +354,7 @@ int main(int argc, char **argv)
 
     buf = NULL;
     f = open_memstream(&buf, &len);
-    fprintf(f, "# mean +- standard error over %d seeds\n", seeds);
+    csv_meta(f, NULL, "mean +- standard error over %d seeds", seeds);
     fprintf(f, "scene,method,budget,seeds,relmse,relmse_se,block_spread,block_spread_se,mutations_per_s,mutations_per_s_se,"
                "nonzero,nonzero_se,large_nonzero,large_nonzero_se\n");
     double sum[MAX_METHODS][6][2];

@@ -11,16 +11,13 @@
  * shares) and r (correlation of the within-block shares over B x B blocks). Writes
  * `run,tv,r,cells,references` rows to OUT.csv (atomically). */
 #include "base/util.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "io/image.h"
 #include "stats/tech_image.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static const char *usage =
-    "usage: ch6_tech --k K --out OUT.csv [--block B] --ref PREFIX... --run PREFIX...\n"
-    "  PREFIX: a bin/render --technique-images K output prefix (PREFIX.tech-tT.exr, PREFIX.count-tT.exr)\n";
 
 static struct image *load(const char *prefix, const char *kind, int t, int w, int h)
 {
@@ -38,36 +35,39 @@ static struct image *load(const char *prefix, const char *kind, int t, int w, in
     return im;
 }
 
+/* The prefixes after --ref (mode 1) and after --run (mode 2). */
+struct prefixes {
+    const char **ref, **run;
+    int nref, nrun, mode;
+};
+
+static void prefix_arg(const char *prog, const char *arg, void *ctx)
+{
+    struct prefixes *p = ctx;
+    if (p->mode == 1) p->ref[p->nref++] = arg;
+    else if (p->mode == 2) p->run[p->nrun++] = arg;
+    else opts_fail(prog, "'%s': give prefixes after --ref or --run (see --help)", arg);
+}
+
 int main(int argc, char **argv)
 {
     const char *prog = "ch6_tech", *out = NULL;
-    int k = 0, blk = 8, nref = 0, nrun = 0, mode = 0;
-    const char **ref = xcalloc((size_t)argc, sizeof *ref), **run = xcalloc((size_t)argc, sizeof *run);
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (!strcmp(o, "--k"))
-            k = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
-        else if (!strcmp(o, "--block"))
-            blk = (int)cli_long(prog, o, cli_value(prog, argc, argv, &i), 1, 4096);
-        else if (!strcmp(o, "--out"))
-            out = cli_value(prog, argc, argv, &i);
-        else if (!strcmp(o, "--ref"))
-            mode = 1;
-        else if (!strcmp(o, "--run"))
-            mode = 2;
-        else if (o[0] == '-')
-            cli_fail(prog, "unknown option '%s' (see --help)", o);
-        else if (mode == 1)
-            ref[nref++] = o;
-        else if (mode == 2)
-            run[nrun++] = o;
-        else
-            cli_fail(prog, "'%s': give prefixes after --ref or --run (see --help)", o);
-    }
-    if (!k || !out || !nref || !nrun) cli_fail(prog, "--k, --out, --ref and --run are required (see --help)");
+    int k = 0, blk;
+    struct prefixes p = {xcalloc((size_t)argc, sizeof *p.ref), xcalloc((size_t)argc, sizeof *p.run), 0, 0, 0};
+    const struct opt opts[] = {
+        {"--k", OPT_INT, OPT_DST(k), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, .help = "the path length of the technique images"},
+        {"--block", OPT_INT, OPT_DST(blk), .arg = "B", .lo = 1, .hi = 4096, .help = "block size of the correlation", .def = "8"},
+        {"--out", OPT_STRING, OPT_DST(out), .arg = "OUT.csv", .help = "the rows run,tv,r,cells,references"},
+        {"--ref", OPT_FLAG, OPT_DST(p.mode), .value = 1, .help = "the prefixes that follow are references"},
+        {"--run", OPT_FLAG, OPT_DST(p.mode), .value = 2, .help = "the prefixes that follow are the runs scored"},
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: ch6_tech --k K --out OUT.csv [--block B] --ref PREFIX... --run PREFIX...\n",
+                                   .about = "  PREFIX: a bin/render --technique-images K output prefix (PREFIX.tech-tT.exr, PREFIX.count-tT.exr)\n",
+                                   .opts = opts, .positional = prefix_arg, .ctx = &p},
+               argc, argv);
+    const char **ref = p.ref, **run = p.run;
+    int nref = p.nref, nrun = p.nrun;
+    if (!k || !out || !nref || !nrun) opts_fail(prog, "--k, --out, --ref and --run are required (see --help)");
     /* the yardstick: the sum of the reference runs' contribution images */
     struct image *first = load(ref[0], "tech", 1, 0, 0), *sum[TECH_MAX] = {0};
     int w = first->w, h = first->h;
@@ -85,16 +85,16 @@ int main(int argc, char **argv)
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    fprintf(f,
-            "# ch6_tech: sample counts of each run against the mean contribution of the %d reference runs (leaving out "
-            "the run), %dx%d blocks\n",
-            nref, blk, blk);
+    csv_meta(f, NULL,
+             "ch6_tech: sample counts of each run against the mean contribution of the %d reference runs (leaving out "
+             "the run), %dx%d blocks",
+             nref, blk, blk);
     fprintf(f, "run,tv,r,cells,references\n");
     for (int i = 0; i < nrun; i++) {
         bool own = false;
         for (int j = 0; j < nref; j++)
             own |= !strcmp(ref[j], run[i]);
-        if (own && nref < 2) cli_fail(prog, "%s: the only reference is the run itself", run[i]);
+        if (own && nref < 2) opts_fail(prog, "%s: the only reference is the run itself", run[i]);
         int nr = nref - own;
         for (int t = 1; t <= k + 1; t++) {
             memset(a.contrib[t]->px, 0, sizeof(double) * 3 * (size_t)w * h);

@@ -10,10 +10,10 @@
  * inversion failures and the mean |j - i|. */
 #include "base/parallel.h"
 #include "base/util.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
-#include "version.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,16 +22,6 @@
 
 enum { RUNS = 4 };              /* independent runs per method */
 enum { MIN_ATTEMPTS = 16000 };  /* proposals a cell needs to be written */
-
-static const char *usage =
-    "usage: fig6_1 [options]\n"
-    "  --scene FILE         (default scenes/ajar/scene.json)\n"
-    "  --scale quick|paper  budgets (default: $SCALE, else quick)\n"
-    "  --mutations N        mutations per method, over all lengths (quick 8000000, paper 100000000)\n"
-    "  --max-length K       longest path length (default 12)\n"
-    "  --seed S             (default 1)\n"
-    "  --threads T          (default: all cores)\n"
-    "  --out DIR            (default results/fig6.1)\n";
 
 static bool write_file(const char *dir, const char *name, const char *text)
 {
@@ -47,24 +37,25 @@ static bool write_file(const char *dir, const char *name, const char *text)
 
 int main(int argc, char **argv)
 {
-    struct cli_figure fo = {.scene = "scenes/ajar/scene.json", .out = "results/fig6.1"};
-    cli_figure_parse("fig6_1", usage, argc, argv, &fo);
-    struct scene *sc = cli_figure_scene(&fo);
-    const char *scene = fo.scene, *out = fo.out, *scale = fo.scale;
-    bool paper = fo.paper;
-    long mutations = fo.mutations >= 0 ? fo.mutations : paper ? 100000000 : 8000000;
-    int K = fo.max_length, threads = fo.threads;
-    uint64_t seed = fo.seed;
+    struct opts_accept a;
+    struct scene *sc = opts_accept_parse(&a, "fig6_1", "scenes/ajar/scene.json", "results/fig6.1", "8000000", "100000000",
+                                         argc, argv);
+    bool paper = a.fig.paper;
+    long mutations = a.mutations;
+    int K = a.max_length, threads = a.fig.threads;
+    uint64_t seed = a.fig.seed;
     char err[1024];
     char *buf = NULL, *pbuf = NULL;
     size_t len = 0, plen = 0;
     FILE *f = open_memstream(&buf, &len), *pf = open_memstream(&pbuf, &plen);
-    const char *head = "# fig6.1: small-step acceptance, MMLT vs PITP, p_large = 0.1, uniform length budgets\n";
+    const char *head = "fig6.1: small-step acceptance, MMLT vs PITP, p_large = 0.1, uniform length budgets";
     for (int q = 0; q < 2; q++) {
         FILE *g = q ? pf : f;
-        fputs(head, g);
-        fprintf(g, "# scene %s\n# commit %s\n# scale %s\n# seed %llu\n# threads %d\n# mutations_per_method %ld\n# seed_paths %ld\n",
-                scene, GIT_COMMIT, scale, (unsigned long long)seed, threads, mutations, paper ? 1000000L : 100000L);
+        csv_meta_head(g, head, a.fig.scene, a.fig.scale);
+        csv_meta(g, "seed", "%llu", (unsigned long long)seed);
+        csv_meta(g, "threads", "%d", threads);
+        csv_meta(g, "mutations_per_method", "%ld", mutations);
+        csv_meta(g, "seed_paths", "%ld", paper ? 1000000L : 100000L);
     }
     fprintf(f, "method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,runs,run_se\n");
     fprintf(pf, "length,perturbations,changed_fraction,failures,failure_fraction,mean_dtech\n");
@@ -122,7 +113,7 @@ int main(int argc, char **argv)
     }
     fclose(f);
     fclose(pf);
-    bool ok = write_file(out, "fig6.1.csv", buf) && write_file(out, "fig6.1-pitp.csv", pbuf);
+    bool ok = write_file(a.fig.out, "fig6.1.csv", buf) && write_file(a.fig.out, "fig6.1-pitp.csv", pbuf);
     free(buf);
     free(pbuf);
     scene_free(sc);

@@ -9,7 +9,8 @@
 #include "cmlt/cmlt_mcmc.h"
 #include "cmlt/cmlt_reference.h"
 #include "cmlt/cmlt_scene.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "io/image.h"
 #include <errno.h>
 #include <math.h>
@@ -33,120 +34,60 @@ struct opts {
     double p_large, seed_frac;
 };
 
-static void usage(FILE *f)
+/* --budgets LIST: comma-separated sample counts, suffix k or M, each in [1024, 1e12] */
+static bool parse_budgets(const char *s, void *dst, char *why, size_t len)
 {
-    fprintf(f,
-            "usage: table1_cmlt [options]\n"
-            "Reproduces Table 1 and Figure 3 of the CMLT paper on its two-light toy: RMSE of six MCMC\n"
-            "algorithms (PSS-MLT-1/2/AVG/MIX, CMLT-EPSM, CMLT) against a Monte Carlo reference.\n"
-            "  --scale quick|paper  defaults for budgets and seeds (default $SCALE or quick)\n"
-            "  --budgets LIST       comma-separated total samples per algorithm, suffix k or M\n"
-            "                       (quick: 1M,8M; paper: 16M,128M)\n"
-            "  --seeds K            independent runs per algorithm and budget (quick 10, paper 8)\n"
-            "  --seed S             base seed (default 1)\n"
-            "  --threads T          worker threads (default 2)\n"
-            "  --res N              image resolution N x N (default 128)\n"
-            "  --ref-spp N          reference samples per pixel (quick 16384, paper 65536)\n"
-            "  --p-large P          large-step probability (default 0.1)\n"
-            "  --swap-every K       CMLT chart swap every K iterations (default 4)\n"
-            "  --seed-frac F        seed-pass samples per chart = F * n (default 0.0625)\n"
-            "  --out DIR            output directory (default results/table1-cmlt)\n"
-            "  --commit ID          recorded in the CSV metadata\n"
-            "  --bench              time each algorithm on one thread, print steps/s; no table\n"
-            "  --help               this text\n");
-}
-
-static void bad(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "table1_cmlt: ");
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, " (see --help)\n");
-    va_end(ap);
-    exit(2);
-}
-
-static long parse_int(const char *opt, const char *s, long lo, long hi)
-{
-    char *end;
-    errno = 0;
-    long v = strtol(s, &end, 10);
-    if (errno || end == s || *end || v < lo || v > hi) bad("%s: expected an integer in [%ld, %ld], got '%s'", opt, lo, hi, s);
-    return v;
-}
-
-static double parse_double(const char *opt, const char *s, double lo, double hi)
-{
-    char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (errno || end == s || *end || !(v >= lo && v <= hi)) bad("%s: expected a number in [%g, %g], got '%s'", opt, lo, hi, s);
-    return v;
-}
-
-static int parse_budgets(const char *s, uint64_t *out)
-{
+    struct opts *o = dst;
     int n = 0;
     const char *p = s;
     while (*p) {
         char *end;
         errno = 0;
         double v = strtod(p, &end);
-        if (errno || end == p) bad("--budgets: cannot read a number in '%s'", s);
+        if (errno || end == p) return snprintf(why, len, "cannot read a number in '%s'", s), false;
         if (*end == 'k' || *end == 'K') v *= 1e3, end++;
         else if (*end == 'M' || *end == 'm') v *= 1e6, end++;
-        if (*end && *end != ',') bad("--budgets: unexpected '%c' in '%s'", *end, s);
-        if (!(v >= 1024 && v <= 1e12)) bad("--budgets: each budget must be in [1024, 1e12], got '%s'", s);
-        if (n == MAX_BUDGETS) bad("--budgets: at most %d budgets", MAX_BUDGETS);
-        out[n++] = (uint64_t)v;
+        if (*end && *end != ',') return snprintf(why, len, "unexpected '%c' in '%s'", *end, s), false;
+        if (!(v >= 1024 && v <= 1e12)) return snprintf(why, len, "each budget must be in [1024, 1e12], got '%s'", s), false;
+        if (n == MAX_BUDGETS) return snprintf(why, len, "at most %d budgets", MAX_BUDGETS), false;
+        o->budgets[n++] = (uint64_t)v;
         p = *end ? end + 1 : end;
     }
-    if (!n) bad("--budgets: empty list");
-    return n;
+    if (!n) return snprintf(why, len, "empty list"), false;
+    o->nbudgets = n;
+    return true;
 }
 
 static void parse(int argc, char **argv, struct opts *o)
 {
-    const char *env = getenv("SCALE");
-    *o = (struct opts){.scale = env && *env ? env : "quick", .out = "results/table1-cmlt", .commit = "unknown",
-                       .seeds = -1, .threads = 2, .res = 128, .ref_spp = -1, .swap_every = 4,
-                       .seed = 1, .p_large = 0.1, .seed_frac = 0.0625};
-    const char *budgets = NULL;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            usage(stdout);
-            exit(0);
-        }
-        if (!strcmp(a, "--bench")) {
-            o->bench = 1;
-            continue;
-        }
-        if (a[0] != '-' || a[1] != '-') bad("unexpected argument '%s'", a);
-        if (i + 1 >= argc) bad("%s needs a value", a);
-        const char *v = argv[++i];
-        if (!strcmp(a, "--scale")) o->scale = v;
-        else if (!strcmp(a, "--budgets")) budgets = v;
-        else if (!strcmp(a, "--seeds")) o->seeds = (int)parse_int(a, v, 1, 1000);
-        else if (!strcmp(a, "--seed")) o->seed = (uint64_t)parse_int(a, v, 0, 1L << 40);
-        else if (!strcmp(a, "--threads")) o->threads = (int)parse_int(a, v, 1, 256);
-        else if (!strcmp(a, "--res")) o->res = (int)parse_int(a, v, 1, 4096);
-        else if (!strcmp(a, "--ref-spp")) o->ref_spp = (int)parse_int(a, v, 1, 1 << 24);
-        else if (!strcmp(a, "--p-large")) o->p_large = parse_double(a, v, 0, 1);
-        else if (!strcmp(a, "--swap-every")) o->swap_every = (int)parse_int(a, v, 1, 1 << 20);
-        else if (!strcmp(a, "--seed-frac")) o->seed_frac = parse_double(a, v, 1e-6, 1);
-        else if (!strcmp(a, "--out")) o->out = v;
-        else if (!strcmp(a, "--commit")) o->commit = v;
-        else bad("unknown option '%s'", a);
-    }
-    int paper;
-    if (!strcmp(o->scale, "quick")) paper = 0;
-    else if (!strcmp(o->scale, "paper")) paper = 1;
-    else bad("--scale: expected quick or paper, got '%s'", o->scale);
-    o->nbudgets = parse_budgets(budgets ? budgets : paper ? "16M,128M" : "1M,8M", o->budgets);
-    if (o->seeds < 0) o->seeds = paper ? 8 : 10;
-    if (o->ref_spp < 0) o->ref_spp = paper ? 65536 : 16384;
+    bool paper;
+    *o = (struct opts){0};
+    const struct opt opts[] = {
+        {"--scale", OPT_CHOICE, OPT_DST(paper), .choices = opts_scales, .str = &o->scale,
+         .help = "defaults for budgets and seeds", .def = "quick", .env = "SCALE"},
+        {"--budgets", OPT_CALL, .dst = o, .call = parse_budgets, .arg = "LIST",
+         .help = "comma-separated total samples per algorithm, suffix k or M", .def = "1M,8M", .paper = "16M,128M"},
+        {"--seeds", OPT_INT, OPT_DST(o->seeds), .arg = "K", .lo = 1, .hi = 1000,
+         .help = "independent runs per algorithm and budget", .def = "10", .paper = "8"},
+        OPT_SEED(o->seed, .hi = 1L << 40, .help = "base seed", .def = "1"),
+        OPT_THREADS(o->threads, .hi = 256, .help = "worker threads", .def = "2"),
+        {"--res", OPT_INT, OPT_DST(o->res), .arg = "N", .lo = 1, .hi = 4096, .help = "image resolution N x N", .def = "128"},
+        {"--ref-spp", OPT_INT, OPT_DST(o->ref_spp), .arg = "N", .lo = 1, .hi = 1 << 24, .help = "reference samples per pixel",
+         .def = "16384", .paper = "65536"},
+        OPT_P_LARGE(o->p_large),
+        {"--swap-every", OPT_INT, OPT_DST(o->swap_every), .arg = "K", .lo = 1, .hi = 1 << 20,
+         .help = "CMLT chart swap every K iterations", .def = "4"},
+        {"--seed-frac", OPT_DOUBLE, OPT_DST(o->seed_frac), .arg = "F", .lo = 1e-6, .hi = 1,
+         .help = "seed-pass samples per chart = F * n", .def = "0.0625"},
+        OPT_OUT(o->out, .arg = "DIR", .help = "output directory", .def = "results/table1-cmlt"),
+        {"--commit", OPT_STRING, OPT_DST(o->commit), .arg = "ID", .help = "recorded in the CSV metadata", .def = "unknown"},
+        {"--bench", OPT_FLAG, OPT_DST(o->bench), .help = "time each algorithm on one thread, print steps/s; no table"},
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = "table1_cmlt", .usage = "usage: table1_cmlt [options]\n",
+                                   .about = "Reproduces Table 1 and Figure 3 of the CMLT paper on its two-light toy: RMSE of six MCMC\n"
+                                            "algorithms (PSS-MLT-1/2/AVG/MIX, CMLT-EPSM, CMLT) against a Monte Carlo reference.\n",
+                                   .opts = opts, .paper = &paper},
+               argc, argv);
 }
 
 /* ---- small output helpers ---------------------------------------------------------------- */
@@ -414,8 +355,8 @@ static const char *fmt_n(uint64_t n, char *buf, size_t len)
 static void bench(const struct opts *o)
 {
     uint64_t n = o->budgets[0];
-    printf("# bench-cmlt: chain steps per second on one core, n = %llu steps, %dx%d image\n",
-           (unsigned long long)n, o->res, o->res);
+    csv_meta(stdout, NULL, "bench-cmlt: chain steps per second on one core, n = %llu steps, %dx%d image",
+             (unsigned long long)n, o->res, o->res);
     printf("algorithm,steps_per_s\n");
     double *img = xmalloc(sizeof(double) * 3 * o->res * o->res);
     for (int a = 0; a < CMLT_NALGO; a++) {
@@ -446,7 +387,7 @@ int main(int argc, char **argv)
     }
     signal(SIGINT, on_sigint);
     mkdirs(o.out);
-    cli_require_image_output("table1_cmlt");
+    opts_require_image_output("table1_cmlt");
     double t_start = now();
     struct cmlt_ref_result rr;
     struct image *ref = get_reference(&o, &rr);
@@ -471,11 +412,13 @@ int main(int argc, char **argv)
     /* statistics per (algorithm, budget) */
     struct text csv = {0}, stats = {0}, seeds = {0}, md = {0};
     char meta[512], nb[32];
-    snprintf(meta, sizeof meta,
-             "# table1_cmlt commit=%s seed=%llu scale=%s seeds=%d threads=%d res=%d ref_spp=%d p_large=%g "
-             "swap_every=%d seed_frac=%g seconds=%.1f%s\n",
+    FILE *mf = fmemopen(meta, sizeof meta, "w");
+    csv_meta(mf, "table1_cmlt",
+             "commit=%s seed=%llu scale=%s seeds=%d threads=%d res=%d ref_spp=%d p_large=%g swap_every=%d seed_frac=%g "
+             "seconds=%.1f%s",
              o.commit, (unsigned long long)o.seed, o.scale, o.seeds, o.threads, o.res, o.ref_spp, o.p_large,
              o.swap_every, o.seed_frac, wall, partial ? " PARTIAL (interrupted)" : "");
+    fclose(mf);
     tprintf(&csv, "%salgorithm,n,rmse\n", meta);
     tprintf(&stats, "%salgorithm,n,seeds,rmse_mean,rmse_se,steps_per_s,acceptance,swap_acceptance\n", meta);
     tprintf(&seeds, "%salgorithm,n,seed,rmse,b,b1,b2,acceptance,swap_acceptance,seconds\n", meta);

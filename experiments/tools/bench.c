@@ -5,7 +5,7 @@
  * medians over --runs repetitions. */
 #include "base/parallel.h"
 #include "camera/camera.h"
-#include "common/cli.h"
+#include "common/opts.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
@@ -16,16 +16,6 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <unistd.h>
-
-static const char *usage =
-    "usage: bench [SCENE.json ...] [--runs N] [--seconds S] [--max-length K]\n"
-    "  Every scene is rendered at 320x180. One scene (default scenes/cornell-box/scene.json): Embree's\n"
-    "  ray rate, PT/BDPT samples/s and PSSMLT/MMLT/PITP mutations/s on 1 and 2 threads, rays per sample\n"
-    "  or mutation and the time they take at Embree's rate, peak memory.\n"
-    "  Several scenes: a Markdown table of the 1-thread figures, one row per scene.\n"
-    "  --runs N      median of N runs of each figure (default 3)\n"
-    "  --seconds S   length of each run (default 3)\n"
-    "  --max-length K  path length cap in segments (default 8)\n";
 
 static int cmp_d(const void *a, const void *b)
 {
@@ -245,30 +235,38 @@ static void table(char **paths, struct scene **sc, int n, int runs, double secon
     }
 }
 
+struct scenes {
+    char *paths[64];
+    int n;
+};
+
+static void scene_arg(const char *prog, const char *arg, void *ctx)
+{
+    struct scenes *s = ctx;
+    int max = (int)(sizeof s->paths / sizeof *s->paths);
+    if (s->n == max) opts_fail(prog, "at most %d scenes", max);
+    s->paths[s->n++] = (char *)arg;
+}
+
 int main(int argc, char **argv)
 {
-    const char *prog = "bench";
-    char *paths[64] = {"scenes/cornell-box/scene.json"};
-    int n = 0, runs = 3, K = 8;
-    double seconds = 3;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (!strcmp(argv[i], "--runs")) {
-            runs = (int)cli_long(prog, argv[i], cli_value(prog, argc, argv, &i), 1, 99);
-        } else if (!strcmp(argv[i], "--seconds")) {
-            seconds = cli_double(prog, argv[i], cli_value(prog, argc, argv, &i), 0.01, 600);
-        } else if (!strcmp(argv[i], "--max-length")) {
-            K = (int)cli_long(prog, argv[i], cli_value(prog, argc, argv, &i), 1, MAX_PATH_LENGTH);
-        } else if (argv[i][0] == '-') {
-            cli_fail(prog, "unknown option '%s' (see --help)", argv[i]);
-        } else if (n < (int)(sizeof paths / sizeof *paths)) {
-            paths[n++] = argv[i];
-        } else {
-            cli_fail(prog, "at most %d scenes", (int)(sizeof paths / sizeof *paths));
-        }
-    }
+    struct scenes ss = {.paths = {"scenes/cornell-box/scene.json"}};
+    int runs, K;
+    double seconds;
+    const struct opt opts[] = {
+        {"--runs", OPT_INT, OPT_DST(runs), .arg = "N", .lo = 1, .hi = 99, .help = "median of N runs of each figure", .def = "3"},
+        {"--seconds", OPT_DOUBLE, OPT_DST(seconds), .arg = "S", .lo = 0.01, .hi = 600, .help = "length of each run", .def = "3"},
+        OPT_MAX_LENGTH(K, .help = "path length cap in segments", .def = "8"),
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = "bench", .usage = "usage: bench [SCENE.json ...] [options]\n",
+                                   .about = "  Every scene is rendered at 320x180. One scene (default scenes/cornell-box/scene.json): Embree's\n"
+                                            "  ray rate, PT/BDPT samples/s and PSSMLT/MMLT/PITP mutations/s on 1 and 2 threads, rays per sample\n"
+                                            "  or mutation and the time they take at Embree's rate, peak memory.\n"
+                                            "  Several scenes: a Markdown table of the 1-thread figures, one row per scene.\n",
+                                   .opts = opts, .positional = scene_arg, .ctx = &ss},
+               argc, argv);
+    char **paths = ss.paths;
+    int n = ss.n;
     int nscenes = n ? n : 1;
     struct scene *sc[64];
     char err[1024];

@@ -7,10 +7,11 @@
  * rows). A baseline row missing from the current file is a failure. Prints a per-row verdict table
  * (Markdown). Exit status: 0 no significant difference, 1 some difference or missing row, 2 bad input.
  * CSV: a header row, comma-separated fields without quoting, lines starting with '#' ignored. */
+#include "common/opts.h"
 #include <errno.h>
+#include <float.h>
 #include <gsl/gsl_cdf.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,32 +20,7 @@
 #define MAXKEY 8
 #define LINE 4096
 
-static void usage(FILE *f)
-{
-    fprintf(f,
-            "usage: check_stats [options] BASELINE.csv CURRENT.csv\n"
-            "Compares per-row means (with standard errors) of CURRENT against BASELINE.\n"
-            "  --key COLS    comma-separated key columns matching rows (default: first column)\n"
-            "  --mean COL    column with the mean (default: mean)\n"
-            "  --se COL      column with its standard error (default: se)\n"
-            "  --count COL   column with the number of runs behind the mean: p-values from Student's t\n"
-            "                with Welch-Satterthwaite df instead of the normal distribution\n"
-            "  --alpha A     family-wise significance level, Sidak-corrected over rows (default 0.01)\n"
-            "  --out FILE    also write the verdict table (Markdown) to FILE\n"
-            "  --help        this text\n"
-            "exit status: 0 consistent, 1 significant difference or missing row, 2 bad input\n");
-}
-
-static void bad(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "check_stats: ");
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, "\n");
-    va_end(ap);
-    exit(2);
-}
+static const char *const prog = "check_stats";
 
 struct row {
     char key[256];
@@ -76,7 +52,7 @@ static int find_col(char **hdr, int n, const char *name, const char *file)
 {
     for (int i = 0; i < n; i++)
         if (!strcmp(hdr[i], name)) return i;
-    bad("%s: no column '%s' in the header", file, name);
+    opts_fail(prog, "%s: no column '%s' in the header", file, name);
     return -1;
 }
 
@@ -85,7 +61,7 @@ static double num(const char *s, const char *file, int line, const char *col)
     char *end;
     errno = 0;
     double v = strtod(s, &end);
-    if (errno || end == s || *end || !isfinite(v)) bad("%s:%d: column '%s': expected a number, got '%s'", file, line, col, s);
+    if (errno || end == s || *end || !isfinite(v)) opts_fail(prog, "%s:%d: column '%s': expected a number, got '%s'", file, line, col, s);
     return v;
 }
 
@@ -93,7 +69,7 @@ static struct table load(const char *file, char keys[MAXKEY][64], int nkeys, con
                          const char *count)
 {
     FILE *f = fopen(file, "r");
-    if (!f) bad("%s: %s", file, strerror(errno));
+    if (!f) opts_fail(prog, "%s: %s", file, strerror(errno));
     char line[LINE], *fld[MAXCOL], *hdr[MAXCOL], hline[LINE];
     int nh = -1, ln = 0, kc[MAXKEY], mc = -1, sc = -1, cc = -1;
     struct table t = {NULL, 0};
@@ -104,7 +80,7 @@ static struct table load(const char *file, char keys[MAXKEY][64], int nkeys, con
         if (nh < 0) {
             strcpy(hline, line);
             nh = split(hline, hdr);
-            if (nh < 0) bad("%s:%d: too many columns", file, ln);
+            if (nh < 0) opts_fail(prog, "%s:%d: too many columns", file, ln);
             for (int k = 0; k < nkeys; k++) kc[k] = find_col(hdr, nh, keys[k], file);
             mc = find_col(hdr, nh, mean, file);
             sc = find_col(hdr, nh, se, file);
@@ -112,64 +88,68 @@ static struct table load(const char *file, char keys[MAXKEY][64], int nkeys, con
             continue;
         }
         int n = split(line, fld);
-        if (n != nh) bad("%s:%d: %d fields, header has %d", file, ln, n, nh);
+        if (n != nh) opts_fail(prog, "%s:%d: %d fields, header has %d", file, ln, n, nh);
         if (t.n == cap) {
             cap = cap ? 2 * cap : 32;
             t.rows = realloc(t.rows, sizeof *t.rows * (size_t)cap);
-            if (!t.rows) bad("out of memory");
+            if (!t.rows) opts_fail(prog, "out of memory");
         }
         struct row *r = &t.rows[t.n++];
         r->key[0] = 0;
         for (int k = 0; k < nkeys; k++) {
-            if (strlen(r->key) + strlen(fld[kc[k]]) + 2 >= sizeof r->key) bad("%s:%d: key too long", file, ln);
+            if (strlen(r->key) + strlen(fld[kc[k]]) + 2 >= sizeof r->key) opts_fail(prog, "%s:%d: key too long", file, ln);
             if (k) strcat(r->key, ",");
             strcat(r->key, fld[kc[k]]);
         }
         for (int q = 0; q < t.n - 1; q++)
-            if (!strcmp(t.rows[q].key, r->key)) bad("%s:%d: duplicate key '%s'", file, ln, r->key);
+            if (!strcmp(t.rows[q].key, r->key)) opts_fail(prog, "%s:%d: duplicate key '%s'", file, ln, r->key);
         r->mean = num(fld[mc], file, ln, mean);
         r->se = num(fld[sc], file, ln, se);
-        if (r->se < 0) bad("%s:%d: negative standard error", file, ln);
+        if (r->se < 0) opts_fail(prog, "%s:%d: negative standard error", file, ln);
         r->count = count ? num(fld[cc], file, ln, count) : 0;
-        if (count && r->count < 2) bad("%s:%d: column '%s' must be >= 2 for a t test", file, ln, count);
+        if (count && r->count < 2) opts_fail(prog, "%s:%d: column '%s' must be >= 2 for a t test", file, ln, count);
     }
     fclose(f);
-    if (nh < 0) bad("%s: no header row", file);
-    if (t.n == 0) bad("%s: no data rows", file);
+    if (nh < 0) opts_fail(prog, "%s: no header row", file);
+    if (t.n == 0) opts_fail(prog, "%s: no data rows", file);
     return t;
+}
+
+struct files {
+    const char *name[2];
+    int n;
+};
+
+static void file_arg(const char *prog_, const char *arg, void *ctx)
+{
+    struct files *f = ctx;
+    if (f->n == 2) opts_fail(prog_, "unexpected argument '%s': expected BASELINE.csv CURRENT.csv (see --help)", arg);
+    f->name[f->n++] = arg;
 }
 
 int main(int argc, char **argv)
 {
-    const char *keyarg = NULL, *mean = "mean", *se = "se", *count = NULL, *out = NULL, *files[2];
-    double alpha = 0.01;
-    int nf = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            usage(stdout);
-            return 0;
-        }
-        if (a[0] == '-' && a[1] == '-') {
-            if (i + 1 >= argc) bad("%s needs a value (see --help)", a);
-            const char *v = argv[++i];
-            if (!strcmp(a, "--key")) keyarg = v;
-            else if (!strcmp(a, "--mean")) mean = v;
-            else if (!strcmp(a, "--se")) se = v;
-            else if (!strcmp(a, "--count")) count = v;
-            else if (!strcmp(a, "--out")) out = v;
-            else if (!strcmp(a, "--alpha")) {
-                char *end;
-                alpha = strtod(v, &end);
-                if (*end || end == v || !(alpha > 0 && alpha < 1)) bad("--alpha: expected a number in (0, 1), got '%s'", v);
-            } else
-                bad("unknown option '%s' (see --help)", a);
-        } else {
-            if (nf == 2) bad("unexpected argument '%s': expected BASELINE.csv CURRENT.csv (see --help)", a);
-            files[nf++] = a;
-        }
-    }
-    if (nf != 2) bad("expected BASELINE.csv CURRENT.csv (see --help)");
+    const char *keyarg = NULL, *mean, *se, *count = NULL, *out = NULL;
+    double alpha;
+    struct files fl = {.n = 0};
+    const struct opt opts[] = {
+        {"--key", OPT_STRING, OPT_DST(keyarg), .arg = "COLS", .help = "comma-separated key columns matching rows (default: first column)"},
+        {"--mean", OPT_STRING, OPT_DST(mean), .arg = "COL", .help = "column with the mean", .def = "mean"},
+        {"--se", OPT_STRING, OPT_DST(se), .arg = "COL", .help = "column with its standard error", .def = "se"},
+        {"--count", OPT_STRING, OPT_DST(count), .arg = "COL",
+         .help = "column with the number of runs behind the mean: p-values from Student's t with Welch-Satterthwaite df "
+                 "instead of the normal distribution"},
+        {"--alpha", OPT_DOUBLE, OPT_DST(alpha), .arg = "A", .lo = DBL_TRUE_MIN, .hi = 1 - 0x1p-53, .expect = "a number in (0, 1)",
+         .help = "family-wise significance level, Sidak-corrected over rows", .def = "0.01"},
+        {"--out", OPT_STRING, OPT_DST(out), .arg = "FILE", .help = "also write the verdict table (Markdown) to FILE"},
+        {0}};
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: check_stats [options] BASELINE.csv CURRENT.csv\n",
+                                   .about = "Compares per-row means (with standard errors) of CURRENT against BASELINE.\n",
+                                   .tail = "exit status: 0 consistent, 1 significant difference or missing row, 2 bad input\n",
+                                   .opts = opts, .positional = file_arg, .ctx = &fl},
+               argc, argv);
+    if (fl.n != 2) opts_fail(prog, "expected BASELINE.csv CURRENT.csv (see --help)");
+    const char **files = fl.name;
 
     char keys[MAXKEY][64];
     int nkeys = 0;
@@ -177,7 +157,7 @@ int main(int argc, char **argv)
         const char *p = keyarg;
         while (*p) {
             size_t l = strcspn(p, ",");
-            if (l == 0 || l >= 64 || nkeys == MAXKEY) bad("--key: bad column list '%s'", keyarg);
+            if (l == 0 || l >= 64 || nkeys == MAXKEY) opts_fail(prog, "--key: bad column list '%s'", keyarg);
             memcpy(keys[nkeys], p, l);
             keys[nkeys++][l] = 0;
             p += l;
@@ -186,12 +166,12 @@ int main(int argc, char **argv)
     } else {
         /* default: the baseline's first column */
         FILE *f = fopen(files[0], "r");
-        if (!f) bad("%s: %s", files[0], strerror(errno));
+        if (!f) opts_fail(prog, "%s: %s", files[0], strerror(errno));
         char line[LINE];
         while (fgets(line, sizeof line, f) && (line[0] == '#')) {}
         fclose(f);
         size_t l = strcspn(line, ",\r\n");
-        if (l == 0 || l >= 64) bad("%s: cannot read the first column name", files[0]);
+        if (l == 0 || l >= 64) opts_fail(prog, "%s: cannot read the first column name", files[0]);
         memcpy(keys[0], line, l);
         keys[0][l] = 0;
         nkeys = 1;
@@ -203,14 +183,14 @@ int main(int argc, char **argv)
     int fails = 0;
     size_t cap = 4096, len = 0;
     char *txt = malloc(cap);
-    if (!txt) bad("out of memory");
+    if (!txt) opts_fail(prog, "out of memory");
 #define OUT(...)                                                                                                   \
     do {                                                                                                           \
         int n_ = snprintf(NULL, 0, __VA_ARGS__);                                                                   \
         while (len + (size_t)n_ + 1 > cap) {                                                                       \
             cap *= 2;                                                                                              \
             txt = realloc(txt, cap);                                                                               \
-            if (!txt) bad("out of memory");                                                                        \
+            if (!txt) opts_fail(prog, "out of memory");                                                                        \
         }                                                                                                          \
         snprintf(txt + len, cap - len, __VA_ARGS__);                                                               \
         len += (size_t)n_;                                                                                         \

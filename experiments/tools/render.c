@@ -5,7 +5,8 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
-#include "common/cli.h"
+#include "common/csv_meta.h"
+#include "common/opts.h"
 #include "emitter/emitter.h"
 #include "io/checkpoint.h"
 #include "mc/render.h"
@@ -13,225 +14,174 @@
 #include "path/scene_ready.h"
 #include "scene/accel.h"
 #include "scene/scene_hash.h"
-#include "version.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-static const char *usage =
-    "usage: render SCENE.json [options]\n"
-    "  --method pt|bdpt|pssmlt|mmlt|pitp  estimator (default bdpt; pitp: MMLT with the\n"
-    "                       path-invariant technique perturbation, thesis 5.2)\n"
-    "  --spp N              samples per pixel; for pssmlt/mmlt/pitp mutations per pixel\n"
-    "                       (default: the scene's renderer.spp, else 16)\n"
-    "  --time SECONDS       equal-time budget instead of --spp: pssmlt/mmlt chains stop at it\n"
-    "                       (the seed pass comes on top); pt/bdpt render whole passes of\n"
-    "                       1 spp while the next fits in it\n"
-    "  --seed S             random seed (default 1); same seed and threads -> same output\n"
-    "  --threads T          worker threads (default: all cores)\n"
-    "  --max-length K       maximum path length in segments (default: integrator.max_bounces)\n"
-    "  --min-length K       leave out paths shorter than K segments (3: no direct lighting; default 1)\n"
-    "  --resolution WxH     override the camera resolution (same horizontal fov)\n"
-    "  --out PREFIX         output prefix (default out)\n"
-    "  --quiet              no progress bar\n"
-    "  --checkpoint SECONDS write the run's whole state to PREFIX.ckpt every SECONDS (atomically;\n"
-    "                       Ctrl-C always leaves one); the seed pass of pssmlt/mmlt/pitp is not\n"
-    "                       checkpointed\n"
-    "  --resume FILE        continue the run FILE holds; give the same scene and options (it refuses\n"
-    "                       others); with an --spp budget the result is bit-identical to an\n"
-    "                       uninterrupted run, with --time the run gets what its budget had left\n"
-    "  --embree-isa ISA     Embree's kernels: sse2, sse4.2, avx, avx2 or avx512 (those this CPU\n"
-    "                       runs; default: the best, or the environment's PSS_EMBREE_ISA): hit\n"
-    "                       points, so images, differ in the last bits between kernels\n"
-    "MCMC options (pssmlt, mmlt, pitp; the mmlt options apply to pitp too):\n"
-    "  --p-large P          large-step probability (default 0.1)\n"
-    "  --kernel kelemen|gaussian  small-step kernel (default kelemen: s1 = 1/1024, s2 = 1/64)\n"
-    "  --sigma S            gaussian small-step standard deviation (default 1/64)\n"
-    "  --rap                resolution-aware proposals: image steps corrected for aspect ratio\n"
-    "  --rap-resolution     also scale image steps to a fixed size in pixels (thesis 4.1)\n"
-    "  --cdc                constrained discrete choices: small steps keep discrete numbers\n"
-    "  --seed-paths N       samples of the normalisation seed pass (default 100000)\n"
-    "  --large-step mmlt|mctls|hybrid  mmlt's large step (default mmlt; mctls: thesis 4.3)\n"
-    "  --hybrid-length K    hybrid: MCTLS from path length K on, MMLT large steps below (default 6)\n"
-    "  --uniform-lengths    mmlt: equal mutations per path length instead of in proportion to b_k\n"
-    "  --max-heuristic      pssmlt: Kelemen's maximum heuristic instead of the balance heuristic\n"
-    "  --small-step pss|controlled|root  mmlt/pitp small step (default pss; controlled: thesis 5.3\n"
-    "                       Alg. 4, root: Alg. 3, analysis only); the latter two use the Gaussian kernel\n"
-    "  --angle-stats        mmlt, pitp: angle change of every small step, PREFIX.angle.exr and .angle.csv\n"
-    "  --technique-images K pssmlt, mmlt (MMLT large steps): per-technique images of path length K\n"
-    "                       (MMLT paper 5): PREFIX.tech-tT.exr/.png contribution, PREFIX.count-tT.exr/.png\n"
-    "                       chain samples in technique T, PREFIX.tech.csv shares; pssmlt runs slower with it\n"
-    "Prints one summary line: method, samples, seconds, samples/s.\n";
+/* Which methods read an option (struct opt's tag); given to another method it would be silently
+ * ignored, which would quietly change an experiment: a warning names it. */
+enum { MCMC = 1, MMLT_ONLY = 2, PSSMLT_ONLY = 4 };
+static const char *const methods[] = {"pt", "bdpt", "pssmlt", "mmlt", "pitp", NULL};
+static const char *const kernels[] = {"kelemen", "gaussian", NULL};
+static const char *const large_steps[] = {"mmlt", "mctls", "hybrid", NULL};
+static const char *const small_steps[] = {"pss", "controlled", "root", NULL};
 
 struct args {
-    const char *scene, *out, *resume;
+    const char *scene, *out, *resume, *method;
     double checkpoint;
-    char method[16];
     struct render_opts mc;
     struct mlt_opts mlt;
-    int width, height;
-    bool kernel_given;
+    int res[2], kernel;
+    const char *res_arg; /* --resolution as given */
+    bool quiet;
 };
 
-/* Options that only some methods read; given to another method they would be silently ignored,
- * which would quietly change an experiment. */
-static const char *const mcmc_only[] = {"--p-large", "--kernel", "--sigma", "--rap", "--rap-resolution", "--cdc",
-                                        "--seed-paths", "--large-step", "--hybrid-length", "--uniform-lengths",
-                                        "--max-heuristic", "--small-step", "--angle-stats",
-                                        "--technique-images", NULL};
-static const char *const mmlt_only[] = {"--large-step", "--hybrid-length", "--uniform-lengths", "--small-step",
-                                        "--angle-stats", NULL};
-static const char *const pssmlt_only[] = {"--max-heuristic", NULL};
-
-static bool listed(const char *o, const char *const *list)
+static bool set_isa(const char *v, void *dst, char *why, size_t n)
 {
-    for (; *list; list++)
-        if (!strcmp(o, *list)) return true;
+    (void)dst;
+    if (accel_set_isa(v)) return true;
+    int l = snprintf(why, n, "this CPU and Embree run only:");
+    for (const char *const *i = accel_isas(); *i; i++)
+        if (l >= 0 && (size_t)l < n) l += snprintf(why + l, n - (size_t)l, " %s", *i);
+    if (l >= 0 && (size_t)l < n) snprintf(why + l, n - (size_t)l, "; got '%s'", v);
     return false;
 }
 
+static void scene_arg(const char *prog, const char *arg, void *ctx)
+{
+    struct args *a = ctx;
+    if (a->scene) opts_fail(prog, "more than one scene given ('%s' and '%s')", a->scene, arg);
+    a->scene = arg;
+}
+
 /* One warning line per option that the chosen method does not read. */
-static void warn_unused(const char *prog, int argc, char **argv, const char *method)
+static void warn_unused(const struct opts_spec *spec, const char *method, int argc, char **argv)
 {
     bool mcmc = !strcmp(method, "pssmlt") || !strcmp(method, "mmlt") || !strcmp(method, "pitp");
     bool multiplexed = !strcmp(method, "mmlt") || !strcmp(method, "pitp");
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i];
-        const char *only = !mcmc && listed(o, mcmc_only)                   ? "pssmlt, mmlt and pitp"
-                           : !strcmp(method, "pssmlt") && listed(o, mmlt_only) ? "mmlt and pitp"
-                           : multiplexed && listed(o, pssmlt_only) ? "pssmlt"
-                                                                              : NULL;
+        const struct opt *e = opts_find(spec, o);
+        int tag = e ? e->tag : 0;
+        const char *only = !mcmc && (tag & MCMC)                                    ? "pssmlt, mmlt and pitp"
+                           : !strcmp(method, "pssmlt") && (tag & MMLT_ONLY) ? "mmlt and pitp"
+                           : multiplexed && (tag & PSSMLT_ONLY)                     ? "pssmlt"
+                                                                                    : NULL;
         if (only && !mcmc && !strcmp(o, "--technique-images")) only = "pssmlt and mmlt"; /* not pitp */
-        if (only) fprintf(stderr, "%s: warning: %s has no effect with --method %s (it applies to %s)\n", prog, o, method, only);
+        if (only) fprintf(stderr, "render: warning: %s has no effect with --method %s (it applies to %s)\n", o, method, only);
     }
 }
 
 static void parse(int argc, char **argv, struct args *a)
 {
     const char *prog = "render";
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-#define VALUE cli_value(prog, argc, argv, &i)
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
-            exit(0);
-        } else if (!strcmp(o, "--method")) {
-            const char *v = VALUE;
-            if (strcmp(v, "pt") && strcmp(v, "bdpt") && strcmp(v, "pssmlt") && strcmp(v, "mmlt") && strcmp(v, "pitp"))
-                cli_fail(prog, "--method: expected pt, bdpt, pssmlt, mmlt or pitp, got '%s'", v);
-            snprintf(a->method, sizeof a->method, "%s", v);
-        } else if (!strcmp(o, "--spp")) {
-            a->mc.spp = (int)cli_long(prog, o, VALUE, 1, 1 << 24);
-        } else if (!strcmp(o, "--time")) {
-            a->mc.seconds = a->mlt.seconds = cli_double(prog, o, VALUE, 1e-3, 1e7);
-        } else if (!strcmp(o, "--seed")) {
-            a->mc.seed = a->mlt.seed = cli_u64(prog, o, VALUE);
-        } else if (!strcmp(o, "--threads")) {
-            a->mc.threads = a->mlt.threads = (int)cli_long(prog, o, VALUE, 1, 1024);
-        } else if (!strcmp(o, "--min-length")) {
-            a->mc.min_length = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
-        } else if (!strcmp(o, "--max-length")) {
-            a->mc.max_length = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
-        } else if (!strcmp(o, "--resolution")) {
-            const char *v = VALUE;
-            char extra;
-            if (sscanf(v, "%dx%d%c", &a->width, &a->height, &extra) != 2 || a->width < 1 || a->height < 1 ||
-                a->width > 1 << 15 || a->height > 1 << 15)
-                cli_fail(prog, "--resolution: expected WxH with positive integers, got '%s'", v);
-            if ((long)a->width * a->height > SCENE_MAX_PIXELS)
-                cli_fail(prog, "--resolution: %s is above the limit of %ld pixels (8192x8192)", v, SCENE_MAX_PIXELS);
-        } else if (!strcmp(o, "--out")) {
-            a->out = VALUE;
-        } else if (!strcmp(o, "--checkpoint")) {
-            a->checkpoint = cli_double(prog, o, VALUE, 1e-3, 1e9);
-        } else if (!strcmp(o, "--resume")) {
-            a->resume = VALUE;
-        } else if (!strcmp(o, "--quiet")) {
-            a->mc.progress = a->mlt.progress = false;
-        } else if (!strcmp(o, "--embree-isa")) {
-            const char *v = VALUE;
-            if (!accel_set_isa(v)) {
-                char list[64] = "";
-                for (const char *const *i = accel_isas(); *i; i++)
-                    snprintf(list + strlen(list), sizeof list - strlen(list), " %s", *i);
-                cli_fail(prog, "--embree-isa: this CPU and Embree run only:%s; got '%s'", list, v);
-            }
-        } else if (!strcmp(o, "--p-large")) {
-            a->mlt.p_large = cli_double(prog, o, VALUE, 0, 1);
-        } else if (!strcmp(o, "--kernel")) {
-            const char *v = VALUE;
-            a->kernel_given = true;
-            if (!strcmp(v, "kelemen")) a->mlt.pss.kernel = KERNEL_KELEMEN;
-            else if (!strcmp(v, "gaussian")) a->mlt.pss.kernel = KERNEL_GAUSSIAN;
-            else cli_fail(prog, "--kernel: expected kelemen or gaussian, got '%s'", v);
-        } else if (!strcmp(o, "--sigma")) {
-            a->mlt.pss.sigma = cli_double(prog, o, VALUE, 1e-9, 1);
-        } else if (!strcmp(o, "--rap")) {
-            a->mlt.pss.rap = true;
-        } else if (!strcmp(o, "--rap-resolution")) {
-            a->mlt.pss.rap = a->mlt.pss.rap_resolution = true;
-        } else if (!strcmp(o, "--cdc")) {
-            a->mlt.pss.cdc = true;
-        } else if (!strcmp(o, "--large-step")) {
-            const char *v = VALUE;
-            if (!strcmp(v, "mmlt")) a->mlt.large_step = LARGE_MMLT;
-            else if (!strcmp(v, "mctls")) a->mlt.large_step = LARGE_MCTLS;
-            else if (!strcmp(v, "hybrid")) a->mlt.large_step = LARGE_HYBRID;
-            else cli_fail(prog, "--large-step: expected mmlt, mctls or hybrid, got '%s'", v);
-        } else if (!strcmp(o, "--hybrid-length")) {
-            a->mlt.hybrid_length = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
-        } else if (!strcmp(o, "--max-heuristic")) {
-            a->mlt.max_heuristic = true;
-        } else if (!strcmp(o, "--small-step")) {
-            const char *v = VALUE;
-            if (!strcmp(v, "pss")) a->mlt.small_step = SMALL_STEP_PSS;
-            else if (!strcmp(v, "controlled")) a->mlt.small_step = SMALL_STEP_CONTROLLED;
-            else if (!strcmp(v, "root")) a->mlt.small_step = SMALL_STEP_ROOT;
-            else cli_fail(prog, "--small-step: expected pss, controlled or root, got '%s'", v);
-        } else if (!strcmp(o, "--angle-stats")) {
-            a->mlt.angle_stats = true;
-        } else if (!strcmp(o, "--technique-images")) {
-            a->mlt.technique_k = (int)cli_long(prog, o, VALUE, 1, MAX_PATH_LENGTH);
-        } else if (!strcmp(o, "--uniform-lengths")) {
-            a->mlt.uniform_lengths = true;
-        } else if (!strcmp(o, "--seed-paths")) {
-            a->mlt.seed_paths = cli_long(prog, o, VALUE, 1, 1L << 40);
-        } else if (o[0] == '-') {
-            cli_fail(prog, "unknown option '%s' (see --help)", o);
-        } else if (a->scene) {
-            cli_fail(prog, "more than one scene given ('%s' and '%s')", a->scene, o);
-        } else {
-            a->scene = o;
-        }
-#undef VALUE
-    }
-    if (!a->scene) cli_fail(prog, "no scene given (see --help)");
+    struct mlt_opts *m = &a->mlt;
+    const struct opt opts[] = {
+        {"--method", OPT_CHOICE, .choices = methods, .str = &a->method, .def = "bdpt",
+         .help = "estimator (pitp: MMLT with the path-invariant technique perturbation, thesis 5.2)"},
+        {"--spp", OPT_INT, OPT_DST(a->mc.spp), .arg = "N", .lo = 1, .hi = 1 << 24,
+         .help = "samples per pixel; for pssmlt/mmlt/pitp mutations per pixel (default: the scene's renderer.spp, else 16)"},
+        {"--time", OPT_DOUBLE, OPT_DST(a->mc.seconds), .arg = "SECONDS", .lo = 1e-3, .hi = 1e7,
+         .help = "equal-time budget instead of --spp: pssmlt/mmlt chains stop at it (the seed pass comes on top); pt/bdpt "
+                 "render whole passes of 1 spp while the next fits in it"},
+        OPT_SEED(a->mc.seed, .help = "random seed; same seed and threads -> same output", .def = "1"),
+        OPT_THREADS(a->mc.threads, .hi = 1024, .help = "worker threads (default: all cores)", .def_int = cpu_count),
+        OPT_MAX_LENGTH(a->mc.max_length, .help = "maximum path length in segments (default: integrator.max_bounces)"),
+        OPT_MIN_LENGTH(a->mc.min_length, .hi = MAX_PATH_LENGTH,
+                       .help = "leave out paths shorter than K segments (3: no direct lighting; default 1)"),
+        OPT_RESOLUTION(a->res, .lo = 1, .hi = 1 << 15, .expect = "WxH with positive integers", .str = &a->res_arg,
+                       .help = "override the camera resolution (same horizontal fov)"),
+        OPT_OUT(a->out, .arg = "PREFIX", .help = "output prefix", .def = "out"),
+        {"--quiet", OPT_FLAG, OPT_DST(a->quiet), .help = "no progress bar"},
+        {"--checkpoint", OPT_DOUBLE, OPT_DST(a->checkpoint), .arg = "SECONDS", .lo = 1e-3, .hi = 1e9,
+         .help = "write the run's whole state to PREFIX.ckpt every SECONDS (atomically; Ctrl-C always leaves one); the "
+                 "seed pass of pssmlt/mmlt/pitp is not checkpointed"},
+        {"--resume", OPT_STRING, OPT_DST(a->resume), .arg = "FILE",
+         .help = "continue the run FILE holds; give the same scene and options (it refuses others); with an --spp "
+                 "budget the result is bit-identical to an uninterrupted run, with --time the run gets what its budget "
+                 "had left"},
+        {"--embree-isa", OPT_CALL, .call = set_isa, .arg = "ISA",
+         .help = "Embree's kernels: sse2, sse4.2, avx, avx2 or avx512 (those this CPU runs; default: the best, or the "
+                 "environment's PSS_EMBREE_ISA): hit points, so images, differ in the last bits between kernels"},
+        {.type = OPT_TEXT, .help = "MCMC options (pssmlt, mmlt, pitp; the mmlt options apply to pitp too):"},
+        {"--p-large", OPT_DOUBLE, OPT_DST(m->p_large), .arg = "P", .lo = 0, .hi = 1, .help = "large-step probability",
+         .def = "0.1", .tag = MCMC},
+        {"--kernel", OPT_CHOICE, OPT_DST(a->kernel), .choices = kernels, .tag = MCMC,
+         .help = "small-step kernel (default kelemen: s1 = 1/1024, s2 = 1/64)"},
+        {"--sigma", OPT_DOUBLE, OPT_DST(m->pss.sigma), .arg = "S", .lo = 1e-9, .hi = 1, .tag = MCMC,
+         .help = "gaussian small-step standard deviation (default 1/64)"},
+        {"--rap", OPT_FLAG, OPT_DST(m->pss.rap), .tag = MCMC,
+         .help = "resolution-aware proposals: image steps corrected for aspect ratio"},
+        {"--rap-resolution", OPT_FLAG, OPT_DST(m->pss.rap_resolution), .tag = MCMC,
+         .help = "also scale image steps to a fixed size in pixels (thesis 4.1); implies --rap"},
+        {"--cdc", OPT_FLAG, OPT_DST(m->pss.cdc), .tag = MCMC,
+         .help = "constrained discrete choices: small steps keep discrete numbers"},
+        {"--seed-paths", OPT_INT, OPT_DST(m->seed_paths), .arg = "N", .lo = 1, .hi = 1L << 40, .def = "100000",
+         .tag = MCMC, .help = "samples of the normalisation seed pass"},
+        {"--large-step", OPT_CHOICE, OPT_DST(m->large_step), .choices = large_steps, .tag = MCMC | MMLT_ONLY,
+         .help = "mmlt's large step (default mmlt; mctls: thesis 4.3)"},
+        OPT_HYBRID_LENGTH(m->hybrid_length, .help = "hybrid: MCTLS from path length K on, MMLT large steps below",
+                          .def = "6", .tag = MCMC | MMLT_ONLY),
+        {"--uniform-lengths", OPT_FLAG, OPT_DST(m->uniform_lengths), .tag = MCMC | MMLT_ONLY,
+         .help = "mmlt: equal mutations per path length instead of in proportion to b_k"},
+        {"--max-heuristic", OPT_FLAG, OPT_DST(m->max_heuristic), .tag = MCMC | PSSMLT_ONLY,
+         .help = "pssmlt: Kelemen's maximum heuristic instead of the balance heuristic"},
+        {"--small-step", OPT_CHOICE, OPT_DST(m->small_step), .choices = small_steps, .tag = MCMC | MMLT_ONLY,
+         .help = "mmlt/pitp small step (default pss; controlled: thesis 5.3 Alg. 4, root: Alg. 3, analysis only); the "
+                 "latter two use the Gaussian kernel"},
+        {"--angle-stats", OPT_FLAG, OPT_DST(m->angle_stats), .tag = MCMC | MMLT_ONLY,
+         .help = "mmlt, pitp: angle change of every small step, PREFIX.angle.exr and .angle.csv"},
+        {"--technique-images", OPT_INT, OPT_DST(m->technique_k), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, .tag = MCMC,
+         .help = "pssmlt, mmlt (MMLT large steps): per-technique images of path length K (MMLT paper 5): "
+                 "PREFIX.tech-tT.exr/.png contribution, PREFIX.count-tT.exr/.png chain samples in technique T, "
+                 "PREFIX.tech.csv shares; pssmlt runs slower with it"},
+        {0}};
+    const struct opts_spec spec = {.prog = prog, .usage = "usage: render SCENE.json [options]\n", .opts = opts,
+                                 .tail = "Prints one summary line: method, samples, seconds, samples/s.\n",
+                                 .positional = scene_arg, .ctx = a};
+    opts_parse(&spec, argc, argv);
+    if (!a->scene) opts_fail(prog, "no scene given (see --help)");
+    if (a->res[0] && (long)a->res[0] * a->res[1] > SCENE_MAX_PIXELS)
+        opts_fail(prog, "--resolution: %s is above the limit of %ld pixels (8192x8192)", a->res_arg, SCENE_MAX_PIXELS);
+    /* the options both drivers read */
+    m->seconds = a->mc.seconds, m->seed = a->mc.seed, m->threads = a->mc.threads;
+    a->mc.progress = m->progress = !a->quiet;
+    if (m->pss.rap_resolution) m->pss.rap = true;
+    if (a->kernel >= 0) m->pss.kernel = a->kernel == 0 ? KERNEL_KELEMEN : KERNEL_GAUSSIAN;
     /* controlled steps need the Gaussian's density (core/controlled_step.h) */
-    if (a->mlt.small_step != SMALL_STEP_PSS) {
-        if (a->kernel_given && a->mlt.pss.kernel != KERNEL_GAUSSIAN)
-            cli_fail(prog, "--small-step %s: needs --kernel gaussian", a->mlt.small_step == SMALL_STEP_ROOT ? "root" : "controlled");
-        a->mlt.pss.kernel = KERNEL_GAUSSIAN;
+    if (m->small_step != SMALL_STEP_PSS) {
+        if (a->kernel >= 0 && m->pss.kernel != KERNEL_GAUSSIAN)
+            opts_fail(prog, "--small-step %s: needs --kernel gaussian", small_steps[m->small_step]);
+        m->pss.kernel = KERNEL_GAUSSIAN;
     }
-    warn_unused(prog, argc, argv, a->method);
-    if (a->mlt.technique_k && !strcmp(a->method, "pitp"))
-        cli_fail(prog,
-                 "--technique-images: pssmlt and mmlt only (PITP's perturbation moves a state between techniques)");
+    warn_unused(&spec, a->method, argc, argv);
+    if (m->technique_k && !strcmp(a->method, "pitp"))
+        opts_fail(prog, "--technique-images: pssmlt and mmlt only (PITP's perturbation moves a state between techniques)");
+}
+
+/* The metadata lines every CSV of a run opens with: "# render SCENE --method M EXTRA", the commit
+ * and the seed. */
+static void meta_head(FILE *f, const struct args *a, const char *extra)
+{
+    csv_meta(f, "render", "%s --method %s%s", a->scene, a->method, extra);
+    csv_meta_commit(f);
+    csv_meta(f, "seed", "%llu", (unsigned long long)a->mlt.seed);
 }
 
 /* PREFIX.angle.exr (mean angle change per pixel, radians) and PREFIX.angle.csv (per length). */
 static bool write_angle(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
-    char path[4096], *buf = NULL;
+    char path[4096], extra[64], *buf = NULL;
     size_t len = 0;
     struct image *im = angle_acc_image(r->angle);
     snprintf(path, sizeof path, "%s.angle.exr", a->out);
     bool ok = img_write_exr(im, 1.0, path, err, errlen);
     img_destroy(im);
     FILE *f = open_memstream(&buf, &len);
-    fprintf(f, "# render %s --method %s --small-step %s\n# commit %s\n# seed %llu\n# skipped_steps %ld\n", a->scene,
-            a->method, (const char *[]){"pss", "controlled", "root"}[a->mlt.small_step], GIT_COMMIT,
-            (unsigned long long)a->mlt.seed, r->angle->skipped);
+    snprintf(extra, sizeof extra, " --small-step %s", small_steps[a->mlt.small_step]);
+    meta_head(f, a, extra);
+    csv_meta(f, "skipped_steps", "%ld", r->angle->skipped);
     angle_acc_write_csv(f, r->angle);
     fclose(f);
     snprintf(path, sizeof path, "%s.angle.csv", a->out);
@@ -243,42 +193,59 @@ static bool write_angle(const struct args *a, const struct mlt_result *r, char *
 /* The per-technique images and PREFIX.tech.csv (core/tech_image.h). */
 static bool write_tech(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
-    char head[8192];
-    snprintf(head, sizeof head,
-             "# render %s --method %s --technique-images %d\n# commit %s\n# seed %llu\n"
-             "# mutations %ld\n# seconds %.3f\n",
-             a->scene, a->method, a->mlt.technique_k, GIT_COMMIT, (unsigned long long)a->mlt.seed, r->mutations, r->seconds);
-    return tech_acc_write(r->tech, a->out, head, err, errlen);
+    char extra[64], *head = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&head, &len);
+    snprintf(extra, sizeof extra, " --technique-images %d", a->mlt.technique_k);
+    meta_head(f, a, extra);
+    csv_meta(f, "mutations", "%ld", r->mutations);
+    csv_meta(f, "seconds", "%.3f", r->seconds);
+    fclose(f);
+    bool ok = tech_acc_write(r->tech, a->out, head, err, errlen);
+    free(head);
+    return ok;
 }
 
 static bool write_csv(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
+    const struct mlt_opts *m = &a->mlt;
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    fprintf(f, "# render %s --method %s\n# commit %s\n# seed %llu\n# threads %d\n# max_length %d\n", a->scene,
-            a->method, GIT_COMMIT, (unsigned long long)a->mlt.seed, a->mlt.threads, a->mlt.max_length);
-    if (dist_size() > 1) fprintf(f, "# ranks %d\n", dist_size()); /* threads are per rank */
-    fprintf(f, "# large_step %s\n# hybrid_length %d\n# uniform_lengths %d\n",
-            (const char *[]){"mmlt", "mctls", "hybrid"}[a->mlt.large_step], a->mlt.hybrid_length, a->mlt.uniform_lengths);
-    fprintf(f, "# mis %s\n", a->mlt.max_heuristic ? "maximum" : "balance");
-    fprintf(f, "# small_step %s\n# sigma %g\n", (const char *[]){"pss", "controlled", "root"}[a->mlt.small_step], a->mlt.pss.sigma);
-    if (a->mlt.small_step != SMALL_STEP_PSS)
-        fprintf(f, "# controlled_failed_forward %ld\n# controlled_failed_reverse %ld\n", r->ctrl_fail_forward,
-                r->ctrl_fail_reverse);
-    fprintf(f, "# p_large %g\n# kernel %s\n# rap %d\n# rap_resolution %d\n# cdc %d\n# seed_paths %ld\n", a->mlt.p_large,
-            a->mlt.pss.kernel == KERNEL_KELEMEN ? "kelemen" : "gaussian", a->mlt.pss.rap, a->mlt.pss.rap_resolution,
-            a->mlt.pss.cdc, a->mlt.seed_paths);
-    if (r->partial) fprintf(f, "# PARTIAL: interrupted after %ld mutations\n", r->mutations);
-    fprintf(f, "# mutations %ld\n# seconds %.3f\n# seed_seconds %.3f\n# mutations_per_second %.0f\n# nonfinite %ld\n",
-            r->mutations, r->seconds, r->seed_seconds, r->mutations / r->seconds, r->nonfinite);
-    if (a->mlt.method == MLT_PITP) {
-        const struct accept_cell *pc = &r->stats.total[PROPOSAL_PITP];
-        fprintf(f, "# pitp_perturbations %ld\n# pitp_failures %ld\n# pitp_failure_fraction %.9g\n", pc->attempts,
-                pc->failed, pc->attempts ? (double)pc->failed / pc->attempts : 0.0);
+    meta_head(f, a, "");
+    csv_meta(f, "threads", "%d", m->threads);
+    csv_meta(f, "max_length", "%d", m->max_length);
+    if (dist_size() > 1) csv_meta(f, "ranks", "%d", dist_size()); /* threads are per rank */
+    csv_meta(f, "large_step", "%s", large_steps[m->large_step]);
+    csv_meta(f, "hybrid_length", "%d", m->hybrid_length);
+    csv_meta(f, "uniform_lengths", "%d", m->uniform_lengths);
+    csv_meta(f, "mis", "%s", m->max_heuristic ? "maximum" : "balance");
+    csv_meta(f, "small_step", "%s", small_steps[m->small_step]);
+    csv_meta(f, "sigma", "%g", m->pss.sigma);
+    if (m->small_step != SMALL_STEP_PSS) {
+        csv_meta(f, "controlled_failed_forward", "%ld", r->ctrl_fail_forward);
+        csv_meta(f, "controlled_failed_reverse", "%ld", r->ctrl_fail_reverse);
     }
-    fprintf(f, "# b %.9g\n", r->b);
-    for (int k = 1; k <= a->mlt.max_length && a->mlt.method != MLT_PSSMLT; k++) fprintf(f, "# b_%d %.9g\n", k, r->b_k[k]);
+    csv_meta(f, "p_large", "%g", m->p_large);
+    csv_meta(f, "kernel", "%s", kernels[m->pss.kernel == KERNEL_KELEMEN ? 0 : 1]);
+    csv_meta(f, "rap", "%d", m->pss.rap);
+    csv_meta(f, "rap_resolution", "%d", m->pss.rap_resolution);
+    csv_meta(f, "cdc", "%d", m->pss.cdc);
+    csv_meta(f, "seed_paths", "%ld", m->seed_paths);
+    if (r->partial) csv_meta(f, NULL, "PARTIAL: interrupted after %ld mutations", r->mutations);
+    csv_meta(f, "mutations", "%ld", r->mutations);
+    csv_meta(f, "seconds", "%.3f", r->seconds);
+    csv_meta(f, "seed_seconds", "%.3f", r->seed_seconds);
+    csv_meta(f, "mutations_per_second", "%.0f", r->mutations / r->seconds);
+    csv_meta(f, "nonfinite", "%ld", r->nonfinite);
+    if (m->method == MLT_PITP) {
+        const struct accept_cell *pc = &r->stats.total[PROPOSAL_PITP];
+        csv_meta(f, "pitp_perturbations", "%ld", pc->attempts);
+        csv_meta(f, "pitp_failures", "%ld", pc->failed);
+        csv_meta(f, "pitp_failure_fraction", "%.9g", pc->attempts ? (double)pc->failed / pc->attempts : 0.0);
+    }
+    csv_meta(f, "b", "%.9g", r->b);
+    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++) csv_meta(f, NULL, "b_%d %.9g", k, r->b_k[k]);
     stats_write_csv(f, a->method, &r->stats, true);
     fclose(f);
     char path[4096];
@@ -321,15 +288,13 @@ static const char *threads_note(int threads)
 int main(int argc, char **argv)
 {
     dist_init(&argc, &argv);
-    struct args a = {.out = "out", .method = "bdpt"};
-    a.mc = (struct render_opts){.method = METHOD_BDPT, .spp = -1, .seed = 1, .threads = cpu_count(), .max_length = -1,
-                                .progress = true};
-    a.mlt = (struct mlt_opts){.p_large = 0.1, .seed_paths = 100000, .seed = 1, .threads = cpu_count(), .progress = true, .hybrid_length = 6};
+    struct args a = {.kernel = -1};
+    a.mc = (struct render_opts){.method = METHOD_BDPT, .spp = -1, .max_length = -1};
     pss_opts_default(&a.mlt.pss, 1, 1);
-    struct pss_opts cli_pss = a.mlt.pss;
+    struct pss_opts cli_pss;
     parse(argc, argv, &a);
     cli_pss = a.mlt.pss;
-    cli_require_image_output("render");
+    opts_require_image_output("render");
     char err[1024];
     struct scene *sc = scene_load(a.scene, err, sizeof err);
     if (!sc) {
@@ -346,7 +311,7 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    if (a.width) camera_resize(&sc->cam, a.width, a.height);
+    if (a.res[0]) camera_resize(&sc->cam, a.res[0], a.res[1]);
     if (a.mc.spp < 0) a.mc.spp = sc->spp > 0 ? sc->spp : 16;
     if (a.mc.max_length < 0) a.mc.max_length = sc->max_length;
     if (a.mc.progress && !isatty(2)) a.mc.progress = a.mlt.progress = false;
@@ -402,7 +367,7 @@ int main(int argc, char **argv)
         a.mlt.min_length = a.mc.min_length;
         if (a.mlt.technique_k && (a.mlt.technique_k > a.mlt.max_length || a.mlt.technique_k < a.mlt.min_length ||
                                   a.mlt.large_step != LARGE_MMLT))
-            cli_fail("render",
+            opts_fail("render",
                      "--technique-images %d: needs a length within --min-length %d..--max-length %d and MMLT "
                      "large steps",
                      a.mlt.technique_k, a.mlt.min_length, a.mlt.max_length);
