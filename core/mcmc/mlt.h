@@ -12,7 +12,7 @@
  * b; each chain starts from a seed sample resampled in proportion to its target, so there is no
  * start-up bias. Splatting uses expected values: weight a on the proposal and 1 - a on the current
  * state. Each run is reproducible from its seed and thread count (with a mutation budget).
- * Over MPI ranks (core/dist.h) the seed pass, the chains' streams and the mutation budgets belong
+ * Over MPI ranks (base/dist.h) the seed pass, the chains' streams and the mutation budgets belong
  * to the job's global threads, so N ranks of T threads give one process of N * T threads' image and
  * statistics. The image and statistics are the job's on rank 0 only (elsewhere partial sums); the
  * counts (mutations, controlled-step failures) and the normalisation are the job's on every rank.

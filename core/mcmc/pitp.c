@@ -1,5 +1,8 @@
-/* PITP's technique perturbation (see pitp.h): choice of j, partial inversion with a retrace of
- * each gained vertex, the reverse move's check, and the update of the chain's numbers. */
+/* PITP, the path-invariant technique perturbation (see pitp.h; thesis §5.2, Eq. 5.15-5.25, and the
+ * optimised inversion of §5.2.2): choice of j in proportion to the MIS weights (Eq. 5.22-5.25),
+ * partial inversion with a retrace of each gained vertex, the reverse move's check, the target
+ * ratio of refracting paths (Eq. 5.18), and the update of the chain's numbers (technique number:
+ * mmlt.h, Eq. 5.6). */
 #include "mcmc/pitp.h"
 #include "sampling/pick.h"
 #include <math.h>

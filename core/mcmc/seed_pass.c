@@ -16,7 +16,7 @@ struct seed_job {
     const struct mlt_opts *o;
     int nk;            /* chains per thread: 1 (PSSMLT) or K (MMLT) */
     double *f;         /* seed_paths * nk targets, index i * nk + (k - 1) */
-    int g0, stride;    /* this rank's first global thread; the job's threads (core/dist.h) */
+    int g0, stride;    /* this rank's first global thread; the job's threads (base/dist.h) */
     struct progress prog;
 };
 

@@ -1,4 +1,4 @@
-/* Angle-change statistics of small steps (see angle_change.h). */
+/* Angle-change statistics of small steps (thesis Eq. 5.38-5.39; see angle_change.h). */
 #include "stats/angle_change.h"
 #include "base/util.h"
 #include <stdlib.h>

@@ -1,4 +1,5 @@
-/* Per-technique contribution and sample-count images of one path length (tech_image.h). */
+/* Per-technique contribution and sample-count images of one path length, and how closely the counts
+ * follow the contributions (MMLT paper §5, Fig. 5; see tech_image.h). */
 #include "stats/tech_image.h"
 #include "base/util.h"
 #include <math.h>
