@@ -1,5 +1,6 @@
-/* Controlled small steps (thesis Alg. 3-4): the invert-perturb-sample pattern at every vertex of
- * the proposal, and the four points per vertex that its acceptance ratio needs (see the header). */
+/* Controlled small steps (thesis §5.3, Alg. 3-4, Eq. 5.26-5.37): the invert-perturb-sample pattern
+ * at every vertex of the proposal, and the four points per vertex that its acceptance ratio needs
+ * (see controlled_step.h). */
 #include "mcmc/controlled_step.h"
 #include <string.h>
 

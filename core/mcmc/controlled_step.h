@@ -3,7 +3,7 @@
  *
  * The current state u traced the subpaths x (camera x_0..x_{t-1}, emitter x_0..x_{s-1}). For each
  * subpath the proposal v is built while the walk traces it (Alg. 4):
- *  - root (block 0): its numbers take the ordinary small step of core/pss.c when the walk reads
+ *  - root (block 0): its numbers take the ordinary small step of sampler/pss.c when the walk reads
  *    them (lazy, as in MMLT; a symmetric kernel, so its density cancels);
  *  - block i >= 1, when the walk reaches the proposal's vertex y_i: u'_i = the numbers that make
  *    y_i scatter toward w'_i = dir(x_i -> x_{i+1}) (inversion at y_i with y_i's incoming

@@ -12,10 +12,16 @@
  * b; each chain starts from a seed sample resampled in proportion to its target, so there is no
  * start-up bias. Splatting uses expected values: weight a on the proposal and 1 - a on the current
  * state. Each run is reproducible from its seed and thread count (with a mutation budget).
- * Over MPI ranks (core/dist.h) the seed pass, the chains' streams and the mutation budgets belong
+ * Over MPI ranks (base/dist.h) the seed pass, the chains' streams and the mutation budgets belong
  * to the job's global threads, so N ranks of T threads give one process of N * T threads' image and
  * statistics. The image and statistics are the job's on rank 0 only (elsewhere partial sums); the
- * counts (mutations, controlled-step failures) and the normalisation are the job's on every rank. */
+ * counts (mutations, controlled-step failures) and the normalisation are the job's on every rank.
+ *
+ * The implementation, by concern: driver.c (mlt_render: checks, threads, merge, resume),
+ * seed_pass.c (seed pass, normalisation, chain start), chain_loop.c (the iterations), splat_ev.c
+ * (expected-value splats), pssmlt.c and mmlt.c (the two methods' state evaluation), mctls.c
+ * (MCTLS), pitp.c (PITP), controlled_step.c (controlled small steps), tech_split.c (technique
+ * images), chain.h and chain_checkpoint.c (a thread's state and its checkpoint). */
 #ifndef MLT_H
 #define MLT_H
 
@@ -29,7 +35,7 @@
 #include "stats/tech_image.h"
 
 /* MLT_PITP: MMLT with the path-invariant technique perturbation before every small step (thesis
- * §5.2, core/pitp.h); every MMLT option applies. */
+ * §5.2, mcmc/pitp.h); every MMLT option applies. */
 enum mlt_method { MLT_PSSMLT, MLT_MMLT, MLT_PITP };
 
 /* MMLT's large step: fresh numbers (MMLT), the multiple correlated-try large step of thesis §4.3
@@ -86,10 +92,5 @@ struct mlt_result {
 /* Returns false (with a message) when the seed pass finds no light at all. */
 bool mlt_render(const struct scene *sc, const struct mlt_opts *o, struct mlt_result *r, char *err, size_t errlen);
 void mlt_result_free(struct mlt_result *r);
-
-/* MCTLS's two decisions, exposed for the detailed-balance test: the trial picked in proportion to
- * its target pi[0..n-1] (u uniform; sum > 0), and the generalised acceptance ratio of Eq. 4.7. */
-int mctls_pick(const double *pi, int n, double u);
-double mctls_accept(double ysum, double xsum);
 
 #endif

@@ -1,22 +1,11 @@
-/* PITP's technique perturbation (see pitp.h): choice of j, partial inversion with a retrace of
- * each gained vertex, the reverse move's check, and the update of the chain's numbers. */
+/* PITP, the path-invariant technique perturbation (see pitp.h; thesis §5.2, Eq. 5.15-5.25, and the
+ * optimised inversion of §5.2.2): choice of j in proportion to the MIS weights (Eq. 5.22-5.25),
+ * partial inversion with a retrace of each gained vertex, the reverse move's check, the target
+ * ratio of refracting paths (Eq. 5.18), and the update of the chain's numbers (technique number:
+ * mmlt.h, Eq. 5.6). */
 #include "mcmc/pitp.h"
-#include "mcmc/mlt.h"
-
-bool mmlt_eval(const struct path_ctx *pc, struct sampler *s, int k, struct pitp_path *x, struct connection *c)
-{
-    sampler_begin(s, STREAM_TECHNIQUE, 0);
-    int t = 1 + (int)((k + 1) * sampler_next(s, DIM_TECHNIQUE));
-    if (t > k + 1) t = k + 1;
-    int sv = k + 1 - t;
-    x->k = k;
-    x->t = t;
-    x->s = sv;
-    int nz = walk_camera(pc, s, x->cam, t);
-    int ny = sv > 0 ? walk_emitter(pc, s, x->emi, sv) : 0;
-    x->complete = nz == t && ny == sv;
-    return x->complete && connect_st(pc, x->emi, sv, x->cam, t, k, c, x->ratios);
-}
+#include "sampling/pick.h"
+#include <math.h>
 
 void pitp_scratch_init(struct pitp_scratch *w, const struct scene *sc)
 {
@@ -166,23 +155,13 @@ static void forget_dropped(const struct path_ctx *pc, struct pss_sampler *p, int
         for (int o = 0; o < SAMPLER_BLOCK; o++) pss_forget(p, st, blk * SAMPLER_BLOCK + o);
 }
 
-/* Thesis Eq. 5.6: the technique number becomes a uniform point of t's interval, nudged so that
- * MMLT's own mapping t = 1 + floor((k + 1) u) gives t back in floating point. */
-static double technique_number(int t, int k, rng *r)
-{
-    double u = invert_discrete((double)(t - 1) / (k + 1), (double)t / (k + 1), rng_uniform(r));
-    while (1 + (int)((k + 1) * u) < t) u = nextafter(u, 1.0);
-    while (1 + (int)((k + 1) * u) > t) u = nextafter(u, 0.0);
-    return u;
-}
-
 /* Whether the target of the path can change with the technique: through a refracting BSDF (its
  * eta^2 factor is applied in radiance mode only, so f changes when the vertex changes subpath), or
  * a delta vertex (the MIS code counts a Dirac density as 1, but the light side's Dirac sits on the
  * vertex after it and the camera side's on the vertex before it, with different area conversions:
  * the weights sum to one but are not p_j / sum p, and w_j C_j varies with j, by up to 14x on
  * scenes/materials, measured by tests/test_pitp.c). Other paths keep (k + 1) f / sum_l p_l. */
-static bool target_may_change(const struct pitp_path *x)
+static bool target_may_change(const struct mmlt_path *x)
 {
     for (int i = 0; i < x->t + x->s; i++) {
         const struct vertex *v = i < x->t ? &x->cam[i] : &x->emi[i - x->t];
@@ -212,7 +191,7 @@ static double radiance_factor(const struct vertex *v, vec3 wc, vec3 wl)
  * j < i), and only a refraction's factor depends on the mode. With T(i -> j) = w_j, the MIS
  * weights cancel against the Jacobian p_j / p_i (in whatever convention the weights were computed,
  * as long as both moves use the same one), so this is Eq. 5.18's whole ratio. */
-static double f_ratio(const struct pitp_path *x, int sj)
+static double f_ratio(const struct mmlt_path *x, int sj)
 {
     const struct vertex *pv[2 * MAX_SUBPATH_VERTS];
     int k = x->k, si = x->s;
@@ -227,12 +206,12 @@ static double f_ratio(const struct pitp_path *x, int sj)
     return r;
 }
 
-enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct pitp_path *x,
+enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct mmlt_path *x,
                                struct pitp_scratch *w, double u_pick, int *j, double *a,
                                struct connection *c, bool *c_new)
 {
     int k = x->k, si = x->s;
-    int sj = mctls_pick(x->ratios, k + 1, u_pick); /* w_j = ratio_j / sum of ratios (Eq. 5.22-5.25) */
+    int sj = pick_weighted(x->ratios, k + 1, u_pick); /* w_j = ratio_j / sum of ratios (Eq. 5.22-5.25) */
     *j = sj;
     *a = 1;
     *c_new = false;
@@ -273,7 +252,7 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
         /* the new state's target: the same path, but (k + 1) w_j C_j need not equal the old one */
         const struct vertex *ye = to_emitter ? grow : shrink, *yc = to_emitter ? shrink : grow;
         double f = 0;
-        if (connect_st(pc, ye, sj, yc, tj, k, c, w->ratios)) f = luminance(vscale(c->f, c->w * (k + 1)));
+        if (connect_st(pc, ye, sj, yc, tj, k, c, w->ratios)) f = luminance(mmlt_contribution(c, k));
         *c_new = isfinite(f) && f > 0;
         if (!*c_new) ok = false; /* the retraced connection lost the path (occluded in float) */
     }
@@ -290,7 +269,7 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
     for (int r = 0; r < nrec; r++)
         for (int i = 0; i < rec[r].n; i++) pss_replace(p, rec[r].stream, rec[r].vertex * SAMPLER_BLOCK + i, rec[r].u[i]);
     forget_dropped(pc, p, ss, ns, ns_new);
-    pss_replace(p, STREAM_TECHNIQUE, 0, technique_number(tj, k, &p->r));
+    pss_replace(p, STREAM_TECHNIQUE, 0, mmlt_technique_number(tj, k, rng_uniform(&p->r)));
     if (*c_new) {
         for (int i = 0; i <= k; i++) x->ratios[i] = w->ratios[i];
     } else {

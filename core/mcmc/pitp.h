@@ -9,26 +9,14 @@
  * one forward step with those numbers that must reach the vertex it inverted toward (a retrace).
  * A move whose inversion or retrace fails, or whose reverse move (j -> i from the new state) would
  * fail, is rejected: README "PITP" argues detailed balance. Numbers the new technique no longer
- * uses are made fresh (uniform), as the reversible-jump pairing of unused dimensions requires. */
+ * uses are made fresh (uniform), as the reversible-jump pairing of unused dimensions requires.
+ *
+ * The state's path is MMLT's (struct mmlt_path, mmlt.h), kept in its technique's form by the chain. */
 #ifndef PITP_H
 #define PITP_H
 
-#include "path/connect.h"
+#include "mcmc/mmlt.h"
 #include "sampler/pss.h"
-
-/* An MMLT state's path in the form of its technique: t camera vertices, s = k + 1 - t emitter
- * vertices and ratios[j] = p_j / p_s for the techniques j = 0..k (j emitter vertices; 0 where j
- * cannot produce the path). */
-struct pitp_path {
-    int k, t, s;
-    bool complete; /* mmlt_eval: both walks reached their full vertex counts */
-    double ratios[MAX_PATH_LENGTH + 2];
-    struct vertex cam[MAX_SUBPATH_VERTS], emi[MAX_SUBPATH_VERTS];
-};
-
-/* MMLT's state read from sampler s: the technique t = 1 + floor((k + 1) u_tech), the subpaths and
- * their connection (weight among the techniques 0..k). False when it yields no contribution. */
-bool mmlt_eval(const struct path_ctx *pc, struct sampler *s, int k, struct pitp_path *x, struct connection *c);
 
 /* Per-thread scratch of the perturbation (no allocation in the chain loop). */
 struct pitp_scratch {
@@ -49,7 +37,7 @@ enum pitp_outcome { PITP_SAME, PITP_MOVED, PITP_REJECTED, PITP_FAILED };
  * unchanged. *j receives the technique chosen (emitter vertex count), *a the acceptance
  * probability. When the target was re-evaluated (*c_new set true), *c holds the new state's
  * connection (its target is (k + 1) w f of it), which the caller's splats must then use. */
-enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct pitp_path *x,
+enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct mmlt_path *x,
                                struct pitp_scratch *w, double u_pick, int *j, double *a,
                                struct connection *c, bool *c_new);
 

@@ -1,4 +1,4 @@
-/* Angle-change statistics of small steps (see angle_change.h). */
+/* Angle-change statistics of small steps (thesis Eq. 5.38-5.39; see angle_change.h). */
 #include "stats/angle_change.h"
 #include "base/util.h"
 #include <stdlib.h>
@@ -14,11 +14,12 @@ double angle_subpath(const struct vertex *a, const struct vertex *b, int n)
     return s;
 }
 
-bool angle_change(const struct ctrl_path *cur, const struct vertex *cam, const struct vertex *emi, double *dpsi)
+bool angle_change(const struct vertex *cur_cam, int t, const struct vertex *cur_emi, int s, const struct vertex *cam,
+                  const struct vertex *emi, double *dpsi)
 {
-    int edges = (cur->t > 1 ? cur->t - 1 : 0) + (cur->s > 1 ? cur->s - 1 : 0);
-    if (edges == 0 || cur->t + cur->s - 1 < 2) return false; /* paths of length 1 are ignored */
-    *dpsi = (angle_subpath(cur->cam, cam, cur->t) + angle_subpath(cur->emi, emi, cur->s)) / edges;
+    int edges = (t > 1 ? t - 1 : 0) + (s > 1 ? s - 1 : 0);
+    if (edges == 0 || t + s - 1 < 2) return false; /* paths of length 1 are ignored */
+    *dpsi = (angle_subpath(cur_cam, cam, t) + angle_subpath(cur_emi, emi, s)) / edges;
     return true;
 }
 

@@ -12,14 +12,16 @@
 #define ANGLE_CHANGE_H
 
 #include "io/image.h"
-#include "mcmc/controlled_step.h"
+#include "path/path.h"
 #include "stats/mlt_stats.h"
 #include <stdio.h>
 
 /* Eq. 5.38 over the n - 1 edges of two subpaths of n vertices. */
 double angle_subpath(const struct vertex *a, const struct vertex *b, int n);
-/* Eq. 5.39 between the current subpaths and a proposal's of the same split; false without edges. */
-bool angle_change(const struct ctrl_path *cur, const struct vertex *cam, const struct vertex *emi, double *dpsi);
+/* Eq. 5.39 between the current subpaths (camera cur_cam[0..t-1], emitter cur_emi[0..s-1]) and a
+ * proposal's of the same split (cam, emi); false without edges. */
+bool angle_change(const struct vertex *cur_cam, int t, const struct vertex *cur_emi, int s, const struct vertex *cam,
+                  const struct vertex *emi, double *dpsi);
 
 /* Per thread; threads are merged in a fixed order. */
 struct angle_acc {

@@ -1,3 +1,5 @@
+/* Acceptance statistics per proposal kind, path length and technique change, with batch-means
+ * standard errors, and their CSV rows (see mlt_stats.h). */
 #include "stats/mlt_stats.h"
 #include "base/vecmath.h"
 #include <math.h>

@@ -7,7 +7,7 @@
 #include <stdbool.h>
 #include <stdio.h>
 
-/* PROPOSAL_PITP records PITP's technique perturbations (core/pitp.c): "accepted" means carried
+/* PROPOSAL_PITP records PITP's technique perturbations (mcmc/pitp.c): "accepted" means carried
  * out; a is 1, or min(1, f_j / f_i) on paths refracting between the connections, and 0 for a
  * failed inversion or retrace (counted in `failed`); technique_changed is j != i. */
 enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_KINDS };

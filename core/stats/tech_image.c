@@ -1,7 +1,7 @@
-/* Per-technique contribution and sample-count images of one path length (tech_image.h). */
+/* Per-technique contribution and sample-count images of one path length, and how closely the counts
+ * follow the contributions (MMLT paper §5, Fig. 5; see tech_image.h). */
 #include "stats/tech_image.h"
 #include "base/util.h"
-#include "path/connect.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -62,34 +62,10 @@ void tech_acc_destroy(struct tech_acc *a)
     free(a);
 }
 
-/* PSSMLT: the length-k connections of the subpaths in w, as bdpt_splats weights them. */
-static void split_bdpt(const struct tech_acc *a, const struct path_ctx *pc, const struct scratch *w,
-                       struct tech_split *sp)
+void tech_acc_eval(struct tech_acc *a, int chain_k, const struct tech_split *sp, bool start)
 {
-    struct connection c;
-    for (int t = 1; t <= a->k + 1; t++) {
-        int s = a->k + 1 - t;
-        if (w->nz < t || w->ny < s || !connect_st(pc, w->emi, s, w->cam, t, a->k, &c, NULL)) continue;
-        rgb v = vscale(c.f, c.w);
-        if (!vfinite(v)) continue; /* bdpt_splats drops it too */
-        sp->on[t] = true;
-        sp->s[t] = (struct splat){c.px, c.py, v};
-    }
-}
-
-void tech_acc_eval(struct tech_acc *a, const struct path_ctx *pc, const struct scratch *w, int chain_k, int tech,
-                   const struct splat_list *l, bool start)
-{
-    a->active = chain_k == 0 || chain_k == a->k;
-    if (!a->active) return;
-    struct tech_split *sp = start ? &a->cur : &a->prop;
-    memset(sp, 0, sizeof *sp);
-    if (chain_k == 0) {
-        split_bdpt(a, pc, w, sp);
-    } else if (l->n > 0 && tech >= 1 && tech <= a->k + 1) {
-        sp->on[tech] = true;
-        sp->s[tech] = l->s[0];
-    }
+    a->active = tech_acc_tracks(a, chain_k);
+    if (a->active) *(start ? &a->cur : &a->prop) = *sp;
 }
 
 static void splat_split(struct tech_acc *a, const struct tech_split *sp, double wgt)

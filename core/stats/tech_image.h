@@ -12,14 +12,13 @@
  * BDPT as its sampler and so gives every technique the same samples whatever they contribute).
  *
  * One accumulator per thread tracks that thread's chain of length k (PSSMLT: its one chain); the
- * driver (core/mlt.c) calls tech_acc_eval after each evaluation and tech_acc_step after each
- * acceptance decision. Threads are merged in a fixed order. */
+ * MCMC driver splits each evaluated state by technique (mcmc/tech_split.c) and hands the split to
+ * tech_acc_eval, then calls tech_acc_step after each acceptance decision. Threads are merged in a
+ * fixed order. */
 #ifndef TECH_IMAGE_H
 #define TECH_IMAGE_H
 
 #include "io/image.h"
-#include "mc/integrator.h"
-#include "path/path.h"
 #include "path/splat.h"
 #include <stdio.h>
 
@@ -48,11 +47,11 @@ struct tech_acc *tech_acc_alloc(int threads, int k, int w, int h, bool tent);
 struct tech_acc *tech_acc_reduce(struct tech_acc *per_thread, int threads, double scale);
 void tech_acc_destroy(struct tech_acc *a);
 
-/* After a state was evaluated (start: a chain's first state; else a proposal). chain_k: the
- * evaluated MMLT chain's length, whose state `l` is in technique `tech`; 0 for PSSMLT, whose
- * subpaths are w's (lengths w->nz, w->ny) and are connected again here for the split. */
-void tech_acc_eval(struct tech_acc *a, const struct path_ctx *pc, const struct scratch *w, int chain_k, int tech,
-                   const struct splat_list *l, bool start);
+/* Whether a tracks the chain of length chain_k (0: PSSMLT's chain, of every length). */
+static inline bool tech_acc_tracks(const struct tech_acc *a, int chain_k) { return chain_k == 0 || chain_k == a->k; }
+/* After a state of the chain of length chain_k (0: PSSMLT) was evaluated (start: a chain's first
+ * state; else a proposal): sp is its length-k split, read only when a tracks that chain. */
+void tech_acc_eval(struct tech_acc *a, int chain_k, const struct tech_split *sp, bool start);
 /* After the acceptance decision of the evaluated proposal: a its acceptance probability, f and
  * f_cur the proposal's and the current state's targets, scale the chain's b_k / P(k). */
 void tech_acc_step(struct tech_acc *a, double acc_prob, bool accepted, double f, double f_cur, double scale);

@@ -5,7 +5,9 @@
 #include "support/agree.h"
 #include "camera/camera.h"
 #include "mc/render.h"
+#include "mcmc/mctls.h"
 #include "mcmc/mlt.h"
+#include "sampling/pick.h"
 #include "path/scene_ready.h"
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
@@ -198,7 +200,7 @@ Test(mlt, statistics_bookkeeping_and_reproducibility)
 
 /* MCTLS on a discrete toy (thesis Eq. 4.2-4.7): states (u, t) with u in 0..5 standing for the
  * random-number vector and t in 0..3 for the technique; target pi(u, t) from a fixed table. Each
- * step draws a fresh u, picks t by mctls_pick and accepts with mctls_accept of the sums. The chain's
+ * step draws a fresh u, picks t by pick_weighted and accepts with mctls_accept of the sums. The chain's
  * histogram over 2M steps (thinned by 10: 200k draws) must match pi (chi-square, 23 dof,
  * alpha 0.01); the same chain accepting with the plain ratio pi(y_j) / pi(x) must fail. */
 static double toy_pi(int u, int t)
@@ -222,7 +224,7 @@ static double toy_chain(bool generalised)
             xs += toy_pi(u, i);
         }
         if (ys > 0) {
-            int j = mctls_pick(pi, 4, rng_uniform(&r));
+            int j = pick_weighted(pi, 4, rng_uniform(&r));
             double a = generalised ? mctls_accept(ys, xs) : fmin(1.0, pi[j] / toy_pi(u, t));
             if (rng_uniform(&r) < a) u = v, t = j;
         }

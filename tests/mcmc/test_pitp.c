@@ -14,7 +14,7 @@
 /* A chain state of length k: numbers from (seed, stream), evaluated as MMLT evaluates a state. */
 struct tstate {
     struct pss_sampler pss;
-    struct pitp_path x;
+    struct mmlt_path x;
     struct connection c;
 };
 
@@ -29,7 +29,7 @@ static bool make_state(const struct path_ctx *pc, struct tstate *s, int k, uint6
 }
 
 /* The path's vertices from the emitter end to the camera, whatever the technique. */
-static int path_vertices(const struct pitp_path *x, const struct vertex **out)
+static int path_vertices(const struct mmlt_path *x, const struct vertex **out)
 {
     int n = 0;
     for (int i = 0; i < x->s; i++) out[n++] = &x->emi[i];
@@ -37,7 +37,7 @@ static int path_vertices(const struct pitp_path *x, const struct vertex **out)
     return n;
 }
 
-static bool same_path(const struct pitp_path *a, const struct pitp_path *b, double tol)
+static bool same_path(const struct mmlt_path *a, const struct mmlt_path *b, double tol)
 {
     const struct vertex *va[2 * MAX_SUBPATH_VERTS], *vb[2 * MAX_SUBPATH_VERTS];
     int na = path_vertices(a, va), nb = path_vertices(b, vb);
@@ -84,7 +84,7 @@ static void pitp_invariance_on_scene(const char *path, int nstates, struct invar
     struct scene *sc = test_scene(path);
     struct path_ctx pc = {.sc = sc, .max_length = 8};
     static struct tstate s;
-    static struct pitp_path before, replay;
+    static struct mmlt_path before, replay;
     static struct pitp_scratch ws;
     static struct sampler_writer wr;
     pitp_scratch_init(&ws, sc);

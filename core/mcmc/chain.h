@@ -1,11 +1,12 @@
-/* The state of MLT's chains and of the thread that runs them (core/mlt.c), shared with the code
- * that checkpoints it (core/mlt_checkpoint.c). */
-#ifndef MLT_CHAIN_H
-#define MLT_CHAIN_H
+/* A Markov chain's state (one per path length and thread for MMLT, one per thread for PSSMLT), and
+ * everything a worker thread carries from one iteration to the next (chain_loop.c), with their
+ * checkpoint I/O (chain_checkpoint.c): what a resumed run must restore to continue bit-identically. */
+#ifndef CHAIN_H
+#define CHAIN_H
 
 #include "io/checkpoint.h"
 #include "mcmc/controlled_step.h"
-#include "mcmc/pitp.h"
+#include "mcmc/mmlt.h"
 #include "path/splat.h"
 #include "sampler/pss.h"
 #include "stats/angle_change.h"
@@ -22,7 +23,7 @@ struct chain {
     double pending;    /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
     bool xsum_valid;
     struct ctrl_path *path; /* controlled steps and angle statistics: the current subpaths */
-    struct pitp_path *x;    /* PITP: the current path in its technique's form (swapped with a spare on accept) */
+    struct mmlt_path *x;    /* PITP: the current path in its technique's form (swapped with a spare on accept) */
 };
 
 /* Everything one worker thread carries from one iteration to the next. Scratch buffers (walks,

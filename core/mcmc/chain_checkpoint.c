@@ -1,5 +1,6 @@
-/* A worker thread's MLT state in and out of a checkpoint payload; see mlt_chain.h. */
-#include "mcmc/mlt_chain.h"
+/* A worker thread's MLT state (its chains, generator, counts, statistics and images) in and out of a
+ * checkpoint payload; see chain.h. */
+#include "mcmc/chain.h"
 #include "path/path_checkpoint.h"
 #include <string.h>
 

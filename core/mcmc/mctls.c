@@ -1,0 +1,87 @@
+/* MCTLS, the multiple correlated-try large step (see mctls.h; thesis §4.3, Eq. 4.1-4.7). */
+#include "mcmc/mctls.h"
+#include "mcmc/mmlt.h"
+#include "mcmc/splat_ev.h"
+#include "path/connect.h"
+#include "sampling/pick.h"
+#include <math.h>
+#include <string.h>
+
+bool use_mctls(const struct mlt_opts *o, int k)
+{
+    if (o->method == MLT_PSSMLT) return false;
+    return o->large_step == LARGE_MCTLS || (o->large_step == LARGE_HYBRID && k >= o->hybrid_length);
+}
+
+double mctls_accept(double ysum, double xsum) { return xsum > 0 ? fmin(1.0, ysum / xsum) : 1.0; }
+
+/* The trials (Eq. 4.7's terms): the targets of all k + 1 techniques of the subpaths the sampler's
+ * numbers give, traced to full length; pi[t] and sp[t] for t = 1..k+1. Returns their sum. */
+static double all_techniques(const struct path_ctx *pc, struct sampler *s, struct scratch *w, int k, double *pi,
+                             struct splat_list *sp)
+{
+    int nz = walk_camera(pc, s, w->cam, k + 1);
+    int ny = walk_emitter(pc, s, w->emi, k);
+    double sum = 0;
+    struct connection c;
+    for (int t = 1; t <= k + 1; t++) {
+        int sv = k + 1 - t;
+        pi[t] = 0;
+        sp[t].n = 0;
+        if (nz < t || ny < sv || !connect_st(pc, w->emi, sv, w->cam, t, k, &c, NULL)) continue;
+        rgb v = mmlt_contribution(&c, k);
+        if (!vfinite(v)) {
+            w->nonfinite++;
+            continue;
+        }
+        splat_push(&sp[t], c.px, c.py, v);
+        pi[t] = splat_luminance(&sp[t]);
+        sum += pi[t];
+    }
+    return sum;
+}
+
+/* PITP after an accepted MCTLS step: the chosen technique's subpaths are prefixes of the ones MCTLS
+ * traced to full length; one more connection gives their density ratios. */
+static void keep_path(const struct path_ctx *pc, struct mmlt_path *x, const struct scratch *w, int k, int t)
+{
+    x->k = k;
+    x->t = t;
+    x->s = k + 1 - t;
+    memcpy(x->cam, w->cam, (size_t)t * sizeof *x->cam);
+    memcpy(x->emi, w->emi, (size_t)x->s * sizeof *x->emi);
+    struct connection c;
+    connect_st(pc, x->emi, x->s, x->cam, t, k, &c, x->ratios);
+}
+
+double mctls_step(const struct path_ctx *pc, struct chain *c, struct scratch *w, struct mctls_buf *b, rng *r,
+                  struct image *img, bool *acc, bool *changed, bool *nonzero)
+{
+    int k = c->k;
+    if (!c->xsum_valid) {
+        c->xsum = all_techniques(pc, &c->pss.base, w, k, b->xpi, b->xsp);
+        c->xsum_valid = true;
+    }
+    pss_begin(&c->pss, true);
+    double ysum = all_techniques(pc, &c->pss.base, w, k, b->pi, b->sp);
+    int j = ysum > 0 ? pick_weighted(b->pi + 1, k + 1, rng_uniform(r)) + 1 : 0;
+    double a = mctls_accept(ysum, c->xsum);
+    /* expected values (splat_ev.h); a trial with a target whenever any has one */
+    if (ysum > 0) splat_list_weighted(img, &b->sp[j], a * c->scale / b->pi[j]);
+    owe_current(c, a);
+    *nonzero = ysum > 0;
+    *acc = ysum > 0 && rng_uniform(r) < a;
+    *changed = ysum > 0 && j != c->tech; /* a property of the proposal, not of its acceptance */
+    if (*acc) {
+        /* the state's technique number: a uniform point of the chosen technique's interval (Eq. 5.6) */
+        pss_set(&c->pss, STREAM_TECHNIQUE, 0, mmlt_technique_number(j, k, rng_uniform(r)));
+        pss_accept(&c->pss);
+        move_to(img, c, &b->sp[j], b->pi[j]);
+        c->tech = j;
+        c->xsum = ysum;
+        if (c->x) keep_path(pc, c->x, w, k, j);
+    } else {
+        pss_reject(&c->pss);
+    }
+    return a;
+}

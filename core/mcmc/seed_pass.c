@@ -1,0 +1,117 @@
+/* The seed pass, the normalisation and the chains' start (MMLT paper §4 "Initialization"; thesis
+ * §3.7 step 1): seed_paths independent samples of the method's state (per length for MMLT) estimate
+ * b_k = E[target] of each length, the length selection P(k) and each chain's splat weight
+ * b_k / P(k); a chain starts from a sample of that pool resampled in proportion to its target, so
+ * that it starts in its stationary distribution (no start-up bias). */
+#include "base/dist.h"
+#include "base/util.h"
+#include "emitter/emitter.h"
+#include "mcmc/mlt_internal.h"
+#include "mcmc/tech_split.h"
+#include "sampling/pick.h"
+#include <stdlib.h>
+
+struct seed_job {
+    const struct scene *sc;
+    const struct mlt_opts *o;
+    int nk;            /* chains per thread: 1 (PSSMLT) or K (MMLT) */
+    double *f;         /* seed_paths * nk targets, index i * nk + (k - 1) */
+    int g0, stride;    /* this rank's first global thread; the job's threads (base/dist.h) */
+    struct progress prog;
+};
+
+static void seed_worker(int tid, void *p)
+{
+    struct seed_job *j = p;
+    struct path_ctx pc = {.sc = j->sc, .max_length = j->o->max_length, .min_length = j->o->min_length, .max_heuristic = j->o->max_heuristic};
+    struct scratch *w = xmalloc(sizeof *w);
+    struct mmlt_path *x = xmalloc(sizeof *x);
+    struct sampler_independent s;
+    struct splat_list l;
+    int tech;
+    bool complete;
+    for (long i = j->g0 + tid; i < j->o->seed_paths; i += j->stride) {
+        for (int kk = 0; kk < j->nk; kk++) {
+            sampler_independent_init(&s, j->o->seed, seed_stream(i, j->nk, kk));
+            j->f[i * j->nk + kk] = eval_state(j->o->method, &pc, &s.base, w, kk + 1, x, &l, &tech, &complete);
+        }
+        if ((i / j->stride) % 1024 == 0) progress_add(&j->prog, 1024);
+    }
+    free(x);
+    free(w);
+}
+
+/* The seed pass's targets, index i * nk + kk. It is dealt over the job's threads; each target is
+ * computed by one rank and the others hold 0, so the sum gives every rank the whole pass, exactly. */
+static double *seed_targets(const struct run_job *rj)
+{
+    const struct mlt_opts *o = rj->o;
+    struct seed_job sj = {rj->sc, o, rj->nk, xcalloc((size_t)o->seed_paths * rj->nk, sizeof(double)), rj->g0, rj->stride, {0}};
+    progress_init(&sj.prog, "seed pass", o->seed_paths / dist_size(), o->progress);
+    parallel_run(o->threads, seed_worker, &sj);
+    dist_sum_doubles(sj.f, (size_t)o->seed_paths * rj->nk);
+    progress_finish(&sj.prog);
+    return sj.f;
+}
+
+bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errlen)
+{
+    const struct mlt_opts *o = rj->o;
+    double t0 = now_seconds();
+    double *f = seed_targets(rj);
+    double total = 0;
+    int live = 0;
+    for (int kk = 0; kk < rj->nk; kk++) {
+        double *cdf = xmalloc((size_t)o->seed_paths * sizeof(double)), acc = 0;
+        for (long i = 0; i < o->seed_paths; i++) cdf[i] = acc += f[i * rj->nk + kk];
+        r->b_k[kk + 1] = acc / o->seed_paths;
+        total += r->b_k[kk + 1];
+        if (acc > 0) {
+            rj->cdf[kk] = cdf;
+            live++;
+        } else {
+            free(cdf);
+        }
+    }
+    free(f);
+    /* Length k is chosen with probability P(k) (b_k / b, or uniform over the lengths with b_k > 0)
+     * and its splats weigh b_k / P(k), so every length is estimated without bias either way. */
+    for (int kk = 0; kk < rj->nk; kk++) {
+        double pk = !rj->cdf[kk] ? 0 : o->uniform_lengths ? 1.0 / live : r->b_k[kk + 1] / total;
+        rj->kcdf[kk + 1] = rj->kcdf[kk] + pk;
+        rj->scale[kk] = pk > 0 ? r->b_k[kk + 1] / pk : 0;
+    }
+    r->b = total;
+    r->seed_seconds = now_seconds() - t0;
+    if (total > 0) return true;
+    if (emitters_count(rj->sc) == 0)
+        snprintf(err, errlen, "%s: the scene has no emitter: there is no light to sample", rj->sc->file);
+    else
+        snprintf(err, errlen, "%s: the seed pass of %ld paths found no light; raise --seed-paths", rj->sc->file, o->seed_paths);
+    for (int kk = 0; kk < rj->nk; kk++) {
+        free((void *)rj->cdf[kk]);
+        rj->cdf[kk] = NULL;
+    }
+    return false;
+}
+
+void chain_start(struct worker *wk, struct chain *c, int kk)
+{
+    const struct run_job *j = wk->j;
+    const struct mlt_opts *o = wk->o;
+    long i = pick_cdf(j->cdf[kk], o->seed_paths, rng_uniform(&wk->r));
+    pss_init(&c->pss, &o->pss, o->seed, seed_stream(i, j->nk, kk));
+    if (wk->pitp) c->x = xmalloc(sizeof *c->x);
+    struct mmlt_path *x0 = wk->pitp ? c->x : wk->spare;
+    bool complete;
+    c->f = eval_state(o->method, &wk->pc, &c->pss.base, wk->w, c->k, x0, &c->cur, &c->tech, &complete);
+    if (wk->ta) tech_split_record(wk->ta, &wk->pc, wk->w, wk->multiplexed ? c->k : 0, c->tech, &c->cur, true);
+    pss_accept(&c->pss);
+    if (wk->track) {
+        c->path = xmalloc(sizeof *c->path);
+        ctrl_path_capture(c->path, x0->cam, c->tech, x0->emi, c->k + 1 - c->tech);
+    }
+    /* The seed's stream reproduced its path; the mutations get a stream of their own, so that two
+     * threads starting from the same seed sample do not run identical chains. */
+    rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)wk->g << 24) | (uint64_t)kk);
+}

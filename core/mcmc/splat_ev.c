@@ -1,0 +1,34 @@
+/* Expected-value splatting of the current and proposed states (see splat_ev.h). */
+#include "mcmc/splat_ev.h"
+#include <string.h>
+
+void splat_list_weighted(struct image *img, const struct splat_list *l, double wgt)
+{
+    if (wgt <= 0) return;
+    for (int i = 0; i < l->n; i++) img_splat(img, l->s[i].px, l->s[i].py, vscale(l->s[i].c, wgt));
+}
+
+void splat_ev(struct image *img, struct chain *c, const struct splat_list *l, double f, double a)
+{
+    if (f > 0) splat_list_weighted(img, l, a * c->scale / f);
+    owe_current(c, a);
+}
+
+void owe_current(struct chain *c, double a)
+{
+    if (c->f > 0) c->pending += 1 - a;
+}
+
+void pay_current(struct image *img, struct chain *c)
+{
+    if (c->f > 0) splat_list_weighted(img, &c->cur, c->pending * c->scale / c->f);
+    c->pending = 0;
+}
+
+void move_to(struct image *img, struct chain *c, const struct splat_list *l, double f)
+{
+    pay_current(img, c);
+    c->cur.n = l->n;
+    memcpy(c->cur.s, l->s, (size_t)l->n * sizeof *l->s);
+    c->f = f;
+}
