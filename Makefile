@@ -235,9 +235,14 @@ test-fast: deps all
 # AddressSanitizer + UBSan on the fast tests. Criterion reports a leak but still counts the test
 # as passed, so the log is searched for sanitizer reports as well. Criterion's own runner leaks 48
 # bytes on full runs: tests/lsan.supp says how that is suppressed without hiding the project's leaks.
+# intercept_tls_get_addr=0: GCC 12's LeakSanitizer tells glibc's dynamic-TLS blocks apart by their
+# alignment and, now and then, mistakes one for an old glibc's layout; the leak check of a process
+# that dlopen()ed oiio.so then reads a bogus range and dies ("Tracer caught signal 11 ... does not work
+# under ptrace", exit status 1; google/sanitizers#1322). Seen in 1 render of ~250 per run. Static TLS
+# and every stack and heap are still scanned.
 test-san: deps
 	$(MAKE) SANITIZE=1 all
-	@set -o pipefail; ASAN_OPTIONS=detect_leaks=1:malloc_context_size=2 LSAN_OPTIONS=suppressions=tests/lsan.supp:print_suppressions=0 build-san/tests/run-tests --jobs 2 --filter '!(stat_*)/*' 2>&1 \
+	@set -o pipefail; ASAN_OPTIONS=detect_leaks=1:malloc_context_size=2:intercept_tls_get_addr=0 LSAN_OPTIONS=suppressions=tests/lsan.supp:print_suppressions=0 build-san/tests/run-tests --jobs 2 --filter '!(stat_*)/*' 2>&1 \
 	  | tee build-san/test-san.log
 	@! grep -q "LeakSanitizer\|runtime error\|AddressSanitizer" build-san/test-san.log \
 	  || (echo "sanitizer reports in build-san/test-san.log" >&2; exit 1)
