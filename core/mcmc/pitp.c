@@ -115,12 +115,13 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
                  * s = 1 it was any point: a lone y_0 is only connected to along its direction) */
                 if (y[0].kind == VK_ENV) y[0].p = y[1].p;
             }
-            ok = invert_emitter(pc, y, len, 0, &b->base) && walk_emitter(pc, &b->base, v, len) == len && !b->bad &&
+            ok = invert_emitter(pc, y, len, 0, &b->base) &&
+                 walk_extend_to(pc, &b->base, v, len - 1, STREAM_EMITTER, len == 2 ? &y[1] : NULL) == len && !b->bad &&
                  same_vertex(&v[0], &y[0], tol) && (len < 2 || same_vertex(&v[1], &y[1], tol));
         } else {
             v[n] = *tgt[c]; /* the inversion reads the direction toward it */
             ok = st == STREAM_CAMERA ? invert_camera(pc, v, n + 1, n - 1, &b->base) : invert_emitter(pc, v, n + 1, n - 1, &b->base);
-            ok = ok && walk_extend(pc, &b->base, v, n, n + 1, st) == n + 1 && !b->bad && same_vertex(&v[n], tgt[c], tol);
+            ok = ok && walk_extend_to(pc, &b->base, v, n, st, tgt[c]) == n + 1 && !b->bad && same_vertex(&v[n], tgt[c], tol);
             take = 1;
             len = n + 1;
         }

@@ -63,6 +63,12 @@ int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
  * numbers (v[n-1].delta and v[n-2].pdf_rev are set as the walk sets them). n < 2 walks afresh.
  * PITP's retrace of the vertices a subpath gains (core/pitp.c). */
 int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream);
+/* walk_extend by one vertex, expected to be `to` (NULL: no expectation): where the step's direction
+ * points at a surface vertex `to` within float noise, the step takes `to`'s point without casting
+ * the ray, so `to` must be a vertex of a path whose segment from v[n-1] is known unoccluded
+ * (PITP's retrace of the vertices of its own path, core/mcmc/README.md "Ray-free retrace"). */
+int walk_extend_to(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int stream,
+                   const struct vertex *to);
 
 /* The emitter vertex y_0 from the current block (light choice, then position or environment
  * direction and origin). */

@@ -12,6 +12,28 @@ bool walk_hit(const struct scene *sc, const struct vertex *prev, vec3 d, struct 
     return true;
 }
 
+/* The vertex the ray from prev along unit d reaches when it is known in advance: `to`, a surface
+ * vertex of the path being re-walked whose segment from prev is unoccluded (an edge or the
+ * connection of the current path), and d points at it within float noise. Then the hit is `to`'s
+ * own point and the ray is not cast (PITP's retrace, core/mcmc/README.md "Ray-free retrace").
+ * The bound, 1e-9 of the coordinates' magnitude off the line, is far below the 1e-7 a float ray
+ * resolves, so the ray, had it been cast, could only have hit `to` or a surface within float
+ * noise of it. Very short segments, which the ray's self-intersection offset may skip, and
+ * directions a float ray would resolve differently are left to the ray. */
+static bool known_hit(const struct scene *sc, const struct vertex *prev, vec3 d, const struct vertex *to,
+                      struct vertex *out)
+{
+    if (!to || to->kind != VK_SURFACE) return false;
+    vec3 e = vsub(to->p, prev->p);
+    double t = vdot(e, d);
+    if (!(t > 4 * ray_eps(prev->p))) return false;
+    double scale = maxd(1.0, maxd(fabs(to->p.x), maxd(fabs(to->p.y), fabs(to->p.z))));
+    if (vlen2(vsub(e, vscale(d, t))) > sqr(1e-9 * scale)) return false;
+    struct hit h = {.t = t, .prim = to->prim, .tri = to->tri, .b1 = to->b1, .b2 = to->b2};
+    surface_from_hit(sc, prev->p, d, &h, out);
+    return true;
+}
+
 /* Samples the direction leaving v[n-1] (n >= 2, a surface with a BSDF) from its block: the
  * outgoing direction *d, its solid-angle density *pdf_sa (0 for a delta lobe) and the throughput
  * *beta the next vertex receives; sets v[n-1].delta and v[n-2].pdf_rev. False ends the walk. The
@@ -40,14 +62,17 @@ static inline bool scatter_at(struct sampler *s, struct vertex *v, int n, enum t
 }
 
 /* Extends a subpath whose last vertex v[n-1] emits direction d with solid-angle density pdf_sa
- * (0 for a delta lobe); beta is the throughput the next vertex receives. */
+ * (0 for a delta lobe); beta is the throughput the next vertex receives. `to`, when not NULL, is
+ * the vertex the first step is expected to reach (known_hit). */
 static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts,
-                 vec3 d, double pdf_sa, rgb beta, enum transport mode, int stream)
+                 vec3 d, double pdf_sa, rgb beta, enum transport mode, int stream, const struct vertex *to)
 {
     const struct scene *sc = pc->sc;
     while (n < max_verts) {
         struct vertex *prev = &v[n - 1], *cur = &v[n];
-        if (!walk_hit(sc, prev, d, cur)) {
+        bool known = known_hit(sc, prev, d, to, cur);
+        to = NULL;
+        if (!known && !walk_hit(sc, prev, d, cur)) {
             /* A camera subpath that leaves the scene ends on the environment. */
             if (stream == STREAM_CAMERA && sc->env_prim >= 0) {
                 *cur = (struct vertex){.kind = VK_ENV, .p = prev->p, .ng = vneg(d), .sh = frame_from_normal(vneg(d)),
@@ -67,19 +92,42 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
     return n;
 }
 
-int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream)
+static int camera_walk(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts,
+                       const struct vertex *to);
+static int emitter_walk(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts,
+                        const struct vertex *to);
+
+static int extend_walk(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream,
+                       const struct vertex *to)
 {
-    if (n < 2) return stream == STREAM_CAMERA ? walk_camera(pc, s, v, max_verts) : walk_emitter(pc, s, v, max_verts);
+    if (n < 2) return stream == STREAM_CAMERA ? camera_walk(pc, s, v, max_verts, to) : emitter_walk(pc, s, v, max_verts, to);
     if (n >= max_verts || !v[n - 1].bc.b) return n;
     enum transport mode = stream == STREAM_CAMERA ? TRANSPORT_RADIANCE : TRANSPORT_IMPORTANCE;
     vec3 d;
     double pdf_sa;
     rgb beta;
     if (!scatter_at(s, v, n, mode, stream, &d, &pdf_sa, &beta)) return n;
-    return trace(pc, s, v, n, max_verts, d, pdf_sa, beta, mode, stream);
+    return trace(pc, s, v, n, max_verts, d, pdf_sa, beta, mode, stream, to);
+}
+
+int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream)
+{
+    return extend_walk(pc, s, v, n, max_verts, stream, NULL);
+}
+
+int walk_extend_to(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int stream,
+                   const struct vertex *to)
+{
+    return extend_walk(pc, s, v, n, n + 1, stream, to);
 }
 
 int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts)
+{
+    return camera_walk(pc, s, v, max_verts, NULL);
+}
+
+static int camera_walk(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts,
+                       const struct vertex *to)
 {
     const struct camera *cam = &pc->sc->cam;
     if (max_verts < 1) return 0;
@@ -92,7 +140,7 @@ int walk_camera(const struct path_ctx *pc, struct sampler *s, struct vertex *v, 
     if (max_verts == 1) return 1;
     double pdf;
     vec3 d = camera_sample_dir(cam, s, &z->px, &z->py, &pdf);
-    return trace(pc, s, v, 1, max_verts, d, pdf, v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA);
+    return trace(pc, s, v, 1, max_verts, d, pdf, v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA, to);
 }
 
 /* A point on area emitter `prim`, chosen with probability pick. */
@@ -106,12 +154,18 @@ static bool sample_area_emitter(const struct scene *sc, int prim, double pick, s
     return true;
 }
 
-bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
+/* Inlined into the walk, which every MMLT and BDPT sample runs; exported below for the inversion. */
+static inline bool emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
 {
     double pick;
     int prim = emitter_pick(sc, s, &pick);
     if (prim < 0) return false;
     return prim == sc->env_prim ? sample_env_emitter(sc, pick, s, y) : sample_area_emitter(sc, prim, pick, s, y);
+}
+
+bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
+{
+    return emitter_vertex(sc, s, y);
 }
 
 bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, struct vertex *y)
@@ -128,10 +182,16 @@ bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, 
 
 int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts)
 {
+    return emitter_walk(pc, s, v, max_verts, NULL);
+}
+
+static int emitter_walk(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts,
+                        const struct vertex *to)
+{
     const struct scene *sc = pc->sc;
     if (max_verts < 1) return 0;
     sampler_begin(s, STREAM_EMITTER, 0);
-    if (!sample_emitter_vertex(sc, s, &v[0])) return 0;
+    if (!emitter_vertex(sc, s, &v[0])) return 0;
     /* A lone emitter vertex (s = 1) is only connected to: the direction it would emit along is
      * never used (as for the camera in walk_camera). */
     if (max_verts == 1) return 1;
@@ -139,7 +199,7 @@ int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
         /* rays leave the origin disc (area density 1 / (pi R^2), cosine 1) against env_dir */
         double pdf_disc = 1.0 / (M_PI * sqr(env_radius(sc)));
         rgb beta = vscale(vmul(v[0].beta, env_radiance(sc, env_dir(&v[0]))), 1.0 / pdf_disc);
-        return trace(pc, s, v, 1, max_verts, vneg(env_dir(&v[0])), pdf_disc, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER);
+        return trace(pc, s, v, 1, max_verts, vneg(env_dir(&v[0])), pdf_disc, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER, to);
     }
     double pdf_dir;
     vec3 d = emitter_sample_dir(v[0].ng, s, &pdf_dir);
@@ -147,5 +207,5 @@ int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
     double c = fabs(vdot(d, v[0].ng));
     if (!(pdf_dir > 0) || vzero(le)) return 1;
     rgb beta = vscale(vmul(v[0].beta, le), c / pdf_dir);
-    return trace(pc, s, v, 1, max_verts, d, pdf_dir, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER);
+    return trace(pc, s, v, 1, max_verts, d, pdf_dir, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER, to);
 }
