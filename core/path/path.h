@@ -117,6 +117,8 @@ rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w);
  * Exactly 1 where the shading normal is the geometric one. */
 double adjoint_shading_factor(const struct vertex *v, vec3 wi, vec3 wo);
 
+/* The magnitude of p's coordinates, at least 1: what float rounding of a point near p scales with. */
+static inline double coord_scale(vec3 p) { return maxd(fabs(p.z), maxd(fabs(p.y), maxd(fabs(p.x), 1.0))); }
 /* Self-intersection offset for rays leaving p. */
 double ray_eps(vec3 p);
 

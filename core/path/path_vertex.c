@@ -4,7 +4,7 @@
 #include "scene/accel.h"
 
 /* Self-intersection offset relative to the coordinates' magnitude (Embree works in float). */
-double ray_eps(vec3 p) { return 2e-5 * maxd(fabs(p.z), maxd(fabs(p.y), maxd(fabs(p.x), 1.0))); }
+double ray_eps(vec3 p) { return 2e-5 * coord_scale(p); }
 
 /* Tungsten's sphere parametrisation: poles on the local Z axis, u = atan2(y, x) / 2pi + 0.5,
  * v = acos(z) / pi of the local unit normal. */

@@ -27,8 +27,7 @@ static bool known_hit(const struct scene *sc, const struct vertex *prev, vec3 d,
     vec3 e = vsub(to->p, prev->p);
     double t = vdot(e, d);
     if (!(t > 4 * ray_eps(prev->p))) return false;
-    double scale = maxd(1.0, maxd(fabs(to->p.x), maxd(fabs(to->p.y), fabs(to->p.z))));
-    if (vlen2(vsub(e, vscale(d, t))) > sqr(1e-9 * scale)) return false;
+    if (vlen2(vsub(e, vscale(d, t))) > sqr(1e-9 * coord_scale(to->p))) return false;
     struct hit h = {.t = t, .prim = to->prim, .tri = to->tri, .b1 = to->b1, .b2 = to->b2};
     surface_from_hit(sc, prev->p, d, &h, out);
     return true;
@@ -154,18 +153,12 @@ static bool sample_area_emitter(const struct scene *sc, int prim, double pick, s
     return true;
 }
 
-/* Inlined into the walk, which every MMLT and BDPT sample runs; exported below for the inversion. */
-static inline bool emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
+bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
 {
     double pick;
     int prim = emitter_pick(sc, s, &pick);
     if (prim < 0) return false;
     return prim == sc->env_prim ? sample_env_emitter(sc, pick, s, y) : sample_area_emitter(sc, prim, pick, s, y);
-}
-
-bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y)
-{
-    return emitter_vertex(sc, s, y);
 }
 
 bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, struct vertex *y)
@@ -191,7 +184,7 @@ static int emitter_walk(const struct path_ctx *pc, struct sampler *s, struct ver
     const struct scene *sc = pc->sc;
     if (max_verts < 1) return 0;
     sampler_begin(s, STREAM_EMITTER, 0);
-    if (!emitter_vertex(sc, s, &v[0])) return 0;
+    if (!sample_emitter_vertex(sc, s, &v[0])) return 0;
     /* A lone emitter vertex (s = 1) is only connected to: the direction it would emit along is
      * never used (as for the camera in walk_camera). */
     if (max_verts == 1) return 1;
