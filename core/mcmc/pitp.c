@@ -162,7 +162,7 @@ static void forget_dropped(const struct path_ctx *pc, struct pss_sampler *p, int
  * vertex after it and the camera side's on the vertex before it, with different area conversions:
  * the weights sum to one but are not p_j / sum p, and w_j C_j varies with j, by up to 14x on
  * scenes/materials, measured by tests/test_pitp.c). Other paths keep (k + 1) f / sum_l p_l. */
-static bool target_may_change(const struct mmlt_path *x)
+bool pitp_target_may_change(const struct mmlt_path *x)
 {
     for (int i = 0; i < x->t + x->s; i++) {
         const struct vertex *v = i < x->t ? &x->cam[i] : &x->emi[i - x->t];
@@ -231,7 +231,7 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
      * first, on the path in i's form, so that a rejection costs no ray */
     *a = mind(1.0, f_ratio(x, sj));
     if (*a < 1 && !(rng_uniform(&p->r) < *a)) return PITP_REJECTED;
-    bool may_change = target_may_change(x);
+    bool may_change = pitp_target_may_change(x);
     /* forward: the vertices the shrinking subpath loses, in the growing subpath's order */
     for (int m = 0; m < d; m++) w->tgt[m] = &shrink[ns - 1 - m];
     /* what the extension rewrites of the growing subpath: from fewer than 2 vertices it walks

@@ -41,4 +41,8 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
                                struct pitp_scratch *w, double u_pick, int *j, double *a,
                                struct connection *c, bool *c_new);
 
+/* Whether the path's target can change with its technique (a refracting or delta vertex: pitp.c);
+ * on the other paths the stationary law of the technique given the path is w(x). */
+bool pitp_target_may_change(const struct mmlt_path *x);
+
 #endif

@@ -10,6 +10,7 @@
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <stdio.h>
+#include <string.h>
 
 /* A chain state of length k: numbers from (seed, stream), evaluated as MMLT evaluates a state. */
 struct tstate {
@@ -234,5 +235,93 @@ Test(stat_pitp, technique_choice_follows_mis_weights)
         cr_assert(n == 50000, "%s: only %ld perturbations", scenes[sci], n);
         cr_assert(p > alpha, "%s: chosen techniques do not follow w_j: chi2 = %.1f, p = %g (%ld draws)", scenes[sci], chi, p, n);
         scene_free(sc);
+    }
+}
+
+/* Counts of technique transitions (from i, to j) per length, from `states` states of scene sc, each
+ * brought to w(x) by two perturbations (one move that is not refused draws j from w exactly) and
+ * then counted over a third. Paths whose target can change with the technique are skipped: their
+ * stationary law is not w. one_way: every move toward more emitter vertices is undone, a chain
+ * whose moves i -> j are allowed while j -> i are refused. */
+struct flows {
+    long n[MAX_PATH_LENGTH + 1][MAX_PATH_LENGTH + 2][MAX_PATH_LENGTH + 2];
+};
+
+static void count_flows(const struct scene *sc, int states, bool one_way, struct flows *fl)
+{
+    struct path_ctx pc = {.sc = sc, .max_length = 8};
+    static struct tstate s, keep;
+    static struct pitp_scratch ws;
+    pitp_scratch_init(&ws, sc);
+    rng r0;
+    rng_seed(&r0, 31, one_way);
+    memset(fl, 0, sizeof *fl);
+    int found = 0;
+    for (int i = 0; i < 4000000 && found < states; i++) {
+        int k = 2 + i % 5;
+        if (!make_state(&pc, &s, k, 300000 + (uint64_t)i) || pitp_target_may_change(&s.x)) continue;
+        found++;
+        for (int rep = 0; rep < 3; rep++) {
+            int from = s.x.s, j;
+            double a;
+            struct connection cn;
+            bool c_new;
+            if (one_way) keep = s;
+            enum pitp_outcome po = pitp_perturb(&pc, &s.pss, &s.x, &ws, rng_uniform(&r0), &j, &a, &cn, &c_new);
+            if (one_way && po == PITP_MOVED && j > from) s = keep;
+            if (rep == 2) fl->n[k][from][s.x.s]++;
+        }
+    }
+    cr_assert(found == states, "%s: only %d states", sc->file, found);
+}
+
+/* Smallest two-sided binomial p of n_ij against half of n_ij + n_ji over the pairs with at least 20
+ * transitions; *tests receives their number. */
+static double worst_flow_p(const struct flows *fl, int *tests)
+{
+    double worst = 1;
+    *tests = 0;
+    for (int k = 2; k <= 6; k++)
+        for (int i = 0; i <= k; i++)
+            for (int j = i + 1; j <= k; j++) {
+                long a = fl->n[k][i][j], n = a + fl->n[k][j][i];
+                if (n < 20) continue;
+                (*tests)++;
+                double lo = gsl_cdf_binomial_P((unsigned)a, 0.5, (unsigned)n), hi = a ? gsl_cdf_binomial_Q((unsigned)a - 1, 0.5, (unsigned)n) : 1;
+                worst = fmin(worst, fmin(1.0, 2 * fmin(lo, hi)));
+            }
+    return worst;
+}
+
+/* Detailed balance of the technique perturbation at a fixed path (core/mcmc/README.md, "Failed
+ * inversions keep detailed balance"): with the technique distributed as w(x), the flow i -> j
+ * equals the flow j -> i whenever moves are allowed or refused in pairs. 40000 states per scene
+ * (lengths 2..6; Cornell box, and scenes/materials' glossy and diffuse paths), one counted
+ * transition each; two-sided binomial test per length and pair (i, j) with >= 20 transitions,
+ * alpha = 0.01 Sidak over all pairs of both scenes. Consecutive transitions of one state are not
+ * counted, so the counts are independent. The same count from a chain that undoes every move toward
+ * more emitter vertices must fail it: the test cannot pass on a one-way chain. */
+Test(stat_pitp, moves_between_two_techniques_balance_and_a_one_way_chain_fails, .timeout = 300)
+{
+    const char *scenes[] = {"scenes/cornell-box/scene.json", "scenes/materials/scene.json"};
+    static struct flows fl;
+    double worst[2][2];
+    int tests[2][2], total = 0;
+    for (int sci = 0; sci < 2; sci++) {
+        struct scene *sc = test_scene(scenes[sci]);
+        for (int broken = 0; broken < 2; broken++) {
+            count_flows(sc, 40000, broken, &fl);
+            worst[sci][broken] = worst_flow_p(&fl, &tests[sci][broken]);
+        }
+        total += tests[sci][0];
+        scene_free(sc);
+    }
+    double alpha = 1 - pow(0.99, 1.0 / total);
+    for (int sci = 0; sci < 2; sci++) {
+        fprintf(stderr, "pitp flow balance %s: worst pair p = %.3g over %d pairs (alpha %.2g); one-way chain: %.3g over %d\n",
+                scenes[sci], worst[sci][0], tests[sci][0], alpha, worst[sci][1], tests[sci][1]);
+        cr_assert(tests[sci][0] >= 10, "%s: only %d pairs with enough transitions", scenes[sci], tests[sci][0]);
+        cr_assert(worst[sci][0] > alpha, "%s: flows i -> j and j -> i differ: p = %g (alpha %g)", scenes[sci], worst[sci][0], alpha);
+        cr_assert(worst[sci][1] <= alpha, "%s: a one-way chain passed the balance test (p = %g)", scenes[sci], worst[sci][1]);
     }
 }
