@@ -50,6 +50,10 @@ bool interrupted(void);
 
 /* Wall-clock seconds (monotonic). */
 double now_seconds(void);
+/* The clock a time budget runs on: wall-clock seconds, or (cpu) the CPU seconds the process's
+ * threads have used, divided by `threads`, so that another process on the machine does not shift
+ * an equal-time comparison: a starved render runs longer and does the same work. */
+double budget_seconds(bool cpu, int threads);
 int cpu_count(void);
 
 #endif

@@ -96,7 +96,7 @@ static void mc_save(void *p)
 {
     struct job *j = p;
     struct ckpt_buf b = {0};
-    double elapsed = now_seconds() - j->t0;
+    double elapsed = budget_seconds(j->o->cpu_time, j->o->threads) - j->t0;
     ckpt_put(&b, mc_tag, sizeof mc_tag);
     CKPT_PUT(&b, j->first);
     CKPT_PUT(&b, elapsed);
@@ -184,7 +184,7 @@ static bool next_pass(void *p)
 {
     struct job *j = p;
     j->spp++;
-    double elapsed = dist_max_double(now_seconds() - j->t0);
+    double elapsed = dist_max_double(budget_seconds(j->o->cpu_time, j->o->threads) - j->t0);
     progress_set(&j->prog, (long)(1000 * elapsed));
     bool more = !(interrupted() || j->spp >= TIME_MODE_MAX_SPP || elapsed * (j->spp + 1) / j->spp > j->o->seconds);
     if (!dist_bcast_bool(more)) return false;
@@ -212,7 +212,7 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         j.img[i] = img_create(W, H);
         j.img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
-    double t0 = now_seconds(), elapsed0 = 0;
+    double t0 = budget_seconds(o->cpu_time, T), elapsed0 = 0;
     if (o->ckpt && o->ckpt->resume) {
         long bad = !mc_resume_global(&j, &elapsed0);
         /* ranks must agree, and under a time budget be at the same pass: a job stopped between
@@ -225,7 +225,7 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         /* periodic checkpoints poll per pixel with a spp budget, and are taken between passes
          * with a time budget (next_pass) */
         ckpt_sync_init(&j.sync, T, o->seconds > 0 ? 0 : o->ckpt->every, mc_save, &j);
-        j.next_ckpt = t0 + o->ckpt->every;
+        j.next_ckpt = now_seconds() + o->ckpt->every;
     }
     j.t0 = t0 - elapsed0;
     int spp = o->spp;
@@ -267,7 +267,7 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     st->nonfinite = counts[0];
     st->samples = counts[1];
     st->resume_failed = counts[3] > 0;
-    st->seconds = now_seconds() - j.t0;
+    st->seconds = budget_seconds(o->cpu_time, T) - j.t0;
     st->spp = spp;
     st->partial = counts[2] > 0;
     free(j.img);

