@@ -10,8 +10,8 @@
  * Sampling (dims 3): one discrete number ud, then two continuous (u1, u2). The coat lobe is
  * chosen with probability P_c = F(wi.z) / (F(wi.z) + T (1 - F(wi.z)) mean(albedo)), T =
  * exp(-2 mean(tau)): in proportion to what each lobe reflects (coat_choice_prob, fresnel.h;
- * Tungsten's specularProbability leaves the albedo out, and dark bases then starved the coat); interval [0, P_c) -> coat: m ~ D_s(m) m.z with Tungsten's
- * widened sampling roughness (its rough plastic reuses the rough dielectric sampler), wo =
+ * Tungsten's specularProbability leaves the albedo out, and dark bases then starved the coat).
+ * Interval [0, P_c) -> coat: m ~ D_s(m) m.z with Tungsten's widened sampling roughness (its rough plastic reuses the rough dielectric sampler), wo =
  * reflect(wi, m); [P_c, 1) -> base: cosine-weighted hemisphere. Lobes: 0 = coat, 1 = base.
  *   pdf = P_c D_s(h) h.z / (4 wo.h) + (1 - P_c) wo.z / pi;   weight = f wo.z / pdf (both lobes).
  * Inverse: both lobes can produce any wo, so the lobe is picked with probability equal to its
