@@ -1,10 +1,10 @@
 /* Smooth plastic: a smooth dielectric coat (index ior) over a Lambertian substrate (albedo A),
- * with absorption sigma_a over a layer of the given thickness. Model and lobe choice as
- * Tungsten's PlasticBsdf:
+ * with absorption sigma_a over a layer of the given thickness. Model as Tungsten's PlasticBsdf:
  *   coat:     delta reflection with weight Fi = F(cos wi);
  *   diffuse:  f = (1 - Fi)(1 - Fo) / (ior^2 pi) * A / (1 - A Fdr) * exp(-thickness sigma_a (1/cos wi + 1/cos wo)),
  *             with Fdr = b->diffuse_fresnel (cosine-weighted Fresnel average seen from inside);
- *   P(coat) = Fi / (Fi + T (1 - Fi)),  T = exp(-2 thickness avg(sigma_a)).
+ *   P(coat) = Fi / (Fi + T (1 - Fi) mean(A)),  T = exp(-2 thickness avg(sigma_a)): in proportion to
+ *             what each lobe reflects (coat_choice_prob, fresnel.h; Tungsten leaves mean(A) out).
  * Numbers: one discrete (u < P(coat) -> coat), then two continuous (cosine hemisphere), consumed
  * on both lobes so the layout is fixed; the coat ignores them and invert() fills them with fresh
  * uniforms (every value reproduces the coat sample: thesis Eq. 5.3). eval/pdf cover the diffuse
@@ -20,11 +20,10 @@ static double coat_fresnel(const struct bsdf *b, double cos_out)
     return fresnel_dielectric(cos_out, b->ior, &ct);
 }
 
-static double p_coat(const struct bsdf *b, double Fi)
+static double p_coat(const struct bsdf_ctx *c, double Fi)
 {
-    double tau = b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3.0;
-    double substrate = exp(-2.0 * tau) * (1.0 - Fi);
-    return Fi + substrate > 0 ? Fi / (Fi + substrate) : 1.0;
+    const struct bsdf *b = c->b;
+    return coat_choice_prob(Fi, exp(-2.0 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3.0), c->albedo);
 }
 
 static rgb diffuse_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo, double Fi)
@@ -47,7 +46,7 @@ static bool plastic_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s,
 {
     (void)mode;
     if (wi.z <= 0) return false;
-    double Fi = coat_fresnel(c->b, wi.z), pc = p_coat(c->b, Fi);
+    double Fi = coat_fresnel(c->b, wi.z), pc = p_coat(c, Fi);
     double u = sampler_next(s, DIM_DISCRETE);
     double u1 = sampler_next(s, DIM_CONTINUOUS), u2 = sampler_next(s, DIM_CONTINUOUS);
     if (u < pc) {
@@ -79,13 +78,13 @@ static rgb plastic_eval(const struct bsdf_ctx *c, vec3 wi, vec3 wo, enum transpo
 static double plastic_pdf(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
 {
     if (wi.z <= 0 || wo.z <= 0) return 0;
-    return warp_cosine_hemisphere_pdf(wo) * (1.0 - p_coat(c->b, coat_fresnel(c->b, wi.z)));
+    return warp_cosine_hemisphere_pdf(wo) * (1.0 - p_coat(c, coat_fresnel(c->b, wi.z)));
 }
 
 static bool plastic_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler *w)
 {
     if (wi.z <= 0 || wo.z <= 0) return false;
-    double pc = p_coat(c->b, coat_fresnel(c->b, wi.z));
+    double pc = p_coat(c, coat_fresnel(c->b, wi.z));
     /* The diffuse lobe reaches the mirror direction with probability zero: the coat takes it. */
     if (pc > 0 && smooth_same_dir(wo, smooth_reflect(wi))) {
         sampler_put(w, DIM_DISCRETE, invert_discrete(0.0, pc, sampler_fresh(w)));

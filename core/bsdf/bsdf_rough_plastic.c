@@ -8,9 +8,10 @@
  *            * exp(-tau (1 / wi.z + 1 / wo.z))
  *
  * Sampling (dims 3): one discrete number ud, then two continuous (u1, u2). The coat lobe is
- * chosen with probability P_c = F(wi.z) / (F(wi.z) + T (1 - F(wi.z))), T = exp(-2 mean(tau))
- * (Tungsten's specularProbability); interval [0, P_c) -> coat: m ~ D_s(m) m.z with Tungsten's
- * widened sampling roughness (its rough plastic reuses the rough dielectric sampler), wo =
+ * chosen with probability P_c = F(wi.z) / (F(wi.z) + T (1 - F(wi.z)) mean(albedo)), T =
+ * exp(-2 mean(tau)): in proportion to what each lobe reflects (coat_choice_prob, fresnel.h;
+ * Tungsten's specularProbability leaves the albedo out, and dark bases then starved the coat).
+ * Interval [0, P_c) -> coat: m ~ D_s(m) m.z with Tungsten's widened sampling roughness (its rough plastic reuses the rough dielectric sampler), wo =
  * reflect(wi, m); [P_c, 1) -> base: cosine-weighted hemisphere. Lobes: 0 = coat, 1 = base.
  *   pdf = P_c D_s(h) h.z / (4 wo.h) + (1 - P_c) wo.z / pi;   weight = f wo.z / pdf (both lobes).
  * Inverse: both lobes can produce any wo, so the lobe is picked with probability equal to its
@@ -27,11 +28,11 @@ static double fr_out(double cos_t, double ior)
     return fresnel_dielectric(cos_t, ior, &ct);
 }
 
-static double coat_prob(const struct bsdf *b, double wiz)
+static double coat_prob(const struct bsdf_ctx *c, double wiz)
 {
-    double Fi = fr_out(wiz, b->ior);
+    const struct bsdf *b = c->b;
     double T = exp(-2 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3);
-    return Fi / (Fi + T * (1 - Fi));
+    return coat_choice_prob(fr_out(wiz, b->ior), T, c->albedo);
 }
 
 static rgb rp_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
@@ -55,9 +56,10 @@ static rgb rp_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
 }
 
 /* The two pdf terms, each including its lobe probability. */
-static void rp_pdfs(const struct bsdf *b, vec3 wi, vec3 wo, double *p_coat, double *p_base)
+static void rp_pdfs(const struct bsdf_ctx *c, vec3 wi, vec3 wo, double *p_coat, double *p_base)
 {
-    double pc = coat_prob(b, wi.z);
+    const struct bsdf *b = c->b;
+    double pc = coat_prob(c, wi.z);
     vec3 h;
     *p_coat = 0;
     if (mf_half_reflect(wi, wo, &h) && vdot(wi, h) > 0)
@@ -75,7 +77,7 @@ static bool rp_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum
     if (wi.z <= 0) return false;
     vec3 wo;
     int lobe;
-    if (ud < coat_prob(b, wi.z)) {
+    if (ud < coat_prob(c, wi.z)) {
         vec3 m = mf_sample(b->dist, mf_sample_alpha(b->roughness, wi.z), u1, u2);
         if (vdot(wi, m) <= 0) return false;
         wo = mf_reflect(wi, m);
@@ -86,7 +88,7 @@ static bool rp_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum
     }
     if (wo.z <= 0) return false;
     double pc, pb;
-    rp_pdfs(b, wi, wo, &pc, &pb);
+    rp_pdfs(c, wi, wo, &pc, &pb);
     double pdf = pc + pb;
     if (!(pdf > 0) || !isfinite(pdf)) return false;
     out->wo = wo;
@@ -108,7 +110,7 @@ static double rp_pdf(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
 {
     if (wi.z <= 0 || wo.z <= 0) return 0;
     double pc, pb;
-    rp_pdfs(c->b, wi, wo, &pc, &pb);
+    rp_pdfs(c, wi, wo, &pc, &pb);
     return pc + pb;
 }
 
@@ -117,9 +119,9 @@ static bool rp_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     const struct bsdf *b = c->b;
     if (wi.z <= 0 || wo.z <= 0) return false;
     double pc, pb, u1, u2;
-    rp_pdfs(b, wi, wo, &pc, &pb);
+    rp_pdfs(c, wi, wo, &pc, &pb);
     if (!(pc + pb > 0)) return false;
-    double P = coat_prob(b, wi.z);
+    double P = coat_prob(c, wi.z);
     bool coat = sampler_fresh(w) * (pc + pb) < pc; /* Eq. 5.7: lobe in proportion to its pdf share */
     if (coat) {
         vec3 h;

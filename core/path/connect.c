@@ -117,6 +117,9 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     if (vzero(out->f)) return false;
     struct mis_path m;
     densities(pc, y, s, z, t, d, dist2, cam_pdf, &m);
+    const struct vertex *x[MAX_PATH_LENGTH + 2];
+    for (int i = 0; i <= m.k; i++) x[i] = i < s ? &y[i] : &z[m.k - i];
+    mis_unfold_delta_chains(&m, x);
     double r[MAX_PATH_LENGTH + 2];
     double *rat = ratios ? ratios : r;
     out->w = mis_weights(&m, s, max_s, rat);

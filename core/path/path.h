@@ -136,6 +136,16 @@ struct mis_path {
     bool delta[MAX_PATH_LENGTH + 2];
 };
 double mis_weights(const struct mis_path *m, int s, int max_s, double *ratios);
+/* Rewrites the densities across every chain x_{a+1} .. x_{b-1} of delta vertices (x_a, x_b not
+ * delta) to those of the unfolded path, so that the ratio the chain contributes is the one of
+ * densities in one measure: the chain's first vertex keeps its solid-angle density from either
+ * end (x_a toward x_{a+1}, x_b toward x_{b-1}), the vertices inside are Dirac (1), and the far
+ * ends are converted to area over the whole chain: pl(x_b) = cos_b / L^2, pc(x_a) = cos_a / L^2,
+ * L the sum of the chain's segment lengths (no falloff from an environment vertex). The
+ * per-segment conversion (the walk's, cos/d^2 of the segment at the delta vertex) leaves a factor
+ * d_last^2 cos_{a+1} / (d_first^2 cos_{b-1}) per chain instead of cos_b / cos_a in the weights of
+ * the techniques on either side, unbiased but wrong. x[i]: vertex i of the path. */
+void mis_unfold_delta_chains(struct mis_path *m, const struct vertex *const *x);
 /* Maximum heuristic from the same ratios: 1 if technique s has the largest density (ties go to
  * the smallest index), else 0. */
 double mis_max_weight(const double *ratios, int k, int s);

@@ -240,7 +240,8 @@ static double discrete_split(const struct rough_case *k, vec3 wo)
     }
     double Fi = fresnel_dielectric(k->wi.z, k->b.ior, &ct);
     double T = exp(-2 * k->b.thickness * (k->b.sigma_a.x + k->b.sigma_a.y + k->b.sigma_a.z) / 3);
-    return Fi / (Fi + T * (1 - Fi));
+    vec3 A = k->c.albedo; /* the coat against the substrate's reflected share */
+    return Fi / (Fi + T * (1 - Fi) * (A.x + A.y + A.z) / 3);
 }
 
 /* One successful forward sample and its inversion: forward ud, inverted ud', split. */

@@ -50,7 +50,8 @@ Test(bsdf_smooth, dispatch_and_flags)
 }
 
 /* For continuous samples: out.pdf == pdf(wi, wo) and out.weight == eval |cos wo| / pdf (rel 1e-6);
- * delta samples of plastic report pdf = P(coat) and weight = Fi / P(coat). */
+ * delta samples of plastic report pdf = P(coat) and weight = Fi / P(coat), P(coat) in proportion
+ * to Fi against the substrate's T (1 - Fi) mean(albedo). */
 static void check_sample_consistency(const struct bsdf *b)
 {
     struct bsdf_ctx c = {b, b->albedo};
@@ -67,7 +68,8 @@ static void check_sample_consistency(const struct bsdf *b)
             cr_assert(fabs(vlen(o.wo) - 1) < 1e-12);
             if (o.delta) {
                 double ct, Fi = fresnel_dielectric(wi.z, b->ior, &ct);
-                double pc = Fi / (Fi + exp(-2 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3) * (1 - Fi));
+                double T = exp(-2 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3);
+                double pc = Fi / (Fi + T * (1 - Fi) * (c.albedo.x + c.albedo.y + c.albedo.z) / 3);
                 cr_assert_eq(o.lobe, PLASTIC_LOBE_COAT);
                 cr_assert(rel_err(o.pdf, pc) < 1e-12);
                 cr_assert(rel_err(o.weight.x, Fi / pc) < 1e-12 && o.weight.x == o.weight.z);

@@ -182,7 +182,7 @@ static void uniformity(const struct bsdf *b, vec3 wi, int *tested)
     } else {
         double Fi = fresnel_dielectric(wi.z, b->ior, &ct);
         double T = exp(-2 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3);
-        pfirst = Fi / (Fi + T * (1 - Fi));
+        pfirst = Fi / (Fi + T * (1 - Fi) * (c.albedo.x + c.albedo.y + c.albedo.z) / 3); /* coat vs substrate */
     }
     for (long n = 0; n < N_INV; n++) {
         struct bsdf_sample o;
