@@ -73,6 +73,9 @@ static void warn_unused(const struct opts_spec *spec, const char *method, int ar
     }
 }
 
+#define STR_(x) #x
+#define STR(x) STR_(x)
+
 /* The summary line and the input limits (base/input_limits.h), composed from the limits themselves. */
 static const char *help_tail(void)
 {
@@ -104,8 +107,9 @@ static void parse(int argc, char **argv, struct args *a)
         OPT_MAX_LENGTH(a->mc.max_length, .help = "maximum path length in segments (default: integrator.max_bounces)"),
         OPT_MIN_LENGTH(a->mc.min_length, .hi = MAX_PATH_LENGTH,
                        .help = "leave out paths shorter than K segments (3: no direct lighting; default 1)"),
-        OPT_RESOLUTION(a->res, .lo = 1, .hi = LIMIT_IMAGE_SIDE, .expect = "WxH with positive integers", .str = &a->res_arg,
-                       .help = "override the camera resolution (same horizontal fov)"),
+        OPT_RESOLUTION(a->res, .lo = 1, .hi = LIMIT_IMAGE_SIDE,
+                       .expect = "WxH with positive integers, at most " STR(LIMIT_IMAGE_SIDE) " per side",
+                       .str = &a->res_arg, .help = "override the camera resolution (same horizontal fov)"),
         OPT_OUT(a->out, .arg = "PREFIX", .help = "output prefix", .def = "out"),
         {"--quiet", OPT_FLAG, OPT_DST(a->quiet), .help = "no progress bar"},
         {"--checkpoint", OPT_DOUBLE, OPT_DST(a->checkpoint), .arg = "SECONDS", .lo = 1e-3, .hi = 1e9,

@@ -5,8 +5,7 @@
  * The first byte chooses the way in. Odd: the rest is the file as it is, which the checksum turns
  * away almost always. Even: the rest is the options text (up to a NUL) and the payload, written by
  * ckpt_write_file, so the checksum holds and the fuzzer reaches the layout and the payload; bit 1 then
- * makes the reader expect other options. A payload is read as a thread count byte, then per thread:
- * an image of 4x4, 4 vertices, an MLT thread of two chains. */
+ * makes the reader expect other options. */
 #include "fuzz/fuzz.h"
 #include "io/checkpoint.h"
 #include "mcmc/chain.h"
@@ -47,23 +46,44 @@ static void read_mlt(struct ckpt_buf *b, const struct scene *sc)
     free(x);
 }
 
+/* A thread's buffer as PT and BDPT write it (core/mc/render.c): position, counts, image; the image
+ * is read at the size the buffer states, as a run of that size would. */
+static void read_mc_thread(struct ckpt_buf b)
+{
+    int at[3];
+    long counts[2];
+    CKPT_GET(&b, at);
+    CKPT_GET(&b, counts);
+    int wh[2] = {0, 0};
+    if (b.len - b.pos >= sizeof wh) memcpy(wh, b.p + b.pos, sizeof wh);
+    if (wh[0] < 1 || wh[0] > 64 || wh[1] < 1 || wh[1] > 64) return;
+    struct image *im = img_create(wh[0], wh[1]);
+    ckpt_get_image(&b, im);
+    img_destroy(im);
+}
+
+/* The payload as the renderers lay it out: an 8-byte tag, PT/BDPT's pass and elapsed time (MLT's
+ * header differs, and is fuzzed by the same bytes), then one buffer per thread (the seeds' 2). Each
+ * buffer is read as PT/BDPT's, and again as vertices followed by an MLT thread. */
 static void read_payload(struct ckpt_buf *p)
 {
     static struct bsdf bsdfs[3];
     struct scene sc = {.bsdfs = bsdfs, .nbsdfs = 3};
-    unsigned char nt = 0;
-    CKPT_GET(p, nt);
-    struct ckpt_buf *t = ckpt_resume_threads(p, nt % 5);
+    char tag[8];
+    int first;
+    double elapsed;
+    ckpt_get(p, tag, sizeof tag);
+    CKPT_GET(p, first);
+    CKPT_GET(p, elapsed);
+    struct ckpt_buf *t = ckpt_resume_threads(p, 2);
     if (!t) return;
-    for (int i = 0; i < nt % 5; i++) {
-        struct image *im = img_create(4, 4);
+    for (int i = 0; i < 2; i++) {
+        read_mc_thread(t[i]);
         struct vertex v[4];
-        ckpt_get_image(&t[i], im);
         if (ckpt_get_vertices(&t[i], &sc, v, 4))
             for (int k = 0; k < 4; k++)
                 if (v[k].bc.b && (v[k].bc.b < bsdfs || v[k].bc.b >= bsdfs + 3)) __builtin_trap();
         read_mlt(&t[i], &sc);
-        img_destroy(im);
     }
     free(t);
 }
