@@ -283,6 +283,8 @@ endef
 # Experiments in subfolders add their figure, check and bench rules here.
 -include experiments/*/*.mk
 $(TEST_BIN): $(TEST_LIBS)
+# `make fuzz`: the libFuzzer targets of tests/fuzz/ (clang 14, their own build-fuzz/).
+include tests/fuzz/fuzz.mk
 
 .PHONY: check
 check: $(CHECK_TARGETS)
@@ -305,7 +307,7 @@ bench-mpi:
 endif
 
 clean:
-	rm -rf build build-san bin
+	rm -rf build build-san build-fuzz bin
 
 help:
 	@echo "make            install deps if missing, build core, tools (bin/) and tests"
@@ -313,6 +315,7 @@ help:
 	@echo "make tools      every executable of bin/, without the test runner"
 	@echo "make test-san   fast tests under AddressSanitizer + UBSan"
 	@echo "make test-mpi   bin/render under mpirun -np 2 and -np 3 (builds with MPI=1)"
+	@echo "make fuzz       every libFuzzer target of tests/fuzz/ for FUZZ_S seconds (default 60; installs clang-14)"
 	@echo "MPI=1           build bin/ against Open MPI: mpirun -np N bin/render ... splits the render"
 	@echo "make fig4.1     thesis Fig. 4.1: isotropic vs resolution-aware small steps, noise shape on a 16:9 wall"
 	@echo "make fig4.2     thesis Fig. 4.2: the wall at 1024², 512², 256² and resolution-scaled steps at 256²"

@@ -4,11 +4,18 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 
 void *xmalloc(size_t n);
 void *xcalloc(size_t n, size_t size);
 void *xrealloc(void *p, size_t n);
 char *xstrdup(const char *s);
+/* Replaces control characters (bytes below 32, and 127) by '?': an error line that echoes a file's
+ * bytes stays one line and cannot drive the terminal. */
+void str_sanitize(char *s);
+/* Whether an open file is a regular one: a device or a FIFO a scene names (/dev/zero) may never
+ * end, and its reader would grow its buffer until memory runs out. */
+bool file_is_regular(FILE *f);
 void die_assert(const char *expr, const char *file, int line);
 #define ASSERT(e) ((e) ? (void)0 : die_assert(#e, __FILE__, __LINE__))
 

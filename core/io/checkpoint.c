@@ -17,6 +17,7 @@ void ckpt_buf_free(struct ckpt_buf *b)
 
 void ckpt_put(struct ckpt_buf *b, const void *p, size_t n)
 {
+    if (!n) return; /* an empty buffer has no memory yet, and NULL + 0 is undefined */
     if (b->len + n > b->cap) {
         b->cap = 2 * (b->len + n) + 4096;
         b->p = xrealloc(b->p, b->cap);
@@ -32,6 +33,7 @@ bool ckpt_get(struct ckpt_buf *b, void *p, size_t n)
         b->short_read = true;
         return false;
     }
+    if (!n) return true;
     memcpy(p, b->p + b->pos, n);
     b->pos += n;
     return true;
@@ -89,7 +91,7 @@ uint64_t hash64(uint64_t h, const void *p, size_t n)
         h ^= h >> 29;
     }
     uint64_t w = n; /* the tail, with its length, so "ab" and "ab\0" differ */
-    memcpy(&w, c, n);
+    if (n) memcpy(&w, c, n); /* an empty payload has no buffer at all */
     h = (h ^ w ^ ((uint64_t)n << 56)) * 0xBF58476D1CE4E5B9ULL;
     return h ^ (h >> 31);
 }
@@ -217,9 +219,10 @@ bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf 
         snprintf(err, errlen, "%s: written by another build of the renderer; resume with the binary that wrote it", path);
     else if (scene != id->scene)
         snprintf(err, errlen, "%s: written for another scene (or the scene's files changed since)", path);
-    else if (strcmp(opts, id->options))
+    else if (strcmp(opts, id->options)) {
+        str_sanitize(opts);
         snprintf(err, errlen, "%s: written with other options (%s) than these (%s)", path, opts, id->options);
-    else
+    } else
         ok = true;
     free(opts);
     if (!ok) {

@@ -56,7 +56,7 @@ bool img_write_png(const struct image *im, double scale, const char *path, char 
 /* PREFIX.exr (linear) and PREFIX.png (tone-mapped), both at scale 1. */
 bool img_write_exr_png(const struct image *im, const char *prefix, char *err, size_t errlen);
 /* Reads any OpenImageIO format as RGB float (grey is replicated, alpha dropped), values as stored:
- * no transfer curve is undone. *bits as in oiio_read_rgb (NULL: not wanted). */
+ * no transfer curve is undone. *bits as in oiio_read_channels (NULL: not wanted). */
 bool img_read_rgb(const char *path, int *w, int *h, float **rgb, int *bits, char *err, size_t errlen);
 struct image *img_read(const char *path, char *err, size_t errlen);
 

@@ -1,5 +1,6 @@
 /* Typed JSON getters with path-carrying error messages (see json_get.h). */
 #include "io/json_get.h"
+#include "base/util.h"
 #include <stdarg.h>
 #include <stdio.h>
 
@@ -16,6 +17,7 @@ bool jfail(struct jctx *c, const char *path, const char *fmt, ...)
         snprintf(c->err, c->errlen, "%s: %s: %s", c->file, path, msg);
     else
         snprintf(c->err, c->errlen, "%s: %s", c->file, msg);
+    if (c->errlen) str_sanitize(c->err);
     return false;
 }
 
@@ -26,6 +28,7 @@ void jwarn(const struct jctx *c, const char *path, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    str_sanitize(msg);
     if (path && path[0])
         fprintf(stderr, "%s: %s: warning: %s\n", c->file, path, msg);
     else

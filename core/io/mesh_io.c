@@ -2,6 +2,7 @@
  * (first, previous, current), every face corner becomes its own vertex, negative indices count back
  * from the last element defined so far; .wo3 is the raw vertex and triangle arrays. */
 #include "io/mesh_io.h"
+#include "base/input_limits.h"
 #include "base/util.h"
 #include <errno.h>
 #include <limits.h>
@@ -11,8 +12,8 @@
 #include <string.h>
 #include <strings.h>
 
-/* Vertex and index counts must stay well inside int, and inside what size_t arithmetic allows. */
-#define MESH_MAX_ELEMS (INT_MAX / 4)
+/* base/input_limits.h's, which also keeps every count and index far inside int. */
+#define MESH_MAX_ELEMS LIMIT_MESH_ELEMS
 
 void raw_mesh_free(struct raw_mesh *m)
 {
@@ -117,7 +118,7 @@ static bool parse_corner(struct obj_state *st, const char *tok, long line, char 
         return false;
     }
     if (st->out_p.n >= MESH_MAX_ELEMS) {
-        snprintf(err, errlen, "line %ld: too many vertices", line);
+        snprintf(err, errlen, "line %ld: more than %ld vertices (the renderer's limit)", line, LIMIT_MESH_ELEMS);
         return false;
     }
     list_push(&st->out_p, st->pos.v + 3 * (size_t)vi);
@@ -170,15 +171,15 @@ static bool parse_line(struct obj_state *st, char *s, long line, char *err, size
     double x[3] = {0, 0, 0};
     if (kw == 1 && s[0] == 'v') {
         if (parse_numbers(rest, x, 3, 3, line, err, errlen) < 0) return false;
-        if (st->pos.n >= MESH_MAX_ELEMS) return snprintf(err, errlen, "too many vertices"), false;
+        if (st->pos.n >= MESH_MAX_ELEMS) return snprintf(err, errlen, "line %ld: more than %ld vertices (the renderer's limit)", line, LIMIT_MESH_ELEMS), false;
         list_push(&st->pos, x);
     } else if (kw == 2 && s[0] == 'v' && s[1] == 'n') {
         if (parse_numbers(rest, x, 3, 3, line, err, errlen) < 0) return false;
-        if (st->nrm.n >= MESH_MAX_ELEMS) return snprintf(err, errlen, "too many normals"), false;
+        if (st->nrm.n >= MESH_MAX_ELEMS) return snprintf(err, errlen, "line %ld: more than %ld normals (the renderer's limit)", line, LIMIT_MESH_ELEMS), false;
         list_push(&st->nrm, x);
     } else if (kw == 2 && s[0] == 'v' && s[1] == 't') {
         if (parse_numbers(rest, x, 1, 3, line, err, errlen) < 0) return false;
-        if (st->tex.n >= MESH_MAX_ELEMS) return snprintf(err, errlen, "too many uvs"), false;
+        if (st->tex.n >= MESH_MAX_ELEMS) return snprintf(err, errlen, "line %ld: more than %ld uvs (the renderer's limit)", line, LIMIT_MESH_ELEMS), false;
         list_push(&st->tex, x);
     } else if (kw == 1 && s[0] == 'f') {
         return parse_face(st, rest, line, err, errlen);
@@ -206,14 +207,34 @@ static vec3 *to_vec3(const struct vec_list *l)
     return v;
 }
 
-bool mesh_load_obj(const char *path, struct raw_mesh *m, char *err, size_t errlen)
+static FILE *open_regular(const char *path, char *err, size_t errlen)
 {
-    memset(m, 0, sizeof *m);
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, errlen, "cannot open: %s", strerror(errno));
-        return false;
+        return NULL;
     }
+    if (!file_is_regular(f)) {
+        fclose(f);
+        snprintf(err, errlen, "not a regular file");
+        return NULL;
+    }
+    return f;
+}
+
+bool mesh_load_obj(const char *path, struct raw_mesh *m, char *err, size_t errlen)
+{
+    memset(m, 0, sizeof *m);
+    FILE *f = open_regular(path, err, errlen);
+    if (!f) return false;
+    bool ok = mesh_read_obj(f, m, err, errlen);
+    fclose(f);
+    return ok;
+}
+
+bool mesh_read_obj(FILE *f, struct raw_mesh *m, char *err, size_t errlen)
+{
+    memset(m, 0, sizeof *m);
     struct obj_state st = {.pos.dim = 3, .nrm.dim = 3, .tex.dim = 2, .out_p.dim = 3, .out_n.dim = 3,
                            .out_uv.dim = 2, .all_n = true};
     char *buf = NULL;
@@ -229,7 +250,7 @@ bool mesh_load_obj(const char *path, struct raw_mesh *m, char *err, size_t errle
         ok = false;
     }
     free(buf);
-    fclose(f);
+    if (!ok) str_sanitize(err); /* the message may quote the file's bytes */
     if (ok) {
         m->nverts = st.out_p.n;
         m->ntris = st.ntri;
@@ -269,11 +290,8 @@ static float rd_f32(const unsigned char *b)
 
 static unsigned char *read_all(const char *path, size_t *len, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "cannot open: %s", strerror(errno));
-        return NULL;
-    }
+    FILE *f = open_regular(path, err, errlen);
+    if (!f) return NULL;
     size_t cap = 1 << 16, n = 0;
     unsigned char *b = xmalloc(cap);
     for (;;) {
@@ -300,6 +318,14 @@ bool mesh_load_wo3(const char *path, struct raw_mesh *m, char *err, size_t errle
     size_t len;
     unsigned char *b = read_all(path, &len, err, errlen);
     if (!b) return false;
+    bool ok = mesh_parse_wo3(b, len, m, err, errlen);
+    free(b);
+    return ok;
+}
+
+bool mesh_parse_wo3(const unsigned char *b, size_t len, struct raw_mesh *m, char *err, size_t errlen)
+{
+    memset(m, 0, sizeof *m);
     bool ok = false;
     const size_t VSZ = 32, TSZ = 16; /* 8 floats; 3 uint32 + 1 int32 */
     if (len < 16) {
@@ -307,7 +333,12 @@ bool mesh_load_wo3(const char *path, struct raw_mesh *m, char *err, size_t errle
         goto out;
     }
     uint64_t nv = rd_u64(b);
-    if (nv > MESH_MAX_ELEMS || nv > (len - 16) / VSZ) {
+    if (nv > MESH_MAX_ELEMS) {
+        snprintf(err, errlen, ".wo3 with %llu vertices, above the renderer's limit of %ld", (unsigned long long)nv,
+                 LIMIT_MESH_ELEMS);
+        goto out;
+    }
+    if (nv > (len - 16) / VSZ) {
         snprintf(err, errlen, "corrupt .wo3: vertex count %llu does not fit the file (%zu bytes)",
                  (unsigned long long)nv, len);
         goto out;
@@ -315,9 +346,14 @@ bool mesh_load_wo3(const char *path, struct raw_mesh *m, char *err, size_t errle
     size_t off = 8 + nv * VSZ;
     uint64_t nt = rd_u64(b + off);
     off += 8;
-    if (nt > MESH_MAX_ELEMS || nt * TSZ != len - off) {
+    if (nt > MESH_MAX_ELEMS) {
+        snprintf(err, errlen, ".wo3 with %llu triangles, above the renderer's limit of %ld", (unsigned long long)nt,
+                 LIMIT_MESH_ELEMS);
+        goto out;
+    }
+    if (nt * TSZ != len - off) {
         snprintf(err, errlen, "corrupt .wo3: %llu triangles need %llu bytes after the vertices, file has %zu",
-                 (unsigned long long)nt, (unsigned long long)(nt > MESH_MAX_ELEMS ? 0 : nt * TSZ), len - off);
+                 (unsigned long long)nt, (unsigned long long)(nt * TSZ), len - off);
         goto out;
     }
     m->nverts = (int)nv;
@@ -355,7 +391,6 @@ bool mesh_load_wo3(const char *path, struct raw_mesh *m, char *err, size_t errle
     }
     ok = true;
 out:
-    free(b);
     if (!ok) raw_mesh_free(m);
     return ok;
 }

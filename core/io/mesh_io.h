@@ -5,6 +5,7 @@
 
 #include "base/vecmath.h"
 #include <stddef.h>
+#include <stdio.h>
 
 struct raw_mesh {
     int nverts, ntris;
@@ -19,6 +20,9 @@ struct raw_mesh {
 bool mesh_load(const char *path, struct raw_mesh *m, char *err, size_t errlen);
 bool mesh_load_obj(const char *path, struct raw_mesh *m, char *err, size_t errlen);
 bool mesh_load_wo3(const char *path, struct raw_mesh *m, char *err, size_t errlen);
+/* The same from an open stream or a buffer (the fuzz targets, tests/fuzz/). */
+bool mesh_read_obj(FILE *f, struct raw_mesh *m, char *err, size_t errlen);
+bool mesh_parse_wo3(const unsigned char *b, size_t len, struct raw_mesh *m, char *err, size_t errlen);
 void raw_mesh_free(struct raw_mesh *m);
 
 #endif

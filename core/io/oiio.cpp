@@ -3,6 +3,7 @@
 // read or write: Debian's OpenImageIO pulls in about 260 libraries, 120 MB resident and 0.2 s of
 // dynamic linking, which runs that only compute statistics should not pay.
 #include "io/oiio.h"
+#include "io/texels.h"
 
 #include <OpenImageIO/imageio.h>
 #include <cstdio>
@@ -30,8 +31,8 @@ extern "C" bool oiio_module_write(const char *path, int w, int h, int nchan, con
     return true;
 }
 
-extern "C" bool oiio_module_read_rgb(const char *path, int *w, int *h, float **px, int *bits, char *err,
-                                     size_t errlen)
+extern "C" bool oiio_module_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits,
+                                          char *err, size_t errlen)
 {
     // Texels as stored: OpenImageIO would otherwise multiply a PNG's colour by its alpha.
     ImageSpec config;
@@ -43,33 +44,20 @@ extern "C" bool oiio_module_read_rgb(const char *path, int *w, int *h, float **p
     }
     const ImageSpec &spec = in->spec();
     int nc = spec.nchannels;
-    if (spec.width <= 0 || spec.height <= 0 || nc <= 0) {
-        snprintf(err, errlen, "%s: empty image", path);
-        return false;
-    }
-    if ((long)spec.width * spec.height > OIIO_MAX_TEXELS) {
-        snprintf(err, errlen, "%s: %dx%d texels, above the limit of %ld (16384x8192)", path, spec.width, spec.height,
-                 OIIO_MAX_TEXELS);
-        return false;
-    }
-    if (nc > 64) {
-        snprintf(err, errlen, "%s: %d channels, above the limit of 64", path, nc);
-        return false;
-    }
-    std::vector<float> buf((size_t)spec.width * spec.height * nc);
-    if (!in->read_image(0, 0, 0, nc, TypeDesc::FLOAT, buf.data())) {
+    if (!texels_check_size(path, spec.width, spec.height, nc, err, errlen)) return false;
+    size_t n = (size_t)spec.width * spec.height * nc;
+    float *buf = (float *)malloc(n * sizeof(float));
+    if (!buf) abort();
+    if (!in->read_image(0, 0, 0, nc, TypeDesc::FLOAT, buf)) {
         snprintf(err, errlen, "%s: %s", path, in->geterror().c_str());
+        free(buf);
         return false;
     }
     in->close();
-    size_t n = (size_t)spec.width * spec.height;
-    float *rgb = (float *)malloc(n * 3 * sizeof(float));
-    if (!rgb) abort();
-    for (size_t i = 0; i < n; i++)
-        for (int c = 0; c < 3; c++) rgb[3 * i + c] = buf[i * nc + (nc >= 3 ? c : 0)];
     *w = spec.width;
     *h = spec.height;
-    *px = rgb;
+    *nchan = nc;
+    *px = buf;
     if (bits) {
         TypeDesc::BASETYPE b = (TypeDesc::BASETYPE)spec.format.basetype;
         bool integer = b == TypeDesc::UINT8 || b == TypeDesc::INT8 || b == TypeDesc::UINT16 || b == TypeDesc::INT16 ||

@@ -1,6 +1,6 @@
 /* The C face of core/oiio.cpp: the only code that talks to OpenImageIO.
  *
- * oiio_write and oiio_read_rgb (core/oiio_load.c) open the module oiio.so, which holds
+ * oiio_write and oiio_read_channels (core/oiio_load.c) open the module oiio.so, which holds
  * oiio.cpp, on first use and forward to its oiio_module_* functions. The module is looked for in
  * the directory of the running executable, where the build puts a copy; if it cannot be opened the
  * call fails with an error naming the file. */
@@ -14,19 +14,16 @@
 extern "C" {
 #endif
 
-/* The largest image oiio_read_rgb accepts, in texels (16384 x 8192, a large HDR sky): a texture
- * is held as 3 doubles per texel (24 B), so this bounds one texture at 3.2 GB. The header is read
- * before anything is allocated. */
-#define OIIO_MAX_TEXELS (1L << 27)
-
 /* Writes nchan-channel float pixels (row 0 on top) to `path`; the format follows the extension,
  * 8-bit formats get values quantised from [0, 1]. Not atomic by itself. */
 bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen);
-/* Reads an image as 3-channel float (an integer format's codes divided by their maximum, no colour
- * conversion, alpha not multiplied in); *px is malloc'ed. *bits (if not NULL) gets the file's bits
- * per channel when its format is an integer one (8 for most PNG/JPEG, 16 for 16-bit PNG/TIFF), else 0
- * (half or float: EXR, HDR, PFM, float TIFF). */
-bool oiio_read_rgb(const char *path, int *w, int *h, float **px, int *bits, char *err, size_t errlen);
+/* Reads an image's every channel as float (an integer format's codes divided by their maximum, no
+ * colour conversion, alpha not multiplied in), refusing sizes beyond io/texels.h's limits from the
+ * header, before the texels are allocated; *px (w*h*nchan) is malloc'ed. *bits (if not NULL) gets the
+ * file's bits per channel when its format is an integer one (8 for most PNG/JPEG, 16 for 16-bit
+ * PNG/TIFF), else 0 (half or float: EXR, HDR, PFM, float TIFF). */
+bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err,
+                        size_t errlen);
 /* Whether the module file is there, without opening it: tools that will write images check this
  * before a long run rather than fail at its end. */
 bool oiio_module_present(char *err, size_t errlen);
@@ -36,7 +33,8 @@ bool oiio_loaded(void);
 
 /* The module's entry points, same contracts. */
 bool oiio_module_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen);
-bool oiio_module_read_rgb(const char *path, int *w, int *h, float **px, int *bits, char *err, size_t errlen);
+bool oiio_module_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err,
+                               size_t errlen);
 
 #ifdef __cplusplus
 }

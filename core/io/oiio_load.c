@@ -10,7 +10,7 @@
 
 static pthread_once_t once = PTHREAD_ONCE_INIT;
 static bool (*module_write)(const char *, int, int, int, const float *, char *, size_t);
-static bool (*module_read_rgb)(const char *, int *, int *, float **, int *, char *, size_t);
+static bool (*module_read)(const char *, int *, int *, int *, float **, int *, char *, size_t);
 static char load_error[PATH_MAX + 256];
 
 /* oiio.so in the directory of the running executable. */
@@ -44,10 +44,10 @@ static void open_module(void)
     }
     /* POSIX's sanctioned way to turn dlsym's object pointer into a function pointer */
     *(void **)&module_write = dlsym(h, "oiio_module_write");
-    *(void **)&module_read_rgb = dlsym(h, "oiio_module_read_rgb");
-    if (!module_write || !module_read_rgb) {
+    *(void **)&module_read = dlsym(h, "oiio_module_read_channels");
+    if (!module_write || !module_read) {
         module_write = NULL;
-        module_read_rgb = NULL;
+        module_read = NULL;
         snprintf(load_error, sizeof load_error, "%s lacks the oiio_module_* entry points; rebuild it with `make`", path);
     }
 }
@@ -76,7 +76,8 @@ bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char
     return ready(path, err, errlen) && module_write(path, w, h, nchan, px, err, errlen);
 }
 
-bool oiio_read_rgb(const char *path, int *w, int *h, float **px, int *bits, char *err, size_t errlen)
+bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err,
+                        size_t errlen)
 {
-    return ready(path, err, errlen) && module_read_rgb(path, w, h, px, bits, err, errlen);
+    return ready(path, err, errlen) && module_read(path, w, h, nchan, px, bits, err, errlen);
 }

@@ -80,13 +80,18 @@ static void save_thread(struct ckpt_buf *b, const struct job *j, int tid, struct
     ckpt_put_image(b, j->img[tid]);
 }
 
-static bool load_thread(struct ckpt_buf *b, struct job *j, int tid, struct mc_pos *at)
+/* A position must be one this thread can be at (its rows, inside the film, inside the pass): the
+ * checksum vouches for the bytes, not for the numbers the loop indexes pixels with. */
+static bool load_thread(struct ckpt_buf *b, struct job *j, int tid, struct mc_pos *at, int W, int H)
 {
     CKPT_GET(b, *at);
     CKPT_GET(b, j->samples[tid]);
     CKPT_GET(b, j->nonfinite[tid]);
     ckpt_get_image(b, j->img[tid]);
-    return !b->short_read && b->pos == b->len;
+    int y0 = j->g0 + tid;
+    bool pos_ok = at->y >= y0 && (at->y - y0) % j->stride == 0 && at->y <= H + j->stride && at->x >= 0 && at->x <= W &&
+                  at->i >= j->first && at->i <= j->first + j->count;
+    return !b->short_read && b->pos == b->len && pos_ok;
 }
 
 static const char mc_tag[8] = "MCRUN01";
@@ -113,7 +118,7 @@ static bool mc_resume_global(struct job *j, double *elapsed)
     j->spp = j->first;
     CKPT_GET(b, *elapsed);
     j->resume = ckpt_resume_threads(b, j->o->threads);
-    return j->resume && !memcmp(tag, mc_tag, sizeof tag);
+    return j->resume && !memcmp(tag, mc_tag, sizeof tag) && j->first >= 0;
 }
 
 static void worker(int tid, void *p)
@@ -128,7 +133,7 @@ static void worker(int tid, void *p)
     struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H};
     struct ckpt_sync *sync = o->ckpt ? &j->sync : NULL;
     struct mc_pos at = {j->g0 + tid, 0, j->first};
-    bool bad = j->resume && !load_thread(&j->resume[tid], j, tid, &at);
+    bool bad = j->resume && !load_thread(&j->resume[tid], j, tid, &at, W, H);
     if (bad) atomic_store(&j->resume_bad, true);
     long done = j->samples[tid];
     w->nonfinite = j->nonfinite[tid];

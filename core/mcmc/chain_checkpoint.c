@@ -32,6 +32,23 @@ static void put_chain(struct ckpt_buf *b, const struct scene *sc, const struct c
     }
 }
 
+/* The checksum vouches for the bytes, not for what they mean: every count that later indexes an
+ * array is checked here, so that a crafted file is refused rather than written through. */
+static bool chain_valid(const struct chain *c)
+{
+    const struct pss_sampler *p = &c->pss;
+    const int dims = STREAM_COUNT * STREAM_DIMS;
+    if (p->ntouched < 0 || p->ntouched > dims) return false;
+    for (int i = 0; i < p->ntouched; i++)
+        if (p->touched[i] >= dims) return false;
+    if (c->cur.n < 0 || c->cur.n > MAX_SPLATS) return false;
+    const struct ctrl_path *cp = c->path;
+    if (cp && (cp->t < 0 || cp->t > MAX_SUBPATH_VERTS || cp->s < 0 || cp->s > MAX_SUBPATH_VERTS)) return false;
+    const struct mmlt_path *x = c->x;
+    return !x || (x->k >= 0 && x->k <= MAX_PATH_LENGTH && x->t >= 0 && x->t <= MAX_SUBPATH_VERTS && x->s >= 0 &&
+                  x->s <= MAX_SUBPATH_VERTS);
+}
+
 static bool get_chain(struct ckpt_buf *b, const struct scene *sc, struct chain *c)
 {
     /* the sampler's function table is this process's */
@@ -61,7 +78,7 @@ static bool get_chain(struct ckpt_buf *b, const struct scene *sc, struct chain *
         ckpt_get_vertices(b, sc, c->x->cam, MAX_SUBPATH_VERTS);
         ckpt_get_vertices(b, sc, c->x->emi, MAX_SUBPATH_VERTS);
     }
-    return !b->short_read && c->cur.n >= 0 && c->cur.n <= MAX_SPLATS;
+    return !b->short_read && chain_valid(c);
 }
 
 void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t)

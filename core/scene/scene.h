@@ -5,6 +5,7 @@
 #ifndef SCENE_H
 #define SCENE_H
 
+#include "base/input_limits.h"
 #include "base/vecmath.h"
 #include <stddef.h>
 
@@ -37,6 +38,9 @@ float texture_gamma_decode(int code);
 void texture_free(struct texture *t);
 /* Reads an image file (OpenImageIO) into a texture; NULL and a message in err on failure. */
 struct texture *texture_load(const char *path, char *err, size_t errlen);
+/* The loader's half of it, from decoded texels (3 per texel, malloc'ed, owned from here on: kept or
+ * freed): refuses non-finite values, gamma-decodes an integer file's `bits`-bit codes. */
+struct texture *texture_from_rgb(const char *path, int w, int h, float *px, int bits, char *err, size_t errlen);
 
 struct bsdf {
     enum bsdf_type type;
@@ -101,9 +105,6 @@ void camera_resize(struct camera *c, int w, int h);
 struct emitter_table;          /* light selection, built by emitters_build() (emitter.h) */
 struct accel;                  /* Embree scene, built by accel_build() (accel.h) */
 
-/* The largest image a run renders, 8192 x 8192: every thread holds a framebuffer of 3 doubles per
- * pixel (1.6 GB at this size). */
-#define SCENE_MAX_PIXELS (1L << 26)
 
 struct scene {
     char *file;                /* the scene file, for messages */

@@ -14,8 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_RESOLUTION 65536
-#define MAX_BOUNCES 65536
 
 static char *read_text(const char *path, char *err, size_t errlen)
 {
@@ -24,11 +22,22 @@ static char *read_text(const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: cannot read: %s", path, strerror(errno));
         return NULL;
     }
+    if (!file_is_regular(f)) {
+        fclose(f);
+        snprintf(err, errlen, "%s: not a regular file", path);
+        return NULL;
+    }
     size_t cap = 1 << 16, n = 0;
     char *b = xmalloc(cap);
     for (;;) {
         n += fread(b + n, 1, cap - n - 1, f);
         if (n < cap - 1) break;
+        if (n > LIMIT_SCENE_BYTES) {
+            snprintf(err, errlen, "%s: larger than the limit of %ld MB for a scene file", path, LIMIT_SCENE_BYTES >> 20);
+            fclose(f);
+            free(b);
+            return NULL;
+        }
         cap *= 2;
         b = xrealloc(b, cap);
     }
@@ -103,15 +112,15 @@ static bool load_camera(struct loader *L, const cJSON *cam)
         for (int i = 0; i < 2; i++) {
             if (!cJSON_IsNumber(e[i])) return jfail(c, "camera.resolution", "%s", expect);
             double d = e[i]->valuedouble;
-            if (!(d >= 1 && d <= MAX_RESOLUTION && d == floor(d)))
-                return jfail(c, "camera.resolution", "%s (at most %d)", expect, MAX_RESOLUTION);
+            if (!(d >= 1 && d <= LIMIT_IMAGE_SIDE && d == floor(d)))
+                return jfail(c, "camera.resolution", "%s (at most %d)", expect, LIMIT_IMAGE_SIDE);
             wh[i] = (int)d;
         }
         w = wh[0];
         h = wh[1];
-        if ((long)w * h > SCENE_MAX_PIXELS)
+        if ((long)w * h > LIMIT_IMAGE_PIXELS)
             return jfail(c, "camera.resolution", "%dx%d is %ld pixels, above the limit of %ld (8192x8192)", w, h,
-                         (long)w * h, SCENE_MAX_PIXELS);
+                         (long)w * h, LIMIT_IMAGE_PIXELS);
     }
     const cJSON *t = cJSON_GetObjectItemCaseSensitive(cam, "transform");
     if (!t) return jfail(c, "camera.transform", "missing required field (position, look_at, up)");
@@ -140,8 +149,8 @@ static bool load_settings(struct loader *L, const cJSON *integ, const cJSON *ren
     s->spp = 32; /* RendererSettings default */
     if (integ) {
         if (!cJSON_IsObject(integ)) return jfail(c, "integrator", "expected an object");
-        if (!jget_int(c, integ, "integrator", "max_bounces", false, 1, MAX_BOUNCES, &maxb) ||
-            !jget_int(c, integ, "integrator", "min_bounces", false, 0, MAX_BOUNCES, &minb) ||
+        if (!jget_int(c, integ, "integrator", "max_bounces", false, 1, LIMIT_BOUNCES, &maxb) ||
+            !jget_int(c, integ, "integrator", "min_bounces", false, 0, LIMIT_BOUNCES, &minb) ||
             !jget_bool(c, integ, "integrator", "enable_two_sided_shading", false, &s->two_sided_shading))
             return false;
         if (minb >= maxb)

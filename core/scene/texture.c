@@ -31,8 +31,9 @@ static int code8(float f, int bits)
     double c = (double)f * (ldexp(1.0, bits) - 1); /* the file's integer code */
     double r = floor(c + 0.5);
     if (!(r > 0)) return 0;
-    int code = (int)(bits > 8 ? ldexp(r, 8 - bits) : r); /* high byte: the shift, truncated */
-    return code > 255 ? 255 : code;
+    double code = bits > 8 ? floor(ldexp(r, 8 - bits)) : r; /* high byte: the shift, truncated */
+    /* clamped as a double: a texel far above 1 would overflow the conversion to int */
+    return code > 255 ? 255 : (int)code;
 }
 
 struct texture *texture_load(const char *path, char *err, size_t errlen)
@@ -40,6 +41,11 @@ struct texture *texture_load(const char *path, char *err, size_t errlen)
     int w, h, bits = 0;
     float *px;
     if (!img_read_rgb(path, &w, &h, &px, &bits, err, errlen)) return NULL;
+    return texture_from_rgb(path, w, h, px, bits, err, errlen);
+}
+
+struct texture *texture_from_rgb(const char *path, int w, int h, float *px, int bits, char *err, size_t errlen)
+{
     size_t n = (size_t)w * h * 3;
     for (size_t i = 0; i < n; i++)
         if (!isfinite(px[i])) {

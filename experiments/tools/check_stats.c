@@ -6,8 +6,9 @@
  * A row differs significantly when p < alpha_1 = 1 - (1 - alpha)^(1/m) (Sidak over the m compared
  * rows). A baseline row missing from the current file is a failure. Prints a per-row verdict table
  * (Markdown). Exit status: 0 no significant difference, 1 some difference or missing row, 2 bad input.
- * CSV: a header row, comma-separated fields without quoting, lines starting with '#' ignored. */
+ * CSV: tools/stats_csv.h. */
 #include "common/opts.h"
+#include "tools/stats_csv.h"
 #include <errno.h>
 #include <float.h>
 #include <gsl/gsl_cdf.h>
@@ -16,102 +17,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAXCOL 64
-#define MAXKEY 8
-#define LINE 4096
-
 static const char *const prog = "check_stats";
 
-struct row {
-    char key[256];
-    double mean, se, count;
-};
-
-struct table {
-    struct row *rows;
-    int n;
-};
-
-static int split(char *line, char **f)
-{
-    int n = 0;
-    line[strcspn(line, "\r\n")] = 0;
-    char *p = line;
-    for (;;) {
-        if (n == MAXCOL) return -1;
-        f[n++] = p;
-        char *c = strchr(p, ',');
-        if (!c) break;
-        *c = 0;
-        p = c + 1;
-    }
-    return n;
-}
-
-static int find_col(char **hdr, int n, const char *name, const char *file)
-{
-    for (int i = 0; i < n; i++)
-        if (!strcmp(hdr[i], name)) return i;
-    opts_fail(prog, "%s: no column '%s' in the header", file, name);
-    return -1;
-}
-
-static double num(const char *s, const char *file, int line, const char *col)
-{
-    char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (errno || end == s || *end || !isfinite(v)) opts_fail(prog, "%s:%d: column '%s': expected a number, got '%s'", file, line, col, s);
-    return v;
-}
-
-static struct table load(const char *file, char keys[MAXKEY][64], int nkeys, const char *mean, const char *se,
-                         const char *count)
+static struct stats_table load(const char *file, const struct stats_cols *cols)
 {
     FILE *f = fopen(file, "r");
     if (!f) opts_fail(prog, "%s: %s", file, strerror(errno));
-    char line[LINE], *fld[MAXCOL], *hdr[MAXCOL], hline[LINE];
-    int nh = -1, ln = 0, kc[MAXKEY], mc = -1, sc = -1, cc = -1;
-    struct table t = {NULL, 0};
-    int cap = 0;
-    while (fgets(line, sizeof line, f)) {
-        ln++;
-        if (line[0] == '#' || line[strspn(line, " \t\r\n")] == 0) continue;
-        if (nh < 0) {
-            strcpy(hline, line);
-            nh = split(hline, hdr);
-            if (nh < 0) opts_fail(prog, "%s:%d: too many columns", file, ln);
-            for (int k = 0; k < nkeys; k++) kc[k] = find_col(hdr, nh, keys[k], file);
-            mc = find_col(hdr, nh, mean, file);
-            sc = find_col(hdr, nh, se, file);
-            if (count) cc = find_col(hdr, nh, count, file);
-            continue;
-        }
-        int n = split(line, fld);
-        if (n != nh) opts_fail(prog, "%s:%d: %d fields, header has %d", file, ln, n, nh);
-        if (t.n == cap) {
-            cap = cap ? 2 * cap : 32;
-            t.rows = realloc(t.rows, sizeof *t.rows * (size_t)cap);
-            if (!t.rows) opts_fail(prog, "out of memory");
-        }
-        struct row *r = &t.rows[t.n++];
-        r->key[0] = 0;
-        for (int k = 0; k < nkeys; k++) {
-            if (strlen(r->key) + strlen(fld[kc[k]]) + 2 >= sizeof r->key) opts_fail(prog, "%s:%d: key too long", file, ln);
-            if (k) strcat(r->key, ",");
-            strcat(r->key, fld[kc[k]]);
-        }
-        for (int q = 0; q < t.n - 1; q++)
-            if (!strcmp(t.rows[q].key, r->key)) opts_fail(prog, "%s:%d: duplicate key '%s'", file, ln, r->key);
-        r->mean = num(fld[mc], file, ln, mean);
-        r->se = num(fld[sc], file, ln, se);
-        if (r->se < 0) opts_fail(prog, "%s:%d: negative standard error", file, ln);
-        r->count = count ? num(fld[cc], file, ln, count) : 0;
-        if (count && r->count < 2) opts_fail(prog, "%s:%d: column '%s' must be >= 2 for a t test", file, ln, count);
-    }
+    struct stats_table t;
+    char err[512];
+    bool ok = stats_csv_read(f, file, cols, &t, err, sizeof err);
     fclose(f);
-    if (nh < 0) opts_fail(prog, "%s: no header row", file);
-    if (t.n == 0) opts_fail(prog, "%s: no data rows", file);
+    if (!ok) opts_fail(prog, "%s", err);
     return t;
 }
 
@@ -151,15 +67,18 @@ int main(int argc, char **argv)
     if (fl.n != 2) opts_fail(prog, "expected BASELINE.csv CURRENT.csv (see --help)");
     const char **files = fl.name;
 
-    char keys[MAXKEY][64];
-    int nkeys = 0;
+    char keys[STATS_MAXKEY][STATS_NAME];
+    struct stats_cols cols = {.mean = mean, .se = se, .count = count};
     if (keyarg) {
         const char *p = keyarg;
         while (*p) {
             size_t l = strcspn(p, ",");
-            if (l == 0 || l >= 64 || nkeys == MAXKEY) opts_fail(prog, "--key: bad column list '%s'", keyarg);
-            memcpy(keys[nkeys], p, l);
-            keys[nkeys++][l] = 0;
+            if (l == 0 || l >= STATS_NAME || cols.nkeys == STATS_MAXKEY)
+                opts_fail(prog, "--key: bad column list '%s'", keyarg);
+            memcpy(keys[cols.nkeys], p, l);
+            keys[cols.nkeys][l] = 0;
+            cols.key[cols.nkeys] = keys[cols.nkeys];
+            cols.nkeys++;
             p += l;
             if (*p) p++;
         }
@@ -167,18 +86,15 @@ int main(int argc, char **argv)
         /* default: the baseline's first column */
         FILE *f = fopen(files[0], "r");
         if (!f) opts_fail(prog, "%s: %s", files[0], strerror(errno));
-        char line[LINE];
-        while (fgets(line, sizeof line, f) && (line[0] == '#')) {}
+        char err[512];
+        bool ok = stats_csv_first_column(f, files[0], keys[0], err, sizeof err);
         fclose(f);
-        size_t l = strcspn(line, ",\r\n");
-        if (l == 0 || l >= 64) opts_fail(prog, "%s: cannot read the first column name", files[0]);
-        memcpy(keys[0], line, l);
-        keys[0][l] = 0;
-        nkeys = 1;
+        if (!ok) opts_fail(prog, "%s", err);
+        cols.key[cols.nkeys++] = keys[0];
     }
 
-    struct table b = load(files[0], keys, nkeys, mean, se, count);
-    struct table c = load(files[1], keys, nkeys, mean, se, count);
+    struct stats_table b = load(files[0], &cols);
+    struct stats_table c = load(files[1], &cols);
     double a1 = 1.0 - pow(1.0 - alpha, 1.0 / b.n);
     int fails = 0;
     size_t cap = 4096, len = 0;
@@ -199,7 +115,7 @@ int main(int argc, char **argv)
         files[0], alpha, a1, b.n, count ? "Welch t" : "normal z");
     OUT("| %s | baseline | current | z | p | verdict |\n| --- | ---: | ---: | ---: | ---: | --- |\n", keyarg ? keyarg : keys[0]);
     for (int i = 0; i < b.n; i++) {
-        const struct row *rb = &b.rows[i], *rc = NULL;
+        const struct stats_row *rb = &b.rows[i], *rc = NULL;
         for (int j = 0; j < c.n; j++)
             if (!strcmp(c.rows[j].key, rb->key)) rc = &c.rows[j];
         if (!rc) {
@@ -234,7 +150,7 @@ int main(int argc, char **argv)
         }
     }
     free(txt);
-    free(b.rows);
-    free(c.rows);
+    stats_table_free(&b);
+    stats_table_free(&c);
     return fails ? 1 : 0;
 }

@@ -73,6 +73,23 @@ static void warn_unused(const struct opts_spec *spec, const char *method, int ar
     }
 }
 
+#define STR_(x) #x
+#define STR(x) STR_(x)
+
+/* The summary line and the input limits (base/input_limits.h), composed from the limits themselves. */
+static const char *help_tail(void)
+{
+    static char t[1024];
+    snprintf(t, sizeof t,
+             "Prints one summary line: method, samples, seconds, samples/s.\n"
+             "Input limits (refused with one error line, exit status 2): scene files %ld MB; resolution %d per side\n"
+             "and %ld pixels; textures %d per side, %ld texels, %d channels; meshes %ld vertices and triangles;\n"
+             "paths %d segments (a larger max_bounces is capped with a warning).\n",
+             LIMIT_SCENE_BYTES >> 20, LIMIT_IMAGE_SIDE, LIMIT_IMAGE_PIXELS, LIMIT_TEXTURE_SIDE, LIMIT_TEXTURE_TEXELS,
+             LIMIT_TEXTURE_CHANNELS, LIMIT_MESH_ELEMS, MAX_PATH_LENGTH);
+    return t;
+}
+
 static void parse(int argc, char **argv, struct args *a)
 {
     const char *prog = "render";
@@ -93,8 +110,9 @@ static void parse(int argc, char **argv, struct args *a)
         OPT_MAX_LENGTH(a->mc.max_length, .help = "maximum path length in segments (default: integrator.max_bounces)"),
         OPT_MIN_LENGTH(a->mc.min_length, .hi = MAX_PATH_LENGTH,
                        .help = "leave out paths shorter than K segments (3: no direct lighting; default 1)"),
-        OPT_RESOLUTION(a->res, .lo = 1, .hi = 1 << 15, .expect = "WxH with positive integers", .str = &a->res_arg,
-                       .help = "override the camera resolution (same horizontal fov)"),
+        OPT_RESOLUTION(a->res, .lo = 1, .hi = LIMIT_IMAGE_SIDE,
+                       .expect = "WxH with positive integers, at most " STR(LIMIT_IMAGE_SIDE) " per side",
+                       .str = &a->res_arg, .help = "override the camera resolution (same horizontal fov)"),
         OPT_OUT(a->out, .arg = "PREFIX", .help = "output prefix", .def = "out"),
         {"--quiet", OPT_FLAG, OPT_DST(a->quiet), .help = "no progress bar"},
         {"--checkpoint", OPT_DOUBLE, OPT_DST(a->checkpoint), .arg = "SECONDS", .lo = 1e-3, .hi = 1e9,
@@ -141,12 +159,12 @@ static void parse(int argc, char **argv, struct args *a)
                  "PREFIX.tech.csv shares; pssmlt runs slower with it"},
         {0}};
     const struct opts_spec spec = {.prog = prog, .usage = "usage: render SCENE.json [options]\n", .opts = opts,
-                                 .tail = "Prints one summary line: method, samples, seconds, samples/s.\n",
+                                 .tail = help_tail(),
                                  .positional = scene_arg, .ctx = a};
     opts_parse(&spec, argc, argv);
     if (!a->scene) opts_fail(prog, "no scene given (see --help)");
-    if (a->res[0] && (long)a->res[0] * a->res[1] > SCENE_MAX_PIXELS)
-        opts_fail(prog, "--resolution: %s is above the limit of %ld pixels (8192x8192)", a->res_arg, SCENE_MAX_PIXELS);
+    if (a->res[0] && (long)a->res[0] * a->res[1] > LIMIT_IMAGE_PIXELS)
+        opts_fail(prog, "--resolution: %s is above the limit of %ld pixels (8192x8192)", a->res_arg, LIMIT_IMAGE_PIXELS);
     if (a->cpu_seconds > 0) {
         if (a->mc.seconds > 0) opts_fail(prog, "--time and --cpu-time: give one budget");
         a->mc.seconds = a->cpu_seconds;
