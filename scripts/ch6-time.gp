@@ -4,7 +4,7 @@ set datafile separator ','
 set terminal pngcairo size 640,420 font ',10'
 set output out.'.png'
 set logscale xy
-set xlabel 'time budget per run (s, wall clock)'
+set xlabel 'time budget per run (CPU s per thread)'
 set ylabel 'relMSE'
 set title 'error vs time: '.name
 set key top right

@@ -3,8 +3,8 @@
  * process, so any method bin/render accepts can be listed; a method it does not accept (probed with
  * `bin/render --method M --help`) is skipped and named in the outputs.
  *
- * For each method, seed 1..N and budget t0, 2 t0, ..., T seconds: a separate render with that seed
- * and --time budget (the core has no snapshot facility; the doubling budgets are separate runs, not
+ * For each seed 1..N, budget t0, 2 t0, ..., T seconds and method, in that order (interleaved): a
+ * separate render with that seed and a --cpu-time budget (--wall-clock: --time) (the core has no snapshot facility; the doubling budgets are separate runs, not
  * snapshots of one run). Each image is compared with a BDPT reference rendered once and cached:
  * relMSE = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01 m^2), m the reference's mean
  * luminance (the relMSE of both images scaled to a mean of 1, so a dark scene is not all epsilon);
@@ -130,7 +130,7 @@ int main(int argc, char **argv)
     char methods_s[4096], extra_s[1024], render[4096] = "";
     int seeds, refspp, blk, threads, minlen;
     double T, t0 = -1;
-    bool reuse = false;
+    bool reuse = false, wall = false;
     const struct opt opts[] = {
         OPT_SCENE(scene, .help = "scene JSON"),
         {"--name", OPT_STRING, OPT_DST(name), .arg = "NAME", .help = "label in the outputs (default: the scene's folder name)"},
@@ -157,6 +157,9 @@ int main(int argc, char **argv)
         {"--block", OPT_INT, OPT_DST(blk), .arg = "B", .lo = 2, .hi = 1024, .help = "block size of the error spread", .def = "16"},
         OPT_THREADS(threads, .hi = 1024, .help = "threads per run", .def = "2"),
         {"--render", OPT_STRING, OPT_DST(render_arg), .arg = "PATH", .help = "the renderer (default: bin/render beside this tool)"},
+        {"--wall-clock", OPT_FLAG, OPT_DST(wall),
+         .help = "budgets in wall-clock seconds (bin/render --time); default CPU seconds per thread (--cpu-time), which "
+                 "other processes on the machine do not shift"},
         {"--reuse", OPT_FLAG, OPT_DST(reuse), .help = "keep the run files already in OUT/runs (same names) instead of rendering"},
         {0}};
     /* Several copies would each run every render; MPI goes through --render instead (README MPI). */
@@ -270,11 +273,13 @@ int main(int argc, char **argv)
     static struct run R[MAX_METHODS][MAX_BUDGETS][MAX_SEEDS];
     int cap = (ref->w / blk) * (ref->h / blk) + 1;
     double *blocks = xmalloc(sizeof(double) * (size_t)cap);
-    for (int mi = 0; mi < nm; mi++) {
-        struct method *m = &ms[mi];
-        if (!m->available) continue;
+    /* Interleaved: seed 1 of every method and budget, then seed 2, ...: a change in the machine's
+     * load during the runs then falls on every method alike, not on the one running at the time. */
+    for (int s = 1; s <= seeds; s++)
         for (int bi = 0; bi < nb; bi++)
-            for (int s = 1; s <= seeds; s++) {
+            for (int mi = 0; mi < nm; mi++) {
+                struct method *m = &ms[mi];
+                if (!m->available) continue;
                 char prefix[4096], seed_s[32], time_s[32];
                 snprintf(prefix, sizeof prefix, "%.3000s/%.60s-s%d-t%g", runsdir, m->name, s, budgets[bi]);
                 snprintf(seed_s, sizeof seed_s, "%d", s);
@@ -285,7 +290,7 @@ int main(int argc, char **argv)
                 rv[c++] = (char *)scene;
                 for (int k = 0; k < m->argc; k++) rv[c++] = m->argv[k];
                 for (int k = 0; k < extra_c; k++) rv[c++] = extra_argv[k];
-                char *fixed[] = {"--time", time_s, "--seed", seed_s, "--threads", thr, "--min-length", minlen_s, "--quiet", "--out", prefix};
+                char *fixed[] = {wall ? "--time" : "--cpu-time", time_s, "--seed", seed_s, "--threads", thr, "--min-length", minlen_s, "--quiet", "--out", prefix};
                 for (size_t k = 0; k < sizeof fixed / sizeof *fixed; k++) rv[c++] = fixed[k];
                 if (res) {
                     rv[c++] = "--resolution";
@@ -323,7 +328,6 @@ int main(int argc, char **argv)
                 r->large_nonzero = csv_nonzero(csv, "large");
                 free(csv);
             }
-    }
 
     /* runs.csv and summary.csv */
     char *buf = NULL;
@@ -335,7 +339,8 @@ int main(int argc, char **argv)
     csv_meta(f, "render args", "%s", extra_s);
     csv_meta(f, "min_length", "%d", minlen);
     csv_meta(f, "relmse eps", "= 0.01 * (reference mean luminance %.6g)^2", mlum);
-    csv_meta(f, NULL, "budgets are separate runs with the same seed (no snapshots); wall-clock --time on a shared machine");
+    csv_meta(f, NULL, "budgets are separate runs with the same seed (no snapshots), methods interleaved seed by seed; %s",
+             wall ? "wall-clock --time" : "--cpu-time: CPU seconds per thread");
     for (int mi = 0; mi < nm; mi++)
         if (!ms[mi].available) csv_meta(f, "method", "%s not available in this build (skipped)", ms[mi].name);
     fprintf(f, "scene,method,seed,budget,seconds,mutations,mutations_per_s,relmse,block_spread,nonzero,large_nonzero\n");
@@ -386,8 +391,8 @@ int main(int argc, char **argv)
     /* The Markdown table at the largest budget, with the error-vs-time slope. */
     buf = NULL;
     f = open_memstream(&buf, &len);
-    fprintf(f, "**%s**, %g s per run (wall clock, %d threads), %d seeds, paths of length >= %d, reference %d spp BDPT; mean ± standard error over seeds\n\n",
-            name, T, threads, seeds, minlen, refspp);
+    fprintf(f, "**%s**, %g s per run (%s, %d threads), %d seeds, paths of length >= %d, reference %d spp BDPT; mean ± standard error over seeds\n\n",
+            name, T, wall ? "wall clock" : "CPU seconds per thread", threads, seeds, minlen, refspp);
     fprintf(f, "| method | relMSE | block-relMSE spread (CV, %dx%d) | mutations/s | non-zero proposals | large-step non-zero | relMSE slope vs time |\n",
             blk, blk);
     fprintf(f, "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
