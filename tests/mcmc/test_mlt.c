@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -366,9 +367,11 @@ static int spin_start(pid_t *pid, int n)
 {
     for (int i = 0; i < n; i++) {
         pid[i] = fork();
-        if (pid[i] == 0)
+        if (pid[i] == 0) {
+            prctl(PR_SET_PDEATHSIG, SIGKILL); /* never outlive a test killed by its timeout */
             for (volatile unsigned long x = 0;; x++) {
             }
+        }
         cr_assert(pid[i] > 0, "fork failed");
     }
     return n;
