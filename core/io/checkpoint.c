@@ -130,6 +130,15 @@ static bool write_all(int fd, const void *p, size_t n)
  * framebuffer of the run, is hashed where it lies rather than copied behind the header. */
 #define HEAD_FIXED (8 + 3 * 8 + 8) /* the header without the options text */
 
+/* PSS_TEST_CKPT_STALL_MS (tests only): every checkpoint write pauses that long halfway through its
+ * payload, so that a test can kill a run in the middle of a write rather than hope to. */
+static void test_stall(void)
+{
+    const char *e = getenv("PSS_TEST_CKPT_STALL_MS");
+    long ms = e ? strtol(e, NULL, 10) : 0;
+    if (ms > 0 && ms < 100000) usleep((useconds_t)(1000 * ms));
+}
+
 static uint64_t checksum(const unsigned char *head, size_t hlen, const unsigned char *payload, size_t plen)
 {
     return hash64(hash64(0, head, hlen), payload, plen);
@@ -145,12 +154,16 @@ bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ck
     ckpt_put(&head, id->options, olen);
     CKPT_PUT(&head, plen);
     uint64_t sum = checksum(head.p, head.len, payload->p, payload->len);
-    size_t n = strlen(path) + 32;
+    /* One temporary name per checkpoint file, not per process: a run killed mid-write leaves a
+     * torn temporary, which the resumed run's first write truncates and replaces. */
+    size_t n = strlen(path) + 8;
     char *tmp = xmalloc(n);
-    snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid());
+    snprintf(tmp, n, "%s.tmp", path);
     int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    bool ok = fd >= 0 && write_all(fd, head.p, head.len) && write_all(fd, payload->p, payload->len) &&
-              write_all(fd, &sum, sizeof sum) && fsync(fd) == 0;
+    size_t half = payload->len / 2;
+    bool ok = fd >= 0 && write_all(fd, head.p, head.len) && write_all(fd, payload->p, half);
+    if (ok) test_stall();
+    ok = ok && write_all(fd, payload->p + half, payload->len - half) && write_all(fd, &sum, sizeof sum) && fsync(fd) == 0;
     if (fd >= 0 && close(fd) != 0) ok = false;
     if (ok && rename(tmp, path) != 0) ok = false;
     if (!ok) {
@@ -172,36 +185,70 @@ bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ck
     return ok;
 }
 
-bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf *payload, char *err, size_t errlen)
+/* The whole file in *all, its checksum verified and cut off; or one line in err. */
+static bool read_verified(const char *path, struct ckpt_buf *all, char *err, size_t errlen)
 {
-    memset(payload, 0, sizeof *payload);
+    memset(all, 0, sizeof *all);
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, errlen, "%s: cannot read the checkpoint", path);
         return false;
     }
-    struct ckpt_buf all = {0};
     unsigned char buf[1 << 16];
     size_t n;
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0) ckpt_put(&all, buf, n);
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0) ckpt_put(all, buf, n);
     fclose(f);
-    char magic[8] = {0};
-    uint64_t build = 0, scene = 0, olen = 0, plen = 0, sum = 0;
-    bool ok = all.len >= HEAD_FIXED + 8 && !memcmp(all.p, MAGIC, 8);
-    if (!ok) {
+    uint64_t olen = 0, sum = 0;
+    if (all->len < HEAD_FIXED + 8 || memcmp(all->p, MAGIC, 8)) {
         snprintf(err, errlen, "%s: not a checkpoint of this harness", path);
-        ckpt_buf_free(&all);
+        ckpt_buf_free(all);
         return false;
     }
-    memcpy(&sum, all.p + all.len - 8, 8);
-    memcpy(&olen, all.p + HEAD_FIXED - 16, 8);
-    size_t hlen = olen <= all.len - HEAD_FIXED - 8 ? HEAD_FIXED + (size_t)olen : 0;
-    if (!hlen || checksum(all.p, hlen, all.p + hlen, all.len - 8 - hlen) != sum) {
+    memcpy(&sum, all->p + all->len - 8, 8);
+    memcpy(&olen, all->p + HEAD_FIXED - 16, 8);
+    size_t hlen = olen <= all->len - HEAD_FIXED - 8 ? HEAD_FIXED + (size_t)olen : 0;
+    if (!hlen || checksum(all->p, hlen, all->p + hlen, all->len - 8 - hlen) != sum) {
         snprintf(err, errlen, "%s: the checkpoint is truncated or corrupted (checksum mismatch); nothing was read", path);
-        ckpt_buf_free(&all);
+        ckpt_buf_free(all);
         return false;
     }
-    all.len -= 8;
+    all->len -= 8;
+    return true;
+}
+
+bool ckpt_file_intact(const char *path)
+{
+    struct ckpt_buf all;
+    char err[16];
+    bool ok = read_verified(path, &all, err, sizeof err);
+    ckpt_buf_free(&all);
+    return ok;
+}
+
+/* "threads=2 (this run: threads=1)" for the first option word that differs, so that the refusal
+ * says which option rather than printing two long lines to compare by eye. */
+static void first_difference(const char *was, const char *now, char *out, size_t n)
+{
+    while (*was || *now) {
+        size_t a = strcspn(was, " "), b = strcspn(now, " ");
+        if (a != b || memcmp(was, now, a)) {
+            snprintf(out, n, "%.*s (this run: %.*s)", (int)a, was, (int)b, now);
+            return;
+        }
+        was += a + (was[a] == ' ');
+        now += b + (now[b] == ' ');
+    }
+    snprintf(out, n, "the same words in another order");
+}
+
+bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf *payload, char *err, size_t errlen)
+{
+    memset(payload, 0, sizeof *payload);
+    struct ckpt_buf all;
+    if (!read_verified(path, &all, err, errlen)) return false;
+    char magic[8] = {0};
+    uint64_t build = 0, scene = 0, olen = 0, plen = 0;
+    bool ok;
     ckpt_get(&all, magic, 8);
     CKPT_GET(&all, build);
     CKPT_GET(&all, scene);
@@ -221,7 +268,9 @@ bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf 
         snprintf(err, errlen, "%s: written for another scene (or the scene's files changed since)", path);
     else if (strcmp(opts, id->options)) {
         str_sanitize(opts);
-        snprintf(err, errlen, "%s: written with other options (%s) than these (%s)", path, opts, id->options);
+        char diff[256];
+        first_difference(opts, id->options, diff, sizeof diff);
+        snprintf(err, errlen, "%s: written with other options: %s", path, diff);
     } else
         ok = true;
     free(opts);

@@ -52,6 +52,9 @@ bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ck
 /* Fills payload (owned; free with ckpt_buf_free) or writes one line: unreadable, corrupted or
  * truncated, or written by another build, for another scene or with other options. */
 bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf *payload, char *err, size_t errlen);
+/* Whether the file is a whole checkpoint (magic and checksum), whoever wrote it: what a killed
+ * run must always leave behind. */
+bool ckpt_file_intact(const char *path);
 
 /* How a renderer checkpoints: where to, how often, and what to continue from. */
 struct ckpt_ctl {

@@ -5,6 +5,7 @@
 #include <criterion/criterion.h>
 
 #include "base/util.h"
+#include "io/checkpoint.h"
 #include "io/image.h"
 #include <ctype.h>
 #include <dirent.h>
@@ -12,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -268,6 +270,40 @@ static double seconds_now(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
+/* Waits up to 30 s for rank `rank` of the mpirun job to appear; its pid. */
+static pid_t wait_rank(pid_t job, int rank)
+{
+    pid_t victim = 0;
+    double t0 = seconds_now();
+    while (!victim && seconds_now() - t0 < 30) {
+        usleep(20000);
+        victim = find_rank(job, rank);
+    }
+    cr_assert(victim, "rank %d of the job never appeared", rank);
+    return victim;
+}
+
+/* Kills rank `rank` (its pid `victim`) with SIGKILL, then asserts that mpirun ends the job within
+ * 30 s, with a non-zero status and a message naming the signal (stderr in the file `err`). */
+static void kill_rank_and_wait(pid_t job, pid_t victim, int rank, const char *err)
+{
+    kill(victim, SIGKILL);
+    int status = 0;
+    double t0 = seconds_now();
+    while (waitpid(job, &status, WNOHANG) == 0) {
+        if (seconds_now() - t0 > 30) {
+            kill(job, SIGKILL);
+            waitpid(job, &status, 0);
+            cr_assert_fail("the job still ran 30 s after rank %d was killed", rank);
+        }
+        usleep(20000);
+    }
+    char *msg = read_whole_file(err);
+    cr_assert(!(WIFEXITED(status) && WEXITSTATUS(status) == 0), "the job succeeded without rank %d (killed too late?)", rank);
+    cr_expect(strstr(msg, "signal 9") || strstr(msg, "Killed"), "mpirun did not say which rank died:\n%s", msg);
+    free(msg);
+}
+
 /* kill -9 of rank 1 mid-render: mpirun ends the job with a non-zero status and says which rank
  * died, within 30 s. */
 Test(mpi, killed_rank_fails_the_job)
@@ -283,29 +319,9 @@ Test(mpi, killed_rank_fails_the_job)
                "--method", "pt", "--spp", "100000", "--threads", "1", "--quiet", "--out", dir, (char *)NULL);
         _exit(127);
     }
-    pid_t victim = 0;
-    double t0 = seconds_now();
-    while (!victim && seconds_now() - t0 < 30) {
-        usleep(100000);
-        victim = find_rank(job, 1);
-    }
-    cr_assert(victim, "rank 1 of the job never appeared");
+    pid_t victim = wait_rank(job, 1);
     usleep(1500000); /* mid-render: well past MPI start-up and the scene's load */
-    kill(victim, SIGKILL);
-    int status = 0;
-    t0 = seconds_now();
-    while (waitpid(job, &status, WNOHANG) == 0) {
-        if (seconds_now() - t0 > 30) {
-            kill(job, SIGKILL);
-            waitpid(job, &status, 0);
-            cr_assert_fail("the job still ran 30 s after rank 1 was killed");
-        }
-        usleep(100000);
-    }
-    char *msg = read_whole_file(err);
-    cr_expect(!(WIFEXITED(status) && WEXITSTATUS(status) == 0), "the job succeeded without rank 1");
-    cr_expect(strstr(msg, "signal 9") || strstr(msg, "Killed"), "mpirun did not say which rank died:\n%s", msg);
-    free(msg);
+    kill_rank_and_wait(job, victim, 1, err);
 }
 
 /* Checkpoints over ranks: each rank keeps its own threads' state in PREFIX.ckpt.rankR. A job of
@@ -358,4 +374,76 @@ Test(mpi, checkpoints_resume_over_ranks_bit_identical)
 {
     resumed_over_ranks("mmlt", "--method mmlt --spp 800 --seed-paths 4000");
     resumed_over_ranks("pt", "--method pt --spp 1500");
+}
+
+/* Whether the file exists and was modified at or after t. */
+static bool newer_than(const char *path, struct timespec t)
+{
+    struct stat sb;
+    if (stat(path, &sb) != 0) return false;
+    return sb.st_mtim.tv_sec > t.tv_sec || (sb.st_mtim.tv_sec == t.tv_sec && sb.st_mtim.tv_nsec >= t.tv_nsec);
+}
+
+/* SIGKILL of one rank of a checkpointing job, twice, each a tenth of an uninterrupted run's time
+ * after that rank has written a checkpoint: mpirun ends the job and says which rank died, each
+ * rank's checkpoint file is whole (a kill can tear only a temporary), and 2 ranks resuming from the
+ * files that are there, then completing, give the bits of one process of 4 threads. Each rank's work is its own (its seeds, its share of
+ * the pixels or chains), so each resumes from its own latest complete file: the set the job
+ * resumes from is every rank's last complete checkpoint. */
+static void rank_killed_and_resumed(const char *args, int victim_rank)
+{
+    char a[1024], ck[2][256], out[256], err[256], prefix[256], resume[300] = "";
+    snprintf(a, sizeof a, "%s %s --threads 4", box, args);
+    double t0 = seconds_now();
+    cr_assert_eq(run_render(0, "ref", a), 0);
+    double span = seconds_now() - t0;
+    for (int r = 0; r < 2; r++) {
+        snprintf(ck[r], sizeof ck[r], "%s/kr.ckpt.rank%d", dir, r);
+        unlink(ck[r]);
+    }
+    snprintf(out, sizeof out, "%s/kr.out", dir);
+    snprintf(err, sizeof err, "%s/kr.err", dir);
+    snprintf(prefix, sizeof prefix, "%s/kr", dir);
+    for (int kill_no = 0; kill_no < 2; kill_no++) {
+        struct timespec started;
+        clock_gettime(CLOCK_REALTIME, &started);
+        pid_t job = fork();
+        cr_assert(job >= 0);
+        if (job == 0) {
+            if (!freopen(out, "w", stdout) || !freopen(err, "w", stderr)) _exit(127);
+            char *argv[64];
+            int argc = 0;
+            argv[argc++] = "mpirun", argv[argc++] = "--oversubscribe", argv[argc++] = "-np", argv[argc++] = "2";
+            argv[argc++] = BIN_DIR "/render";
+            char words[2048];
+            snprintf(words, sizeof words, "%s %s --threads 2 --checkpoint 0.05 --quiet --out %s %s", box, args, prefix, resume);
+            for (char *t = strtok(words, " "); t && argc < 63; t = strtok(NULL, " ")) argv[argc++] = t;
+            argv[argc] = NULL;
+            execvp("mpirun", argv);
+            _exit(127);
+        }
+        pid_t victim = wait_rank(job, victim_rank);
+        /* the kill comes a tenth of the run after the victim has written a checkpoint in this job,
+         * so that it makes progress whatever MPI's start-up costs (the other rank may be done) */
+        double t1 = seconds_now();
+        while (!newer_than(ck[victim_rank], started) && seconds_now() - t1 < 30) usleep(5000);
+        usleep((useconds_t)(1e6 * 0.1 * span));
+        kill_rank_and_wait(job, victim, victim_rank, err);
+        for (int r = 0; r < 2; r++)
+            cr_assert(access(ck[r], F_OK) != 0 || ckpt_file_intact(ck[r]), "%s: rank %d's checkpoint is torn", args, r);
+        cr_assert(access(ck[0], F_OK) == 0 && access(ck[1], F_OK) == 0, "%s: a rank wrote no checkpoint", args);
+        snprintf(resume, sizeof resume, "--resume %s/kr.ckpt", dir);
+    }
+    snprintf(a, sizeof a, "%s %s --threads 2 --checkpoint 0.05 %s", box, args, resume);
+    int rc = run_render(2, "kr", a);
+    char *e = output("kr", "err");
+    cr_assert_eq(rc, 0, "%s: final resume: %s", args, e);
+    free(e);
+    cr_expect(same_pixels("ref", "kr", "exr"), "%s: killed and resumed 2 x 2 differs from one process of 4 threads", args);
+}
+
+Test(mpi, sigkill_of_one_rank_resumes_bit_identical)
+{
+    rank_killed_and_resumed("--method pt --spp 1500", 1);
+    rank_killed_and_resumed("--method mmlt --spp 800 --seed-paths 4000", 0);
 }

@@ -34,6 +34,9 @@ static double now(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
+/* Milliseconds every checkpoint write of the next start() pauses halfway (0: none). */
+static int stall_ms;
+
 /* Starts bin/render with the words of `args` (space-separated) and `extra`, stdout and stderr to
  * DIR/stdout and DIR/stderr. */
 static pid_t start(const char *args, const char *extra)
@@ -53,6 +56,10 @@ static pid_t start(const char *args, const char *extra)
         if (!freopen(p, "w", stdout)) _exit(99);
         snprintf(p, sizeof p, "%s/stderr", dir);
         if (!freopen(p, "w", stderr)) _exit(99);
+        if (stall_ms) {
+            snprintf(p, sizeof p, "%d", stall_ms);
+            setenv("PSS_TEST_CKPT_STALL_MS", p, 1);
+        }
         execv(argv[0], argv);
         _exit(98);
     }
@@ -113,72 +120,157 @@ static void assert_same_stats(const char *a, const char *b)
     cr_assert(!lx && !ly, "%s and %s have different lengths", a, b);
 }
 
-/* One uninterrupted run, then the same run killed (SIGKILL) `kills` times at random moments, each
- * time resumed from its latest checkpoint (or restarted when none was written yet), and at last
- * completed. Checkpoints every 50 ms; the kill moments are drawn from a fixed-seed generator over
- * the uninterrupted run's duration. Returns how many resumes started from a checkpoint. */
-static int kill_and_resume(const char *args, bool mcmc, int kills, uint64_t seed)
+/* Whether DIR/NAME is absent or a whole checkpoint: what a kill must leave. */
+static bool absent_or_intact(const char *name)
 {
-    char ref[2048], run[2048], resume[2048], old[256];
+    char p[256];
+    path_of(p, sizeof p, name);
+    return access(p, F_OK) != 0 || ckpt_file_intact(p);
+}
+
+/* The uninterrupted run of `args`, into DIR/ref; returns its wall time. The previous method's
+ * checkpoint and temporary go first. */
+static double reference_run(const char *args)
+{
+    char ref[2048], old[256];
     path_of(old, sizeof old, "run.ckpt");
-    unlink(old); /* the previous method's */
+    unlink(old);
+    path_of(old, sizeof old, "run.ckpt.tmp");
+    unlink(old);
     snprintf(ref, sizeof ref, "%s --out %s/ref", args, dir);
     double t0 = now();
     cr_assert_eq(finish(start(ref, "")), 0);
-    double span = now() - t0;
+    return now() - t0;
+}
+
+/* The last start of a killed run: it must complete, leave no temporary, and end with the
+ * uninterrupted run's pixels (and statistics rows for the MCMC methods). */
+static void complete_and_compare(const char *run, const char *resume, bool mcmc)
+{
+    char err[1024];
+    int st = finish(start(run, exists("run.ckpt") ? resume : ""));
+    read_text("stderr", err, sizeof err);
+    cr_assert_eq(st, 0, "%s", err);
+    cr_assert(!exists("run.ckpt.tmp"), "a completed run left its checkpoint's temporary");
+    assert_same_pixels("ref.exr", "run.exr");
+    if (mcmc) assert_same_stats("ref.csv", "run.csv");
+}
+
+/* One uninterrupted run, then the same run killed (SIGKILL) `kills` times at random moments, each
+ * time resumed from its latest checkpoint (or restarted when none was written yet), and at last
+ * completed. Checkpoints every 50 ms; the kill moments are drawn from a fixed-seed generator over
+ * 10-50 % of the uninterrupted run's duration, so that most land before the resumed run is done.
+ * After every kill the checkpoint is absent or whole. Returns how many starts were killed while
+ * running; *resumed counts the starts that continued from a checkpoint. */
+static int kill_and_resume(const char *args, bool mcmc, int kills, uint64_t seed, int *resumed)
+{
+    char run[2048], resume[2048];
+    double span = reference_run(args);
     snprintf(run, sizeof run, "%s --out %s/run --checkpoint 0.05", args, dir);
     snprintf(resume, sizeof resume, "--resume %s/run.ckpt", dir);
     rng r;
     rng_seed(&r, seed, 7);
-    int resumed = 0;
-    for (int i = 0; i <= kills; i++) {
+    int killed = 0;
+    *resumed = 0;
+    for (int i = 0; i < kills; i++) {
         bool from_ckpt = exists("run.ckpt");
-        resumed += from_ckpt;
+        *resumed += from_ckpt;
         pid_t pid = start(run, from_ckpt ? resume : "");
-        if (i == kills) {
-            char err[1024];
-            int st = finish(pid);
-            read_text("stderr", err, sizeof err);
-            cr_assert_eq(st, 0, "%s", err);
-            break;
-        }
-        double wait = (0.2 + 0.6 * rng_uniform(&r)) * span;
-        usleep((useconds_t)(1e6 * wait));
+        usleep((useconds_t)(1e6 * (0.1 + 0.4 * rng_uniform(&r)) * span));
         kill(pid, SIGKILL);
-        finish(pid);
+        killed += finish(pid) == 128 + SIGKILL;
+        cr_assert(absent_or_intact("run.ckpt"), "kill %d left a torn checkpoint", i);
     }
-    assert_same_pixels("ref.exr", "run.exr");
-    if (mcmc) assert_same_stats("ref.csv", "run.csv");
-    return resumed;
+    complete_and_compare(run, resume, mcmc);
+    return killed;
+}
+
+/* Kill points of the running test, for its log (each test runs in its own process). */
+static int kill_points;
+
+static void kills_of(const char *args, bool mcmc, int kills, uint64_t seed)
+{
+    int resumed, killed = kill_and_resume(args, mcmc, kills, seed, &resumed);
+    kill_points += killed;
+    cr_log_info("%s: %d of %d kills landed in a running render, %d resumes from a checkpoint (%d kill points in this test)", args,
+                killed, kills, resumed, kill_points);
+    /* timing decides where the kills land: at least half must hit a running render, and one resume
+     * must start from a checkpoint */
+    cr_assert_geq(2 * killed, kills, "%s: only %d of %d kills hit a running render", args, killed, kills);
+    cr_assert_gt(resumed, 0, "%s", args);
 }
 
 #define COMMON "scenes/cornell-box/scene.json --resolution 48x36 --threads 2 --seed 4"
+#define MCMC COMMON " --seed-paths 20000 --spp 300 --method "
 
 /* Each method with a budget that takes the uninterrupted run about a second (more under the
- * sanitizers, and the kill moments scale with it); three kills each. Timing decides where the
- * kills land, so the test asserts that at least one resume per method started from a checkpoint. */
+ * sanitizers, and the kill moments scale with it): ten kills each of PT, BDPT, MMLT and PITP,
+ * three of the other MCMC variants, 49 in all. */
 Test(checkpoint, sigkill_and_resume_is_bit_identical_pt_bdpt, .timeout = 600)
 {
-    cr_assert_gt(kill_and_resume(COMMON " --method pt --spp 400", false, 3, 1), 0);
-    cr_assert_gt(kill_and_resume(COMMON " --method bdpt --spp 120", false, 3, 2), 0);
+    kills_of(COMMON " --method pt --spp 400", false, 10, 1);
+    kills_of(COMMON " --method bdpt --spp 120", false, 10, 2);
 }
 
-Test(checkpoint, sigkill_and_resume_is_bit_identical_mcmc, .timeout = 600)
+Test(checkpoint, sigkill_and_resume_is_bit_identical_mmlt_pitp, .timeout = 600)
 {
-    const char *mc = COMMON " --seed-paths 20000 --spp 300 --method ";
-    char a[512];
-    const char *m[] = {"pssmlt --spp 100", "mmlt --technique-images 3", "pitp --small-step controlled --angle-stats",
-                       "mmlt --large-step hybrid --hybrid-length 3", "pitp"};
-    for (int i = 0; i < 5; i++) {
-        snprintf(a, sizeof a, "%s%s", mc, m[i]);
-        cr_assert_gt(kill_and_resume(a, true, 3, 10 + (uint64_t)i), 0, "%s", m[i]);
-        if (i == 1) {
-            assert_same_pixels("ref.tech-t2.exr", "run.tech-t2.exr");
-            assert_same_pixels("ref.count-t3.exr", "run.count-t3.exr");
-            assert_same_stats("ref.tech.csv", "run.tech.csv");
+    kills_of(MCMC "mmlt --technique-images 3", true, 10, 10);
+    assert_same_pixels("ref.tech-t2.exr", "run.tech-t2.exr");
+    assert_same_pixels("ref.count-t3.exr", "run.count-t3.exr");
+    assert_same_stats("ref.tech.csv", "run.tech.csv");
+    kills_of(MCMC "pitp", true, 10, 11);
+}
+
+Test(checkpoint, sigkill_and_resume_is_bit_identical_other_mcmc, .timeout = 600)
+{
+    kills_of(MCMC "pssmlt --spp 100", true, 3, 12);
+    kills_of(MCMC "pitp --small-step controlled --angle-stats", true, 3, 13);
+    assert_same_pixels("ref.angle.exr", "run.angle.exr");
+    kills_of(MCMC "mmlt --large-step hybrid --hybrid-length 3", true, 3, 14);
+}
+
+/* SIGKILL in the middle of a checkpoint write, three times per method: every write pauses 150 ms
+ * halfway through its payload (PSS_TEST_CKPT_STALL_MS), and the kill comes 30 ms after the
+ * temporary of a start's second write has appeared. The previous checkpoint must then be whole (or absent before the first), the torn
+ * temporary must not pass for one, and the resumed run, which finds the torn temporary beside the
+ * checkpoint, must overwrite it and end bit-identical. */
+static void kills_during_writes(const char *args, bool mcmc)
+{
+    char run[2048], resume[2048], tmp[256];
+    reference_run(args);
+    snprintf(run, sizeof run, "%s --out %s/run --checkpoint 0.1", args, dir);
+    snprintf(resume, sizeof resume, "--resume %s/run.ckpt", dir);
+    path_of(tmp, sizeof tmp, "run.ckpt.tmp");
+    stall_ms = 150;
+    for (int i = 0; i < 3; i++) {
+        unlink(tmp); /* so that the next one to appear is this start's */
+        pid_t pid = start(run, exists("run.ckpt") ? resume : "");
+        /* one write completes (its temporary appears, then is renamed away), so that each start
+         * makes progress; the kill lands in the next */
+        for (int phase = 0; phase < 3; phase++) {
+            bool want = phase != 1;
+            double t0 = now();
+            while ((access(tmp, F_OK) == 0) != want && now() - t0 < 60) usleep(2000);
+            cr_assert((access(tmp, F_OK) == 0) == want, "%s: checkpoint writes stopped (phase %d)", args, phase);
         }
-        if (i == 2) assert_same_pixels("ref.angle.exr", "run.angle.exr");
+        usleep(30000); /* well inside the 150 ms pause */
+        kill(pid, SIGKILL);
+        cr_assert_eq(finish(pid), 128 + SIGKILL, "%s: the run ended before the kill", args);
+        kill_points++;
+        cr_assert(absent_or_intact("run.ckpt"), "%s: a kill during a write tore the checkpoint", args);
+        cr_assert(!ckpt_file_intact(tmp), "%s: the half-written temporary passes for a checkpoint", args);
     }
+    stall_ms = 0;
+    complete_and_compare(run, resume, mcmc);
+    cr_log_info("%s: 3 kills during checkpoint writes (%d kill points in this test)", args, kill_points);
+}
+
+Test(checkpoint, sigkill_during_a_checkpoint_write_leaves_the_previous_one, .timeout = 600)
+{
+    kills_during_writes(COMMON " --method pt --spp 400", false);
+    kills_during_writes(COMMON " --method bdpt --spp 120", false);
+    kills_during_writes(MCMC "mmlt --spp 1500", true);
+    kills_during_writes(MCMC "pitp --spp 1500", true);
 }
 
 /* Ctrl-C keeps its behaviour (the partial image, exit status 130) and leaves a checkpoint that
@@ -219,7 +311,8 @@ static int lines(const char *s)
     return n;
 }
 
-/* Resuming refuses, with one line and exit status 2: other options, another scene, a corrupted or
+/* Resuming refuses, with one line and exit status 2 that names the option: other options (another
+ * thread count among them; another rank count is tests/mpi's), another scene, a corrupted or
  * truncated file. */
 Test(checkpoint, refuses_other_options_scene_and_damaged_files, .timeout = 300)
 {
@@ -234,8 +327,10 @@ Test(checkpoint, refuses_other_options_scene_and_damaged_files, .timeout = 300)
     const struct {
         const char *args, *says;
     } cases[] = {
-        {COMMON " --method pt --spp 99999", "other options"},
-        {COMMON " --method bdpt --spp 100000", "other options"},
+        {COMMON " --method pt --spp 99999", "other options: spp=100000 (this run: spp=99999)"},
+        {COMMON " --method bdpt --spp 100000", "other options: method=pt (this run: method=bdpt)"},
+        {"scenes/cornell-box/scene.json --resolution 48x36 --threads 1 --seed 4 --method pt --spp 100000",
+         "other options: threads=2 (this run: threads=1)"},
         {"scenes/furnace/scene.json --resolution 48x36 --threads 2 --seed 4 --method pt --spp 100000", "another scene"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
