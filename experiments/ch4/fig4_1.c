@@ -10,7 +10,7 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
-#include "ch4/noise_corr.h"
+#include "stats/noise_corr.h"
 #include "ch4/wall_noise.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"

@@ -1,7 +1,7 @@
 /* PSSMLT on the wall and the measurements of its noise (wall_noise.h). */
 #include "ch4/wall_noise.h"
 #include "base/util.h"
-#include "ch4/noise_corr.h"
+#include "stats/noise_corr.h"
 #include <math.h>
 #include <stdlib.h>
 #include <unistd.h>

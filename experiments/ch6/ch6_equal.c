@@ -16,6 +16,7 @@
  * budget T); all atomically. */
 #include "base/dist.h"
 #include "base/util.h"
+#include "ch6/ch6_claims.h"
 #include "ch6/ch6_stats.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
@@ -43,7 +44,7 @@ struct method {
 };
 
 struct run {
-    double seconds, mutations, mps, relmse, spread, nonzero, large_nonzero;
+    double seconds, q[Q_COUNT];
 };
 
 static char *split_args(char *s, char **argv, int *argc, int cap)
@@ -126,7 +127,7 @@ static void fail(const char *msg1, const char *msg2)
 int main(int argc, char **argv)
 {
     const char *prog = "ch6_equal", *scene = NULL, *out = NULL, *name = NULL, *refpath = NULL, *res = NULL;
-    const char *methods_arg, *extra_arg, *render_arg = NULL;
+    const char *methods_arg, *extra_arg, *render_arg = NULL, *source, *command, *scale;
     char methods_s[4096], extra_s[1024], render[4096] = "";
     int seeds, refspp, blk, threads, minlen;
     double T, t0 = -1;
@@ -160,6 +161,11 @@ int main(int argc, char **argv)
         {"--wall-clock", OPT_FLAG, OPT_DST(wall),
          .help = "budgets in wall-clock seconds (bin/render --time); default CPU seconds per thread (--cpu-time), which "
                  "other processes on the machine do not shift"},
+        {"--source", OPT_STRING, OPT_DST(source), .arg = "TEXT", .def = "thesis ch. 6",
+         .help = "the claims' source item, for claims.csv (e.g. 'thesis Figs. 6.4, 6.7')"},
+        {"--command", OPT_STRING, OPT_DST(command), .arg = "TEXT", .def = "bin/ch6_equal",
+         .help = "the command that reproduces this run, for claims.csv"},
+        {"--scale", OPT_STRING, OPT_DST(scale), .arg = "NAME", .def = "custom", .help = "the scale's name, for claims.csv"},
         {"--reuse", OPT_FLAG, OPT_DST(reuse), .help = "keep the run files already in OUT/runs (same names) instead of rendering"},
         {0}};
     /* Several copies would each run every render; MPI goes through --render instead (README MPI). */
@@ -308,9 +314,15 @@ int main(int argc, char **argv)
                 if (!im) fail(err, NULL);
                 if (im->w != ref->w || im->h != ref->h) fail("image and reference sizes differ: ", path);
                 struct run *r = &R[mi][bi][s - 1];
-                r->relmse = img_relmse(im, ref, eps);
+                r->q[Q_RELMSE] = img_relmse(im, ref, eps);
                 int n = ch6_block_relmse(im, ref, blk, eps, blocks, cap);
-                r->spread = ch6_spread(blocks, n < cap ? n : cap);
+                if (n > cap) n = cap;
+                r->q[Q_SPREAD] = ch6_spread(blocks, n);
+                r->q[Q_BLOCK_MEDIAN] = ch6_median(blocks, n);
+                r->q[Q_TRIMMED] = ch6_trimmed_relmse(im, ref, eps, 0.001);
+                r->q[Q_BLUR4] = ch6_blur_share(im, ref, eps, 4);
+                r->q[Q_BLUR8] = ch6_blur_share(im, ref, eps, 8);
+                r->q[Q_CORRLEN] = ch6_corr_length(im, ref);
                 if (bi == nb - 1 && s == 1) {
                     snprintf(path, sizeof path, "%.3000s/%.60s.png", out, m->name);
                     if (!img_write_png(im, expo, path, err, sizeof err)) fail(err, NULL);
@@ -322,10 +334,10 @@ int main(int argc, char **argv)
                 char *csv = read_whole_file(path);
                 if (!csv) fail("cannot read ", path);
                 r->seconds = csv_header(csv, "seconds");
-                r->mutations = csv_header(csv, "mutations");
-                r->mps = csv_header(csv, "mutations_per_second");
-                r->nonzero = csv_nonzero(csv, NULL);
-                r->large_nonzero = csv_nonzero(csv, "large");
+                r->q[Q_MUTATIONS] = csv_header(csv, "mutations");
+                r->q[Q_MPS] = csv_header(csv, "mutations_per_second");
+                r->q[Q_NONZERO] = csv_nonzero(csv, NULL);
+                r->q[Q_LARGE_NONZERO] = csv_nonzero(csv, "large");
                 free(csv);
             }
 
@@ -343,14 +355,16 @@ int main(int argc, char **argv)
              wall ? "wall-clock --time" : "--cpu-time: CPU seconds per thread");
     for (int mi = 0; mi < nm; mi++)
         if (!ms[mi].available) csv_meta(f, "method", "%s not available in this build (skipped)", ms[mi].name);
-    fprintf(f, "scene,method,seed,budget,seconds,mutations,mutations_per_s,relmse,block_spread,nonzero,large_nonzero\n");
+    fprintf(f, "scene,method,seed,budget,seconds,mutations,mutations_per_s,relmse,block_spread,nonzero,large_nonzero,"
+               "block_median_relmse,trimmed_relmse,blur4_share,blur8_share,corr_length\n");
     for (int mi = 0; mi < nm; mi++)
         if (ms[mi].available)
             for (int bi = 0; bi < nb; bi++)
                 for (int s = 0; s < seeds; s++) {
-                    const struct run *r = &R[mi][bi][s];
-                    fprintf(f, "%s,%s,%d,%g,%.3f,%.0f,%.0f,%.6g,%.6g,%.6g,%.6g\n", name, ms[mi].name, s + 1, budgets[bi],
-                            r->seconds, r->mutations, r->mps, r->relmse, r->spread, r->nonzero, r->large_nonzero);
+                    const double *q = R[mi][bi][s].q;
+                    fprintf(f, "%s,%s,%d,%g,%.3f,%.0f,%.0f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", name, ms[mi].name, s + 1,
+                            budgets[bi], R[mi][bi][s].seconds, q[Q_MUTATIONS], q[Q_MPS], q[Q_RELMSE], q[Q_SPREAD], q[Q_NONZERO],
+                            q[Q_LARGE_NONZERO], q[Q_BLOCK_MEDIAN], q[Q_TRIMMED], q[Q_BLUR4], q[Q_BLUR8], q[Q_CORRLEN]);
                 }
     fclose(f);
     snprintf(path, sizeof path, "%s/runs.csv", out);
@@ -360,27 +374,26 @@ int main(int argc, char **argv)
     buf = NULL;
     f = open_memstream(&buf, &len);
     csv_meta(f, NULL, "mean +- standard error over %d seeds", seeds);
+    /* the first five quantities in their old columns (scripts read them by position), then the rest */
+    static const enum ch6_q col[] = {Q_RELMSE,       Q_SPREAD,  Q_MPS,   Q_NONZERO, Q_LARGE_NONZERO,
+                                     Q_BLOCK_MEDIAN, Q_TRIMMED, Q_BLUR4, Q_BLUR8,   Q_CORRLEN};
     fprintf(f, "scene,method,budget,seeds,relmse,relmse_se,block_spread,block_spread_se,mutations_per_s,mutations_per_s_se,"
-               "nonzero,nonzero_se,large_nonzero,large_nonzero_se\n");
-    double sum[MAX_METHODS][6][2];
+               "nonzero,nonzero_se,large_nonzero,large_nonzero_se,block_median_relmse,block_median_relmse_se,trimmed_relmse,"
+               "trimmed_relmse_se,blur4_share,blur4_share_se,blur8_share,blur8_share_se,corr_length,corr_length_se\n");
+    double sum[MAX_METHODS][Q_COUNT][2];
     for (int mi = 0; mi < nm; mi++) {
         if (!ms[mi].available) continue;
         for (int bi = 0; bi < nb; bi++) {
-            double v[6][MAX_SEEDS], mean[6], se[6];
-            for (int s = 0; s < seeds; s++) {
-                const struct run *r = &R[mi][bi][s];
-                v[0][s] = r->relmse;
-                v[1][s] = r->spread;
-                v[2][s] = r->mps;
-                v[3][s] = r->nonzero;
-                v[4][s] = r->large_nonzero;
-                v[5][s] = r->mutations;
+            double v[MAX_SEEDS], mean[Q_COUNT], se[Q_COUNT];
+            for (int q = 0; q < Q_COUNT; q++) {
+                for (int s = 0; s < seeds; s++) v[s] = R[mi][bi][s].q[q];
+                ch6_mean_se(v, seeds, &mean[q], &se[q]);
             }
-            for (int q = 0; q < 6; q++) ch6_mean_se(v[q], seeds, &mean[q], &se[q]);
-            fprintf(f, "%s,%s,%g,%d,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g\n", name, ms[mi].name, budgets[bi], seeds,
-                    mean[0], se[0], mean[1], se[1], mean[2], se[2], mean[3], se[3], mean[4], se[4]);
+            fprintf(f, "%s,%s,%g,%d", name, ms[mi].name, budgets[bi], seeds);
+            for (size_t k = 0; k < sizeof col / sizeof *col; k++) fprintf(f, ",%.6g,%.3g", mean[col[k]], se[col[k]]);
+            fputc('\n', f);
             if (bi == nb - 1)
-                for (int q = 0; q < 6; q++) sum[mi][q][0] = mean[q], sum[mi][q][1] = se[q];
+                for (int q = 0; q < Q_COUNT; q++) sum[mi][q][0] = mean[q], sum[mi][q][1] = se[q];
         }
     }
     fclose(f);
@@ -393,31 +406,52 @@ int main(int argc, char **argv)
     f = open_memstream(&buf, &len);
     fprintf(f, "**%s**, %g s per run (%s, %d threads), %d seeds, paths of length >= %d, reference %d spp BDPT; mean ± standard error over seeds\n\n",
             name, T, wall ? "wall clock" : "CPU seconds per thread", threads, seeds, minlen, refspp);
-    fprintf(f, "| method | relMSE | block-relMSE spread (CV, %dx%d) | mutations/s | non-zero proposals | large-step non-zero | relMSE slope vs time |\n",
+    fprintf(f, "| method | relMSE | median block relMSE | block-relMSE spread (CV, %dx%d) | error share after 8x8 blur | "
+               "error correlation length (px) | mutations/s | non-zero proposals | large-step non-zero | relMSE slope vs time |\n",
             blk, blk);
-    fprintf(f, "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    fprintf(f, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (int mi = 0; mi < nm; mi++) {
         if (!ms[mi].available) {
-            fprintf(f, "| %s | not available in this build | | | | | |\n", ms[mi].name);
+            fprintf(f, "| %s | not available in this build | | | | | | | | |\n", ms[mi].name);
             continue;
         }
         double bx[MAX_BUDGETS], by[MAX_BUDGETS];
         for (int bi = 0; bi < nb; bi++) {
             double v[MAX_SEEDS], se;
-            for (int s = 0; s < seeds; s++) v[s] = R[mi][bi][s].relmse;
+            for (int s = 0; s < seeds; s++) v[s] = R[mi][bi][s].q[Q_RELMSE];
             ch6_mean_se(v, seeds, &by[bi], &se);
             bx[bi] = budgets[bi];
         }
         double slope = ch6_loglog_slope(bx, by, nb);
-        fprintf(f, "| %s | %.4g ± %.2g | %.3g ± %.2g | %.0f ± %.0f | %.4f ± %.4f | %.4f ± %.4f | %.2f |\n", ms[mi].name,
-                sum[mi][0][0], sum[mi][0][1], sum[mi][1][0], sum[mi][1][1], sum[mi][2][0], sum[mi][2][1], sum[mi][3][0],
-                sum[mi][3][1], sum[mi][4][0], sum[mi][4][1], slope);
+        const double(*q)[2] = sum[mi];
+        fprintf(f, "| %s | %.4g ± %.2g | %.4g ± %.2g | %.3g ± %.2g | %.3g ± %.2g | %.2f ± %.2f | %.0f ± %.0f | %.4f ± %.4f | "
+                   "%.4f ± %.4f | %.2f |\n",
+                ms[mi].name, q[Q_RELMSE][0], q[Q_RELMSE][1], q[Q_BLOCK_MEDIAN][0], q[Q_BLOCK_MEDIAN][1], q[Q_SPREAD][0],
+                q[Q_SPREAD][1], q[Q_BLUR8][0], q[Q_BLUR8][1], q[Q_CORRLEN][0], q[Q_CORRLEN][1], q[Q_MPS][0], q[Q_MPS][1],
+                q[Q_NONZERO][0], q[Q_NONZERO][1], q[Q_LARGE_NONZERO][0], q[Q_LARGE_NONZERO][1], slope);
     }
     fclose(f);
     snprintf(path, sizeof path, "%s/%s.md", out, name);
     if (!write_text_atomic(path, buf, err, sizeof err)) fail(err, NULL);
     fputs(buf, stdout);
     free(buf);
+
+    /* the claims at the largest budget */
+    char names[MAX_METHODS][64];
+    bool have[MAX_METHODS];
+    double cm[MAX_METHODS][Q_COUNT], cs[MAX_METHODS][Q_COUNT];
+    for (int mi = 0; mi < nm; mi++) {
+        snprintf(names[mi], sizeof names[mi], "%s", ms[mi].name);
+        have[mi] = ms[mi].available;
+        for (int q = 0; q < Q_COUNT; q++) cm[mi][q] = have[mi] ? sum[mi][q][0] : NAN, cs[mi][q] = have[mi] ? sum[mi][q][1] : NAN;
+    }
+    struct ch6_claims_in ci = {.scene = name, .source = source, .command = command, .scale = scale, .out = out, .budget = T,
+                               .seeds = seeds, .methods = nm, .name = (const char(*)[64])names, .have = have,
+                               .mean = (const double(*)[Q_COUNT])cm, .se = (const double(*)[Q_COUNT])cs};
+    char *claims = ch6_write_claims(&ci, err, sizeof err);
+    if (!claims) fail(err, NULL);
+    fputs(claims, stdout);
+    free(claims);
     free(blocks);
     free(mdup);
     img_destroy(ref);

@@ -1,6 +1,9 @@
 /* Shared analysis of the chapter-6 tools (ch6_stats.h). */
 #include "ch6/ch6_stats.h"
+#include "base/util.h"
+#include "stats/noise_corr.h"
 #include <math.h>
+#include <stdlib.h>
 
 void ch6_mean_se(const double *x, int n, double *mean, double *se)
 {
@@ -53,4 +56,70 @@ double ch6_loglog_slope(const double *x, const double *y, int n)
     }
     double d = k * sxx - sx * sx;
     return k >= 2 && d > 0 ? (k * sxy - sx * sy) / d : NAN;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double ch6_median(double *v, int n)
+{
+    if (n <= 0) return NAN;
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double ch6_trimmed_relmse(const struct image *a, const struct image *ref, double eps, double drop)
+{
+    size_t n = (size_t)a->w * a->h;
+    double *e = xmalloc(n * sizeof *e);
+    for (size_t i = 0; i < n; i++) {
+        const double *p = a->px + 3 * i, *r = ref->px + 3 * i;
+        e[i] = 0;
+        for (int c = 0; c < 3; c++) e[i] += (p[c] - r[c]) * (p[c] - r[c]) / (r[c] * r[c] + eps);
+    }
+    qsort(e, n, sizeof *e, cmp_double);
+    size_t keep = n - (size_t)floor(drop * (double)n);
+    double s = 0;
+    for (size_t i = 0; i < keep; i++) s += e[i];
+    free(e);
+    return keep ? s / (3.0 * (double)keep) : NAN;
+}
+
+double ch6_blur_share(const struct image *a, const struct image *ref, double eps, int k)
+{
+    double s = mean_lum_scale(a, ref), all = 0, blurred = 0;
+    int bw = a->w / k, bh = a->h / k;
+    for (int by = 0; by < bh; by++)
+        for (int bx = 0; bx < bw; bx++)
+            for (int c = 0; c < 3; c++) {
+                double m = 0;
+                for (int y = by * k; y < (by + 1) * k; y++)
+                    for (int x = bx * k; x < (bx + 1) * k; x++) {
+                        size_t i = 3 * ((size_t)y * a->w + x) + (size_t)c;
+                        double r = ref->px[i], e = (s * a->px[i] - r) / sqrt(r * r + eps);
+                        m += e;
+                        all += e * e;
+                    }
+                m /= (double)k * k;
+                blurred += m * m;
+            }
+    /* per pixel: the blocks' squared means stand for k^2 pixels each */
+    return all > 0 ? blurred * k * k / all : NAN;
+}
+
+double ch6_corr_length(const struct image *a, const struct image *ref)
+{
+    int maxlag = 32;
+    if (maxlag >= a->w) maxlag = a->w - 1;
+    if (maxlag >= a->h) maxlag = a->h - 1;
+    if (maxlag < 2) return NAN;
+    double *e = error_field(a, ref), rx[33], ry[33];
+    bool ok = corr_profiles(e, a->w, a->h, maxlag, rx, ry);
+    free(e);
+    if (!ok) return NAN;
+    double lx = corr_length_lag1(rx, maxlag + 1), ly = corr_length_lag1(ry, maxlag + 1);
+    return isnan(lx) || isnan(ly) ? NAN : 0.5 * (lx + ly);
 }

@@ -1,5 +1,8 @@
 /* Shared analysis of the chapter-6 tools: mean and standard error over seeds, per-block relative MSE
- * and its spread (the "uniformity" of an image's error), the log-log slope of error vs time. */
+ * and its spread (the "uniformity" of an image's error), the log-log slope of error vs time, and the
+ * statistics that tell fireflies (error in single pixels) from splotches (error correlated over many
+ * pixels): a firefly-robust relMSE, the share of the error that survives a box blur, and the error's
+ * correlation length. */
 #ifndef CH6_STATS_H
 #define CH6_STATS_H
 
@@ -15,5 +18,23 @@ int ch6_block_relmse(const struct image *a, const struct image *ref, int blk, do
 double ch6_spread(const double *v, int n);
 /* Least-squares slope of log y against log x over the points with x, y > 0 (nan with fewer than 2). */
 double ch6_loglog_slope(const double *x, const double *y, int n);
+
+/* The median of v[0..n-1] (reorders v; nan for n = 0). */
+double ch6_median(double *v, int n);
+/* relMSE of a against ref with the largest `drop` fraction of per-pixel errors (the sum over the
+ * three channels) left out: the error without its fireflies. */
+double ch6_trimmed_relmse(const struct image *a, const struct image *ref, double eps, double drop);
+/* The share of the relative error that survives a k x k box blur. The relative error per pixel and
+ * channel is (s a - ref) / sqrt(ref^2 + eps), with a first scaled by s to ref's mean luminance, so
+ * that the normalisation's one number (which survives every blur) is left out; the blur is the
+ * mean over non-overlapping k x k blocks (partial blocks dropped). Returns
+ * mean(block mean^2) / mean(error^2): 1 / k^2 in expectation for white noise, near 1 for error that
+ * is constant over regions much larger than k. */
+double ch6_blur_share(const struct image *a, const struct image *ref, double eps, int k);
+/* The error's correlation length in pixels: stats/noise_corr.h's corr_length_lag1 of the luminance
+ * error field (after the same scaling), averaged over the x and y profiles; 1 for white noise,
+ * about sqrt(1 + 4 s^2) for noise blurred by a Gaussian of standard deviation s; nan when the
+ * error has no correlated part. */
+double ch6_corr_length(const struct image *a, const struct image *ref);
 
 #endif

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 
 #include "base/rng.h"
-#include "ch4/noise_corr.h"
+#include "stats/noise_corr.h"
 
 static double gauss(rng *r)
 {

@@ -3,7 +3,10 @@
 #include <math.h>
 #include <sys/wait.h>
 
+#include "base/rng.h"
 #include "ch6/ch6_stats.h"
+#include "common/verdict.h"
+#include <stdlib.h>
 
 Test(ch6_stats, mean_and_standard_error)
 {
@@ -54,6 +57,128 @@ Test(ch6_stats, loglog_slope_of_a_power_law)
     cr_assert(isnan(ch6_loglog_slope(x, y, 1)));
 }
 
+/* Synthetic errors on a constant reference (128 x 128, value 1): white noise (sd 0.05) everywhere,
+ * plus either 12 fireflies (single pixels at +40: 0.07 % of the pixels) or 24 splotches (Gaussian blobs of standard
+ * deviation 6 px, amplitude +-0.4). The blur share and the correlation length tell them apart; the
+ * trimmed and the block-median relMSE drop the fireflies and keep the splotches. Fixed seeds. */
+static struct image *synthetic(bool splotches, uint64_t seed)
+{
+    struct image *im = img_create(128, 128);
+    rng r;
+    rng_seed(&r, seed, 3);
+    double *f = calloc(128 * 128, sizeof *f);
+    if (splotches)
+        for (int b = 0; b < 24; b++) {
+            double cx = 128 * rng_uniform(&r), cy = 128 * rng_uniform(&r), a = rng_uniform(&r) < 0.5 ? -0.4 : 0.4;
+            for (int y = 0; y < 128; y++)
+                for (int x = 0; x < 128; x++) f[y * 128 + x] += a * exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / 72.0);
+        }
+    else
+        for (int k = 0; k < 12; k++) f[(int)(128 * 128 * rng_uniform(&r))] += 40;
+    for (int y = 0; y < 128; y++)
+        for (int x = 0; x < 128; x++) {
+            /* Box-Muller */
+            double g = sqrt(-2 * log(1 - rng_uniform(&r))) * cos(2 * M_PI * rng_uniform(&r));
+            double v = 1 + f[y * 128 + x] + 0.05 * g;
+            img_add(im, x, y, (rgb){v, v, v});
+        }
+    free(f);
+    return im;
+}
+
+static struct image *constant(double v)
+{
+    struct image *im = img_create(128, 128);
+    for (int y = 0; y < 128; y++)
+        for (int x = 0; x < 128; x++) img_add(im, x, y, (rgb){v, v, v});
+    return im;
+}
+
+Test(ch6_stats, fireflies_and_splotches_told_apart)
+{
+    struct image *ref = constant(1), *ff = synthetic(false, 1), *sp = synthetic(true, 2);
+    double eps = 0.01, blocks[64];
+    double rf = img_relmse(ff, ref, eps), rs = img_relmse(sp, ref, eps);
+    double tf = ch6_trimmed_relmse(ff, ref, eps, 0.001), ts = ch6_trimmed_relmse(sp, ref, eps, 0.001);
+    int n = ch6_block_relmse(ff, ref, 16, eps, blocks, 64);
+    double spread_f = ch6_spread(blocks, n), mf = ch6_median(blocks, n);
+    n = ch6_block_relmse(sp, ref, 16, eps, blocks, 64);
+    double spread_s = ch6_spread(blocks, n), msp = ch6_median(blocks, n);
+    double b4f = ch6_blur_share(ff, ref, eps, 4), b8f = ch6_blur_share(ff, ref, eps, 8);
+    double b4s = ch6_blur_share(sp, ref, eps, 4), b8s = ch6_blur_share(sp, ref, eps, 8);
+    double lf = ch6_corr_length(ff, ref), ls = ch6_corr_length(sp, ref);
+    cr_log_info("fireflies: relMSE %.4g trimmed %.4g block median %.4g spread %.3g blur4 %.4f blur8 %.4f corr length %.2f", rf,
+                tf, mf, spread_f, b4f, b8f, lf);
+    cr_log_info("splotches: relMSE %.4g trimmed %.4g block median %.4g spread %.3g blur4 %.4f blur8 %.4f corr length %.2f", rs,
+                ts, msp, spread_s, b4s, b8s, ls);
+    /* fireflies: white in the blur (1/16, 1/64 within 50 %), short correlation, and almost all of
+     * the relMSE in the 0.1 % largest pixels */
+    cr_expect(b4f < 1.5 / 16 && b8f < 1.5 / 64, "fireflies survive the blur: %g %g", b4f, b8f);
+    cr_expect(isnan(lf) || lf < 1.5, "fireflies' correlation length %g", lf);
+    cr_expect(tf < 0.05 * rf && mf < 0.05 * rf, "the robust relMSEs keep the fireflies: %g %g of %g", tf, mf, rf);
+    /* splotches: most of the error survives both blurs, long correlation, the robust relMSEs keep it */
+    cr_expect(b4s > 0.5 && b8s > 0.3, "splotches do not survive the blur: %g %g", b4s, b8s);
+    cr_expect(ls > 5, "splotches' correlation length %g", ls);
+    cr_expect(ts > 0.8 * rs, "the trimmed relMSE drops the splotches: %g of %g", ts, rs);
+    img_destroy(ff);
+    img_destroy(sp);
+    img_destroy(ref);
+}
+
+/* An image 5 % too bright (a normalisation error: one number for the whole image) plus white noise
+ * is white to the blur and the correlation length: the scale to the reference's mean takes the
+ * offset out. Without the scale the blur share would be near 1. */
+Test(ch6_stats, normalisation_offset_is_not_a_splotch)
+{
+    struct image *ref = constant(1), *ff = synthetic(false, 3), *off = img_create(128, 128);
+    for (int y = 0; y < 128; y++)
+        for (int x = 0; x < 128; x++) {
+            rgb v = img_get(ff, x, y);
+            /* the noise without the fireflies, 5 % up */
+            double g = v.x > 5 ? 1 : v.x;
+            img_add(off, x, y, (rgb){1.05 * g, 1.05 * g, 1.05 * g});
+        }
+    double b8 = ch6_blur_share(off, ref, 0.01, 8), l = ch6_corr_length(off, ref);
+    cr_expect(b8 < 1.5 / 64, "the offset survives the blur: %g", b8);
+    cr_expect(isnan(l) || l < 1.5, "the offset correlates: %g", l);
+    img_destroy(off);
+    img_destroy(ff);
+    img_destroy(ref);
+}
+
+Test(ch6_stats, median)
+{
+    double a[5] = {5, 1, 4, 2, 3}, b[4] = {4, 1, 3, 2};
+    cr_assert_float_eq(ch6_median(a, 5), 3, 1e-12);
+    cr_assert_float_eq(ch6_median(b, 4), 2.5, 1e-12);
+    cr_assert(isnan(ch6_median(a, 0)));
+}
+
+/* Verdicts: z = 2 / sqrt(0.5) = 2.83 holds; an effect of 0.5 with the same errors (z = 0.71) is
+ * undecided and would need 4 (2 / 0.71)^2 = 32 seeds; a method below another by 3.5 standard errors
+ * contradicts "largest"; the direction (sign) flips the reading. */
+Test(ch6_stats, verdict_words_and_seeds_needed)
+{
+    const bool have[3] = {true, true, true};
+    double z[3];
+    const double se[3] = {0.5, 0.5, 0.5};
+    struct verdict v = verdict_extreme((double[]){3, 1, 1}, se, have, 3, 0, +1, 4, z);
+    cr_assert_str_eq(v.word, "holds");
+    cr_assert(isnan(z[0]) && fabs(z[1] - 2 / sqrt(0.5)) < 1e-12);
+    v = verdict_extreme((double[]){1.5, 1, 1}, se, have, 3, 0, +1, 4, z);
+    cr_assert_str_eq(v.word, "undecided");
+    cr_assert_eq(v.seeds_needed, 32);
+    v = verdict_extreme((double[]){0.5, 1, 3}, (double[]){0.1, 0.1, 0.1}, have, 3, 0, +1, 4, z);
+    cr_assert_str_eq(v.word, "contradicted");
+    cr_assert_eq(v.deciding, 2);
+    v = verdict_extreme((double[]){0.5, 1, 3}, (double[]){0.1, 0.1, 0.1}, have, 3, 0, -1, 4, z);
+    cr_assert_str_eq(v.word, "holds");
+    const bool two[3] = {true, false, true};
+    v = verdict_extreme((double[]){3, 100, 1}, se, two, 3, 0, +1, 4, z);
+    cr_assert_str_eq(v.word, "holds", "an absent method is not compared");
+    cr_assert(isnan(z[1]));
+}
+
 #ifndef BIN_DIR
 #define BIN_DIR "bin"
 #endif
@@ -93,6 +218,28 @@ Test(ch6_tool, skips_a_method_the_renderer_lacks_and_writes_its_tables, .timeout
     cr_assert(strstr(runs, "# min_length 2"), "%s", runs);
     snprintf(cmd, sizeof cmd, "%s/o/cornell-box.md", dir);
     cr_assert(strstr(slurp_file(cmd), "| nosuch | not available in this build"));
+    /* the claims: only (1) has its method here (pssmlt), once per statistic, each with a verdict word */
+    snprintf(cmd, sizeof cmd, "%s/o/claims.csv", dir);
+    char *claims = slurp_file(cmd);
+    cr_assert(strstr(claims, "\nsource,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n"),
+              "%s", claims);
+    int rows = 0;
+    for (char *line = strtok(claims, "\n"); line; line = strtok(NULL, "\n")) {
+        if (line[0] == '#' || !strncmp(line, "source,", 7)) continue;
+        char *f[12] = {0};
+        int n = 0;
+        for (char *c = line; n < 12; c = strchr(c, ',') + 1) {
+            f[n++] = c;
+            if (!strchr(c, ',')) break;
+        }
+        cr_assert_eq(n, 12, "%s", line);
+        cr_assert(!strncmp(f[1], "(1) PSSMLT is worst,", 20) && !strncmp(f[3], "pssmlt,", 7), "%s", line);
+        cr_assert(strstr(f[6], "big="), "%s", line);
+        cr_assert(!strncmp(f[8], "holds,", 6) || !strncmp(f[8], "contradicted,", 13) || !strncmp(f[8], "undecided,", 10), "%s",
+                  line);
+        rows++;
+    }
+    cr_assert_eq(rows, 3);
     snprintf(cmd, sizeof cmd, BIN_DIR "/ch6_equal --scene scenes/cornell-box/scene.json --out %s/o --seeds 1 2>/dev/null", dir);
     int st = system(cmd);
     cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2);

@@ -1,5 +1,5 @@
 /* Autocorrelation profiles and correlation lengths of an error field (noise_corr.h). */
-#include "ch4/noise_corr.h"
+#include "stats/noise_corr.h"
 #include "base/util.h"
 #include <math.h>
 #include <stdlib.h>
@@ -59,7 +59,7 @@ double corr_length_lag1(const double *rho, int n)
 
 static double lum(const double *p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
 
-double *error_field(const struct image *img, const struct image *ref)
+double mean_lum_scale(const struct image *img, const struct image *ref)
 {
     ASSERT(img->w == ref->w && img->h == ref->h);
     size_t n = (size_t)img->w * img->h;
@@ -68,7 +68,13 @@ double *error_field(const struct image *img, const struct image *ref)
         si += lum(img->px + 3 * i);
         sr += lum(ref->px + 3 * i);
     }
-    double s = si > 0 ? sr / si : 1;
+    return si > 0 ? sr / si : 1;
+}
+
+double *error_field(const struct image *img, const struct image *ref)
+{
+    size_t n = (size_t)img->w * img->h;
+    double s = mean_lum_scale(img, ref);
     double *e = xmalloc(n * sizeof *e);
     for (size_t i = 0; i < n; i++)
         e[i] = s * lum(img->px + 3 * i) - lum(ref->px + 3 * i);

@@ -27,5 +27,7 @@ double corr_length_lag1(const double *rho, int n);
  * the chain's normalisation (one number for the whole image, which would correlate every pair of
  * pixels); w*h values, caller frees. */
 double *error_field(const struct image *img, const struct image *ref);
+/* That scale, s = mean lum ref / mean lum img (1 when img is black). */
+double mean_lum_scale(const struct image *img, const struct image *ref);
 
 #endif
