@@ -1,13 +1,11 @@
 /* Checkpoint payloads and files; see checkpoint.h. */
 #include "io/checkpoint.h"
 #include "base/util.h"
-#include <fcntl.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 void ckpt_buf_free(struct ckpt_buf *b)
 {
@@ -113,18 +111,6 @@ uint64_t ckpt_build_hash(void)
 
 #define MAGIC "PSSCKPT1"
 
-static bool write_all(int fd, const void *p, size_t n)
-{
-    const char *c = p;
-    while (n > 0) {
-        ssize_t k = write(fd, c, n);
-        if (k <= 0) return false;
-        c += k;
-        n -= (size_t)k;
-    }
-    return true;
-}
-
 /* Layout: magic, build, scene, options length and text, payload length (the header), then the
  * payload, then hash64 of the payload seeded with hash64 of the header: the payload, every
  * framebuffer of the run, is hashed where it lies rather than copied behind the header. */
@@ -134,6 +120,12 @@ static uint64_t checksum(const unsigned char *head, size_t hlen, const unsigned 
 {
     return hash64(hash64(0, head, hlen), payload, plen);
 }
+
+static bool write_parts(const char *tmp, void *parts, char *err, size_t errlen)
+{
+    return write_chunks(tmp, parts, 3, err, errlen);
+}
+
 bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ckpt_buf *payload, char *err, size_t errlen)
 {
     struct ckpt_buf head = {0};
@@ -145,29 +137,8 @@ bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ck
     ckpt_put(&head, id->options, olen);
     CKPT_PUT(&head, plen);
     uint64_t sum = checksum(head.p, head.len, payload->p, payload->len);
-    size_t n = strlen(path) + 32;
-    char *tmp = xmalloc(n);
-    snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid());
-    int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    bool ok = fd >= 0 && write_all(fd, head.p, head.len) && write_all(fd, payload->p, payload->len) &&
-              write_all(fd, &sum, sizeof sum) && fsync(fd) == 0;
-    if (fd >= 0 && close(fd) != 0) ok = false;
-    if (ok && rename(tmp, path) != 0) ok = false;
-    if (!ok) {
-        snprintf(err, errlen, "%s: cannot write the checkpoint", path);
-        remove(tmp);
-    } else {
-        /* the rename itself must reach the disk for the new file to survive a crash */
-        const char *slash = strrchr(path, '/');
-        char dir[4096];
-        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) + 1 : 1, slash ? path : ".");
-        int dfd = open(dir, O_RDONLY | O_DIRECTORY);
-        if (dfd >= 0) {
-            fsync(dfd);
-            close(dfd);
-        }
-    }
-    free(tmp);
+    struct chunk parts[3] = {{head.p, head.len}, {payload->p, payload->len}, {&sum, sizeof sum}};
+    bool ok = atomic_write(path, write_parts, parts, err, errlen);
     ckpt_buf_free(&head);
     return ok;
 }
