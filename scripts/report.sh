@@ -6,9 +6,10 @@
 # usage: report.sh [SCALE]   (default quick; the chapter-6 folders are results/ch6-SCALE/...)
 set -euo pipefail
 scale=${1:-quick}
-out=results/report
+out=${REPORT_DIR:-results/report} # tests write elsewhere
 mkdir -p "$out"
 tmp="$out/.index.tmp$$.html"
+trap 'rm -f "$tmp"' EXIT
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale
 # id | title | make command | images (space-separated) | data files | claim | verdict: the README's quick-scale
@@ -31,7 +32,7 @@ entries=(
 "mmlt-ratio|MMLT paper §5 and Fig. 5: non-zero samples; per-technique contributions and sample counts (ajar, length 4)|make mmlt-ratio|$tech/technique-images.png|results/mmlt-ratio/mmlt-ratio.md $tech/tech.md $tech/follow-mmlt.csv $tech/follow-pssmlt.csv|11.81 % of PSSMLT's samples vs 29.75 % of MMLT's have non-zero contribution (door scene); MMLT's per-technique sample counts follow the per-technique contributions, PSSMLT's do not.|@results/mmlt-ratio/mmlt-ratio.md $tech/tech.md"
 "hybrid-study|Thesis §4.3/§7.1: hybrid MCTLS at equal time, with small steps|make hybrid-study||$hyb/hybrid-study.md $hyb/ajar/summary.csv $hyb/living-room/summary.csv|Open question: do MMLT large steps for short paths plus MCTLS for long ones beat both?|"
 )
-{
+page() {
 cat <<'HEAD'
 <!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>pss-harness report</title>
@@ -89,6 +90,19 @@ window.addEventListener('load', function () {
 </script>
 </body></html>
 TAIL
-} > "$tmp"
-mv -f "$tmp" "$out/index.html"
+}
+# A failed write (a full disk) ends the page at once, with one line naming the file: the shell's
+# own messages are kept back (in a pipe, which a full disk cannot refuse) and the last one's reason
+# is quoted. The subshell stands alone: inside `if`, `&&` or `||` bash would ignore its set -e.
+set +e
+why=$( { (set -e; page; sync "$tmp") >"$tmp"; } 2>&1 )
+st=$?
+[ $st = 0 ] && { why=$(mv -f "$tmp" "$out/index.html" 2>&1); st=$?; }
+set -e
+if [ $st != 0 ]; then
+  why=$(printf '%s' "$why" | tail -n 1) why=${why##*: }
+  [ -f "$out/index.html" ] && left='; the previous file is left as it was' || left=
+  echo "report: $out/index.html: cannot write (${why:-exit status $st})$left" >&2
+  exit 1
+fi
 echo "report: wrote $out/index.html" >&2
