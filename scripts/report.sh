@@ -4,6 +4,8 @@
 # claim, the measured statistics with their uncertainties (the run's own Markdown tables), whether the
 # claim holds, and links to the CSV, tables and images. Paths in the page are relative to it.
 # usage: report.sh [SCALE]   (default quick; the chapter-6 folders are results/ch6-SCALE/...)
+# REPORT_DIR (default results/report) is where the page goes; tests put it elsewhere. A page that
+# cannot be written leaves the previous one, with one line naming it and status 1.
 set -euo pipefail
 scale=${1:-quick}
 out=${REPORT_DIR:-results/report} # tests write elsewhere
