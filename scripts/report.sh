@@ -7,11 +7,10 @@
 # REPORT_DIR (default results/report) is where the page goes; tests put it elsewhere. A page that
 # cannot be written leaves the previous one, with one line naming it and status 1.
 set -euo pipefail
+page_only=
+[ "${1:-}" = --page ] && { page_only=1; shift; } # the page on stdout: how the script calls itself
 scale=${1:-quick}
 out=${REPORT_DIR:-results/report} # tests write elsewhere
-mkdir -p "$out"
-tmp="$out/.index.tmp$$.html"
-trap 'rm -f "$tmp"' EXIT
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale
 # id | title | make command | images (space-separated) | data files | claim | verdict: the README's quick-scale
@@ -93,18 +92,7 @@ window.addEventListener('load', function () {
 </body></html>
 TAIL
 }
-# A failed write (a full disk) ends the page at once, with one line naming the file: the shell's
-# own messages are kept back (in a pipe, which a full disk cannot refuse) and the last one's reason
-# is quoted. The subshell stands alone: inside `if`, `&&` or `||` bash would ignore its set -e.
-set +e
-why=$( { (set -e; page; sync "$tmp") >"$tmp"; } 2>&1 )
-st=$?
-[ $st = 0 ] && { why=$(mv -f "$tmp" "$out/index.html" 2>&1); st=$?; }
-set -e
-if [ $st != 0 ]; then
-  why=$(printf '%s' "$why" | tail -n 1) why=${why##*: }
-  [ -f "$out/index.html" ] && left='; the previous file is left as it was' || left=
-  echo "report: $out/index.html: cannot write (${why:-exit status $st})$left" >&2
-  exit 1
-fi
+if [ "$page_only" ]; then page; exit 0; fi
+mkdir -p "$out"
+bash "$(dirname "$0")/to-file.sh" report "$out/index.html" bash "$0" --page "$scale" || exit 1
 echo "report: wrote $out/index.html" >&2

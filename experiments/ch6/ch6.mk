@@ -59,8 +59,7 @@ $(CH6_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/ren
 define CH6_FIG
 $(1): deps $(CH6_OUT)/$(2)/summary.csv
 	bash scripts/ch6-figure.sh $(3) $(CH6_OUT)/$(2) $(CH6_OUT)/$(2)/$(1).png $(CH6_$(2)_INSETS)
-	bash scripts/ch6-claims.sh $(CH6_OUT)/$(2)/summary.csv > $(CH6_OUT)/$(2)/claims.md.tmp
-	mv -f $(CH6_OUT)/$(2)/claims.md.tmp $(CH6_OUT)/$(2)/claims.md
+	$(call TO_FILE,$(CH6_OUT)/$(2)/claims.md,bash scripts/ch6-claims.sh $(CH6_OUT)/$(2)/summary.csv)
 	@echo "$(CH6_OUT)/$(2)/$(1).png; table $(CH6_OUT)/$(2)/$(2).md, error vs time $(CH6_OUT)/$(2)/error-vs-time.png"
 	@cat $(CH6_OUT)/$(2)/$(2).md $(CH6_OUT)/$(2)/claims.md
 endef
@@ -96,8 +95,7 @@ $(TECH_OUT)/tech.md: scenes/ajar/scene.json | deps $(BIN)/render $(BIN)/ch6_tech
 .PHONY: mmlt-ratio
 mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary.csv $(CH6_OUT)/ajar/summary.csv $(TECH_OUT)/tech.md
 	@mkdir -p results/mmlt-ratio
-	bash scripts/ch6-ratio.sh $(filter %summary.csv,$^) > results/mmlt-ratio/mmlt-ratio.md.tmp
-	mv -f results/mmlt-ratio/mmlt-ratio.md.tmp results/mmlt-ratio/mmlt-ratio.md
+	$(call TO_FILE,results/mmlt-ratio/mmlt-ratio.md,bash scripts/ch6-ratio.sh $(filter %summary.csv,$^))
 	@cat results/mmlt-ratio/mmlt-ratio.md $(TECH_OUT)/tech.md
 	@echo "per-technique images: $(TECH_OUT)/technique-images.png"
 
@@ -117,8 +115,7 @@ $(HYB_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/ren
 
 .PHONY: hybrid-study
 hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.csv
-	bash scripts/ch6-hybrid.sh $(filter %summary.csv,$^) > $(HYB_OUT)/hybrid-study.md.tmp
-	mv -f $(HYB_OUT)/hybrid-study.md.tmp $(HYB_OUT)/hybrid-study.md
+	$(call TO_FILE,$(HYB_OUT)/hybrid-study.md,bash scripts/ch6-hybrid.sh $(filter %summary.csv,$^))
 	@cat $(HYB_OUT)/hybrid-study.md
 
 # ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----
