@@ -169,16 +169,25 @@ Test(disk_full, checkpoint_at_ctrl_c)
                   "a.exr");
 }
 
+#define FIG45 BIN_DIR "/fig4_5 --scene scenes/cornell-box/scene.json --mutations 2000 --max-length 4 --threads 1 --out DIR"
+
 Test(disk_full, experiment_csv)
 {
-    const char *cmd = BIN_DIR "/fig4_5 --scene scenes/cornell-box/scene.json --mutations 2000 --max-length 4 --threads 1 --out DIR";
-    fails_cleanly(cmd, cmd, (struct run){.limit = 256, .chatty = true}, "fig4.5.csv", NULL);
+    fails_cleanly(FIG45, FIG45, (struct run){.limit = 256, .chatty = true}, "fig4.5.csv", NULL);
 }
 
 Test(disk_full, experiment_markdown)
 {
     const char *cmd = BIN_DIR "/table1_cmlt --budgets 2k --seeds 2 --res 8 --ref-spp 4 --out DIR";
     fails_cleanly(cmd, cmd, (struct run){.fail = "table1.md", .chatty = true}, "table1.md", NULL);
+}
+
+/* what make's TO_FILE does with every figure's table */
+Test(disk_full, figure_table_through_make)
+{
+    good_run(FIG45);
+    const char *table = "bash scripts/to-file.sh make DIR/fig4.5.md bash scripts/fig4.5-table.sh DIR/fig4.5.csv";
+    fails_cleanly(table, table, (struct run){.limit = 64}, "fig4.5.md", NULL);
 }
 
 Test(disk_full, report_page)
