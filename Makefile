@@ -251,8 +251,9 @@ test-san: deps
 CHECK_STATS := $(BIN)/check_stats
 
 # $(call TO_FILE,FILE,COMMAND): COMMAND's standard output into FILE through a temporary beside it,
-# so that FILE is either the old or the complete new one.
-TO_FILE = $(2) > $(1).tmp && mv -f $(1).tmp $(1)
+# so that FILE is either the old or the complete new one; a failure (a full disk) removes the
+# temporary and says so in one line naming FILE (scripts/to-file.sh).
+TO_FILE = bash scripts/to-file.sh make $(1) $(2)
 # $(call GNUPLOT,SCRIPT,CSV,OUT): OUT.png and OUT.pdf from a gnuplot script, through temporaries.
 GNUPLOT = gnuplot -e "csv='$(2)'; out='$(3).tmp'" $(1) && mv -f $(3).tmp.png $(3).png && mv -f $(3).tmp.pdf $(3).pdf
 

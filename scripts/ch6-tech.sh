@@ -34,6 +34,7 @@ runs() { for s in $(seq 1 "$seeds"); do echo "$out/$1-s$s"; done; }
 
 # Tables: per technique and per method, mean ± standard error over the seeds.
 tmp="$out/.tech.md.tmp$$"
+trap 'rm -f "$tmp"' EXIT # a failed write (a full disk) leaves no temporary
 awk -F, -v k="$k" -v seeds="$seeds" '
   FNR == 1 { m = FILENAME; sub(/.*\//, "", m); sub(/-s[0-9]+\.tech\.csv$/, "", m) }
   FILENAME ~ /follow-/ { if (/^#/ || $1 == "run") next; m = FILENAME; sub(/.*follow-/, "", m); sub(/\.csv$/, "", m)

@@ -4,11 +4,13 @@
 # claim, the measured statistics with their uncertainties (the run's own Markdown tables), whether the
 # claim holds, and links to the CSV, tables and images. Paths in the page are relative to it.
 # usage: report.sh [SCALE]   (default quick; the chapter-6 folders are results/ch6-SCALE/...)
+# REPORT_DIR (default results/report) is where the page goes; tests put it elsewhere. A page that
+# cannot be written leaves the previous one, with one line naming it and status 1.
 set -euo pipefail
+page_only=
+[ "${1:-}" = --page ] && { page_only=1; shift; } # the page on stdout: how the script calls itself
 scale=${1:-quick}
-out=results/report
-mkdir -p "$out"
-tmp="$out/.index.tmp$$.html"
+out=${REPORT_DIR:-results/report} # tests write elsewhere
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale
 # id | title | make command | images (space-separated) | data files | claim | verdict: the README's quick-scale
@@ -31,7 +33,7 @@ entries=(
 "mmlt-ratio|MMLT paper §5 and Fig. 5: non-zero samples; per-technique contributions and sample counts (ajar, length 4)|make mmlt-ratio|$tech/technique-images.png|results/mmlt-ratio/mmlt-ratio.md $tech/tech.md $tech/follow-mmlt.csv $tech/follow-pssmlt.csv|11.81 % of PSSMLT's samples vs 29.75 % of MMLT's have non-zero contribution (door scene); MMLT's per-technique sample counts follow the per-technique contributions, PSSMLT's do not.|@results/mmlt-ratio/mmlt-ratio.md $tech/tech.md"
 "hybrid-study|Thesis §4.3/§7.1: hybrid MCTLS at equal time, with small steps|make hybrid-study||$hyb/hybrid-study.md $hyb/ajar/summary.csv $hyb/living-room/summary.csv|Open question: do MMLT large steps for short paths plus MCTLS for long ones beat both?|"
 )
-{
+page() {
 cat <<'HEAD'
 <!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>pss-harness report</title>
@@ -89,6 +91,8 @@ window.addEventListener('load', function () {
 </script>
 </body></html>
 TAIL
-} > "$tmp"
-mv -f "$tmp" "$out/index.html"
+}
+if [ "$page_only" ]; then page; exit 0; fi
+mkdir -p "$out"
+bash "$(dirname "$0")/to-file.sh" report "$out/index.html" bash "$0" --page "$scale" || exit 1
 echo "report: wrote $out/index.html" >&2

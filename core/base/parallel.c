@@ -174,4 +174,6 @@ static void on_sigint(int sig)
 
 void interrupt_install(void) { signal(SIGINT, on_sigint); }
 
+void interrupt_request(void) { stop_flag = 1; }
+
 bool interrupted(void) { return stop_flag != 0; }

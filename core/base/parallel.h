@@ -46,6 +46,8 @@ void progress_finish(struct progress *p);
 /* Ctrl-C: the first SIGINT sets a flag long loops poll (they stop early and the tools write what
  * was computed, marked partial); a second one terminates as usual. */
 void interrupt_install(void);
+/* Stops the loops as a first Ctrl-C does, from the program itself (a checkpoint it cannot write). */
+void interrupt_request(void);
 bool interrupted(void);
 
 /* Wall-clock seconds (monotonic). */

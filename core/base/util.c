@@ -1,8 +1,11 @@
 /* Allocation that cannot fail silently, assertions and atomic file writes (util.h). */
 #include "base/util.h"
+#include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -57,6 +60,59 @@ void die_assert(const char *expr, const char *file, int line)
     abort();
 }
 
+static void test_stall(void)
+{
+    const char *e = getenv("PSS_TEST_WRITE_STALL_MS");
+    long ms = e ? strtol(e, NULL, 10) : 0;
+    if (ms > 0 && ms < 100000) usleep((useconds_t)(1000 * ms));
+}
+
+bool write_chunks(const char *path, const struct chunk *c, int n, char *err, size_t errlen)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    bool ok = fd >= 0;
+    for (int i = 0; ok && i < n; i++) {
+        if (n >= 2 && i == n / 2) test_stall();
+        const char *p = c[i].p;
+        for (size_t left = c[i].n; ok && left > 0;) {
+            ssize_t k = write(fd, p, left);
+            if (k == 0) errno = EIO; /* a regular file never takes nothing; do not spin */
+            ok = k > 0;
+            if (ok) p += k, left -= (size_t)k;
+        }
+    }
+    /* a full disk may show only here: delayed allocation defers the failure to writeback */
+    ok = ok && fsync(fd) == 0;
+    int saved = errno;
+    if (fd >= 0 && close(fd) != 0 && ok) ok = false, saved = errno;
+    if (!ok) snprintf(err, errlen, "%s", strerror(saved));
+    return ok;
+}
+
+/* Tests name an output in PSS_TEST_FAIL_WRITE to make its writes fail for real: the file-size
+ * limit drops to 0 around them (the test ignores SIGXFSZ), as no other file may fail first. */
+static bool fail_on_purpose(const char *path, struct rlimit *saved)
+{
+    const char *s = getenv("PSS_TEST_FAIL_WRITE");
+    size_t n = s ? strlen(s) : 0, m = strlen(path);
+    if (!n || n > m || strcmp(path + m - n, s) || getrlimit(RLIMIT_FSIZE, saved)) return false;
+    struct rlimit zero = {0, saved->rlim_max};
+    return setrlimit(RLIMIT_FSIZE, &zero) == 0;
+}
+
+/* the rename itself must reach the disk for the new file to survive a crash */
+static void sync_dir(const char *path, const char *base)
+{
+    char *dir = base == path ? xstrdup(".") : xstrdup(path);
+    if (base != path) dir[base - path] = '\0';
+    int fd = open(dir, O_RDONLY | O_DIRECTORY);
+    if (fd >= 0) {
+        fsync(fd);
+        close(fd);
+    }
+    free(dir);
+}
+
 bool atomic_write(const char *path, write_fn write, void *ctx, char *err, size_t errlen)
 {
     /* Keep the extension last: OpenImageIO picks the format from it. */
@@ -64,29 +120,32 @@ bool atomic_write(const char *path, write_fn write, void *ctx, char *err, size_t
     const char *base = slash ? slash + 1 : path;
     size_t dirlen = (size_t)(base - path);
     size_t n = strlen(path) + 32;
-    char *tmp = xmalloc(n);
+    char *tmp = xmalloc(n), why[256] = "";
     snprintf(tmp, n, "%.*s.tmp%ld-%s", (int)dirlen, path, (long)getpid(), base);
-    bool ok = write(tmp, ctx, err, errlen);
+    struct rlimit limit;
+    bool injected = fail_on_purpose(path, &limit);
+    bool ok = write(tmp, ctx, why, sizeof why);
+    if (injected) setrlimit(RLIMIT_FSIZE, &limit);
     if (ok && rename(tmp, path) != 0) {
-        snprintf(err, errlen, "%s: cannot rename temporary file into place", path);
+        snprintf(why, sizeof why, "rename: %s", strerror(errno));
         ok = false;
     }
-    if (!ok) remove(tmp);
+    if (ok) sync_dir(path, base);
+    else {
+        remove(tmp);
+        str_sanitize(why);
+        bool before = access(path, F_OK) == 0;
+        snprintf(err, errlen, "%s: cannot write (%s)%s", path, why[0] ? why : "reason unknown",
+                 before ? "; the previous file is left as it was" : "");
+    }
     free(tmp);
     return ok;
 }
 
 static bool write_text(const char *tmp, void *ctx, char *err, size_t errlen)
 {
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot write", tmp);
-        return false;
-    }
-    bool ok = fputs((const char *)ctx, f) >= 0;
-    ok = (fclose(f) == 0) && ok;
-    if (!ok) snprintf(err, errlen, "%s: write failed", tmp);
-    return ok;
+    struct chunk c = {ctx, strlen(ctx)};
+    return write_chunks(tmp, &c, 1, err, errlen);
 }
 
 bool write_text_atomic(const char *path, const char *text, char *err, size_t errlen)

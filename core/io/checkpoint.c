@@ -1,7 +1,9 @@
 /* Checkpoint payloads and files; see checkpoint.h. */
 #include "io/checkpoint.h"
 #include "base/util.h"
-#include <fcntl.h>
+#include <dirent.h>
+#include <errno.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -113,36 +115,47 @@ uint64_t ckpt_build_hash(void)
 
 #define MAGIC "PSSCKPT1"
 
-static bool write_all(int fd, const void *p, size_t n)
-{
-    const char *c = p;
-    while (n > 0) {
-        ssize_t k = write(fd, c, n);
-        if (k <= 0) return false;
-        c += k;
-        n -= (size_t)k;
-    }
-    return true;
-}
-
 /* Layout: magic, build, scene, options length and text, payload length (the header), then the
  * payload, then hash64 of the payload seeded with hash64 of the header: the payload, every
  * framebuffer of the run, is hashed where it lies rather than copied behind the header. */
 #define HEAD_FIXED (8 + 3 * 8 + 8) /* the header without the options text */
 
-/* PSS_TEST_CKPT_STALL_MS (tests only): every checkpoint write pauses that long halfway through its
- * payload, so that a test can kill a run in the middle of a write rather than hope to. */
-static void test_stall(void)
+/* The temporaries of this checkpoint (atomic_write's ".tmpPID-NAME" beside it) that processes no
+ * longer running left behind: a run killed in a write leaves one, and a resumed run killed again
+ * would pile them up. Once per process, before its first write. */
+static void remove_stale_temporaries(const char *path)
 {
-    const char *e = getenv("PSS_TEST_CKPT_STALL_MS");
-    long ms = e ? strtol(e, NULL, 10) : 0;
-    if (ms > 0 && ms < 100000) usleep((useconds_t)(1000 * ms));
+    static bool done;
+    if (done) return;
+    done = true;
+    const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) + 1 : 1, slash ? path : ".");
+    DIR *d = opendir(dir);
+    if (!d) return;
+    size_t bl = strlen(base);
+    for (struct dirent *e; (e = readdir(d));) {
+        char *end;
+        long pid = strncmp(e->d_name, ".tmp", 4) ? 0 : strtol(e->d_name + 4, &end, 10);
+        if (pid <= 0 || *end != '-' || strcmp(end + 1, base) || strlen(end + 1) != bl) continue;
+        if (kill((pid_t)pid, 0) == 0 || errno != ESRCH) continue; /* alive, or not ours to judge */
+        char p[8192];
+        snprintf(p, sizeof p, "%s%s%s", dir, slash ? "" : "/", e->d_name);
+        unlink(p);
+    }
+    closedir(d);
 }
 
 static uint64_t checksum(const unsigned char *head, size_t hlen, const unsigned char *payload, size_t plen)
 {
     return hash64(hash64(0, head, hlen), payload, plen);
 }
+
+static bool write_parts(const char *tmp, void *parts, char *err, size_t errlen)
+{
+    return write_chunks(tmp, parts, 4, err, errlen);
+}
+
 bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ckpt_buf *payload, char *err, size_t errlen)
 {
     struct ckpt_buf head = {0};
@@ -154,33 +167,11 @@ bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ck
     ckpt_put(&head, id->options, olen);
     CKPT_PUT(&head, plen);
     uint64_t sum = checksum(head.p, head.len, payload->p, payload->len);
-    /* One temporary name per checkpoint file, not per process: a run killed mid-write leaves a
-     * torn temporary, which the resumed run's first write truncates and replaces. */
-    size_t n = strlen(path) + 8;
-    char *tmp = xmalloc(n);
-    snprintf(tmp, n, "%s.tmp", path);
-    int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    /* four parts, the payload in two halves: tests pause a write between them (util.h) */
     size_t half = payload->len / 2;
-    bool ok = fd >= 0 && write_all(fd, head.p, head.len) && write_all(fd, payload->p, half);
-    if (ok) test_stall();
-    ok = ok && write_all(fd, payload->p + half, payload->len - half) && write_all(fd, &sum, sizeof sum) && fsync(fd) == 0;
-    if (fd >= 0 && close(fd) != 0) ok = false;
-    if (ok && rename(tmp, path) != 0) ok = false;
-    if (!ok) {
-        snprintf(err, errlen, "%s: cannot write the checkpoint", path);
-        remove(tmp);
-    } else {
-        /* the rename itself must reach the disk for the new file to survive a crash */
-        const char *slash = strrchr(path, '/');
-        char dir[4096];
-        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) + 1 : 1, slash ? path : ".");
-        int dfd = open(dir, O_RDONLY | O_DIRECTORY);
-        if (dfd >= 0) {
-            fsync(dfd);
-            close(dfd);
-        }
-    }
-    free(tmp);
+    struct chunk parts[4] = {{head.p, head.len}, {payload->p, half}, {payload->p + half, payload->len - half}, {&sum, sizeof sum}};
+    remove_stale_temporaries(path);
+    bool ok = atomic_write(path, write_parts, parts, err, errlen);
     ckpt_buf_free(&head);
     return ok;
 }

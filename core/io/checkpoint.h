@@ -63,7 +63,7 @@ struct ckpt_ctl {
     struct ckpt_id id;
     struct ckpt_buf *resume;   /* payload of the run to continue, or NULL */
     bool written;              /* out: a checkpoint was written */
-    char err[512];             /* out: why a write failed (the run goes on) */
+    char err[512];             /* out: why a write failed (the run stops) */
 };
 
 /* The rendezvous of a run's threads for a periodic checkpoint. Threads poll; once one finds the
@@ -91,8 +91,9 @@ void ckpt_sync_arrive(struct ckpt_sync *s);
 /* Called once by each thread when its work ends, after storing its final state. */
 void ckpt_sync_finish(struct ckpt_sync *s);
 
-/* A run's checkpoint: the renderer's own header (freed here), then every thread's slot; a write
- * that fails leaves its reason in ctl->err and the run goes on. */
+/* A run's checkpoint: the renderer's own header (freed here), then every thread's slot. A write
+ * that fails leaves its one-line reason in ctl->err (kept by later successes) and stops the run as
+ * Ctrl-C does (interrupt_request); the tool then ends with that line and status 1. */
 void ckpt_save_run(struct ckpt_ctl *ctl, struct ckpt_buf *head, const struct ckpt_sync *s);
 /* The counterpart, after the renderer has read its header from b: one buffer per thread (borrowing
  * b's bytes; free the array), or NULL when the payload does not end with exactly that many. */

@@ -73,6 +73,7 @@ void ckpt_save_run(struct ckpt_ctl *ctl, struct ckpt_buf *head, const struct ckp
 {
     for (int i = 0; i < s->threads; i++) ckpt_put_buf(head, &s->slot[i]);
     if (ckpt_write_file(ctl->path, &ctl->id, head, ctl->err, sizeof ctl->err)) ctl->written = true;
+    else interrupt_request(); /* a run whose checkpoints fail would lose what it computes */
     ckpt_buf_free(head);
 }
 

@@ -5,19 +5,25 @@
 #include "io/oiio.h"
 #include "io/texels.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 using namespace OIIO;
 
-extern "C" bool oiio_module_write(const char *path, int w, int h, int nchan, const float *px, char *err,
-                                  size_t errlen)
+// Encodes into memory and leaves the file to the C side: OpenImageIO's writers do not report a
+// failed write (an EXR cut short by a full disk came back as success), and there every write,
+// fsync and close is checked.
+extern "C" bool oiio_module_encode(const char *path, int w, int h, int nchan, const float *px, unsigned char **bytes,
+                                   size_t *len, char *err, size_t errlen)
 {
-    auto out = ImageOutput::create(path);
+    Filesystem::IOVecOutput mem;
+    auto out = ImageOutput::create(path, &mem);
     if (!out) {
-        snprintf(err, errlen, "%s: cannot create image writer (%s)", path, geterror().c_str());
+        snprintf(err, errlen, "cannot create image writer: %s", geterror().c_str());
         return false;
     }
     std::string ext(path);
@@ -25,9 +31,17 @@ extern "C" bool oiio_module_write(const char *path, int w, int h, int nchan, con
     ImageSpec spec(w, h, nchan, eight ? TypeDesc::UINT8 : TypeDesc::FLOAT);
     if (!eight) spec.attribute("compression", "zip");
     if (!out->open(path, spec) || !out->write_image(TypeDesc::FLOAT, px) || !out->close()) {
-        snprintf(err, errlen, "%s: %s", path, out->geterror().c_str());
+        snprintf(err, errlen, "%s", out->geterror().c_str());
         return false;
     }
+    const std::vector<unsigned char> &buf = mem.buffer();
+    *len = buf.size();
+    *bytes = static_cast<unsigned char *>(malloc(*len ? *len : 1));
+    if (!*bytes) {
+        snprintf(err, errlen, "out of memory for %zu bytes of image", *len);
+        return false;
+    }
+    if (*len) memcpy(*bytes, buf.data(), *len);
     return true;
 }
 

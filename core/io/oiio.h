@@ -15,7 +15,8 @@ extern "C" {
 #endif
 
 /* Writes nchan-channel float pixels (row 0 on top) to `path`; the format follows the extension,
- * 8-bit formats get values quantised from [0, 1]. Not atomic by itself. */
+ * 8-bit formats get values quantised from [0, 1]. Not atomic by itself; on failure err holds the
+ * reason only (atomic_write names the file). */
 bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen);
 /* Reads an image's every channel as float (an integer format's codes divided by their maximum, no
  * colour conversion, alpha not multiplied in), refusing sizes beyond io/texels.h's limits from the
@@ -31,8 +32,10 @@ bool oiio_module_present(char *err, size_t errlen);
  * image is touched). */
 bool oiio_loaded(void);
 
-/* The module's entry points, same contracts. */
-bool oiio_module_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen);
+/* The module's entry points. Encoding fills a malloc'ed buffer with the file's bytes (format from
+ * the extension of `path`, which is not touched); oiio_write writes it out. */
+bool oiio_module_encode(const char *path, int w, int h, int nchan, const float *px, unsigned char **bytes,
+                        size_t *len, char *err, size_t errlen);
 bool oiio_module_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err,
                                size_t errlen);
 

@@ -1,15 +1,17 @@
 /* Opens the OpenImageIO module (oiio.so beside the executable) on first use; see oiio.h for why it
  * is not linked in. */
 #include "io/oiio.h"
+#include "base/util.h"
 #include <dlfcn.h>
 #include <limits.h>
 #include <pthread.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 static pthread_once_t once = PTHREAD_ONCE_INIT;
-static bool (*module_write)(const char *, int, int, int, const float *, char *, size_t);
+static bool (*module_encode)(const char *, int, int, int, const float *, unsigned char **, size_t *, char *, size_t);
 static bool (*module_read)(const char *, int *, int *, int *, float **, int *, char *, size_t);
 static char load_error[PATH_MAX + 256];
 
@@ -43,10 +45,10 @@ static void open_module(void)
         return;
     }
     /* POSIX's sanctioned way to turn dlsym's object pointer into a function pointer */
-    *(void **)&module_write = dlsym(h, "oiio_module_write");
+    *(void **)&module_encode = dlsym(h, "oiio_module_encode");
     *(void **)&module_read = dlsym(h, "oiio_module_read_channels");
-    if (!module_write || !module_read) {
-        module_write = NULL;
+    if (!module_encode || !module_read) {
+        module_encode = NULL;
         module_read = NULL;
         snprintf(load_error, sizeof load_error, "%s lacks the oiio_module_* entry points; rebuild it with `make`", path);
     }
@@ -55,7 +57,7 @@ static void open_module(void)
 static bool ready(const char *path, char *err, size_t errlen)
 {
     pthread_once(&once, open_module);
-    if (module_write) return true;
+    if (module_encode) return true;
     snprintf(err, errlen, "%s: %s", path, load_error);
     return false;
 }
@@ -69,11 +71,21 @@ bool oiio_module_present(char *err, size_t errlen)
     return false;
 }
 
-bool oiio_loaded(void) { return module_write != NULL; }
+bool oiio_loaded(void) { return module_encode != NULL; }
 
 bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char *err, size_t errlen)
 {
-    return ready(path, err, errlen) && module_write(path, w, h, nchan, px, err, errlen);
+    pthread_once(&once, open_module);
+    if (!module_encode) {
+        snprintf(err, errlen, "%s", load_error);
+        return false;
+    }
+    unsigned char *bytes = NULL;
+    size_t len = 0;
+    bool ok = module_encode(path, w, h, nchan, px, &bytes, &len, err, errlen) &&
+              write_chunks(path, &(struct chunk){bytes, len}, 1, err, errlen);
+    free(bytes);
+    return ok;
 }
 
 bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err,

@@ -95,8 +95,7 @@ $(TECH_OUT)/tech.md: scenes/ajar/scene.json | deps $(BIN)/render $(BIN)/ch6_tech
 .PHONY: mmlt-ratio
 mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary.csv $(CH6_OUT)/ajar/summary.csv $(TECH_OUT)/tech.md
 	@mkdir -p results/mmlt-ratio
-	bash scripts/ch6-ratio.sh $(filter %summary.csv,$^) > results/mmlt-ratio/mmlt-ratio.md.tmp
-	mv -f results/mmlt-ratio/mmlt-ratio.md.tmp results/mmlt-ratio/mmlt-ratio.md
+	$(call TO_FILE,results/mmlt-ratio/mmlt-ratio.md,bash scripts/ch6-ratio.sh $(filter %summary.csv,$^))
 	@cat results/mmlt-ratio/mmlt-ratio.md $(TECH_OUT)/tech.md
 	@echo "per-technique images: $(TECH_OUT)/technique-images.png"
 
@@ -116,8 +115,7 @@ $(HYB_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/ren
 
 .PHONY: hybrid-study
 hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.csv
-	bash scripts/ch6-hybrid.sh $(filter %summary.csv,$^) > $(HYB_OUT)/hybrid-study.md.tmp
-	mv -f $(HYB_OUT)/hybrid-study.md.tmp $(HYB_OUT)/hybrid-study.md
+	$(call TO_FILE,$(HYB_OUT)/hybrid-study.md,bash scripts/ch6-hybrid.sh $(filter %summary.csv,$^))
 	@cat $(HYB_OUT)/hybrid-study.md
 
 # ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----

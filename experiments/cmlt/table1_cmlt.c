@@ -114,25 +114,11 @@ static void tprintf(struct text *t, const char *fmt, ...)
     }
 }
 
-static bool write_text_cb(const char *tmp, void *ctx, char *err, size_t errlen)
-{
-    const struct text *t = ctx;
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: %s", tmp, strerror(errno));
-        return false;
-    }
-    bool ok = fwrite(t->buf, 1, t->len, f) == t->len;
-    ok = (fclose(f) == 0) && ok;
-    if (!ok) snprintf(err, errlen, "%s: write failed", tmp);
-    return ok;
-}
-
 static void write_text(const char *path, struct text *t)
 {
     char err[512];
     if (!t->buf) tprintf(t, "%s", "");
-    if (!atomic_write(path, write_text_cb, t, err, sizeof err)) {
+    if (!write_text_atomic(path, t->buf, err, sizeof err)) {
         fprintf(stderr, "table1_cmlt: %s\n", err);
         exit(1);
     }

@@ -7,6 +7,7 @@
  * rows). A baseline row missing from the current file is a failure. Prints a per-row verdict table
  * (Markdown). Exit status: 0 no significant difference, 1 some difference or missing row, 2 bad input.
  * CSV: tools/stats_csv.h. */
+#include "base/util.h"
 #include "common/opts.h"
 #include "tools/stats_csv.h"
 #include <errno.h>
@@ -140,14 +141,10 @@ int main(int argc, char **argv)
     }
     OUT("\n%s: %d of %d rows differ significantly\n", fails ? "FAIL" : "PASS", fails, b.n);
     fputs(txt, stdout);
-    if (out) {
-        char tmp[4096];
-        snprintf(tmp, sizeof tmp, "%s.tmp", out);
-        FILE *f = fopen(tmp, "w");
-        if (!f || fwrite(txt, 1, len, f) != len || fclose(f) != 0 || rename(tmp, out) != 0) {
-            fprintf(stderr, "check_stats: cannot write %s\n", out);
-            return 2;
-        }
+    char err[4352];
+    if (out && !write_text_atomic(out, txt, err, sizeof err)) {
+        fprintf(stderr, "check_stats: %s\n", err); /* 2, as 1 means the statistics differ */
+        return 2;
     }
     free(txt);
     stats_table_free(&b);

@@ -381,9 +381,9 @@ int main(int argc, char **argv)
             scene_free(sc);
             return 2;
         }
-        ok = !dist_root() || img_write_exr_png(img, a.out, err, sizeof err);
+        ok = ctl.err[0] || !dist_root() || img_write_exr_png(img, a.out, err, sizeof err);
         partial = st.partial;
-        if (ok && dist_root())
+        if (ok && !ctl.err[0] && dist_root())
             printf("%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped\n",
                    partial ? "PARTIAL (interrupted) " : "", a.method, st.samples, st.spp, st.seconds, st.samples / st.seconds,
                    threads_note(a.mc.threads), st.nonfinite);
@@ -411,19 +411,21 @@ int main(int argc, char **argv)
             return a.resume ? 2 : 1;
         }
         partial = r.partial;
-        ok = !dist_root() || (img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
+        ok = ctl.err[0] || !dist_root() || (img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
                               (!r.angle || write_angle(&a, &r, err, sizeof err)) && (!r.tech || write_tech(&a, &r, err, sizeof err)));
-        if (ok && dist_root())
+        if (ok && !ctl.err[0] && dist_root())
             printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%s), %ld non-finite "
                    "dropped\n",
                    partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds,
                    threads_note(a.mlt.threads), r.nonfinite);
         mlt_result_free(&r);
     }
-    if (!ok) fprintf(stderr, "%s\n", err);
-    if (ctl.err[0]) fprintf(stderr, "render: warning: %s\n", ctl.err);
+    /* A checkpoint that could not be written stopped the run (ckpt_save_run): its line alone, and
+     * no outputs, which a full disk would refuse too. */
+    if (ctl.err[0]) fprintf(stderr, "render: %s\n", ctl.err);
+    else if (!ok) fprintf(stderr, "render: %s\n", err);
     else if (partial && ctl.written) fprintf(stderr, "render: interrupted; continue with --resume %s.ckpt\n", a.out);
     ckpt_buf_free(&resume);
     scene_free(sc);
-    return !ok ? 1 : partial ? 130 : 0;
+    return !ok || ctl.err[0] ? 1 : partial ? 130 : 0;
 }

@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -58,7 +59,7 @@ static pid_t start(const char *args, const char *extra)
         if (!freopen(p, "w", stderr)) _exit(99);
         if (stall_ms) {
             snprintf(p, sizeof p, "%d", stall_ms);
-            setenv("PSS_TEST_CKPT_STALL_MS", p, 1);
+            setenv("PSS_TEST_WRITE_STALL_MS", p, 1);
         }
         execv(argv[0], argv);
         _exit(98);
@@ -120,6 +121,23 @@ static void assert_same_stats(const char *a, const char *b)
     cr_assert(!lx && !ly, "%s and %s have different lengths", a, b);
 }
 
+/* The name of a temporary of DIR/run.ckpt (atomic_write's ".tmpPID-run.ckpt") into buf, or false. */
+static bool find_temporary(char *buf, size_t n)
+{
+    DIR *d = opendir(dir);
+    cr_assert(d);
+    bool found = false;
+    for (struct dirent *e; !found && (e = readdir(d));) {
+        size_t l = strlen(e->d_name);
+        if (!strncmp(e->d_name, ".tmp", 4) && l > 9 && !strcmp(e->d_name + l - 9, "-run.ckpt")) {
+            snprintf(buf, n, "%s/%s", dir, e->d_name);
+            found = true;
+        }
+    }
+    closedir(d);
+    return found;
+}
+
 /* Whether DIR/NAME is absent or a whole checkpoint: what a kill must leave. */
 static bool absent_or_intact(const char *name)
 {
@@ -135,8 +153,7 @@ static double reference_run(const char *args)
     char ref[2048], old[256];
     path_of(old, sizeof old, "run.ckpt");
     unlink(old);
-    path_of(old, sizeof old, "run.ckpt.tmp");
-    unlink(old);
+    while (find_temporary(old, sizeof old)) unlink(old);
     snprintf(ref, sizeof ref, "%s --out %s/ref", args, dir);
     double t0 = now();
     cr_assert_eq(finish(start(ref, "")), 0);
@@ -151,7 +168,8 @@ static void complete_and_compare(const char *run, const char *resume, bool mcmc)
     int st = finish(start(run, exists("run.ckpt") ? resume : ""));
     read_text("stderr", err, sizeof err);
     cr_assert_eq(st, 0, "%s", err);
-    cr_assert(!exists("run.ckpt.tmp"), "a completed run left its checkpoint's temporary");
+    char tmp[512];
+    cr_assert(!find_temporary(tmp, sizeof tmp), "a completed run left a temporary of its checkpoint: %s", tmp);
     assert_same_pixels("ref.exr", "run.exr");
     if (mcmc) assert_same_stats("ref.csv", "run.csv");
 }
@@ -230,28 +248,33 @@ Test(checkpoint, sigkill_and_resume_is_bit_identical_other_mcmc, .timeout = 600)
 }
 
 /* SIGKILL in the middle of a checkpoint write, three times per method: every write pauses 150 ms
- * halfway through its payload (PSS_TEST_CKPT_STALL_MS), and the kill comes 30 ms after the
- * temporary of a start's second write has appeared. The previous checkpoint must then be whole (or absent before the first), the torn
- * temporary must not pass for one, and the resumed run, which finds the torn temporary beside the
- * checkpoint, must overwrite it and end bit-identical. */
+ * halfway through its payload (PSS_TEST_WRITE_STALL_MS), and the kill comes 30 ms after the
+ * temporary of a start's second write has appeared. The previous checkpoint must then be whole (or
+ * absent before the first) and the torn temporary must not pass for one; the last, unstalled run
+ * finds the torn temporaries of the killed processes beside the checkpoint, must remove them and
+ * end bit-identical. */
 static void kills_during_writes(const char *args, bool mcmc)
 {
-    char run[2048], resume[2048], tmp[256];
+    char run[2048], resume[2048], tmp[1024], seen[3][1024];
     reference_run(args);
     snprintf(run, sizeof run, "%s --out %s/run --checkpoint 0.1", args, dir);
     snprintf(resume, sizeof resume, "--resume %s/run.ckpt", dir);
-    path_of(tmp, sizeof tmp, "run.ckpt.tmp");
     stall_ms = 150;
     for (int i = 0; i < 3; i++) {
-        unlink(tmp); /* so that the next one to appear is this start's */
+        /* hide the previous kills' temporaries, so that the next one to appear is this start's */
+        for (int k = 0; k < i; k++) {
+            char hidden[1100];
+            snprintf(hidden, sizeof hidden, "%.1000s.hidden", seen[k]);
+            rename(seen[k], hidden);
+        }
         pid_t pid = start(run, exists("run.ckpt") ? resume : "");
         /* one write completes (its temporary appears, then is renamed away), so that each start
          * makes progress; the kill lands in the next */
         for (int phase = 0; phase < 3; phase++) {
             bool want = phase != 1;
             double t0 = now();
-            while ((access(tmp, F_OK) == 0) != want && now() - t0 < 60) usleep(2000);
-            cr_assert((access(tmp, F_OK) == 0) == want, "%s: checkpoint writes stopped (phase %d)", args, phase);
+            while (find_temporary(tmp, sizeof tmp) != want && now() - t0 < 60) usleep(2000);
+            cr_assert(find_temporary(tmp, sizeof tmp) == want, "%s: checkpoint writes stopped (phase %d)", args, phase);
         }
         usleep(30000); /* well inside the 150 ms pause */
         kill(pid, SIGKILL);
@@ -259,6 +282,12 @@ static void kills_during_writes(const char *args, bool mcmc)
         kill_points++;
         cr_assert(absent_or_intact("run.ckpt"), "%s: a kill during a write tore the checkpoint", args);
         cr_assert(!ckpt_file_intact(tmp), "%s: the half-written temporary passes for a checkpoint", args);
+        snprintf(seen[i], sizeof seen[i], "%s", tmp);
+        for (int k = 0; k < i; k++) {
+            char hidden[1100];
+            snprintf(hidden, sizeof hidden, "%.1000s.hidden", seen[k]);
+            rename(hidden, seen[k]);
+        }
     }
     stall_ms = 0;
     complete_and_compare(run, resume, mcmc);
