@@ -24,6 +24,7 @@
  * and drops only itself, as in BDPT (the twin test compares the two sample by sample). */
 static inline void add_term(rgb *sum, rgb v, struct nonfinite *nf, int k)
 {
+    v = nonfinite_inject(v);
     if (vfinite(v)) *sum = vadd(*sum, v);
     else nf->len[k]++;
 }

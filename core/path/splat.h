@@ -46,6 +46,14 @@ static inline void nonfinite_add(struct nonfinite *dst, const struct nonfinite *
     for (int k = 0; k <= MAX_PATH_LENGTH; k++) dst->len[k] += src->len[k];
 }
 
+/* Tests only: n > 0 makes every n-th non-zero contribution a thread computes (connect_st, the path
+ * tracer's terms) non-finite in one channel, alternately NaN and +Inf, so that a test can see the
+ * guards catch what no committed scene produces. bin/render sets it from PSS_INJECT_NONFINITE at
+ * start; 0 otherwise, which costs one predictable branch per contribution. */
+extern long nonfinite_inject_every;
+rgb nonfinite_injected(rgb v);
+static inline rgb nonfinite_inject(rgb v) { return nonfinite_inject_every > 0 && !vzero(v) ? nonfinite_injected(v) : v; }
+
 /* The one door to the image for every estimator: a NaN or infinite colour would poison the pixel
  * and, through the merge, the whole image's mean, so it is counted in *dropped instead. */
 static inline void splat_finite(struct image *img, double px, double py, rgb c, long *dropped)

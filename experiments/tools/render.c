@@ -347,6 +347,8 @@ int main(int argc, char **argv)
     struct pss_opts cli_pss;
     parse(argc, argv, &a);
     cli_pss = a.mlt.pss;
+    const char *inject = getenv("PSS_INJECT_NONFINITE"); /* tests only (path/splat.h) */
+    if (inject) nonfinite_inject_every = atol(inject);
     opts_require_image_output("render");
     char err[1024];
     struct scene *sc = scene_load(a.scene, err, sizeof err);
