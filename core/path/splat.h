@@ -52,7 +52,7 @@ static inline void nonfinite_add(struct nonfinite *dst, const struct nonfinite *
  * start; 0 otherwise, which costs one predictable branch per contribution. */
 extern long nonfinite_inject_every;
 rgb nonfinite_injected(rgb v);
-static inline rgb nonfinite_inject(rgb v) { return nonfinite_inject_every > 0 && !vzero(v) ? nonfinite_injected(v) : v; }
+static inline rgb nonfinite_inject(rgb v) { return __builtin_expect(nonfinite_inject_every > 0, 0) ? nonfinite_injected(v) : v; }
 
 /* The one door to the image for every estimator: a NaN or infinite colour would poison the pixel
  * and, through the merge, the whole image's mean, so it is counted in *dropped instead. */
