@@ -22,7 +22,7 @@ void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w
             if (pc->only_t > 0) c.w = 1;
             rgb v = vscale(c.f, c.w);
             if (!vfinite(v)) {
-                w->nonfinite++;
+                w->nf.len[k]++;
                 continue;
             }
             if (t == 1) splat_push(out, c.px, c.py, v);
@@ -35,5 +35,6 @@ void bdpt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w
 {
     struct splat_list l;
     bdpt_splats(pc, s, w, &l);
-    for (int i = 0; i < l.n; i++) img_splat(img, l.s[i].px, l.s[i].py, l.s[i].c);
+    /* only the camera-pixel sum can be non-finite here: its terms were checked one by one */
+    for (int i = 0; i < l.n; i++) splat_finite(img, l.s[i].px, l.s[i].py, l.s[i].c, &w->nf.len[0]);
 }

@@ -11,7 +11,7 @@
 /* Per-thread scratch: subpath arrays allocated once, never in the sample loop. */
 struct scratch {
     struct vertex cam[MAX_SUBPATH_VERTS], emi[MAX_SUBPATH_VERTS];
-    long nonfinite; /* contributions dropped because they were NaN or infinite */
+    struct nonfinite nf; /* contributions dropped because they were NaN or infinite */
     int nz, ny;     /* vertex counts of the subpaths bdpt_splats last walked (per-technique images) */
 };
 
@@ -19,8 +19,5 @@ void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, 
 /* BDPT's contributions of one sample: t = 1 splats, then the sum of t >= 2 at z_0's pixel. */
 void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct splat_list *out);
 void bdpt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct image *img);
-
-/* Adds c to the image at raster (px, py) unless it is not finite (then counts it). */
-void splat_checked(struct image *img, struct scratch *w, double px, double py, rgb c);
 
 #endif

@@ -20,13 +20,13 @@
 #include "emitter/emitter.h"
 #include "mc/integrator.h"
 
-void splat_checked(struct image *img, struct scratch *w, double px, double py, rgb c)
+/* Each technique's term is checked on its own, so that a non-finite one is counted at its length
+ * and drops only itself, as in BDPT (the twin test compares the two sample by sample). */
+static inline void add_term(rgb *sum, rgb v, struct nonfinite *nf, int k)
 {
-    if (!vfinite(c)) {
-        w->nonfinite++;
-        return;
-    }
-    img_splat(img, px, py, c);
+    v = nonfinite_inject(v);
+    if (vfinite(v)) *sum = vadd(*sum, v);
+    else nf->len[k]++;
 }
 
 struct pt_vertex {
@@ -60,52 +60,51 @@ static rgb emission_hit(const struct scene *sc, const struct pt_vertex *z)
     return vscale(f, pb / (pb + pl));
 }
 
-/* Adds the MIS-weighted light sample at z, whose BSDF's operations are ops, to *sum (numbers from
- * the current emitter-stream block).
+/* The MIS-weighted light sample at z, whose BSDF's operations are ops (numbers from the current
+ * emitter-stream block).
  * Contribution times weight, f G / p_light * p_light / (p_light + p_bsdf), is
  * f G / (p_light + p_bsdf): one division instead of three. */
-static void light_sample(const struct scene *sc, struct sampler *s, const struct pt_vertex *z,
-                         const struct bsdf_ops *ops, rgb *sum)
+static rgb light_sample(const struct scene *sc, struct sampler *s, const struct pt_vertex *z,
+                        const struct bsdf_ops *ops)
 {
     double pick;
     int prim = emitter_pick(sc, s, &pick);
-    if (prim < 0) return;
+    if (prim < 0) return v3s(0);
     const struct vertex *v = &z->v;
     if (prim == sc->env_prim) {
         vec3 d;
         double pdf;
-        if (!env_sample_dir(sc, s, &d, &pdf) || !(pdf > 0)) return;
+        if (!env_sample_dir(sc, s, &d, &pdf) || !(pdf > 0)) return v3s(0);
         /* BDPT's environment vertex draws a point of the origin disc next; the path tracer needs
          * none but skips the numbers so that later blocks line up with it. */
         sampler_next(s, DIM_CONTINUOUS);
         sampler_next(s, DIM_CONTINUOUS);
         vec3 wo = frame_to_local(&v->sh, d);
         rgb f = vmul(vmul(env_radiance(sc, d), ops->eval(&v->bc, z->wi, wo, TRANSPORT_RADIANCE)), z->beta);
-        if (vzero(f) || accel_occluded(sc->accel, v->p, d, z->eps, INFINITY)) return;
+        if (vzero(f) || accel_occluded(sc->accel, v->p, d, z->eps, INFINITY)) return v3s(0);
         double pb = ops->pdf(&v->bc, z->wi, wo);
-        *sum = vmad(*sum, f, fabs(wo.z) / (pick * pdf + pb));
-        return;
+        return vscale(f, fabs(wo.z) / (pick * pdf + pb));
     }
     struct emitter_pos pos;
-    if (!emitter_sample_pos(sc, prim, s, &pos) || !(pos.pdf > 0)) return;
+    if (!emitter_sample_pos(sc, prim, s, &pos) || !(pos.pdf > 0)) return v3s(0);
     vec3 d = vsub(v->p, pos.p); /* from the light toward z, as visible() traces it */
     double dist2 = vlen2(d);
-    if (dist2 == 0) return;
+    if (dist2 == 0) return v3s(0);
     /* emitter_radiance looks only at the side d leaves on: no need to wait for the normalisation,
      * and points behind the light skip it. */
     rgb le = emitter_radiance(sc, prim, pos.n, d);
-    if (vzero(le)) return;
+    if (vzero(le)) return v3s(0);
     double dist = sqrt(dist2);
     d = vscale(d, 1.0 / dist);
     vec3 wo = frame_to_local(&v->sh, vneg(d));
     rgb f = vmul(vmul(le, ops->eval(&v->bc, z->wi, wo, TRANSPORT_RADIANCE)), z->beta);
-    if (vzero(f)) return;
+    if (vzero(f)) return v3s(0);
     double ey = ray_eps(pos.p);
-    if (dist > ey + z->eps && accel_occluded(sc->accel, pos.p, d, ey, dist - z->eps)) return;
+    if (dist > ey + z->eps && accel_occluded(sc->accel, pos.p, d, ey, dist - z->eps)) return v3s(0);
     /* Both densities as area densities at the light, times dist2. */
     double cos_y = fabs(vdot(pos.n, d));
     double pb = ops->pdf(&v->bc, z->wi, wo) * cos_y;
-    *sum = vmad(*sum, f, cos_y * fabs(wo.z) / (pick * pos.pdf * dist2 + pb));
+    return vscale(f, cos_y * fabs(wo.z) / (pick * pos.pdf * dist2 + pb));
 }
 
 void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct image *img)
@@ -124,13 +123,13 @@ void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, 
             if (sc->env_prim >= 0) {
                 z.v.kind = VK_ENV;
                 z.v.wi = vneg(d);
-                if (i >= pc->min_length) sum = vadd(sum, emission_hit(sc, &z));
+                if (i >= pc->min_length) add_term(&sum, emission_hit(sc, &z), &w->nf, i);
             }
             break;
         }
         surface_from_hit(sc, o, d, &h, &z.v);
         z.dist2 = vlen2(vsub(z.v.p, o));
-        if (i >= pc->min_length) sum = vadd(sum, emission_hit(sc, &z)); /* a path of i segments */
+        if (i >= pc->min_length) add_term(&sum, emission_hit(sc, &z), &w->nf, i); /* a path of i segments */
         /* The last vertex takes no light sample (it would exceed max_length). */
         if (!z.v.bc.b || i + 1 >= max_verts) break;
         const struct bsdf_ops *ops = bsdf_ops_for(z.v.bc.b->type);
@@ -138,7 +137,7 @@ void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, 
         z.eps = ray_eps(z.v.p);
         if (!ops->delta_only && i + 1 >= pc->min_length) {
             sampler_begin(s, STREAM_EMITTER, i);
-            light_sample(sc, s, &z, ops, &sum);
+            add_term(&sum, light_sample(sc, s, &z, ops), &w->nf, i + 1);
         }
         sampler_begin(s, STREAM_CAMERA, i);
         struct bsdf_sample bs;
@@ -154,5 +153,5 @@ void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, 
         z.pdf_sa = bs.pdf;
         z.after_delta = bs.delta;
     }
-    splat_checked(img, w, px, py, sum);
+    splat_finite(img, px, py, sum, &w->nf.len[0]);
 }

@@ -50,7 +50,8 @@ struct job {
     const struct scene *sc;
     const struct render_opts *o;
     struct image **img;
-    long *nonfinite, *samples;
+    struct nonfinite *nf; /* per thread */
+    long *samples;
     struct progress prog;
     int first, count; /* samples first .. first + count - 1 of every pixel */
     uint64_t key;     /* sample i of film cell c draws from stream c * key + i */
@@ -76,7 +77,7 @@ static void save_thread(struct ckpt_buf *b, const struct job *j, int tid, struct
     b->len = 0;
     CKPT_PUT(b, at);
     CKPT_PUT(b, j->samples[tid]);
-    CKPT_PUT(b, j->nonfinite[tid]);
+    CKPT_PUT(b, j->nf[tid]);
     ckpt_put_image(b, j->img[tid]);
 }
 
@@ -86,7 +87,7 @@ static bool load_thread(struct ckpt_buf *b, struct job *j, int tid, struct mc_po
 {
     CKPT_GET(b, *at);
     CKPT_GET(b, j->samples[tid]);
-    CKPT_GET(b, j->nonfinite[tid]);
+    CKPT_GET(b, j->nf[tid]);
     ckpt_get_image(b, j->img[tid]);
     int y0 = j->g0 + tid;
     bool pos_ok = at->y >= y0 && (at->y - y0) % j->stride == 0 && at->y <= H + j->stride && at->x >= 0 && at->x <= W &&
@@ -136,7 +137,7 @@ static void worker(int tid, void *p)
     bool bad = j->resume && !load_thread(&j->resume[tid], j, tid, &at, W, H);
     if (bad) atomic_store(&j->resume_bad, true);
     long done = j->samples[tid];
-    w->nonfinite = j->nonfinite[tid];
+    w->nf = j->nf[tid];
     if (o->seconds <= 0) progress_add(&j->prog, (at.y - j->g0 - tid) / j->stride);
     do {
         /* Ctrl-C is honoured within a pixel (every 4096 samples), not only between rows: a row of
@@ -156,7 +157,7 @@ static void worker(int tid, void *p)
                 at.i = j->first;
                 if (sync && o->seconds <= 0 && ckpt_sync_poll(sync)) {
                     j->samples[tid] = done;
-                    j->nonfinite[tid] = w->nonfinite;
+                    j->nf[tid] = w->nf;
                     save_thread(&sync->slot[tid], j, tid, at);
                     ckpt_sync_arrive(sync);
                 }
@@ -167,7 +168,7 @@ static void worker(int tid, void *p)
         }
     stopped:
         j->samples[tid] = done;
-        j->nonfinite[tid] = w->nonfinite;
+        j->nf[tid] = w->nf;
         /* every thread meets the others after a pass, interrupted or not; an interrupted pass
          * ends the run, and `at` keeps where this thread stopped in it */
         if (o->seconds <= 0 || !pass_barrier_arrive(&j->passes)) break;
@@ -211,7 +212,7 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     struct render_opts opts = *o;
     opts.threads = T;
     struct job j = {.sc = sc, .o = &opts, .img = xcalloc((size_t)T, sizeof(struct image *)),
-                    .nonfinite = xcalloc((size_t)T, sizeof(long)), .samples = xcalloc((size_t)T, sizeof(long)),
+                    .nf = xcalloc((size_t)T, sizeof(struct nonfinite)), .samples = xcalloc((size_t)T, sizeof(long)),
                     .g0 = dist_thread0(T), .stride = dist_size() * T};
     for (int i = 0; i < T; i++) {
         j.img[i] = img_create(W, H);
@@ -262,21 +263,25 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     struct image *out = img_create(W, H);
     merge_thread_results(&(struct thread_results){.threads = T, .img = j.img, .scale = 1.0 / spp}, out);
     /* over the job's threads: integers, exact in any order */
-    long counts[4] = {0, 0, interrupted(), atomic_load(&j.resume_bad)};
+    struct {
+        long samples, interrupted, resume_bad;
+        struct nonfinite nf;
+    } counts = {0, interrupted(), atomic_load(&j.resume_bad), {{0}}};
     for (int i = 0; i < T; i++) {
-        counts[0] += j.nonfinite[i];
-        counts[1] += j.samples[i];
+        nonfinite_add(&counts.nf, &j.nf[i]);
+        counts.samples += j.samples[i];
         img_destroy(j.img[i]);
     }
-    dist_sum_longs(counts, 4);
-    st->nonfinite = counts[0];
-    st->samples = counts[1];
-    st->resume_failed = counts[3] > 0;
+    dist_sum_longs((long *)&counts, sizeof counts / sizeof(long));
+    st->nonfinite_len = counts.nf;
+    st->nonfinite = nonfinite_total(&counts.nf);
+    st->samples = counts.samples;
+    st->resume_failed = counts.resume_bad > 0;
     st->seconds = budget_seconds(o->cpu_time, T) - j.t0;
     st->spp = spp;
-    st->partial = counts[2] > 0;
+    st->partial = counts.interrupted > 0;
     free(j.img);
-    free(j.nonfinite);
+    free(j.nf);
     free(j.samples);
     return out;
 }

@@ -13,6 +13,7 @@
 
 #include "io/checkpoint.h"
 #include "io/image.h"
+#include "path/splat.h"
 #include "scene/scene.h"
 #include <stdint.h>
 
@@ -39,7 +40,8 @@ struct render_stats {
     long samples;
     int spp;      /* samples per pixel taken (the passes of a time-budgeted run) */
     double seconds;
-    long nonfinite;
+    long nonfinite;               /* samples' contributions dropped as NaN or infinite */
+    struct nonfinite nonfinite_len; /* the same by path length (path/splat.h) */
     bool partial; /* interrupted: rows not reached (in the last pass, under a time budget) lack samples */
     bool resume_failed; /* the checkpoint's state did not fit this run: nothing was rendered */
 };

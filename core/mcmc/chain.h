@@ -24,6 +24,8 @@ struct chain {
     bool xsum_valid;
     struct ctrl_path *path; /* controlled steps and angle statistics: the current subpaths */
     struct mmlt_path *x;    /* PITP: the current path in its technique's form (swapped with a spare on accept) */
+    long *dropped;          /* where its weighted splats that come out non-finite are counted (a
+                             * tiny target's weight can overflow): its length's cell, PSSMLT's [0] */
 };
 
 /* Everything one worker thread carries from one iteration to the next. Scratch buffers (walks,
@@ -34,7 +36,7 @@ struct mlt_thread {
     int nk;
     rng *r;            /* length selection, step kind, acceptance */
     long *n;           /* iterations done */
-    long *nonfinite;
+    struct nonfinite *nonfinite;
     struct mlt_stats *st;
     long *ctrl_fail;   /* [2]: forward, reverse */
     struct image *img;

@@ -26,7 +26,7 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
     *wk = (struct worker){.j = j, .o = o, .tid = tid, .g = j->g0 + tid};
     wk->pc = (struct path_ctx){.sc = j->sc, .max_length = o->max_length, .min_length = o->min_length, .max_heuristic = o->max_heuristic};
     wk->w = xmalloc(sizeof *wk->w);
-    wk->w->nonfinite = 0;
+    wk->w->nf = (struct nonfinite){{0}};
     wk->ch = xcalloc((size_t)j->nk, sizeof *wk->ch);
     wk->mb = xmalloc(sizeof *wk->mb);
     wk->st = &j->stats[tid];
@@ -42,7 +42,7 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
     rng_seed(&wk->r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)wk->g); /* streams and budgets are the job's global thread's */
     wk->track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     wk->cs = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *wk->cs) : NULL;
-    wk->ts = (struct mlt_thread){wk->ch, j->nk, &wk->r, &wk->n, &wk->w->nonfinite, wk->st, wk->ctrl_fail, wk->img, wk->angle, wk->ta};
+    wk->ts = (struct mlt_thread){wk->ch, j->nk, &wk->r, &wk->n, &wk->w->nf, wk->st, wk->ctrl_fail, wk->img, wk->angle, wk->ta};
 }
 
 /* Every chain from a seed sample (seed_pass.c), or set up for the state a checkpoint left it in. */
@@ -53,6 +53,7 @@ static void chains_start(struct worker *wk)
         struct chain *c = &wk->ch[kk];
         c->k = kk + 1;
         c->scale = j->scale[kk];
+        c->dropped = &wk->w->nf.len[wk->multiplexed ? c->k : 0];
         if (!j->resume) {
             if (j->cdf[kk]) chain_start(wk, c, kk);
             continue;
@@ -84,7 +85,7 @@ static void pitp_perturbation(struct worker *wk, struct chain *c)
     double pa;
     struct connection cn;
     bool c_new;
-    enum pitp_outcome po = pitp_perturb(&wk->pc, &c->pss, c->x, wk->ps, rng_uniform(&wk->r), &sj, &pa, &cn, &c_new);
+    enum pitp_outcome po = pitp_perturb(&wk->pc, &c->pss, c->x, wk->ps, rng_uniform(&wk->r), &sj, &pa, &cn, &c_new, &wk->w->nf);
     int dt = abs(sj - c->x->s);
     if (po == PITP_MOVED) {
         dt = abs(c->k + 1 - sj - c->tech);
@@ -218,7 +219,7 @@ static void worker_finish(struct worker *wk)
     }
     free(wk->cs);
     j->done[wk->tid] = wk->n;
-    wk->st->nonfinite += wk->w->nonfinite;
+    nonfinite_add(&wk->st->nonfinite, &wk->w->nf);
     free(wk->ps);
     free(wk->spare);
     free(wk->mb);

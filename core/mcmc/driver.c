@@ -192,7 +192,7 @@ static void merge_results(struct run_job *rj, const struct scene *sc, struct mlt
         r->tech = tech_acc_reduce(rj->tech, T, scale); /* frees the per-thread ones */
         rj->tech = NULL;
     }
-    r->nonfinite = r->stats.nonfinite;
+    r->nonfinite = nonfinite_total(&r->stats.nonfinite);
 }
 
 bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_result *r, char *err, size_t errlen)

@@ -31,7 +31,7 @@ static double all_techniques(const struct path_ctx *pc, struct sampler *s, struc
         if (nz < t || ny < sv || !connect_st(pc, w->emi, sv, w->cam, t, k, &c, NULL)) continue;
         rgb v = mmlt_contribution(&c, k);
         if (!vfinite(v)) {
-            w->nonfinite++;
+            w->nf.len[k]++;
             continue;
         }
         splat_push(&sp[t], c.px, c.py, v);
@@ -67,7 +67,7 @@ double mctls_step(const struct path_ctx *pc, struct chain *c, struct scratch *w,
     int j = ysum > 0 ? pick_weighted(b->pi + 1, k + 1, rng_uniform(r)) + 1 : 0;
     double a = mctls_accept(ysum, c->xsum);
     /* expected values (splat_ev.h); a trial with a target whenever any has one */
-    if (ysum > 0) splat_list_weighted(img, &b->sp[j], a * c->scale / b->pi[j]);
+    if (ysum > 0) splat_list_weighted(img, &b->sp[j], a * c->scale / b->pi[j], c->dropped);
     owe_current(c, a);
     *nonzero = ysum > 0;
     *acc = ysum > 0 && rng_uniform(r) < a;

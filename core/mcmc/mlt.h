@@ -83,7 +83,7 @@ struct mlt_result {
     double b_k[MAX_PATH_LENGTH + 1];
     long mutations;
     double seconds, seed_seconds;
-    long nonfinite;
+    long nonfinite;        /* contributions dropped as NaN or infinite; by length in stats.nonfinite */
     bool partial;          /* interrupted: fewer mutations than asked (the image stays unbiased) */
     struct angle_acc *angle; /* with angle_stats */
     long ctrl_fail_forward, ctrl_fail_reverse; /* controlled steps: impossible inversions */

@@ -86,7 +86,7 @@ static inline double eval_state(enum mlt_method m, const struct path_ctx *pc, st
         *complete = false;
         return pssmlt_eval_state(pc, s, w, out);
     }
-    double f = mmlt_eval_state(pc, s, k, x, out, &w->nonfinite);
+    double f = mmlt_eval_state(pc, s, k, x, out, &w->nf);
     *tech = x->t;
     *complete = x->complete;
     return f;

@@ -26,14 +26,14 @@ bool mmlt_eval(const struct path_ctx *pc, struct sampler *s, int k, struct mmlt_
 }
 
 double mmlt_eval_state(const struct path_ctx *pc, struct sampler *s, int k, struct mmlt_path *x, struct splat_list *out,
-                       long *nonfinite)
+                       struct nonfinite *nf)
 {
     struct connection c;
     out->n = 0;
     if (mmlt_eval(pc, s, k, x, &c)) {
         rgb v = mmlt_contribution(&c, k);
         if (vfinite(v)) splat_push(out, c.px, c.py, v);
-        else (*nonfinite)++;
+        else nf->len[k]++;
     }
     double f = splat_luminance(out);
     return isfinite(f) && f > 0 ? f : 0;

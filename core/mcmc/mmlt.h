@@ -43,9 +43,9 @@ bool mmlt_eval(const struct path_ctx *pc, struct sampler *s, int k, struct mmlt_
 static inline rgb mmlt_contribution(const struct connection *c, int k) { return vscale(c->f, c->w * (k + 1)); }
 
 /* The state as the chains use it: mmlt_eval, its splat (none without a contribution; a non-finite
- * one is dropped and counted in *nonfinite) into out, and the scalar target (its luminance; 0 for
+ * one is dropped and counted in nf->len[k]) into out, and the scalar target (its luminance; 0 for
  * none). */
 double mmlt_eval_state(const struct path_ctx *pc, struct sampler *s, int k, struct mmlt_path *x, struct splat_list *out,
-                       long *nonfinite);
+                       struct nonfinite *nf);
 
 #endif

@@ -209,7 +209,7 @@ static double f_ratio(const struct mmlt_path *x, int sj)
 
 enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct mmlt_path *x,
                                struct pitp_scratch *w, double u_pick, int *j, double *a,
-                               struct connection *c, bool *c_new)
+                               struct connection *c, bool *c_new, struct nonfinite *nf)
 {
     int k = x->k, si = x->s;
     int sj = pick_weighted(x->ratios, k + 1, u_pick); /* w_j = ratio_j / sum of ratios (Eq. 5.22-5.25) */
@@ -254,6 +254,8 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
         const struct vertex *ye = to_emitter ? grow : shrink, *yc = to_emitter ? shrink : grow;
         double f = 0;
         if (connect_st(pc, ye, sj, yc, tj, k, c, w->ratios)) f = luminance(mmlt_contribution(c, k));
+        /* every channel weighs in the luminance: it is finite only when the colour is */
+        if (!isfinite(f)) nf->len[k]++;
         *c_new = isfinite(f) && f > 0;
         if (!*c_new) ok = false; /* the retraced connection lost the path (occluded in float) */
     }

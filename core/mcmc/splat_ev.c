@@ -1,15 +1,15 @@
 /* Expected-value splatting of the current and proposed states (see splat_ev.h). */
 #include "mcmc/splat_ev.h"
 
-void splat_list_weighted(struct image *img, const struct splat_list *l, double wgt)
+void splat_list_weighted(struct image *img, const struct splat_list *l, double wgt, long *dropped)
 {
     if (wgt <= 0) return;
-    for (int i = 0; i < l->n; i++) img_splat(img, l->s[i].px, l->s[i].py, vscale(l->s[i].c, wgt));
+    for (int i = 0; i < l->n; i++) splat_finite(img, l->s[i].px, l->s[i].py, vscale(l->s[i].c, wgt), dropped);
 }
 
 void splat_ev(struct image *img, struct chain *c, const struct splat_list *l, double f, double a)
 {
-    if (f > 0) splat_list_weighted(img, l, a * c->scale / f);
+    if (f > 0) splat_list_weighted(img, l, a * c->scale / f, c->dropped);
     owe_current(c, a);
 }
 
@@ -20,7 +20,7 @@ void owe_current(struct chain *c, double a)
 
 void pay_current(struct image *img, struct chain *c)
 {
-    if (c->f > 0) splat_list_weighted(img, &c->cur, c->pending * c->scale / c->f);
+    if (c->f > 0) splat_list_weighted(img, &c->cur, c->pending * c->scale / c->f, c->dropped);
     c->pending = 0;
 }
 

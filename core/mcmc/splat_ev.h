@@ -9,8 +9,9 @@
 #include "io/image.h"
 #include "mcmc/chain.h"
 
-/* Every splat of l, its colour times wgt (nothing when wgt <= 0). */
-void splat_list_weighted(struct image *img, const struct splat_list *l, double wgt);
+/* Every splat of l, its colour times wgt (nothing when wgt <= 0); a non-finite product is counted
+ * in *dropped instead. */
+void splat_list_weighted(struct image *img, const struct splat_list *l, double wgt, long *dropped);
 /* One proposal (splats l, target f; f = 0: nothing to splat) decided with acceptance probability a:
  * the proposal's share now, the current state's owed. */
 void splat_ev(struct image *img, struct chain *c, const struct splat_list *l, double f, double a);

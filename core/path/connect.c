@@ -1,5 +1,6 @@
 /* Joining subpaths: contributions and the density bookkeeping at the connection. */
 #include "path/connect.h"
+#include "path/splat.h"
 #include "camera/camera.h"
 #include "emitter/emitter.h"
 
@@ -124,5 +125,6 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     double *rat = ratios ? ratios : r;
     out->w = mis_weights(&m, s, max_s, rat);
     if (pc->max_heuristic) out->w = mis_max_weight(rat, m.k, s);
+    out->f = nonfinite_inject(out->f);
     return true;
 }

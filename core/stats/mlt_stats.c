@@ -74,7 +74,7 @@ void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src)
         }
         cell_merge(&dst->total[k], &src->total[k]);
     }
-    dst->nonfinite += src->nonfinite;
+    nonfinite_add(&dst->nonfinite, &src->nonfinite);
 }
 
 double cell_mean(const struct accept_cell *c) { return c->attempts ? c->sum_a / c->attempts : NAN; }

@@ -3,6 +3,7 @@
 #ifndef MLT_STATS_H
 #define MLT_STATS_H
 
+#include "path/splat.h"
 #include "sampler/sampler.h"
 #include <stdbool.h>
 #include <stdio.h>
@@ -32,7 +33,7 @@ struct mlt_stats {
     struct accept_cell cell[PROPOSAL_KINDS][STATS_LENGTHS][2];
     struct accept_cell any[PROPOSAL_KINDS][STATS_LENGTHS];
     struct accept_cell total[PROPOSAL_KINDS];
-    long nonfinite;
+    struct nonfinite nonfinite; /* by length, as the rows (path/splat.h) */
 };
 
 void stats_clear(struct mlt_stats *s);

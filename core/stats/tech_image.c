@@ -71,7 +71,11 @@ void tech_acc_eval(struct tech_acc *a, int chain_k, const struct tech_split *sp,
 static void splat_split(struct tech_acc *a, const struct tech_split *sp, double wgt)
 {
     for (int t = 1; t <= a->k + 1; t++)
-        if (sp->on[t]) img_splat(a->contrib[t], sp->s[t].px, sp->s[t].py, vscale(sp->s[t].c, wgt));
+        if (sp->on[t]) {
+            /* the state's own splat with this weight was counted if non-finite: refuse, not count */
+            rgb v = vscale(sp->s[t].c, wgt);
+            if (vfinite(v)) img_splat(a->contrib[t], sp->s[t].px, sp->s[t].py, v);
+        }
 }
 
 void tech_acc_step(struct tech_acc *a, double acc_prob, bool accepted, double f, double f_cur, double scale)

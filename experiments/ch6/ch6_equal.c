@@ -89,6 +89,7 @@ static double csv_nonzero(const char *text, const char *kind)
     for (const char *l = text; l && *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : NULL) {
         char m[32], k[32], len[32], tc[32];
         double a, ma, se, af, n;
+        if (*l == '#') continue; /* metadata, some of it comma-separated numbers (# nonfinite_by_length) */
         if (sscanf(l, "%31[^,],%31[^,],%31[^,],%31[^,],%lf,%lf,%lf,%lf,%lf", m, k, len, tc, &a, &ma, &se, &af, &n) != 9) continue;
         if (strcmp(len, "total") || (kind && strcmp(k, kind))) continue;
         att += a;

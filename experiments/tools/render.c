@@ -265,6 +265,9 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     csv_meta(f, "seed_seconds", "%.3f", r->seed_seconds);
     csv_meta(f, "mutations_per_second", "%.0f", r->mutations / r->seconds);
     csv_meta(f, "nonfinite", "%ld", r->nonfinite);
+    fputs("# nonfinite_by_length ", f); /* lengths 0..max_length; 0: sums over lengths (path/splat.h) */
+    for (int k = 0; k <= m->max_length; k++) fprintf(f, k ? ",%ld" : "%ld", r->stats.nonfinite.len[k]);
+    fputc('\n', f);
     if (m->method == MLT_PITP) {
         const struct accept_cell *pc = &r->stats.total[PROPOSAL_PITP];
         csv_meta(f, "pitp_perturbations", "%ld", pc->attempts);
@@ -303,6 +306,29 @@ static void options_text(const struct args *a, const struct scene *sc, char *buf
     }
 }
 
+/* " (length 3: 10, length 4: 2)" for the lengths with a count, "" for none; length 0 holds sums
+ * over lengths (path/splat.h). */
+static const char *nonfinite_note(const struct nonfinite *nf)
+{
+    static char s[2048];
+    size_t n = 0;
+    s[0] = 0;
+    for (int k = 0; k <= MAX_PATH_LENGTH && n < sizeof s; k++)
+        if (nf->len[k])
+            n += (size_t)(k ? snprintf(s + n, sizeof s - n, "%slength %d: %ld", n ? ", " : " (", k, nf->len[k])
+                            : snprintf(s + n, sizeof s - n, " (summed lengths: %ld", nf->len[k]));
+    if (n && n < sizeof s) snprintf(s + n, sizeof s - n, ")");
+    return s;
+}
+
+/* Printed once per run when anything was dropped: a count in the summary line is easy to miss. */
+static void warn_nonfinite(long total, const struct nonfinite *nf)
+{
+    if (total > 0)
+        fprintf(stderr, "render: warning: %ld non-finite samples dropped%s; the scene has degenerate geometry or parameters\n",
+                total, nonfinite_note(nf));
+}
+
 /* "(4 threads)", or under MPI "(2 ranks x 2 threads)". */
 static const char *threads_note(int threads)
 {
@@ -321,6 +347,8 @@ int main(int argc, char **argv)
     struct pss_opts cli_pss;
     parse(argc, argv, &a);
     cli_pss = a.mlt.pss;
+    const char *inject = getenv("PSS_INJECT_NONFINITE"); /* tests only (path/splat.h) */
+    if (inject) nonfinite_inject_every = atol(inject);
     opts_require_image_output("render");
     char err[1024];
     struct scene *sc = scene_load(a.scene, err, sizeof err);
@@ -384,9 +412,10 @@ int main(int argc, char **argv)
         ok = ctl.err[0] || !dist_root() || img_write_exr_png(img, a.out, err, sizeof err);
         partial = st.partial;
         if (ok && !ctl.err[0] && dist_root())
-            printf("%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped\n",
+            printf("%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",
                    partial ? "PARTIAL (interrupted) " : "", a.method, st.samples, st.spp, st.seconds, st.samples / st.seconds,
-                   threads_note(a.mc.threads), st.nonfinite);
+                   threads_note(a.mc.threads), st.nonfinite, nonfinite_note(&st.nonfinite_len));
+        if (ok && !ctl.err[0] && dist_root()) warn_nonfinite(st.nonfinite, &st.nonfinite_len);
         img_destroy(img);
     } else {
         a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : !strcmp(a.method, "pitp") ? MLT_PITP : MLT_PSSMLT;
@@ -415,9 +444,10 @@ int main(int argc, char **argv)
                               (!r.angle || write_angle(&a, &r, err, sizeof err)) && (!r.tech || write_tech(&a, &r, err, sizeof err)));
         if (ok && !ctl.err[0] && dist_root())
             printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%s), %ld non-finite "
-                   "dropped\n",
+                   "dropped%s\n",
                    partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds,
-                   threads_note(a.mlt.threads), r.nonfinite);
+                   threads_note(a.mlt.threads), r.nonfinite, nonfinite_note(&r.stats.nonfinite));
+        if (ok && !ctl.err[0] && dist_root()) warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
         mlt_result_free(&r);
     }
     /* A checkpoint that could not be written stopped the run (ckpt_save_run): its line alone, and

@@ -29,7 +29,8 @@ static void read_mlt(struct ckpt_buf *b, const struct scene *sc)
         ch[i].x = &x[i];
     }
     rng r;
-    long n = 0, nonfinite = 0, ctrl_fail[2] = {0, 0};
+    long n = 0, ctrl_fail[2] = {0, 0};
+    struct nonfinite nonfinite = {{0}};
     struct mlt_stats *st = xcalloc(1, sizeof *st);
     struct image *img = img_create(4, 4);
     struct mlt_thread t = {.ch = ch, .nk = 2, .r = &r, .n = &n, .nonfinite = &nonfinite, .st = st,
@@ -51,9 +52,11 @@ static void read_mlt(struct ckpt_buf *b, const struct scene *sc)
 static void read_mc_thread(struct ckpt_buf b)
 {
     int at[3];
-    long counts[2];
+    long samples;
+    struct nonfinite nf;
     CKPT_GET(&b, at);
-    CKPT_GET(&b, counts);
+    CKPT_GET(&b, samples);
+    CKPT_GET(&b, nf);
     int wh[2] = {0, 0};
     if (b.len - b.pos >= sizeof wh) memcpy(wh, b.p + b.pos, sizeof wh);
     if (wh[0] < 1 || wh[0] > 64 || wh[1] < 1 || wh[1] > 64) return;

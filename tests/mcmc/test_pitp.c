@@ -87,6 +87,7 @@ static void pitp_invariance_on_scene(const char *path, int nstates, struct invar
     static struct tstate s;
     static struct mmlt_path before, replay;
     static struct pitp_scratch ws;
+    static struct nonfinite nf;
     static struct sampler_writer wr;
     pitp_scratch_init(&ws, sc);
     sampler_writer_init(&wr, 3, 0);
@@ -107,7 +108,7 @@ static void pitp_invariance_on_scene(const char *path, int nstates, struct invar
             double a;
             struct connection cn;
             bool c_new;
-            enum pitp_outcome po = pitp_perturb(&pc, &s.pss, &s.x, &ws, rng_uniform(&r0), &j, &a, &cn, &c_new);
+            enum pitp_outcome po = pitp_perturb(&pc, &s.pss, &s.x, &ws, rng_uniform(&r0), &j, &a, &cn, &c_new, &nf);
             r->perturbations++;
             if (po == PITP_FAILED) r->failed++;
             if (po == PITP_REJECTED) r->rejected++;
@@ -199,6 +200,7 @@ Test(stat_pitp, technique_choice_follows_mis_weights)
         struct path_ctx pc = {.sc = sc, .max_length = 8};
         static struct tstate s;
         static struct pitp_scratch ws;
+        static struct nonfinite nf;
         pitp_scratch_init(&ws, sc);
         rng r0, r1;
         rng_seed(&r0, 23, 0);
@@ -219,7 +221,7 @@ Test(stat_pitp, technique_choice_follows_mis_weights)
                 double a;
                 struct connection cn;
                 bool c_new;
-                pitp_perturb(&pc, &s.pss, &s.x, &ws, rng_uniform(&r0), &j, &a, &cn, &c_new);
+                pitp_perturb(&pc, &s.pss, &s.x, &ws, rng_uniform(&r0), &j, &a, &cn, &c_new, &nf);
                 if (c_new) s.c = cn;
                 for (int l = 0; l < j; l++) lo += w[l];
                 double v = lo + rng_uniform(&r1) * w[j];
@@ -252,6 +254,7 @@ static void count_flows(const struct scene *sc, int states, bool one_way, struct
     struct path_ctx pc = {.sc = sc, .max_length = 8};
     static struct tstate s, keep;
     static struct pitp_scratch ws;
+    static struct nonfinite nf;
     pitp_scratch_init(&ws, sc);
     rng r0;
     rng_seed(&r0, 31, one_way);
@@ -267,7 +270,7 @@ static void count_flows(const struct scene *sc, int states, bool one_way, struct
             struct connection cn;
             bool c_new;
             if (one_way) keep = s;
-            enum pitp_outcome po = pitp_perturb(&pc, &s.pss, &s.x, &ws, rng_uniform(&r0), &j, &a, &cn, &c_new);
+            enum pitp_outcome po = pitp_perturb(&pc, &s.pss, &s.x, &ws, rng_uniform(&r0), &j, &a, &cn, &c_new, &nf);
             if (one_way && po == PITP_MOVED && j > from) s = keep;
             if (rep == 2) fl->n[k][from][s.x.s]++;
         }
