@@ -254,8 +254,9 @@ CHECK_STATS := $(BIN)/check_stats
 # so that FILE is either the old or the complete new one; a failure (a full disk) removes the
 # temporary and says so in one line naming FILE (scripts/to-file.sh).
 TO_FILE = bash scripts/to-file.sh make $(1) $(2)
-# $(call GNUPLOT,SCRIPT,CSV,OUT): OUT.png and OUT.pdf from a gnuplot script, through temporaries.
-GNUPLOT = gnuplot -e "csv='$(2)'; out='$(3).tmp'" $(1) && mv -f $(3).tmp.png $(3).png && mv -f $(3).tmp.pdf $(3).pdf
+# $(call GNUPLOT,SCRIPT,CSV,OUT): OUT.png and OUT.pdf from a gnuplot script, through temporaries
+# that a failure removes (scripts/plot.sh).
+GNUPLOT = bash scripts/plot.sh $(1) $(2) $(3)
 
 # $(call FIGURE,TARGET,TOOL): `make TARGET` runs bin/TOOL into results/TARGET/ (the tools write
 # every file atomically), then the lines of TARGET_POST (plots, montages), then the Markdown

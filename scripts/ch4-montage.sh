@@ -22,6 +22,6 @@ while [ $# -gt 0 ]; do
 done
 rows=$(( (n + cols - 1) / cols ))
 tmp="$(dirname "$out")/.$(basename "$out" .png).tmp$$.png"
-oiiotool "${args[@]}" --mosaic:pad=4 "${cols}x${rows}" -o "$tmp"
-mv -f "$tmp" "$out"
+. "$(dirname "$0")/out-file.sh"
+write_via ch4-montage "$out" "$tmp" oiiotool "${args[@]}" --mosaic:pad=4 "${cols}x${rows}" -o "$tmp"
 echo "ch4-montage: wrote $out" >&2

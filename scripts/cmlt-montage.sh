@@ -23,6 +23,6 @@ mapfile -d '' A < <(
     tile "$dir/${a}_$label.png" "$a  n=$label"
   done)
 tmp="$dir/.fig3.tmp$$.png"
-oiiotool "${A[@]}" --mosaic:pad=4 3x3 -o "$tmp"
-mv -f "$tmp" "$dir/fig3.png"
+. "$(dirname "$0")/out-file.sh"
+write_via cmlt-montage "$dir/fig3.png" "$tmp" oiiotool "${A[@]}" --mosaic:pad=4 3x3 -o "$tmp"
 echo "cmlt-montage: wrote $dir/fig3.png (n = $label)" >&2

@@ -18,6 +18,6 @@ while (($#)); do
 done
 out="$dir/$(basename "$dir").png"
 tmp="$dir/.montage.tmp$$.png"
-oiiotool "${args[@]}" --mosaic:pad=4 "${n}x1" -o "$tmp"
-mv -f "$tmp" "$out"
+. "$(dirname "$0")/out-file.sh"
+write_via fig5-montage "$out" "$tmp" oiiotool "${args[@]}" --mosaic:pad=4 "${n}x1" -o "$tmp"
 echo "fig5-montage: wrote $out" >&2

@@ -53,8 +53,7 @@ CH6_ajar_INSETS := 160,70,64,36 40,60,64,36
 # renders; a changed scene does. `make ch6-clean` reruns everything.
 $(CH6_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/render
 	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CH6_OUT)/$* --methods $(CH6_METHODS) $(CH6_OPTS) --scale $(SCALE) $(CH6_$*_ARGS)
-	gnuplot -e "csv='$@'; out='$(CH6_OUT)/$*/time.tmp'; name='$*'" scripts/ch6-time.gp
-	mv -f $(CH6_OUT)/$*/time.tmp.png $(CH6_OUT)/$*/error-vs-time.png
+	bash scripts/plot.sh scripts/ch6-time.gp $@ $(CH6_OUT)/$*/error-vs-time "name='$*'"
 
 .PHONY: fig6.2 fig6.3 fig6.4 fig6.5 fig6.6 fig6.7 ch6-clean
 define CH6_FIG

@@ -194,3 +194,13 @@ Test(disk_full, report_page)
 {
     fails_cleanly("bash scripts/report.sh", "bash scripts/report.sh", (struct run){.limit = 1024}, "index.html", NULL);
 }
+
+/* the figures' plots (the Makefile's GNUPLOT, scripts/plot.sh) and montages (scripts/ch4-montage.sh) */
+Test(disk_full, plot_and_montage)
+{
+    good_run(FIG45);
+    const char *plot = "bash scripts/plot.sh scripts/fig4.5.gp DIR/fig4.5.csv DIR/fig4.5";
+    fails_cleanly(plot, plot, (struct run){.limit = 2048}, "fig4.5.png", "fig4.5.pdf");
+    const char *montage = "bash scripts/ch4-montage.sh DIR/m.png 2 32x32 DIR/fig4.5.png a DIR/fig4.5.png b";
+    fails_cleanly(montage, montage, (struct run){.limit = 2048, .chatty = true}, "m.png", NULL);
+}
