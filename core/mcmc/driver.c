@@ -54,6 +54,8 @@ static void mlt_save(void *p)
     ckpt_put(&b, mlt_tag, sizeof mlt_tag);
     CKPT_PUT(&b, j->res->b_k);
     CKPT_PUT(&b, j->res->b);
+    CKPT_PUT(&b, j->res->b_k_rse);
+    CKPT_PUT(&b, j->res->b_rse);
     CKPT_PUT(&b, j->res->seed_seconds);
     CKPT_PUT(&b, j->kcdf);
     CKPT_PUT(&b, j->scale);
@@ -72,6 +74,8 @@ static bool resume_global(struct run_job *rj, char *err, size_t errlen)
     ckpt_get(b, tag, sizeof tag);
     CKPT_GET(b, r->b_k);
     CKPT_GET(b, r->b);
+    CKPT_GET(b, r->b_k_rse);
+    CKPT_GET(b, r->b_rse);
     CKPT_GET(b, r->seed_seconds);
     CKPT_GET(b, rj->kcdf);
     CKPT_GET(b, rj->scale);

@@ -81,6 +81,9 @@ struct mlt_result {
     struct mlt_stats stats;
     double b;              /* total normalisation sum_k b_k */
     double b_k[MAX_PATH_LENGTH + 1];
+    /* The seed pass's relative standard errors: of b and of each b_k (sd / (mean sqrt n) over the
+     * seed paths; 0 where b_k is 0). They move every MCMC image's mean, and a length's share. */
+    double b_rse, b_k_rse[MAX_PATH_LENGTH + 1];
     long mutations;
     double seconds, seed_seconds;
     long nonfinite;        /* contributions dropped as NaN or infinite; by length in stats.nonfinite */

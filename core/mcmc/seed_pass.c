@@ -9,6 +9,7 @@
 #include "mcmc/mlt_internal.h"
 #include "mcmc/tech_split.h"
 #include "sampling/pick.h"
+#include <math.h>
 #include <stdlib.h>
 
 struct seed_job {
@@ -59,12 +60,20 @@ bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errle
     const struct mlt_opts *o = rj->o;
     double t0 = now_seconds();
     double *f = seed_targets(rj);
-    double total = 0;
+    double total = 0, var_total = 0, n = (double)o->seed_paths;
     int live = 0;
     for (int kk = 0; kk < rj->nk; kk++) {
-        double *cdf = xmalloc((size_t)o->seed_paths * sizeof(double)), acc = 0;
-        for (long i = 0; i < o->seed_paths; i++) cdf[i] = acc += f[i * rj->nk + kk];
-        r->b_k[kk + 1] = acc / o->seed_paths;
+        double *cdf = xmalloc((size_t)o->seed_paths * sizeof(double)), acc = 0, sq = 0;
+        for (long i = 0; i < o->seed_paths; i++) {
+            double v = f[i * rj->nk + kk];
+            cdf[i] = acc += v;
+            sq += v * v;
+        }
+        double mean = acc / n, var_mean = n > 1 ? fmax(0, sq / n - mean * mean) / (n - 1) : 0;
+        r->b_k[kk + 1] = mean;
+        /* the lengths' seed paths are independent streams, so their variances add up in b */
+        r->b_k_rse[kk + 1] = mean > 0 ? sqrt(var_mean) / mean : 0;
+        var_total += var_mean;
         total += r->b_k[kk + 1];
         if (acc > 0) {
             rj->cdf[kk] = cdf;
@@ -82,6 +91,7 @@ bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errle
         rj->scale[kk] = pk > 0 ? r->b_k[kk + 1] / pk : 0;
     }
     r->b = total;
+    r->b_rse = total > 0 ? sqrt(var_total) / total : 0;
     r->seed_seconds = now_seconds() - t0;
     if (total > 0) return true;
     if (emitters_count(rj->sc) == 0)

@@ -14,6 +14,7 @@
 #include "path/scene_ready.h"
 #include "scene/accel.h"
 #include "scene/scene_hash.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -275,7 +276,9 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
         csv_meta(f, "pitp_failure_fraction", "%.9g", pc->attempts ? (double)pc->failed / pc->attempts : 0.0);
     }
     csv_meta(f, "b", "%.9g", r->b);
+    csv_meta(f, "b_rse", "%.6g", r->b_rse);
     for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++) csv_meta(f, NULL, "b_%d %.9g", k, r->b_k[k]);
+    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++) csv_meta(f, NULL, "b_rse_%d %.6g", k, r->b_k_rse[k]);
     stats_write_csv(f, a->method, &r->stats, true);
     fclose(f);
     char path[4096];
@@ -327,6 +330,16 @@ static void warn_nonfinite(long total, const struct nonfinite *nf)
     if (total > 0)
         fprintf(stderr, "render: warning: %ld non-finite samples dropped%s; the scene has degenerate geometry or parameters\n",
                 total, nonfinite_note(nf));
+}
+
+/* The seed pass's error moves the whole image's mean: above 1 % say so, once, and what halves it. */
+static void warn_normalisation(const struct mlt_result *r, long seed_paths)
+{
+    if (r->b_rse > 0.01)
+        fprintf(stderr,
+                "render: warning: the normalisation's relative standard error is %.1f %% (--seed-paths %ld): the image's mean "
+                "is that uncertain; %ld seed paths would bring it to 0.5 %%\n",
+                100 * r->b_rse, seed_paths, (long)ceil(seed_paths * (r->b_rse / 0.005) * (r->b_rse / 0.005)));
 }
 
 /* "(4 threads)", or under MPI "(2 ranks x 2 threads)". */
@@ -443,11 +456,14 @@ int main(int argc, char **argv)
         ok = ctl.err[0] || !dist_root() || (img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
                               (!r.angle || write_angle(&a, &r, err, sizeof err)) && (!r.tech || write_tech(&a, &r, err, sizeof err)));
         if (ok && !ctl.err[0] && dist_root())
-            printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass), %.0f mutations/s (%s), %ld non-finite "
-                   "dropped%s\n",
-                   partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, r.mutations / r.seconds,
-                   threads_note(a.mlt.threads), r.nonfinite, nonfinite_note(&r.stats.nonfinite));
-        if (ok && !ctl.err[0] && dist_root()) warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
+            printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass, normalisation rel. s.e. %.2f %%), %.0f mutations/s (%s), "
+                   "%ld non-finite dropped%s\n",
+                   partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, 100 * r.b_rse,
+                   r.mutations / r.seconds, threads_note(a.mlt.threads), r.nonfinite, nonfinite_note(&r.stats.nonfinite));
+        if (ok && !ctl.err[0] && dist_root()) {
+            warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
+            warn_normalisation(&r, a.mlt.seed_paths);
+        }
         mlt_result_free(&r);
     }
     /* A checkpoint that could not be written stopped the run (ckpt_save_run): its line alone, and

@@ -12,6 +12,7 @@
 #include "path/scene_ready.h"
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -420,5 +421,61 @@ Test(mlt, cpu_time_budget_does_the_same_work_under_load, .timeout = 120)
     double ratio = (double)n[1][1] / (double)n[1][0];
     cr_assert(ratio > 0.8 && ratio < 1.25, "cpu-time budget: %ld mutations alone, %ld under load (ratio %.3f)", n[1][0], n[1][1],
               ratio);
+    scene_free(sc);
+}
+
+/* The seed pass's relative standard error predicts how far b moves between seeds: 20 independent
+ * seed passes (MMLT and PSSMLT, Cornell box, 3000 seed paths each, a handful of mutations) give a
+ * sample standard deviation of b whose ratio to the mean reported b_rse * b lies within the 99 %
+ * interval of s / sigma for 19 degrees of freedom, [0.60, 1.43] (sqrt(chi2_19 quantiles / 19); α =
+ * 0.01 per method). Per length too for MMLT: the mean squared ratio over the lengths with b_k > 0
+ * against chi2 of 8 x 19 degrees of freedom. Reporting half the error fails every check (ratios 1.73
+ * and 2.11, per length 4.5). */
+Test(stat_mlt, seed_pass_standard_error_predicts_the_spread_of_b)
+{
+    struct scene *sc = test_scene("scenes/cornell-box/scene.json");
+    camera_resize(&sc->cam, 16, 16);
+    const int seeds = 20;
+    double lo = sqrt(gsl_cdf_chisq_Pinv(0.005, seeds - 1) / (seeds - 1)),
+           hi = sqrt(gsl_cdf_chisq_Pinv(0.995, seeds - 1) / (seeds - 1));
+    for (int m = 0; m < 2; m++) {
+        double b[20], bk[20][MAX_PATH_LENGTH + 1], rse = 0, rse_k[MAX_PATH_LENGTH + 1] = {0};
+        for (int s = 0; s < seeds; s++) {
+            struct mlt_opts o;
+            opts(&o, sc, m ? MLT_MMLT : MLT_PSSMLT, 256);
+            o.seed_paths = 3000;
+            o.seed = 100 + (uint64_t)s;
+            struct mlt_result r;
+            char err[256];
+            cr_assert(mlt_render(sc, &o, &r, err, sizeof err), "%s", err);
+            b[s] = r.b;
+            rse += r.b_rse * r.b / seeds;
+            for (int k = 1; k <= o.max_length; k++) bk[s][k] = r.b_k[k], rse_k[k] += r.b_k_rse[k] * r.b_k[k] / seeds;
+            mlt_result_free(&r);
+        }
+        double mean = 0, var = 0;
+        for (int s = 0; s < seeds; s++) mean += b[s] / seeds;
+        for (int s = 0; s < seeds; s++) var += (b[s] - mean) * (b[s] - mean) / (seeds - 1);
+        double ratio = sqrt(var) / rse;
+        cr_log_info("%s: sd of b over %d seeds / reported s.e. = %.3f (99 %% interval %.2f-%.2f)", m ? "mmlt" : "pssmlt", seeds,
+                    ratio, lo, hi);
+        cr_expect(ratio > lo && ratio < hi, "%s: sd of b / reported s.e. = %.3f", m ? "mmlt" : "pssmlt", ratio);
+        if (!m) continue;
+        /* per length: the squared ratios' mean over the lengths, 8 x 19 degrees of freedom */
+        double sum2 = 0;
+        int nk = 0;
+        for (int k = 1; k <= 8; k++) {
+            if (!(rse_k[k] > 0)) continue;
+            double mk = 0, vk = 0;
+            for (int s = 0; s < seeds; s++) mk += bk[s][k] / seeds;
+            for (int s = 0; s < seeds; s++) vk += (bk[s][k] - mk) * (bk[s][k] - mk) / (seeds - 1);
+            sum2 += vk / (rse_k[k] * rse_k[k]);
+            nk++;
+        }
+        int dof = nk * (seeds - 1);
+        double q = sum2 / nk, qlo = gsl_cdf_chisq_Pinv(0.005, dof) / dof, qhi = gsl_cdf_chisq_Pinv(0.995, dof) / dof;
+        cr_log_info("mmlt per length: mean squared ratio %.3f over %d lengths (99 %% interval %.2f-%.2f)", q, nk, qlo, qhi);
+        cr_expect(nk > 4 && q > qlo && q < qhi, "mmlt per length: mean squared ratio %.3f over %d lengths", q, nk);
+    }
     scene_free(sc);
 }
