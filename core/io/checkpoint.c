@@ -169,7 +169,8 @@ bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ck
     uint64_t sum = checksum(head.p, head.len, payload->p, payload->len);
     /* four parts, the payload in two halves: tests pause a write between them (util.h) */
     size_t half = payload->len / 2;
-    struct chunk parts[4] = {{head.p, head.len}, {payload->p, half}, {payload->p + half, payload->len - half}, {&sum, sizeof sum}};
+    const unsigned char *second = payload->len ? payload->p + half : payload->p; /* an empty payload has no buffer */
+    struct chunk parts[4] = {{head.p, head.len}, {payload->p, half}, {second, payload->len - half}, {&sum, sizeof sum}};
     remove_stale_temporaries(path);
     bool ok = atomic_write(path, write_parts, parts, err, errlen);
     ckpt_buf_free(&head);
