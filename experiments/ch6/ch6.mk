@@ -33,21 +33,37 @@ ch6-assets: deps $(BIN)/ch6_assets
 # (no direct lighting). Paper: 300 s, 8 seeds, a 40 000-spp reference
 # and 1M seed paths (the thesis's normalisation). The method list defaults to pssmlt,mmlt,pitp; a
 # method bin/render does not know (pitp before its merge) is skipped and named in the table.
+# Full (SCALE=full, between the two, sized to decide the claims in about two hours on 2 cores): one
+# budget of 60 CPU seconds per thread, 8 seeds, images at twice the quick resolution (512x288,
+# staircase 288x512), a 4096-spp reference, 1M seed paths; every render checkpoints each minute, so
+# an interrupted `make` continues where it stopped (ch6_equal --checkpoint keeps the completed runs).
 CH6_METHODS ?= pssmlt,mmlt,pitp
 ifeq ($(SCALE),paper)
   CH6_OPTS := --time 300 --t0 18.75 --seeds 8 --min-length 3 --reference-spp 40000 --render-args "--p-large 0.1 --seed-paths 1000000"
+else ifeq ($(SCALE),full)
+  CH6_OPTS := --time 60 --seeds 8 --min-length 3 --reference-spp 4096 --checkpoint 60 --render-args "--p-large 0.1 --seed-paths 1000000"
 else
   CH6_OPTS := --time 4 --t0 0.5 --seeds 4 --min-length 3 --reference-spp 256 --render-args "--p-large 0.1"
 endif
 CH6_OUT := results/ch6-$(SCALE)
 # scene folder, extra tool options (the claims' source and command for claims.csv, which bin/ch6_equal
 # writes with its verdicts), and the two insets (x,y,w,h in pixels) of each scene
-CH6_living-room_ARGS := --source 'thesis Figs. 6.2, 6.5' --command 'make fig6.2'
-CH6_staircase_ARGS := --source 'thesis Figs. 6.3, 6.6' --command 'make fig6.3'
-CH6_ajar_ARGS := --source 'thesis Figs. 6.4, 6.7' --command 'make fig6.4' --resolution 256x144
-CH6_living-room_INSETS := 12,50,64,36 50,100,64,36
-CH6_staircase_INSETS := 56,0,36,64 55,130,36,64
-CH6_ajar_INSETS := 160,70,64,36 40,60,64,36
+CH6_living-room_ARGS := --source 'thesis Figs. 6.2, 6.5' --command 'make fig6.2 SCALE=$(SCALE)'
+CH6_staircase_ARGS := --source 'thesis Figs. 6.3, 6.6' --command 'make fig6.3 SCALE=$(SCALE)'
+CH6_ajar_ARGS := --source 'thesis Figs. 6.4, 6.7' --command 'make fig6.4 SCALE=$(SCALE)'
+ifeq ($(SCALE),full)
+  CH6_living-room_ARGS += --resolution 512x288
+  CH6_staircase_ARGS += --resolution 288x512
+  CH6_ajar_ARGS += --resolution 512x288
+  CH6_living-room_INSETS := 24,100,128,72 100,200,128,72
+  CH6_staircase_INSETS := 112,0,72,128 110,260,72,128
+  CH6_ajar_INSETS := 320,140,128,72 80,120,128,72
+else
+  CH6_ajar_ARGS += --resolution 256x144
+  CH6_living-room_INSETS := 12,50,64,36 50,100,64,36
+  CH6_staircase_INSETS := 56,0,36,64 55,130,36,64
+  CH6_ajar_INSETS := 160,70,64,36 40,60,64,36
+endif
 
 # The tools are order-only: every commit relinks them (version.h), which must not rerun minutes of
 # renders; a changed scene does. `make ch6-clean` reruns everything.

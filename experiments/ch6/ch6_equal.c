@@ -73,6 +73,50 @@ static int run_cmd(char *const *argv, const char *log)
     return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + (WIFSIGNALED(st) ? WTERMSIG(st) : 0);
 }
 
+/* A cached file older than the scene it was rendered from is stale. */
+static bool older_than(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_mtime < sb.st_mtime;
+}
+
+/* Runs the render rv[0..c-1] (rv has room for 5 more) into PREFIX with --checkpoint every `every`
+ * seconds (0: none), resuming from PREFIX.ckpt when an interrupted earlier run left one; a
+ * checkpoint the render refuses (other options) is set aside and the run starts over. */
+static int run_checkpointed(char **rv, int c, const char *prefix, double every, const char *log)
+{
+    char every_s[32], ck[4200];
+    snprintf(ck, sizeof ck, "%.4000s.ckpt", prefix);
+    if (every > 0) {
+        snprintf(every_s, sizeof every_s, "%g", every);
+        rv[c++] = "--checkpoint";
+        rv[c++] = every_s;
+    }
+    if (every > 0 && !access(ck, R_OK)) {
+        rv[c] = "--resume", rv[c + 1] = ck, rv[c + 2] = NULL;
+        int st = run_cmd(rv, log);
+        if (st == 0) unlink(ck);
+        if (st != 2) return st;
+        fprintf(stderr, "ch6_equal: %s was not resumable (see %s); starting over\n", ck, log ? log : "its log");
+        unlink(ck);
+    }
+    rv[c] = NULL;
+    int st = run_cmd(rv, log);
+    if (st == 0 && every > 0) unlink(ck); /* complete: its outputs are what a rerun keeps */
+    return st;
+}
+
+/* A run of an earlier, interrupted ch6_equal that completed: its CSV is there, not marked partial,
+ * and newer than the scene. */
+static bool run_complete(const char *exr, const char *csvp, const char *scene)
+{
+    if (access(exr, R_OK) || older_than(csvp, scene)) return false;
+    char *csv = read_whole_file(csvp);
+    bool done = csv && !strstr(csv, "\n# PARTIAL");
+    free(csv);
+    return done;
+}
+
 /* The '# key value' header line of a render CSV. */
 static double csv_header(const char *text, const char *key)
 {
@@ -112,13 +156,6 @@ static void make_dirs(const char *path)
     free(p);
 }
 
-/* A cached file older than the scene it was rendered from is stale. */
-static bool older_than(const char *a, const char *b)
-{
-    struct stat sa, sb;
-    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_mtime < sb.st_mtime;
-}
-
 static void fail(const char *msg1, const char *msg2)
 {
     fprintf(stderr, "ch6_equal: %s%s\n", msg1, msg2 ? msg2 : "");
@@ -133,6 +170,7 @@ int main(int argc, char **argv)
     int seeds, refspp, blk, threads, minlen;
     double T, t0 = -1;
     bool reuse = false, wall = false;
+    double ckpt_every;
     const struct opt opts[] = {
         OPT_SCENE(scene, .help = "scene JSON"),
         {"--name", OPT_STRING, OPT_DST(name), .arg = "NAME", .help = "label in the outputs (default: the scene's folder name)"},
@@ -167,6 +205,9 @@ int main(int argc, char **argv)
         {"--command", OPT_STRING, OPT_DST(command), .arg = "TEXT", .def = "bin/ch6_equal",
          .help = "the command that reproduces this run, for claims.csv"},
         {"--scale", OPT_STRING, OPT_DST(scale), .arg = "NAME", .def = "custom", .help = "the scale's name, for claims.csv"},
+        {"--checkpoint", OPT_DOUBLE, OPT_DST(ckpt_every), .arg = "S", .lo = 0, .hi = 1e6, .def = "0",
+         .help = "every render (reference too) checkpoints every S seconds, and a rerun after an interruption keeps "
+                 "the completed runs and resumes the interrupted one (0: off)"},
         {"--reuse", OPT_FLAG, OPT_DST(reuse), .help = "keep the run files already in OUT/runs (same names) instead of rendering"},
         {0}};
     /* Several copies would each run every render; MPI goes through --render instead (README MPI). */
@@ -260,9 +301,18 @@ int main(int argc, char **argv)
         char prefix[1100];
         snprintf(prefix, sizeof prefix, "%.*s", (int)(strlen(refpath) - 4), refpath);
         snprintf(spp_s, sizeof spp_s, "%d", refspp);
-        char *rv[] = {render, (char *)scene, "--method", "bdpt", "--spp", spp_s, "--seed", "12345", "--threads", thr,
-                      "--quiet", "--min-length", minlen_s, "--out", prefix, res ? "--resolution" : NULL, (char *)res, NULL};
-        if (run_cmd(rv, NULL) != 0) fail("the reference render failed: ", refpath);
+        /* rendered under another name and renamed when complete: an interrupted render writes a
+         * partial image, which must never pass for the cached reference */
+        char part[1200];
+        snprintf(part, sizeof part, "%s.rendering", prefix);
+        char *rv[24] = {render, (char *)scene, "--method", "bdpt", "--spp", spp_s, "--seed", "12345", "--threads", thr,
+                        "--quiet", "--min-length", minlen_s, "--out", part};
+        int c = 15;
+        if (res) rv[c++] = "--resolution", rv[c++] = (char *)res;
+        if (run_checkpointed(rv, c, part, ckpt_every, NULL) != 0) fail("the reference render failed: ", refpath);
+        char exr[1300];
+        snprintf(exr, sizeof exr, "%s.exr", part);
+        if (rename(exr, refpath) != 0) fail("cannot rename the reference into place: ", refpath);
         probe_ref = img_read(refpath, err, sizeof err);
         if (!probe_ref) fail(err, NULL);
     }
@@ -303,14 +353,14 @@ int main(int argc, char **argv)
                     rv[c++] = "--resolution";
                     rv[c++] = (char *)res;
                 }
-                rv[c] = NULL;
-                fprintf(stderr, "ch6_equal: %s %s seed %d, %g s\n", name, m->name, s, budgets[bi]);
                 char log[4200], csvp[4200];
                 snprintf(log, sizeof log, "%.4000s.log", prefix);
                 snprintf(path, sizeof path, "%.4000s.exr", prefix);
                 snprintf(csvp, sizeof csvp, "%.4000s.csv", prefix);
-                if (!(reuse && !access(path, R_OK) && !access(csvp, R_OK)) && run_cmd(rv, log) != 0)
-                    fail("a render failed; see ", log);
+                bool keep = reuse ? !access(path, R_OK) && !access(csvp, R_OK)
+                                  : ckpt_every > 0 && run_complete(path, csvp, scene);
+                fprintf(stderr, "ch6_equal: %s %s seed %d, %g s%s\n", name, m->name, s, budgets[bi], keep ? " (kept from an earlier run)" : "");
+                if (!keep && run_checkpointed(rv, c, prefix, ckpt_every, log) != 0) fail("a render failed; see ", log);
                 struct image *im = img_read(path, err, sizeof err);
                 if (!im) fail(err, NULL);
                 if (im->w != ref->w || im->h != ref->h) fail("image and reference sizes differ: ", path);

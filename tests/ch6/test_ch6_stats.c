@@ -182,9 +182,14 @@ Test(ch6_stats, verdict_words_and_seeds_needed)
 #ifndef BIN_DIR
 #define BIN_DIR "bin"
 #endif
+#include <dirent.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
 
 static char *slurp_file(const char *path)
 {
@@ -245,4 +250,112 @@ Test(ch6_tool, skips_a_method_the_renderer_lacks_and_writes_its_tables, .timeout
     cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2);
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     cr_assert_eq(system(cmd), 0);
+}
+
+/* ch6_equal --checkpoint, interrupted as make is by Ctrl-C (SIGINT to the whole process group):
+ * first inside the reference render, which must leave no reference that passes for the cached
+ * one, only its checkpoint; then after two runs have completed, whose files the next start keeps
+ * (same mtimes, "kept from an earlier run"); the last start completes, resumes what was
+ * interrupted and leaves no checkpoint behind. */
+static int count_files(const char *dir, const char *suffix)
+{
+    DIR *d = opendir(dir);
+    if (!d) return 0;
+    int n = 0;
+    size_t l = strlen(suffix);
+    for (struct dirent *e; (e = readdir(d));) {
+        size_t m = strlen(e->d_name);
+        n += m > l && !strcmp(e->d_name + m - l, suffix);
+    }
+    closedir(d);
+    return n;
+}
+
+static double mono_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+/* Starts ch6_equal with `args` (words) in a process group of its own, stderr to `err`. */
+static pid_t start_group(char *const *args, const char *err)
+{
+    pid_t pid = fork();
+    cr_assert(pid >= 0);
+    if (pid == 0) {
+        setpgid(0, 0);
+        if (!freopen("/dev/null", "w", stdout) || !freopen(err, "w", stderr)) _exit(99);
+        execv(args[0], args);
+        _exit(98);
+    }
+    setpgid(pid, pid);
+    return pid;
+}
+
+static bool wait_for(bool (*cond)(const char *), const char *arg, double seconds)
+{
+    for (double t0 = mono_now(); mono_now() - t0 < seconds; usleep(5000))
+        if (cond(arg)) return true;
+    return false;
+}
+
+static bool file_exists(const char *p) { return access(p, F_OK) == 0; }
+static bool two_runs_done(const char *runs) { return count_files(runs, "-t0.5.exr") >= 2; }
+
+Test(ch6_tool, an_interrupted_run_resumes_and_keeps_what_it_completed, .timeout = 240)
+{
+    char dir[] = "/tmp/ch6-resume-XXXXXX", out[64], ref[64], refck[80], runs[80], err[80];
+    cr_assert(mkdtemp(dir));
+    snprintf(out, sizeof out, "%s/o", dir);
+    snprintf(ref, sizeof ref, "%s/ref.exr", dir);
+    snprintf(refck, sizeof refck, "%s/ref.rendering.ckpt", dir);
+    snprintf(runs, sizeof runs, "%s/o/runs", dir);
+    snprintf(err, sizeof err, "%s/err", dir);
+    char *args[] = {BIN_DIR "/ch6_equal", "--scene", "scenes/cornell-box/scene.json", "--out", out, "--methods", "pssmlt,mmlt",
+                    "--seeds", "3", "--time", "0.5", "--resolution", "32x24", "--reference-spp", "4000", "--reference", ref,
+                    "--min-length", "2", "--render-args", "--seed-paths 2000", "--checkpoint", "0.1", "--render",
+                    BIN_DIR "/render", NULL};
+    /* 1: inside the reference */
+    pid_t pid = start_group(args, err);
+    cr_assert(wait_for(file_exists, refck, 60), "the reference render wrote no checkpoint");
+    kill(-pid, SIGINT);
+    int st;
+    waitpid(pid, &st, 0);
+    cr_assert(!file_exists(ref), "an interrupted reference render left %s", ref);
+    cr_assert(file_exists(refck));
+    /* 2: after two runs */
+    pid = start_group(args, err);
+    cr_assert(wait_for(two_runs_done, runs, 120), "no two runs completed");
+    usleep(200000);
+    kill(-pid, SIGINT);
+    waitpid(pid, &st, 0);
+    cr_assert(file_exists(ref) && !file_exists(refck), "the resumed reference is not in place, or its checkpoint stayed");
+    char p[160];
+    struct stat before[2];
+    const char *kept[2] = {"pssmlt-s1-t0.5.csv", "mmlt-s1-t0.5.csv"};
+    for (int i = 0; i < 2; i++) {
+        snprintf(p, sizeof p, "%s/%s", runs, kept[i]);
+        cr_assert_eq(stat(p, &before[i]), 0, "%s", p);
+    }
+    /* 3: to the end */
+    pid = start_group(args, err);
+    waitpid(pid, &st, 0);
+    char *e = slurp_file(err);
+    cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 0, "%s", e);
+    cr_assert(strstr(e, "pssmlt seed 1, 0.5 s (kept from an earlier run)") && strstr(e, "mmlt seed 1, 0.5 s (kept from an earlier run)"),
+              "%s", e);
+    for (int i = 0; i < 2; i++) {
+        struct stat now;
+        snprintf(p, sizeof p, "%s/%s", runs, kept[i]);
+        cr_assert_eq(stat(p, &now), 0);
+        cr_assert(now.st_mtim.tv_sec == before[i].st_mtim.tv_sec && now.st_mtim.tv_nsec == before[i].st_mtim.tv_nsec,
+                  "%s was rendered again", kept[i]);
+    }
+    cr_assert_eq(count_files(runs, "-t0.5.csv"), 6);
+    cr_assert_eq(count_files(runs, ".ckpt"), 0, "checkpoints of completed runs stayed");
+    snprintf(p, sizeof p, "%s/summary.csv", out);
+    cr_assert(file_exists(p));
+    snprintf(p, sizeof p, "rm -rf %s", dir);
+    cr_assert_eq(system(p), 0);
 }
