@@ -18,6 +18,7 @@ void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w
             int k = s_ + t - 1;
             if (k < 1 || k > K) continue;
             if (pc->only_t > 0 && (s_ != pc->only_s || t != pc->only_t)) continue;
+            w->conn_tried++;
             if (!connect_st(pc, w->emi, s_, w->cam, t, k, &c, NULL)) continue;
             if (pc->only_t > 0) c.w = 1;
             rgb v = vscale(c.f, c.w);
@@ -25,6 +26,7 @@ void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w
                 w->nf.len[k]++;
                 continue;
             }
+            w->conn_nonzero += luminance(v) > 0;
             if (t == 1) splat_push(out, c.px, c.py, v);
             else sum = vadd(sum, v);
         }

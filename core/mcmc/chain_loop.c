@@ -110,14 +110,25 @@ static void pitp_perturbation(struct worker *wk, struct chain *c)
  * one dispatch point of the small-step kind: a controlled or root step traces the proposal
  * through the controlled sampler, which also yields the kernel's ratio T(v->u) / T(u->v); the
  * lazy primary-sample-space step's is 1. */
+/* The connections the last evaluations counted in the scratch, into the thread's statistics (which
+ * the checkpoint holds; the scratch is not). */
+static void take_connections(struct worker *wk)
+{
+    wk->st->conn_tried += wk->w->conn_tried;
+    wk->st->conn_nonzero += wk->w->conn_nonzero;
+    wk->w->conn_tried = wk->w->conn_nonzero = 0;
+}
+
 static void propose(struct worker *wk, struct chain *c, bool large, struct proposal *pr)
 {
     const struct mlt_opts *o = wk->o;
     struct ctrl_sampler *cs = large ? NULL : wk->cs;
     pss_begin(&c->pss, large);
     if (cs) ctrl_begin(cs, &c->pss, c->path, wk->spare->cam, wk->spare->emi, o->small_step);
+    wk->w->conn_tried = wk->w->conn_nonzero = 0; /* the chain starts' and seed pass's are not counted */
     pr->f = eval_state(o->method, &wk->pc, cs ? &cs->base : &c->pss.base, wk->w, c->k, wk->spare, &wk->prop, &pr->tech,
                        &pr->complete);
+    take_connections(wk);
     if (wk->ta) tech_split_record(wk->ta, &wk->pc, wk->w, wk->multiplexed ? c->k : 0, pr->tech, &wk->prop, false);
     pr->tr = cs ? ctrl_finish(cs, pr->complete) : 1;
     if (cs && cs->fail != CTRL_OK) wk->ctrl_fail[cs->fail - 1]++;
@@ -175,7 +186,9 @@ static void iterate(struct worker *wk)
     double t_start = o->time_proposals ? now_seconds() : 0;
     if (large && use_mctls(o, c->k)) {
         bool acc, changed, nonzero;
+        wk->w->conn_tried = wk->w->conn_nonzero = 0;
         double a = mctls_step(&wk->pc, c, wk->w, wk->mb, &wk->r, wk->img, &acc, &changed, &nonzero);
+        take_connections(wk);
         stats_record(wk->st, PROPOSAL_MCTLS, c->k, changed, a, acc, nonzero, elapsed(o, t_start));
         return;
     }

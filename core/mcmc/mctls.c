@@ -28,12 +28,15 @@ static double all_techniques(const struct path_ctx *pc, struct sampler *s, struc
         int sv = k + 1 - t;
         pi[t] = 0;
         sp[t].n = 0;
-        if (nz < t || ny < sv || !connect_st(pc, w->emi, sv, w->cam, t, k, &c, NULL)) continue;
+        if (nz < t || ny < sv) continue;
+        w->conn_tried++;
+        if (!connect_st(pc, w->emi, sv, w->cam, t, k, &c, NULL)) continue;
         rgb v = mmlt_contribution(&c, k);
         if (!vfinite(v)) {
             w->nf.len[k]++;
             continue;
         }
+        w->conn_nonzero += luminance(v) > 0;
         splat_push(&sp[t], c.px, c.py, v);
         pi[t] = splat_luminance(&sp[t]);
         sum += pi[t];

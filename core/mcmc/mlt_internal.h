@@ -87,6 +87,10 @@ static inline double eval_state(enum mlt_method m, const struct path_ctx *pc, st
         return pssmlt_eval_state(pc, s, w, out);
     }
     double f = mmlt_eval_state(pc, s, k, x, out, &w->nf);
+    if (x->complete) { /* one connection, evaluated when both subpaths reached their vertices */
+        w->conn_tried++;
+        w->conn_nonzero += f > 0;
+    }
     *tech = x->t;
     *complete = x->complete;
     return f;

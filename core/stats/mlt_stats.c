@@ -75,6 +75,8 @@ void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src)
         cell_merge(&dst->total[k], &src->total[k]);
     }
     nonfinite_add(&dst->nonfinite, &src->nonfinite);
+    dst->conn_tried += src->conn_tried;
+    dst->conn_nonzero += src->conn_nonzero;
 }
 
 double cell_mean(const struct accept_cell *c) { return c->attempts ? c->sum_a / c->attempts : NAN; }

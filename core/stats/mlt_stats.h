@@ -34,6 +34,7 @@ struct mlt_stats {
     struct accept_cell any[PROPOSAL_KINDS][STATS_LENGTHS];
     struct accept_cell total[PROPOSAL_KINDS];
     struct nonfinite nonfinite; /* by length, as the rows (path/splat.h) */
+    long conn_tried, conn_nonzero; /* connections the chains evaluated, and those with a contribution */
 };
 
 void stats_clear(struct mlt_stats *s);

@@ -21,6 +21,7 @@ enum ch6_q {
     Q_BLUR4,        /* share of the relative error surviving a 4 x 4 box blur */
     Q_BLUR8,        /* ... an 8 x 8 box blur */
     Q_CORRLEN,      /* correlation length of the error, pixels */
+    Q_NONZERO_CONN, /* the fraction of evaluated connections with a contribution (MMLT paper §5) */
     Q_COUNT
 };
 

@@ -389,6 +389,8 @@ int main(int argc, char **argv)
                 r->q[Q_MPS] = csv_header(csv, "mutations_per_second");
                 r->q[Q_NONZERO] = csv_nonzero(csv, NULL);
                 r->q[Q_LARGE_NONZERO] = csv_nonzero(csv, "large");
+                double tried = csv_header(csv, "connections_evaluated");
+                r->q[Q_NONZERO_CONN] = tried > 0 ? csv_header(csv, "connections_nonzero") / tried : NAN;
                 free(csv);
             }
 
@@ -407,15 +409,16 @@ int main(int argc, char **argv)
     for (int mi = 0; mi < nm; mi++)
         if (!ms[mi].available) csv_meta(f, "method", "%s not available in this build (skipped)", ms[mi].name);
     fprintf(f, "scene,method,seed,budget,seconds,mutations,mutations_per_s,relmse,block_spread,nonzero,large_nonzero,"
-               "block_median_relmse,trimmed_relmse,blur4_share,blur8_share,corr_length\n");
+               "block_median_relmse,trimmed_relmse,blur4_share,blur8_share,corr_length,nonzero_per_connection\n");
     for (int mi = 0; mi < nm; mi++)
         if (ms[mi].available)
             for (int bi = 0; bi < nb; bi++)
                 for (int s = 0; s < seeds; s++) {
                     const double *q = R[mi][bi][s].q;
-                    fprintf(f, "%s,%s,%d,%g,%.3f,%.0f,%.0f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", name, ms[mi].name, s + 1,
-                            budgets[bi], R[mi][bi][s].seconds, q[Q_MUTATIONS], q[Q_MPS], q[Q_RELMSE], q[Q_SPREAD], q[Q_NONZERO],
-                            q[Q_LARGE_NONZERO], q[Q_BLOCK_MEDIAN], q[Q_TRIMMED], q[Q_BLUR4], q[Q_BLUR8], q[Q_CORRLEN]);
+                    fprintf(f, "%s,%s,%d,%g,%.3f,%.0f,%.0f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", name, ms[mi].name,
+                            s + 1, budgets[bi], R[mi][bi][s].seconds, q[Q_MUTATIONS], q[Q_MPS], q[Q_RELMSE], q[Q_SPREAD],
+                            q[Q_NONZERO], q[Q_LARGE_NONZERO], q[Q_BLOCK_MEDIAN], q[Q_TRIMMED], q[Q_BLUR4], q[Q_BLUR8],
+                            q[Q_CORRLEN], q[Q_NONZERO_CONN]);
                 }
     fclose(f);
     snprintf(path, sizeof path, "%s/runs.csv", out);
@@ -427,10 +430,11 @@ int main(int argc, char **argv)
     csv_meta(f, NULL, "mean +- standard error over %d seeds", seeds);
     /* the first five quantities in their old columns (scripts read them by position), then the rest */
     static const enum ch6_q col[] = {Q_RELMSE,       Q_SPREAD,  Q_MPS,   Q_NONZERO, Q_LARGE_NONZERO,
-                                     Q_BLOCK_MEDIAN, Q_TRIMMED, Q_BLUR4, Q_BLUR8,   Q_CORRLEN};
+                                     Q_BLOCK_MEDIAN, Q_TRIMMED, Q_BLUR4, Q_BLUR8,   Q_CORRLEN, Q_NONZERO_CONN};
     fprintf(f, "scene,method,budget,seeds,relmse,relmse_se,block_spread,block_spread_se,mutations_per_s,mutations_per_s_se,"
                "nonzero,nonzero_se,large_nonzero,large_nonzero_se,block_median_relmse,block_median_relmse_se,trimmed_relmse,"
-               "trimmed_relmse_se,blur4_share,blur4_share_se,blur8_share,blur8_share_se,corr_length,corr_length_se\n");
+               "trimmed_relmse_se,blur4_share,blur4_share_se,blur8_share,blur8_share_se,corr_length,corr_length_se,"
+               "nonzero_per_connection,nonzero_per_connection_se\n");
     double sum[MAX_METHODS][Q_COUNT][2];
     for (int mi = 0; mi < nm; mi++) {
         if (!ms[mi].available) continue;

@@ -275,6 +275,9 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
         csv_meta(f, "pitp_failures", "%ld", pc->failed);
         csv_meta(f, "pitp_failure_fraction", "%.9g", pc->attempts ? (double)pc->failed / pc->attempts : 0.0);
     }
+    /* MMLT paper §5: PSSMLT evaluates every connection of a sample, MMLT one per proposal */
+    csv_meta(f, "connections_evaluated", "%ld", r->stats.conn_tried);
+    csv_meta(f, "connections_nonzero", "%ld", r->stats.conn_nonzero);
     csv_meta(f, "b", "%.9g", r->b);
     csv_meta(f, "b_rse", "%.6g", r->b_rse);
     for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++) csv_meta(f, NULL, "b_%d %.9g", k, r->b_k[k]);

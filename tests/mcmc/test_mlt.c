@@ -193,6 +193,18 @@ Test(mlt, statistics_bookkeeping_and_reproducibility)
         cr_assert_eq(r1.mutations, 20000);
         const struct accept_cell *small = &r1.stats.total[PROPOSAL_SMALL], *large = &r1.stats.total[PROPOSAL_LARGE];
         cr_assert_gt(cell_mean(small), cell_mean(large) + 0.1, "small %g large %g", cell_mean(small), cell_mean(large));
+        /* connections (the MMLT paper's ratio per connection): MMLT and PITP evaluate one per proposal
+         * whose subpaths are complete, non-zero exactly when the proposal is; PSSMLT evaluates every
+         * connection of its subpaths and has at least one non-zero in each non-zero proposal */
+        long nz = small->nonzero + large->nonzero;
+        if (m == MLT_PSSMLT) {
+            cr_assert_gt(r1.stats.conn_tried, 3 * r1.mutations, "%ld connections", r1.stats.conn_tried);
+            cr_assert_geq(r1.stats.conn_nonzero, nz);
+        } else {
+            cr_assert_leq(r1.stats.conn_tried, r1.mutations);
+            cr_assert_gt(r1.stats.conn_tried, r1.mutations * 9 / 10);
+            cr_assert_eq(r1.stats.conn_nonzero, nz);
+        }
         char *c1 = csv_of(&r1, "x"), *c2 = csv_of(&r2, "x");
         cr_assert_str_eq(c1, c2);
         cr_assert(memcmp(r1.img->px, r2.img->px, sizeof(double) * 3 * 32 * 32) == 0, "images differ");
