@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# Markdown table of results/fig4.6/fig4.6.csv. usage: fig4.6-table.sh CSV > TABLE.md
+# Markdown table of results/fig4.6/fig4.6.csv (mean ± standard error over seeds per method).
+# usage: fig4.6-table.sh CSV > TABLE.md
 set -euo pipefail
 awk -F, '
 /^#/ || $1 == "method" { next }
-{ n++; name[n] = $1; sec[n] = $2; mut[n] = $3; err[n] = $4; if (n == 1 || $4 < best) best = $4 }
+{ n++; for (i = 1; i <= NF; i++) c[n, i] = $i }
 END {
-    print "| method (equal time) | seconds | mutations | mutations/s | relMSE | relMSE / best |"
-    print "| --- | ---: | ---: | ---: | ---: | ---: |"
+    print "| method (equal CPU time) | seeds | relMSE | CPU µs per proposal | cost vs MMLT large steps | rays per proposal | acceptance |"
+    print "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"
     for (i = 1; i <= n; i++)
-        printf "| %s | %.1f | %d | %.0f | %.4g | %.2f |\n", name[i], sec[i], mut[i], mut[i] / sec[i], err[i], err[i] / best
+        printf "| %s | %d | %.4g ± %.2g | %.3g ± %.2g | %.2f | %.2f | %.4f ± %.4f |\n", c[i, 1], c[i, 2], c[i, 3], c[i, 4],
+            c[i, 5], c[i, 6], c[i, 7], c[i, 8], c[i, 9], c[i, 10]
 }' "$1"
+[ -f "$(dirname "$1")/claims.md" ] && { echo; cat "$(dirname "$1")/claims.md"; }
+exit 0

@@ -59,8 +59,9 @@ $(eval $(call CHECK,fig4.5,fig4_5,2))
 
 # Thesis Figure 4.6: equal-time renders, MMLT large steps vs MCTLS vs the hybrid, relMSE vs BDPT.
 define fig4.6_POST
-oiiotool results/fig4.6/reference.png results/fig4.6/mmlt-large.png results/fig4.6/mctls.png \
-  results/fig4.6/hybrid.png --mosaic:pad=4 2x2 -o results/fig4.6/fig4.6.tmp.png && mv -f results/fig4.6/fig4.6.tmp.png results/fig4.6/fig4.6.png
+bash scripts/ch4-montage.sh results/fig4.6/fig4.6.png 2 320x180 \
+  results/fig4.6/reference.png "reference (BDPT)" results/fig4.6/mmlt-large.png "MMLT large steps" \
+  results/fig4.6/mctls.png "MCTLS" results/fig4.6/hybrid.png "hybrid"
 @echo "results/fig4.6/fig4.6.png: top reference (BDPT), MMLT large steps; bottom MCTLS, hybrid"
 endef
 fig4.6_TABLE := bash scripts/fig4.6-table.sh results/fig4.6/fig4.6.csv

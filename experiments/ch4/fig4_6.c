@@ -1,15 +1,22 @@
 /* bin/fig4_6: thesis Figure 4.6. Equal-time renders of the ajar scene with only MMLT large steps,
  * only MCTLS, and the hybrid (MMLT large steps below --hybrid-length, MCTLS from it on), no small
- * steps; relative MSE against a BDPT reference rendered once and cached.
- * Writes OUT/{mmlt-large,mctls,hybrid}.{exr,png}, OUT/fig4.6.csv (method,seconds,mutations,relmse)
- * and OUT/reference.png; the side-by-side PNG and the table come from the Makefile's scripts. */
+ * steps, over --seeds seeds (interleaved: seed 1 of every method, then seed 2, ...; budgets in CPU
+ * seconds per thread); relative MSE against a BDPT reference rendered once and cached, the cost of a
+ * proposal (CPU time, and rays from a separate one-thread run of fixed length) and its acceptance.
+ * Writes OUT/fig4.6-runs.csv (one row per run), OUT/fig4.6.csv (mean ± standard error per method),
+ * OUT/claims.csv and claims.md (thesis §4.3's claims with their verdicts), OUT/reference.png and
+ * OUT/{mmlt-large,mctls,hybrid}.{exr,png} of the first seed; the side-by-side PNG and the table come
+ * from the Makefile's scripts. */
 #include "base/parallel.h"
 #include "base/util.h"
+#include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
+#include "scene/accel.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,16 +59,55 @@ static struct image *reference(const struct scene *sc, const char *path, int spp
     return ref;
 }
 
+#define METHODS 3
+#define MAX_SEEDS 64
+static const char *const names[METHODS] = {"mmlt-large", "mctls", "hybrid"};
+static const enum large_step kinds[METHODS] = {LARGE_MMLT, LARGE_MCTLS, LARGE_HYBRID};
+
+struct run {
+    double seconds, relmse, us_per_proposal, accept;
+    long mutations;
+};
+
+/* The mean acceptance probability of the run's large-step proposals (MMLT large steps and MCTLS). */
+static double acceptance(const struct mlt_stats *st)
+{
+    const struct accept_cell *l = &st->total[PROPOSAL_LARGE], *m = &st->total[PROPOSAL_MCTLS];
+    long n = l->attempts + m->attempts;
+    return n ? (l->sum_a + m->sum_a) / (double)n : NAN;
+}
+
+/* Rays per proposal: a one-thread run of `n` proposals (the ray counters are the calling thread's,
+ * which is the worker of a one-thread run) less one with none (the seed pass and chain starts). */
+static double rays_per_proposal(const struct scene *sc, struct mlt_opts o, long n)
+{
+    o.threads = 1, o.seconds = 0, o.cpu_time = false, o.progress = false;
+    struct mlt_result r;
+    char err[256];
+    double rays[2];
+    for (int pass = 0; pass < 2; pass++) {
+        o.mutations = pass ? n : 0;
+        struct ray_counts a = accel_ray_counts();
+        if (!mlt_render(sc, &o, &r, err, sizeof err)) return NAN;
+        mlt_result_free(&r);
+        struct ray_counts b = accel_ray_counts();
+        rays[pass] = (double)(b.closest - a.closest) + (double)(b.shadow - a.shadow);
+    }
+    return (rays[1] - rays[0]) / (double)n;
+}
+
 int main(int argc, char **argv)
 {
     const char *refpath = NULL;
     struct opts_figure fo;
     double seconds;
-    int refspp, hybrid;
+    int refspp, hybrid, seeds;
     const struct opt opts[] = {
         OPTS_FIGURE(fo, "scenes/ajar/scene.json", "results/fig4.6"),
-        {"--seconds", OPT_DOUBLE, OPT_DST(seconds), .arg = "S", .lo = 0.01, .hi = 1e6, .help = "render time per method",
-         .def = "20", .paper = "600"},
+        {"--seconds", OPT_DOUBLE, OPT_DST(seconds), .arg = "S", .lo = 0.01, .hi = 1e6,
+         .help = "budget per run, CPU seconds per thread", .def = "4", .paper = "600"},
+        {"--seeds", OPT_INT, OPT_DST(seeds), .arg = "N", .lo = 2, .hi = MAX_SEEDS, .help = "runs per method (seeds S..S+N-1)",
+         .def = "8"},
         OPTS_REFERENCE(refpath, refspp, "BDPT", "results/reference/ajar-bdpt-<spp>.exr", "256", "16384"),
         OPT_HYBRID_LENGTH(hybrid, .help = "hybrid: MCTLS from path length K on, MMLT large steps below", .def = "6"),
         {0}};
@@ -82,37 +128,109 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s\n", err);
         return 1;
     }
+    static struct run R[METHODS][MAX_SEEDS];
+    struct mlt_opts base = {.method = MLT_MMLT, .p_large = 1, .seconds = seconds, .cpu_time = true,
+                            .seed_paths = fo.paper ? 1000000 : 100000, .threads = fo.threads, .max_length = sc->max_length,
+                            .progress = isatty(2), .hybrid_length = hybrid};
+    pss_opts_default(&base.pss, sc->cam.width, sc->cam.height);
+    /* interleaved, so that a change in the machine's load falls on every method alike */
+    for (int s = 0; s < seeds; s++)
+        for (int m = 0; m < METHODS; m++) {
+            struct mlt_opts o = base;
+            o.large_step = kinds[m];
+            o.seed = fo.seed + (uint64_t)s;
+            fprintf(stderr, "fig4.6: %s seed %llu, %g CPU s per thread\n", names[m], (unsigned long long)o.seed, seconds);
+            struct mlt_result r;
+            if (!mlt_render(sc, &o, &r, err, sizeof err) || (s == 0 && !write_pair(r.img, fo.out, names[m], err, sizeof err))) {
+                fprintf(stderr, "%s\n", err);
+                return 1;
+            }
+            R[m][s] = (struct run){r.seconds, img_relmse(r.img, ref, 0.01), 1e6 * r.seconds * fo.threads / (double)r.mutations,
+                                   acceptance(&r.stats), r.mutations};
+            mlt_result_free(&r);
+        }
+    double rays[METHODS];
+    for (int m = 0; m < METHODS; m++) {
+        struct mlt_opts o = base;
+        o.large_step = kinds[m];
+        o.seed = fo.seed;
+        o.seed_paths = 20000;
+        rays[m] = rays_per_proposal(sc, o, 20000);
+    }
+
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    csv_meta_head(f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps)", fo.scene, fo.scale);
-    csv_meta(f, "seed", "%llu", (unsigned long long)fo.seed);
+    csv_meta_head(f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps), one row per run",
+                  fo.scene, fo.scale);
     csv_meta(f, "threads", "%d", fo.threads);
+    csv_meta(f, "budget", "%g CPU seconds per thread", seconds);
     csv_meta(f, "reference", "%s (%d spp BDPT)", refpath, refspp);
     csv_meta(f, "hybrid_length", "%d", hybrid);
     csv_meta(f, NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01)");
-    fprintf(f, "method,seconds,mutations,relmse\n");
-    const char *names[3] = {"mmlt-large", "mctls", "hybrid"};
-    const enum large_step kinds[3] = {LARGE_MMLT, LARGE_MCTLS, LARGE_HYBRID};
-    for (int m = 0; m < 3; m++) {
-        struct mlt_opts o = {.method = MLT_MMLT, .p_large = 1, .seconds = seconds, .seed_paths = fo.paper ? 1000000 : 100000,
-                             .seed = fo.seed, .threads = fo.threads, .max_length = sc->max_length, .progress = isatty(2),
-                             .large_step = kinds[m], .hybrid_length = hybrid};
-        pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
-        fprintf(stderr, "fig4.6: %s for %.0f s\n", names[m], seconds);
-        struct mlt_result r;
-        if (!mlt_render(sc, &o, &r, err, sizeof err) || !write_pair(r.img, fo.out, names[m], err, sizeof err)) {
-            fprintf(stderr, "%s\n", err);
-            return 1;
-        }
-        fprintf(f, "%s,%.2f,%ld,%.6g\n", names[m], r.seconds, r.mutations, img_relmse(r.img, ref, 0.01));
-        mlt_result_free(&r);
-    }
+    fprintf(f, "method,seed,seconds,mutations,relmse,us_per_proposal,acceptance\n");
+    for (int m = 0; m < METHODS; m++)
+        for (int s = 0; s < seeds; s++)
+            fprintf(f, "%s,%llu,%.3f,%ld,%.6g,%.6g,%.6g\n", names[m], (unsigned long long)(fo.seed + (uint64_t)s), R[m][s].seconds,
+                    R[m][s].mutations, R[m][s].relmse, R[m][s].us_per_proposal, R[m][s].accept);
     fclose(f);
     char path[4096];
-    snprintf(path, sizeof path, "%s/fig4.6.csv", fo.out);
+    snprintf(path, sizeof path, "%s/fig4.6-runs.csv", fo.out);
     bool ok = write_text_atomic(path, buf, err, sizeof err);
     free(buf);
+
+    /* per method: relMSE, CPU time per proposal, acceptance (mean, se over seeds) */
+    double mean[METHODS][3], se[METHODS][3];
+    for (int m = 0; m < METHODS; m++)
+        for (int q = 0; q < 3; q++) {
+            double v[MAX_SEEDS];
+            for (int s = 0; s < seeds; s++) v[s] = q == 0 ? R[m][s].relmse : q == 1 ? R[m][s].us_per_proposal : R[m][s].accept;
+            mean_se(v, seeds, &mean[m][q], &se[m][q]);
+        }
+    buf = NULL;
+    f = open_memstream(&buf, &len);
+    csv_meta_head(f, "fig4.6: mean and standard error over seeds per method", fo.scene, fo.scale);
+    csv_meta(f, "seeds", "%d", seeds);
+    csv_meta(f, "budget", "%g CPU seconds per thread, %d threads", seconds, fo.threads);
+    csv_meta(f, NULL, "rays_per_proposal: a one-thread run of 20000 proposals less one of none");
+    fprintf(f, "method,seeds,relmse,relmse_se,us_per_proposal,us_per_proposal_se,cost_vs_mmlt,rays_per_proposal,acceptance,"
+               "acceptance_se\n");
+    for (int m = 0; m < METHODS; m++)
+        fprintf(f, "%s,%d,%.6g,%.3g,%.6g,%.3g,%.4g,%.4g,%.6g,%.3g\n", names[m], seeds, mean[m][0], se[m][0], mean[m][1], se[m][1],
+                mean[m][1] / mean[0][1], rays[m], mean[m][2], se[m][2]);
+    fclose(f);
+    snprintf(path, sizeof path, "%s/fig4.6.csv", fo.out);
+    ok = ok && write_text_atomic(path, buf, err, sizeof err);
+    free(buf);
+
+    /* thesis §4.3: MCTLS is accepted more often, costs about 5x per step, and the two cancel */
+    struct claims cl;
+    char command[64], zs[128], md[256];
+    snprintf(command, sizeof command, "make fig4.6 SCALE=%s", fo.scale);
+    claims_begin(&cl, fo.scale, command, "Claims of thesis §4.3 on %s at %g CPU s per run, %d seeds", fo.scene, seconds, seeds);
+    const bool two[METHODS] = {true, true, false};
+    double z[METHODS], acc[METHODS] = {mean[0][2], mean[1][2], mean[2][2]}, acc_se[METHODS] = {se[0][2], se[1][2], se[2][2]};
+    struct verdict v = verdict_extreme(acc, acc_se, two, METHODS, 1, +1, seeds, z);
+    snprintf(zs, sizeof zs, "mmlt-large=%.2f", z[0]);
+    snprintf(md, sizeof md, "mmlt-large %.4g ± %.2g (z = %.1f)", acc[0], acc_se[0], z[0]);
+    claims_row(&cl, "thesis §4.3", "MCTLS is accepted more often than MMLT large steps", "mean acceptance probability",
+               "mctls", acc[1], acc_se[1], zs, md, &v);
+    double ratio = mean[1][1] / mean[0][1],
+           ratio_se = ratio * sqrt(pow(se[1][1] / mean[1][1], 2) + pow(se[0][1] / mean[0][1], 2));
+    v = verdict_similar(ratio, ratio_se, 5, 0, 0.25, seeds);
+    snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
+    snprintf(md, sizeof md, "5 within ±25 %% (z = %.1f)", v.zmin);
+    claims_row(&cl, "thesis §4.3", "an MCTLS step costs about 5x an MMLT large step", "CPU time per proposal, MCTLS / MMLT",
+               "mctls", ratio, ratio_se, zs, md, &v);
+    v = verdict_similar(mean[1][0], se[1][0], mean[0][0], se[0][0], 0.25, seeds);
+    snprintf(zs, sizeof zs, "mmlt-large=%.2f", v.zmin);
+    snprintf(md, sizeof md, "mmlt-large %.4g ± %.2g, within ±25 %% (z = %.1f)", mean[0][0], se[0][0], v.zmin);
+    claims_row(&cl, "thesis §4.3", "at equal time MCTLS and MMLT large steps are similarly noisy", "relMSE", "mctls",
+               mean[1][0], se[1][0], zs, md, &v);
+    char *claims = claims_finish(&cl, fo.out, ok ? err : (char[64]){0}, ok ? sizeof err : 64);
+    ok = ok && claims;
+    if (ok) fputs(claims, stderr);
+    free(claims);
     img_destroy(ref);
     scene_free(sc);
     if (!ok) fprintf(stderr, "%s\n", err);

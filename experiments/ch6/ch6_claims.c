@@ -1,11 +1,7 @@
 /* The chapter-6 claims and their verdicts (ch6_claims.h). */
 #include "ch6/ch6_claims.h"
-#include "base/util.h"
-#include "common/csv_meta.h"
-#include "common/verdict.h"
+#include "common/claims.h"
 #include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #define MAX_METHODS 16
@@ -43,18 +39,8 @@ static int find(const struct ch6_claims_in *in, const char *method)
 
 char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
 {
-    char *csv = NULL, *md = NULL;
-    size_t clen = 0, mlen = 0;
-    FILE *c = open_memstream(&csv, &clen), *m = open_memstream(&md, &mlen);
-    csv_meta(c, NULL, "ch6_equal: the chapter-6 claims on %s at %g s per run, %d seeds", in->scene, in->budget, in->seeds);
-    csv_meta_commit(c);
-    csv_meta(c, NULL, "z = (claimed direction) * (value - other) / sqrt(se^2 + se_other^2); holds: z >= 2 against every "
-                      "other method; contradicted: z <= -2 against one; seeds_needed: per method, for |z_min| = 2");
-    fprintf(c, "source,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n");
-    fprintf(m, "Claims on %s at %g s per run, %d seeds (mean ± standard error over seeds; z against each other method "
-               "in the claimed direction; holds: every z ≥ 2, contradicted: some z ≤ −2):\n\n",
-            in->scene, in->budget, in->seeds);
-    fprintf(m, "| claim | statistic | value | against (z) | verdict |\n| --- | --- | ---: | --- | --- |\n");
+    struct claims out;
+    claims_begin(&out, in->scale, in->command, "Claims on %s at %g s per run, %d seeds", in->scene, in->budget, in->seeds);
     double mean[MAX_METHODS], se[MAX_METHODS], z[MAX_METHODS];
     for (size_t k = 0; k < sizeof claims / sizeof *claims; k++) {
         const struct claim *cl = &claims[k];
@@ -66,7 +52,7 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
             have[i] = in->have[i] && (!cl->against || i == mi || i == oi);
         }
         struct verdict v = verdict_extreme(mean, se, have, in->methods, mi, cl->sign, in->seeds, z);
-        char zs[512] = "", against[1024] = "", need[64] = "";
+        char zs[512] = "", against[1024] = "";
         for (int i = 0; i < in->methods; i++) {
             if (isnan(z[i])) continue;
             size_t a = strlen(zs), b = strlen(against);
@@ -74,27 +60,8 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
             snprintf(against + b, sizeof against - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", in->name[i], mean[i],
                      se[i], z[i]);
         }
-        if (!strcmp(v.word, "undecided") && v.seeds_needed > 0)
-            snprintf(need, sizeof need, "; %ld seeds would decide it (toward %s)", v.seeds_needed,
-                     v.zmin > 0 ? "holds" : "contradicted");
-        else if (!strcmp(v.word, "undecided"))
-            snprintf(need, sizeof need, "; no effect seen");
-        fprintf(c, "%s,%s,%s,%s,%.6g,%.3g,%s,%.3f,%s,%ld,%s,%s\n", cl->source ? cl->source : in->source, cl->text, cl->statistic, cl->method,
-                mean[mi], se[mi], zs, v.zmin, v.word, v.seeds_needed, in->scale, in->command);
-        fprintf(m, "| %s | %s | %s %.4g ± %.2g | %s | **%s**%s |\n", cl->text, cl->statistic, cl->method, mean[mi], se[mi],
-                against, v.word, need);
+        claims_row(&out, cl->source ? cl->source : in->source, cl->text, cl->statistic, cl->method, mean[mi], se[mi], zs,
+                   against, &v);
     }
-    fclose(c);
-    fclose(m);
-    char path[4200];
-    snprintf(path, sizeof path, "%.4000s/claims.csv", in->out);
-    bool ok = write_text_atomic(path, csv, err, errlen);
-    snprintf(path, sizeof path, "%.4000s/claims.md", in->out);
-    ok = ok && write_text_atomic(path, md, err, errlen);
-    free(csv);
-    if (!ok) {
-        free(md);
-        return NULL;
-    }
-    return md;
+    return claims_finish(&out, in->out, err, errlen);
 }

@@ -442,7 +442,7 @@ int main(int argc, char **argv)
             double v[MAX_SEEDS], mean[Q_COUNT], se[Q_COUNT];
             for (int q = 0; q < Q_COUNT; q++) {
                 for (int s = 0; s < seeds; s++) v[s] = R[mi][bi][s].q[q];
-                ch6_mean_se(v, seeds, &mean[q], &se[q]);
+                mean_se(v, seeds, &mean[q], &se[q]);
             }
             fprintf(f, "%s,%s,%g,%d", name, ms[mi].name, budgets[bi], seeds);
             for (size_t k = 0; k < sizeof col / sizeof *col; k++) fprintf(f, ",%.6g,%.3g", mean[col[k]], se[col[k]]);
@@ -474,7 +474,7 @@ int main(int argc, char **argv)
         for (int bi = 0; bi < nb; bi++) {
             double v[MAX_SEEDS], se;
             for (int s = 0; s < seeds; s++) v[s] = R[mi][bi][s].q[Q_RELMSE];
-            ch6_mean_se(v, seeds, &by[bi], &se);
+            mean_se(v, seeds, &by[bi], &se);
             bx[bi] = budgets[bi];
         }
         double slope = ch6_loglog_slope(bx, by, nb);

@@ -5,16 +5,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-void ch6_mean_se(const double *x, int n, double *mean, double *se)
-{
-    double m = 0, v = 0;
-    for (int i = 0; i < n; i++) m += x[i];
-    m = n > 0 ? m / n : NAN;
-    for (int i = 0; i < n; i++) v += (x[i] - m) * (x[i] - m);
-    *mean = m;
-    *se = n > 1 ? sqrt(v / (n - 1) / n) : NAN;
-}
-
 int ch6_block_relmse(const struct image *a, const struct image *ref, int blk, double eps, double *out, int cap)
 {
     int bw = a->w / blk, bh = a->h / blk, n = 0;
@@ -36,7 +26,7 @@ double ch6_spread(const double *v, int n)
 {
     double m, se;
     if (n < 2) return NAN;
-    ch6_mean_se(v, n, &m, &se);
+    mean_se(v, n, &m, &se);
     if (m == 0) return NAN;
     return se * sqrt((double)n) / m;
 }

@@ -6,10 +6,9 @@
 #ifndef CH6_STATS_H
 #define CH6_STATS_H
 
+#include "common/verdict.h"
 #include "io/image.h"
 
-/* Mean and standard error of the mean of x[0..n-1] (se = nan for n < 2). */
-void ch6_mean_se(const double *x, int n, double *mean, double *se);
 /* relMSE of a against ref over blk x blk blocks (partial blocks at the right and bottom edges are
  * dropped); writes up to cap values to out and returns the number of blocks. eps as img_relmse. */
 int ch6_block_relmse(const struct image *a, const struct image *ref, int blk, double eps, double *out, int cap);

@@ -4,6 +4,39 @@
 
 #include "common/verdict.h"
 
+void mean_se(const double *x, int n, double *mean, double *se)
+{
+    double m = 0, v = 0;
+    for (int i = 0; i < n; i++) m += x[i];
+    m = n > 0 ? m / n : NAN;
+    for (int i = 0; i < n; i++) v += (x[i] - m) * (x[i] - m);
+    *mean = m;
+    *se = n > 1 ? sqrt(v / (n - 1) / n) : NAN;
+}
+
+static long seeds_for(double z, int seeds)
+{
+    if (z == 0 || !isfinite(z)) return -1;
+    double r = VERDICT_Z / fabs(z);
+    return (long)ceil(seeds * r * r - 1e-9); /* 4 (2 / sqrt 0.5)^2 is 32, not 33 */
+}
+
+struct verdict verdict_similar(double a, double se_a, double b, double se_b, double margin, int seeds)
+{
+    struct verdict v = {"undecided", NAN, 1, 0};
+    double d = a - b, m = margin * fabs(b), s = sqrt(se_a * se_a + se_b * se_b);
+    if (!(s > 0)) {
+        v.seeds_needed = -1;
+        return v;
+    }
+    double inside = (m - fabs(d)) / s; /* the smaller of the two one-sided z values */
+    v.zmin = inside;
+    if (inside >= VERDICT_Z) v.word = "holds";
+    else if (inside <= -VERDICT_Z) v.word = "contradicted";
+    else v.seeds_needed = seeds_for(inside, seeds);
+    return v;
+}
+
 struct verdict verdict_extreme(const double *mean, const double *se, const bool *have, int k, int m, int sign, int seeds,
                                double *z)
 {
@@ -19,10 +52,6 @@ struct verdict verdict_extreme(const double *mean, const double *se, const bool 
     if (v.deciding < 0) return v; /* no other method: nothing to compare */
     if (v.zmin >= VERDICT_Z) v.word = "holds";
     else if (v.zmin <= -VERDICT_Z) v.word = "contradicted";
-    else if (v.zmin == 0 || !isfinite(v.zmin)) v.seeds_needed = -1;
-    else {
-        double r = VERDICT_Z / fabs(v.zmin);
-        v.seeds_needed = (long)ceil(seeds * r * r - 1e-9); /* 4 (2 / sqrt 0.5)^2 is 32, not 33 */
-    }
+    else v.seeds_needed = seeds_for(v.zmin, seeds);
     return v;
 }

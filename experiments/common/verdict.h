@@ -18,10 +18,19 @@ struct verdict {
                          * the observed effect is 0 */
 };
 
+/* Mean and standard error of the mean of x[0..n-1] over seeds (se = nan for n < 2). */
+void mean_se(const double *x, int n, double *mean, double *se);
+
 /* Claim: method m has the largest (sign = +1) or smallest (sign = -1) mean among the k methods with
  * have[i] true. z[i] = sign (mean[m] - mean[i]) / sqrt(se[m]^2 + se[i]^2) is written for every
  * other method (nan for m itself and absent ones); seeds is the count behind the standard errors. */
 struct verdict verdict_extreme(const double *mean, const double *se, const bool *have, int k, int m, int sign, int seeds,
                                double *z);
+
+/* Claim: a and b are similar, |a - b| within margin * b (an equivalence test, two one-sided z tests
+ * against the margin): "holds" when both z values reach 2 (the difference lies inside the margin),
+ * "contradicted" when (|a - b| - margin b) / se reaches 2 (outside it), "undecided" otherwise. zmin
+ * is the deciding one; seeds_needed as above. */
+struct verdict verdict_similar(double a, double se_a, double b, double se_b, double margin, int seeds);
 
 #endif

@@ -12,10 +12,10 @@ Test(ch6_stats, mean_and_standard_error)
 {
     const double x[4] = {1, 2, 3, 6};
     double m, se;
-    ch6_mean_se(x, 4, &m, &se);
+    mean_se(x, 4, &m, &se);
     cr_assert_float_eq(m, 3, 1e-12);
     cr_assert_float_eq(se, sqrt(14.0 / 3 / 4), 1e-12); /* sample variance 14/3 */
-    ch6_mean_se(x, 1, &m, &se);
+    mean_se(x, 1, &m, &se);
     cr_assert(isnan(se));
 }
 

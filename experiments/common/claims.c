@@ -1,0 +1,59 @@
+/* Claims files (claims.h). */
+#include "common/claims.h"
+#include "base/util.h"
+#include "common/csv_meta.h"
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+void claims_begin(struct claims *cl, const char *scale, const char *command, const char *title, ...)
+{
+    memset(cl, 0, sizeof *cl);
+    cl->scale = scale;
+    cl->command = command;
+    cl->c = open_memstream(&cl->csv, &cl->clen);
+    cl->m = open_memstream(&cl->md, &cl->mlen);
+    char head[1024];
+    va_list ap;
+    va_start(ap, title);
+    vsnprintf(head, sizeof head, title, ap);
+    va_end(ap);
+    csv_meta(cl->c, NULL, "%s", head);
+    csv_meta_commit(cl->c);
+    csv_meta(cl->c, NULL, "z in the claimed direction over seeds; holds: z >= 2 (against every other method, or inside "
+                          "a similarity margin); contradicted: z <= -2; seeds_needed: per method, for |z_min| = 2");
+    fprintf(cl->c, "source,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n");
+    fprintf(cl->m, "%s (mean ± standard error over seeds; z in the claimed direction; holds: z ≥ 2, contradicted: "
+                   "z ≤ −2):\n\n| claim | statistic | value | against (z) | verdict |\n| --- | --- | ---: | --- | --- |\n",
+            head);
+}
+
+void claims_row(struct claims *cl, const char *source, const char *claim, const char *statistic, const char *method,
+                double value, double se, const char *versus, const char *versus_md, const struct verdict *v)
+{
+    char need[96] = "";
+    if (!strcmp(v->word, "undecided") && v->seeds_needed > 0)
+        snprintf(need, sizeof need, "; %ld seeds would decide it (toward %s)", v->seeds_needed,
+                 v->zmin > 0 ? "holds" : "contradicted");
+    else if (!strcmp(v->word, "undecided"))
+        snprintf(need, sizeof need, "; no effect seen");
+    fprintf(cl->c, "%s,%s,%s,%s,%.6g,%.3g,%s,%.3f,%s,%ld,%s,%s\n", source, claim, statistic, method, value, se, versus,
+            v->zmin, v->word, v->seeds_needed, cl->scale, cl->command);
+    fprintf(cl->m, "| %s | %s | %s %.4g ± %.2g | %s | **%s**%s |\n", claim, statistic, method, value, se, versus_md, v->word,
+            need);
+}
+
+char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen)
+{
+    fclose(cl->c);
+    fclose(cl->m);
+    char path[4200];
+    snprintf(path, sizeof path, "%.4000s/claims.csv", dir);
+    bool ok = write_text_atomic(path, cl->csv, err, errlen);
+    snprintf(path, sizeof path, "%.4000s/claims.md", dir);
+    ok = ok && write_text_atomic(path, cl->md, err, errlen);
+    free(cl->csv);
+    if (ok) return cl->md;
+    free(cl->md);
+    return NULL;
+}

@@ -1,0 +1,29 @@
+/* The claims files every figure with a verdict writes: claims.csv (one row per claim and
+ * statistic, the rows of the report's claims ledger) and claims.md (the same as a table), both
+ * written atomically into the figure's folder. The verdicts come from verdict.h. */
+#ifndef CLAIMS_H
+#define CLAIMS_H
+
+#include "common/verdict.h"
+#include <stddef.h>
+#include <stdio.h>
+
+struct claims {
+    char *csv, *md;
+    size_t clen, mlen;
+    FILE *c, *m;
+    const char *scale, *command;
+};
+
+/* Starts both files: `title` heads them (a printf format). */
+void claims_begin(struct claims *cl, const char *scale, const char *command, const char *title, ...)
+    __attribute__((format(printf, 4, 5)));
+/* One row: the claim's source and text, the statistic, the method and its value ± se, the
+ * comparison (`versus`: "NAME=z;..." for the CSV, `versus_md` the readable form) and the verdict. */
+void claims_row(struct claims *cl, const char *source, const char *claim, const char *statistic, const char *method,
+                double value, double se, const char *versus, const char *versus_md, const struct verdict *v);
+/* Writes DIR/claims.csv and DIR/claims.md and returns the Markdown (caller frees), or NULL with one
+ * line in err. */
+char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen);
+
+#endif
