@@ -42,11 +42,29 @@ body { font-family: sans-serif; max-width: 1300px; margin: 1em auto; color: #222
 section { border-top: 1px solid #ccc; padding: 0.5em 0 1em; }
 img { max-width: 100%; border: 1px solid #ddd; margin: 4px 0; }
 pre { background: #f6f6f6; padding: 0.5em; overflow-x: auto; font-size: 12px; }
+table { border-collapse: collapse; font-size: 13px; } td, th { border: 1px solid #ccc; padding: 2px 5px; }
+.v-holds { background: #dfd; } .v-contradicted { background: #fdd; } .v-undecided { background: #ffd; }
 .missing { color: #a00; } .claim { background: #eef4ff; padding: 0.4em; } .verdict { background: #efe; padding: 0.4em; }
 </style></head><body>
 <h1>pss-harness: every figure</h1>
 HEAD
 echo "<p>Generated $(date -u '+%Y-%m-%d %H:%M UTC') from commit $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown), scale $scale. Quick-scale runs on a shared 2-core machine.</p>"
+# The claims ledger: every row of every claims.csv the figures wrote (their verdicts come from the
+# runs, experiments/common/verdict.c), first.
+ledger=$(ls results/fig*/claims.csv "$ch6"/*/claims.csv 2>/dev/null || true)
+echo "<section id=\"ledger\"><h2>Claims ledger</h2>"
+if [ -z "$ledger" ]; then echo "<p class=\"missing\">No figure with claims has been run yet (make fig4.6, make fig6.2 ...).</p>"
+else
+  echo "<table><tr><th>source</th><th>claim</th><th>statistic</th><th>value ± s.e.</th><th>z (deciding)</th><th>verdict</th><th>scale</th><th>command</th></tr>"
+  for f in $ledger; do
+    awk -F, '!/^#/ && $1 != "source" && NF >= 12 {
+        need = ($9 == "undecided" && $10 > 0) ? sprintf(" (%d seeds would decide it)", $10) : ""
+        printf "<tr><td>%s</td><td>%s</td><td>%s</td><td>%s %.4g ± %.2g</td><td>%.1f</td><td class=\"v-%s\">%s</td><td>%s</td><td>%s</td></tr>\n",
+          $1, $2, $3, $4, $5, $6, $8, $9, $9 need, $11, $12 }' "$f" | sed 's/&/\&amp;/g'
+  done
+  echo "</table>"
+fi
+echo "</section>"
 echo "<ul>"
 for e in "${entries[@]}"; do IFS='|' read -r id title _ <<<"$e"; echo "<li><a href=\"#$id\">$(printf '%s' "$title" | esc)</a></li>"; done
 echo "</ul>"
@@ -72,7 +90,7 @@ for e in "${entries[@]}"; do
     echo "<div class=\"verdict\"><b>Holds? (measured on this run)</b><ul>"
     for vf in ${verdict:1}; do
       # "- " lines, or the rows of a claims.md table (claim | statistic | value | against | verdict)
-      if [ -f "$vf" ]; then { grep '^- ' "$vf" | sed 's/^- //'; grep '^| ' "$vf" | grep -v '^| claim |' | grep -v '^| ---' |
+      if [ -f "$vf" ]; then { { grep '^- ' "$vf" || true; } | sed 's/^- //'; { grep '^| ' "$vf" || true; } | { grep -v -e '^| claim |' -e '^| ---' || true; } |
           sed -e 's/^| //; s/ |$//; s/ | /: /; s/ | /; /g'; } | esc | sed -e 's|\*\*\([^*]*\)\*\*|<b>\1</b>|g' -e 's|^|<li>|; s|$|</li>|'
       else echo "<li class=\"missing\">$(basename "$vf") not made yet: <code>$(printf '%s' "$cmd" | esc)</code></li>"; fi
     done

@@ -48,9 +48,9 @@ endif
 CH6_OUT := results/ch6-$(SCALE)
 # scene folder, extra tool options (the claims' source and command for claims.csv, which bin/ch6_equal
 # writes with its verdicts), and the two insets (x,y,w,h in pixels) of each scene
-CH6_living-room_ARGS := --source 'thesis Figs. 6.2, 6.5' --command 'make fig6.2 SCALE=$(SCALE)'
-CH6_staircase_ARGS := --source 'thesis Figs. 6.3, 6.6' --command 'make fig6.3 SCALE=$(SCALE)'
-CH6_ajar_ARGS := --source 'thesis Figs. 6.4, 6.7' --command 'make fig6.4 SCALE=$(SCALE)'
+CH6_living-room_ARGS := --source 'thesis Figs. 6.2 and 6.5' --command 'make fig6.2 SCALE=$(SCALE)'
+CH6_staircase_ARGS := --source 'thesis Figs. 6.3 and 6.6' --command 'make fig6.3 SCALE=$(SCALE)'
+CH6_ajar_ARGS := --source 'thesis Figs. 6.4 and 6.7' --command 'make fig6.4 SCALE=$(SCALE)'
 ifeq ($(SCALE),full)
   CH6_living-room_ARGS += --resolution 512x288
   CH6_staircase_ARGS += --resolution 288x512

@@ -28,6 +28,15 @@ void claims_begin(struct claims *cl, const char *scale, const char *command, con
             head);
 }
 
+/* A text field of the CSV: its commas become semicolons, so that every row splits on commas alone. */
+static const char *field(const char *s, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s", s);
+    for (char *c = buf; *c; c++)
+        if (*c == ',' || *c == '\n') *c = ';';
+    return buf;
+}
+
 void claims_row(struct claims *cl, const char *source, const char *claim, const char *statistic, const char *method,
                 double value, double se, const char *versus, const char *versus_md, const struct verdict *v)
 {
@@ -37,8 +46,10 @@ void claims_row(struct claims *cl, const char *source, const char *claim, const 
                  v->zmin > 0 ? "holds" : "contradicted");
     else if (!strcmp(v->word, "undecided"))
         snprintf(need, sizeof need, "; no effect seen");
-    fprintf(cl->c, "%s,%s,%s,%s,%.6g,%.3g,%s,%.3f,%s,%ld,%s,%s\n", source, claim, statistic, method, value, se, versus,
-            v->zmin, v->word, v->seeds_needed, cl->scale, cl->command);
+    char f[6][512];
+    fprintf(cl->c, "%s,%s,%s,%s,%.6g,%.3g,%s,%.3f,%s,%ld,%s,%s\n", field(source, f[0], 512), field(claim, f[1], 512),
+            field(statistic, f[2], 512), field(method, f[3], 512), value, se, field(versus, f[4], 512), v->zmin, v->word,
+            v->seeds_needed, field(cl->scale, f[5], 512), cl->command);
     fprintf(cl->m, "| %s | %s | %s %.4g ± %.2g | %s | **%s**%s |\n", claim, statistic, method, value, se, versus_md, v->word,
             need);
 }
