@@ -123,7 +123,7 @@ uint64_t ckpt_build_hash(void)
 /* The temporaries of this checkpoint (atomic_write's ".tmpPID-NAME" beside it) that processes no
  * longer running left behind: a run killed in a write leaves one, and a resumed run killed again
  * would pile them up. Once per process, before its first write. */
-static void remove_stale_temporaries(const char *path)
+void ckpt_remove_stale_temporaries(const char *path)
 {
     static bool done;
     if (done) return;
@@ -171,7 +171,7 @@ bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ck
     size_t half = payload->len / 2;
     const unsigned char *second = payload->len ? payload->p + half : payload->p; /* an empty payload has no buffer */
     struct chunk parts[4] = {{head.p, head.len}, {payload->p, half}, {second, payload->len - half}, {&sum, sizeof sum}};
-    remove_stale_temporaries(path);
+    ckpt_remove_stale_temporaries(path);
     bool ok = atomic_write(path, write_parts, parts, err, errlen);
     ckpt_buf_free(&head);
     return ok;

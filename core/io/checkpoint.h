@@ -55,6 +55,9 @@ bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf 
 /* Whether the file is a whole checkpoint (magic and checksum), whoever wrote it: what a killed
  * run must always leave behind. */
 bool ckpt_file_intact(const char *path);
+/* Removes the temporaries of checkpoint `path` that processes no longer running left (a kill inside
+ * a write leaves one); once per process, and before the first write in any case. */
+void ckpt_remove_stale_temporaries(const char *path);
 
 /* How a renderer checkpoints: where to, how often, and what to continue from. */
 struct ckpt_ctl {

@@ -395,6 +395,7 @@ int main(int argc, char **argv)
     if (N > 1) snprintf(ckpt_path + strlen(ckpt_path), sizeof ckpt_path - strlen(ckpt_path), ".rank%d", R);
     options_text(&a, sc, opts, sizeof opts);
     snprintf(opts + strlen(opts), sizeof opts - strlen(opts), " ranks=%d", N);
+    ckpt_remove_stale_temporaries(ckpt_path); /* a run that ends before its first write cleans up too */
     struct ckpt_ctl ctl = {.path = ckpt_path, .every = a.checkpoint, .id = {ckpt_build_hash(), ckpt_scene_hash(sc), opts}};
     struct ckpt_buf resume = {0};
     if (a.resume) {
