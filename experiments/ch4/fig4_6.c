@@ -227,7 +227,9 @@ int main(int argc, char **argv)
     snprintf(md, sizeof md, "mmlt-large %.4g ± %.2g, within ±25 %% (z = %.1f)", mean[0][0], se[0][0], v.zmin);
     claims_row(&cl, "thesis §4.3", "at equal time MCTLS and MMLT large steps are similarly noisy", "relMSE", "mctls",
                mean[1][0], se[1][0], zs, md, &v);
-    char *claims = claims_finish(&cl, fo.out, ok ? err : (char[64]){0}, ok ? sizeof err : 64);
+    char cerr[1024];
+    char *claims = claims_finish(&cl, fo.out, cerr, sizeof cerr);
+    if (ok && !claims) snprintf(err, sizeof err, "%s", cerr);
     ok = ok && claims;
     if (ok) fputs(claims, stderr);
     free(claims);
