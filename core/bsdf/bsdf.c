@@ -1,8 +1,10 @@
 /* BSDF dispatch and derived parameters. */
 #include "bsdf/bsdf.h"
+#include "base/util.h"
 #include "bsdf/fresnel.h"
+#include <stdlib.h>
 
-const struct bsdf_ops *const bsdf_ops_table[BSDF_ROUGH_PLASTIC + 1] = {
+const struct bsdf_ops *const bsdf_ops_table[BSDF_NTYPES] = {
     [BSDF_NULL] = NULL,
     [BSDF_LAMBERT] = &bsdf_lambert_ops,
     [BSDF_MIRROR] = &bsdf_conductor_ops, /* the conductor's lobe with reflectance 1 */
@@ -30,4 +32,41 @@ static double diffuse_fresnel_inside(double ior)
 void bsdf_prepare(struct bsdf *b)
 {
     if (b->type == BSDF_PLASTIC || b->type == BSDF_ROUGH_PLASTIC) b->diffuse_fresnel = diffuse_fresnel_inside(b->ior);
+    const struct bsdf_ops *ops = bsdf_ops_for(b->type);
+    b->dims = ops ? ops->dims : 0;
+    b->transmissive = ops && ops->transmissive;
+    b->delta_only = ops && ops->delta_only;
+    b->needs_uv = b->albedo_tex != NULL;
+    for (int i = 0; i < 2; i++)
+        if (b->child[i]) b->needs_uv |= b->child[i]->needs_uv;
+    if (ops && ops->prepare) ops->prepare(b);
+}
+
+/* Post-order over the nesting (acyclic: the loader refuses cycles); done[] marks prepared slots. */
+static void prepare_rec(struct bsdf *bs, bool *done, struct bsdf *b)
+{
+    size_t i = (size_t)(b - bs);
+    if (done[i]) return;
+    for (int k = 0; k < 2; k++)
+        if (b->child[k]) prepare_rec(bs, done, &bs[b->child[k] - bs]);
+    bsdf_prepare(b);
+    done[i] = true;
+}
+
+void bsdf_prepare_all(struct bsdf *bs, int n)
+{
+    bool *done = xcalloc((size_t)(n > 0 ? n : 1), sizeof *done);
+    for (int i = 0; i < n; i++) prepare_rec(bs, done, &bs[i]);
+    free(done);
+}
+
+struct bsdf_ctx bsdf_ctx_at(const struct bsdf *b, const double uv[2])
+{
+    struct bsdf_ctx c = {.b = b, .albedo = b->albedo, .roughness = b->roughness};
+    if (uv) {
+        c.uv[0] = uv[0];
+        c.uv[1] = uv[1];
+    }
+    if (b->albedo_tex) c.albedo = texture_lookup(b->albedo_tex, c.uv[0], c.uv[1]);
+    return c;
 }

@@ -25,11 +25,22 @@
 
 enum transport { TRANSPORT_RADIANCE, TRANSPORT_IMPORTANCE };
 
-/* A BSDF at one surface point: the model plus its texture lookups. */
+/* A BSDF at one surface point: the model plus its texture lookups. Built by bsdf_ctx_at only:
+ * nested BSDFs build their children's from the same uv. */
 struct bsdf_ctx {
     const struct bsdf *b;
-    rgb albedo; /* b->albedo or the texture at the hit's uv */
+    rgb albedo;       /* b->albedo or the texture at the hit's uv */
+    double roughness; /* b->roughness or its texture at the hit's uv */
+    double uv[2];     /* the hit's texture coordinates (0 where nothing reads them) */
 };
+
+/* The context of b at texture coordinates uv (NULL: (0, 0)). */
+struct bsdf_ctx bsdf_ctx_at(const struct bsdf *b, const double uv[2]);
+/* The context of c's nested BSDF i at the same point. */
+static inline struct bsdf_ctx bsdf_child_ctx(const struct bsdf_ctx *c, int i)
+{
+    return bsdf_ctx_at(c->b->child[i], c->uv);
+}
 
 struct bsdf_sample {
     vec3 wo;
@@ -40,7 +51,7 @@ struct bsdf_sample {
 };
 
 struct bsdf_ops {
-    int dims; /* numbers consumed by sample() */
+    int dims; /* numbers consumed by sample(); nested types set bsdf.dims in prepare() */
     bool (*sample)(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum transport mode,
                    struct bsdf_sample *out);
     rgb (*eval)(const struct bsdf_ctx *c, vec3 wi, vec3 wo, enum transport mode);
@@ -48,23 +59,29 @@ struct bsdf_ops {
     bool (*invert)(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler *w);
     bool transmissive; /* can scatter to the other side: no two-sided flip */
     bool delta_only;   /* every lobe is a Dirac delta: never connect to it */
+    /* Optional: derived parameters of one BSDF (called after its children's); nested types set
+     * b->dims, b->transmissive and b->delta_only from their children here. */
+    void (*prepare)(struct bsdf *b);
 };
 
 /* Families (one file each). */
 extern const struct bsdf_ops bsdf_lambert_ops, bsdf_conductor_ops /* also the mirror */,
     bsdf_dielectric_ops, bsdf_plastic_ops, bsdf_rough_conductor_ops, bsdf_rough_dielectric_ops,
     bsdf_rough_plastic_ops;
-extern const struct bsdf_ops *const bsdf_ops_table[BSDF_ROUGH_PLASTIC + 1];
+extern const struct bsdf_ops *const bsdf_ops_table[BSDF_NTYPES];
 
 /* The table entry for a type; NULL for BSDF_NULL (no scattering). Inline: every BSDF call on every
  * path vertex dispatches through it. */
 static inline const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type)
 {
-    return (unsigned)type <= BSDF_ROUGH_PLASTIC ? bsdf_ops_table[type] : NULL;
+    return (unsigned)type < BSDF_NTYPES ? bsdf_ops_table[type] : NULL;
 }
 
-/* Derived parameters (e.g. plastic's diffuse Fresnel); called once after loading. */
+/* Derived parameters (e.g. plastic's diffuse Fresnel, dims, the flags); called once after loading,
+ * children first. */
 void bsdf_prepare(struct bsdf *b);
+/* bsdf_prepare on every BSDF of a scene's array, nested ones before those that hold them. */
+void bsdf_prepare_all(struct bsdf *bs, int n);
 
 static inline bool bsdf_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s,
                                enum transport mode, struct bsdf_sample *out)

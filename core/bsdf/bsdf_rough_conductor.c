@@ -19,7 +19,7 @@ static bool rc_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum
     const struct bsdf *b = c->b;
     double u1 = sampler_next(s, DIM_CONTINUOUS), u2 = sampler_next(s, DIM_CONTINUOUS);
     if (wi.z <= 0) return false;
-    double alpha = mf_alpha(b->roughness);
+    double alpha = mf_alpha(c->roughness);
     vec3 m = mf_sample(b->dist, alpha, u1, u2);
     double wim = vdot(wi, m);
     if (wim <= 0) return false;
@@ -43,7 +43,7 @@ static rgb rc_eval(const struct bsdf_ctx *c, vec3 wi, vec3 wo, enum transport mo
     const struct bsdf *b = c->b;
     vec3 h;
     if (wi.z <= 0 || wo.z <= 0 || !mf_half_reflect(wi, wo, &h)) return v3s(0);
-    double alpha = mf_alpha(b->roughness), wih = vdot(wi, h);
+    double alpha = mf_alpha(c->roughness), wih = vdot(wi, h);
     double fr = mf_D(b->dist, alpha, h) * mf_G(b->dist, alpha, wi, wo, h) / (4 * wi.z * wo.z);
     return vscale(vmul(c->albedo, fresnel_conductor(wih, b->eta, b->k)), fr);
 }
@@ -55,7 +55,7 @@ static double rc_pdf(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
     if (wi.z <= 0 || wo.z <= 0 || !mf_half_reflect(wi, wo, &h)) return 0;
     double wih = vdot(wi, h);
     if (wih <= 0) return 0;
-    return mf_pdf(b->dist, mf_alpha(b->roughness), h) / (4 * wih);
+    return mf_pdf(b->dist, mf_alpha(c->roughness), h) / (4 * wih);
 }
 
 static bool rc_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler *w)
@@ -64,7 +64,7 @@ static bool rc_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     vec3 h;
     double u1, u2;
     if (wi.z <= 0 || wo.z <= 0 || !mf_half_reflect(wi, wo, &h) || vdot(wi, h) <= 0) return false;
-    if (!mf_invert(b->dist, mf_alpha(b->roughness), h, &u1, &u2)) return false;
+    if (!mf_invert(b->dist, mf_alpha(c->roughness), h, &u1, &u2)) return false;
     sampler_put(w, DIM_CONTINUOUS, u1);
     sampler_put(w, DIM_CONTINUOUS, u2);
     return true;

@@ -78,7 +78,7 @@ static bool rd_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum
     double ud = sampler_next(s, DIM_DISCRETE);
     double u1 = sampler_next(s, DIM_CONTINUOUS), u2 = sampler_next(s, DIM_CONTINUOUS);
     if (wi.z == 0) return false;
-    double alpha = mf_alpha(b->roughness), salpha = mf_sample_alpha(b->roughness, wi.z);
+    double alpha = mf_alpha(c->roughness), salpha = mf_sample_alpha(c->roughness, wi.z);
     vec3 m = mf_sample(b->dist, salpha, u1, u2);
     double wim = vdot(wi, m);
     if (wim * wi.z <= 0) return false;
@@ -123,7 +123,7 @@ static rgb rd_eval(const struct bsdf_ctx *c, vec3 wi, vec3 wo, enum transport mo
     const struct bsdf *b = c->b;
     struct rd_geom g;
     if (!rd_geometry(b, wi, wo, &g)) return v3s(0);
-    double alpha = mf_alpha(b->roughness);
+    double alpha = mf_alpha(c->roughness);
     double DG = mf_D(b->dist, alpha, g.m) * mf_G(b->dist, alpha, wi, wo, g.m);
     double f;
     if (g.reflect)
@@ -139,7 +139,7 @@ static double rd_pdf(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
     const struct bsdf *b = c->b;
     struct rd_geom g;
     if (!rd_geometry(b, wi, wo, &g)) return 0;
-    double salpha = mf_sample_alpha(b->roughness, wi.z);
+    double salpha = mf_sample_alpha(c->roughness, wi.z);
     return mf_pdf(b->dist, salpha, g.m) * rd_jacobian(&g) * rd_lobe_prob(b, &g);
 }
 
@@ -149,7 +149,7 @@ static bool rd_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     struct rd_geom g;
     double u1, u2;
     if (!rd_geometry(b, wi, wo, &g) || !(rd_lobe_prob(b, &g) > 0)) return false;
-    if (!mf_invert(b->dist, mf_sample_alpha(b->roughness, wi.z), g.m, &u1, &u2)) return false;
+    if (!mf_invert(b->dist, mf_sample_alpha(c->roughness, wi.z), g.m, &u1, &u2)) return false;
     double lo = 0, hi = 1;
     if (b->enable_refraction) {
         if (g.reflect)

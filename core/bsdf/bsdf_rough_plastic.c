@@ -41,7 +41,7 @@ static rgb rp_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
     vec3 h;
     rgb f = v3s(0);
     if (mf_half_reflect(wi, wo, &h)) {
-        double alpha = mf_alpha(b->roughness), wih = vdot(wi, h);
+        double alpha = mf_alpha(c->roughness), wih = vdot(wi, h);
         if (wih > 0)
             f = v3s(fr_out(wih, b->ior) * mf_D(b->dist, alpha, h) * mf_G(b->dist, alpha, wi, wo, h) /
                     (4 * wi.z * wo.z));
@@ -63,7 +63,7 @@ static void rp_pdfs(const struct bsdf_ctx *c, vec3 wi, vec3 wo, double *p_coat, 
     vec3 h;
     *p_coat = 0;
     if (mf_half_reflect(wi, wo, &h) && vdot(wi, h) > 0)
-        *p_coat = pc * mf_pdf(b->dist, mf_sample_alpha(b->roughness, wi.z), h) / (4 * vdot(wo, h));
+        *p_coat = pc * mf_pdf(b->dist, mf_sample_alpha(c->roughness, wi.z), h) / (4 * vdot(wo, h));
     *p_base = (1 - pc) * wo.z * INV_PI;
 }
 
@@ -78,7 +78,7 @@ static bool rp_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum
     vec3 wo;
     int lobe;
     if (ud < coat_prob(c, wi.z)) {
-        vec3 m = mf_sample(b->dist, mf_sample_alpha(b->roughness, wi.z), u1, u2);
+        vec3 m = mf_sample(b->dist, mf_sample_alpha(c->roughness, wi.z), u1, u2);
         if (vdot(wi, m) <= 0) return false;
         wo = mf_reflect(wi, m);
         lobe = 0;
@@ -125,7 +125,7 @@ static bool rp_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     bool coat = sampler_fresh(w) * (pc + pb) < pc; /* Eq. 5.7: lobe in proportion to its pdf share */
     if (coat) {
         vec3 h;
-        if (!mf_half_reflect(wi, wo, &h) || !mf_invert(b->dist, mf_sample_alpha(b->roughness, wi.z), h, &u1, &u2))
+        if (!mf_half_reflect(wi, wo, &h) || !mf_invert(b->dist, mf_sample_alpha(c->roughness, wi.z), h, &u1, &u2))
             return false;
     } else {
         warp_cosine_hemisphere_invert(wo, &u1, &u2);

@@ -135,7 +135,7 @@ void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, 
         const struct bsdf_ops *ops = bsdf_ops_for(z.v.bc.b->type);
         z.wi = frame_to_local(&z.v.sh, z.v.wi);
         z.eps = ray_eps(z.v.p);
-        if (!ops->delta_only && i + 1 >= pc->min_length) {
+        if (!z.v.bc.b->delta_only && i + 1 >= pc->min_length) {
             sampler_begin(s, STREAM_EMITTER, i);
             add_term(&sum, light_sample(sc, s, &z, ops), &w->nf, i + 1);
         }

@@ -70,9 +70,9 @@ static bool invert_at(const struct vertex *v, vec3 wo, rng *r, double *u, int *n
     *n = 0;
     if (!v->bc.b) return false;
     const struct bsdf_ops *ops = bsdf_ops_for(v->bc.b->type);
-    if (ops->dims == 0) return true; /* a mirror draws nothing: the empty vector is its only point */
+    if (v->bc.b->dims == 0) return true; /* a mirror draws nothing: the empty vector is its only point */
     vec3 wi = frame_to_local(&v->sh, v->wi), wl = frame_to_local(&v->sh, wo);
-    if (ops->delta_only && !delta_lobe_dir(&v->bc, wi, wl, &wl)) return false;
+    if (v->bc.b->delta_only && !delta_lobe_dir(&v->bc, wi, wl, &wl)) return false;
     struct block_io out = {{&bio_ops, 0, 0, 0}, u, 0, r};
     return ops->invert(&v->bc, wi, wl, &out.base) && (*n = out.n, true);
 }
@@ -140,7 +140,7 @@ void ctrl_begin(struct ctrl_sampler *cs, struct pss_sampler *p, const struct ctr
         subpath(cur, st, &x, &n);
         for (int i = 1; i + 1 < n; i++) {
             struct ctrl_block *b = &cs->blk[st][i];
-            b->nu = x[i].bc.b ? bsdf_ops_for(x[i].bc.b->type)->dims : 0;
+            b->nu = x[i].bc.b ? x[i].bc.b->dims : 0;
             for (int d = 0; d < b->nu; d++) b->u[d] = pss_current(p, st, i * SAMPLER_BLOCK + d);
         }
     }

@@ -168,7 +168,7 @@ bool pitp_target_may_change(const struct mmlt_path *x)
         const struct vertex *v = i < x->t ? &x->cam[i] : &x->emi[i - x->t];
         if (!v->bc.b) continue;
         enum bsdf_type ty = v->bc.b->type;
-        if (ty == BSDF_DIELECTRIC || ty == BSDF_ROUGH_DIELECTRIC || v->delta || bsdf_ops_for(ty)->delta_only) return true;
+        if (ty == BSDF_DIELECTRIC || ty == BSDF_ROUGH_DIELECTRIC || v->delta || v->bc.b->delta_only) return true;
     }
     return false;
 }

@@ -77,7 +77,7 @@ static rgb endpoint_f(const struct scene *sc, const struct vertex *v, vec3 d, en
     if (v->kind == VK_CAMERA) return v3s(camera_pdf_dir(&sc->cam, d));
     if (v->kind == VK_EMITTER) return emitter_radiance(sc, v->prim, v->ng, d);
     if (v->kind == VK_ENV) return env_radiance(sc, vneg(d)); /* d leaves the environment */
-    if (!v->bc.b || bsdf_ops_for(v->bc.b->type)->delta_only) return v3s(0);
+    if (!v->bc.b || v->bc.b->delta_only) return v3s(0);
     rgb f = bsdf_eval(&v->bc, frame_to_local(&v->sh, v->wi), frame_to_local(&v->sh, d), mode);
     return mode == TRANSPORT_IMPORTANCE ? vscale(f, adjoint_shading_factor(v, v->wi, d)) : f;
 }

@@ -24,7 +24,7 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
     v->b1 = h->b1;
     v->b2 = h->b2;
     v->bc.b = pr->bsdf >= 0 && sc->bsdfs[pr->bsdf].type != BSDF_NULL ? &sc->bsdfs[pr->bsdf] : NULL;
-    const struct texture *tex = v->bc.b ? v->bc.b->albedo_tex : NULL;
+    bool need_uv = v->bc.b && v->bc.b->needs_uv;
     vec3 ns;
     double uv[2] = {0, 0};
     if (pr->kind == PRIM_SPHERE) {
@@ -32,7 +32,7 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
         v->ng = vnorm(q);
         v->p = vmad(pr->center, v->ng, pr->radius); /* back onto the sphere in double precision */
         ns = v->ng;
-        if (tex) sphere_uv(pr, v->ng, uv);
+        if (need_uv) sphere_uv(pr, v->ng, uv);
     } else {
         const int *t = pr->tri + 3 * v->tri;
         vec3 p0 = pr->p[t[0]], p1 = pr->p[t[1]], p2 = pr->p[t[2]];
@@ -45,17 +45,17 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
             if (vlen2(n) > 0) ns = vnorm(n);
             if (vdot(ns, v->ng) < 0) ns = vneg(ns);
         }
-        if (pr->uv && tex) /* only textures read them */
+        if (pr->uv && need_uv) /* only textures read them */
             for (int c = 0; c < 2; c++)
                 uv[c] = b0 * pr->uv[2 * t[0] + c] + h->b1 * pr->uv[2 * t[1] + c] + h->b2 * pr->uv[2 * t[2] + c];
     }
     v->wi = vneg(d);
     v->front = vdot(v->ng, v->wi) > 0;
-    v->bc.albedo = v->bc.b ? v->bc.b->albedo : v3s(0);
-    if (tex) v->bc.albedo = texture_lookup(tex, uv[0], uv[1]);
+    if (v->bc.b) v->bc = bsdf_ctx_at(v->bc.b, uv);
+    else v->bc.albedo = v3s(0);
     /* Two-sided shading: opaque surfaces seen from the back shade as if seen from the front. */
     v->flipped = false;
-    if (!v->front && v->bc.b && sc->two_sided_shading && !bsdf_ops_for(v->bc.b->type)->transmissive) {
+    if (!v->front && v->bc.b && sc->two_sided_shading && !v->bc.b->transmissive) {
         v->ng = vneg(v->ng);
         ns = vneg(ns);
         v->flipped = true;

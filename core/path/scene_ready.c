@@ -29,8 +29,8 @@ struct scene *scene_load(const char *path, char *err, size_t errlen)
             scene_free(s);
             return NULL;
         }
-        bsdf_prepare(&s->bsdfs[i]);
     }
+    bsdf_prepare_all(s->bsdfs, s->nbsdfs);
     if (!(s->emitters = emitters_build(s, err, errlen)) || !(s->accel = accel_build(s, err, errlen))) {
         scene_free(s);
         return NULL;

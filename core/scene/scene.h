@@ -18,10 +18,22 @@ enum bsdf_type {
     BSDF_DIELECTRIC,
     BSDF_ROUGH_DIELECTRIC,
     BSDF_PLASTIC,
-    BSDF_ROUGH_PLASTIC
+    BSDF_ROUGH_PLASTIC,
+    BSDF_THINSHEET,
+    BSDF_DIFFUSE_TRANSMISSION,
+    BSDF_TRANSPARENCY,    /* child[0] = base, alpha = opacity */
+    BSDF_SMOOTH_COAT,     /* child[0] = substrate */
+    BSDF_ROUGH_COAT,      /* child[0] = substrate */
+    BSDF_OREN_NAYAR,
+    BSDF_PHONG,
+    BSDF_MIXED,           /* child[0], child[1] = bsdf0, bsdf1, ratio = weight of bsdf0 */
+    BSDF_NTYPES
 };
 
 enum mf_dist { MF_BECKMANN, MF_GGX };
+
+/* Deepest nesting of bsdfs inside bsdfs the loader accepts (a cycle of names nests forever). */
+#define BSDF_MAX_NESTING 8
 
 /* RGB float bitmap, row 0 at the top (as OpenImageIO reads it), Tungsten's BitmapTexture
  * conventions (README, "Textures"). */
@@ -54,8 +66,15 @@ struct bsdf {
     double roughness;              /* alpha, as Tungsten's `roughness` */
     double thickness;              /* plastics */
     rgb sigma_a;                   /* plastics */
-    /* Derived by bsdf_prepare() after loading; never read from JSON. */
+    /* Nested BSDFs (transparency, coats, mixed): slots of the same scene.bsdfs array, which is
+     * allocated once, so the pointers stay valid; never NULL for the types that have them. */
+    const struct bsdf *child[2];
+    /* Derived by bsdf_prepare() after loading (children first); never read from JSON. */
     double diffuse_fresnel;        /* plastics: hemispherical average of the coat's Fresnel (inside) */
+    int dims;                      /* numbers sample() consumes (nested types: their own + children's) */
+    bool transmissive;             /* some lobe scatters to the other side: no two-sided flip */
+    bool delta_only;               /* every lobe is a Dirac delta: never connect to it */
+    bool needs_uv;                 /* a texture somewhere in it is read at the hit's uv */
 };
 
 enum prim_kind { PRIM_MESH, PRIM_QUAD, PRIM_SPHERE, PRIM_INFINITE_SPHERE };

@@ -3,6 +3,7 @@
  * ggx with roughness 0.1; rough_plastic ggx with roughness 0.02; dielectrics and plastics ior 1.5;
  * plastics thickness 1, sigma_a 0; enable_refraction true. */
 #include "base/util.h"
+#include "bsdf/bsdf.h"
 #include "scene/metals.h"
 #include "scene/scene_load_internal.h"
 #include <stdio.h>
@@ -18,7 +19,16 @@ static const char *const type_names[] = {
     [BSDF_ROUGH_DIELECTRIC] = "rough_dielectric",
     [BSDF_PLASTIC] = "plastic",
     [BSDF_ROUGH_PLASTIC] = "rough_plastic",
+    [BSDF_THINSHEET] = "thinsheet",
+    [BSDF_DIFFUSE_TRANSMISSION] = "diffuse_transmission",
+    [BSDF_TRANSPARENCY] = "transparency",
+    [BSDF_SMOOTH_COAT] = "smooth_coat",
+    [BSDF_ROUGH_COAT] = "rough_coat",
+    [BSDF_OREN_NAYAR] = "oren_nayar",
+    [BSDF_PHONG] = "phong",
+    [BSDF_MIXED] = "mixed",
 };
+_Static_assert(sizeof type_names / sizeof type_names[0] == BSDF_NTYPES, "a bsdf type without a name");
 #define NTYPES ((int)(sizeof type_names / sizeof type_names[0]))
 
 static void set_defaults(struct bsdf *b, enum bsdf_type t)
@@ -113,6 +123,35 @@ static bool parse_ior(struct loader *L, const cJSON *j, const char *path, struct
     return true;
 }
 
+static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const char *default_name,
+                       struct bsdf *b);
+static int add_bsdf(struct loader *L);
+static int find_named(const struct loader *L, const char *name);
+static int default_lambert(struct loader *L);
+
+/* A nested bsdf (transparency's base, a coat's substrate, mixed's bsdf0/bsdf1): a top-level name, an
+ * inline object, or absent (Tungsten's default lambert). */
+static bool parse_child(struct loader *L, const cJSON *j, const char *path, const char *key, const struct bsdf **out)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, key);
+    char p[JPATH_MAX];
+    jpath_key(p, path, key);
+    if (!v) {
+        *out = &L->s->bsdfs[default_lambert(L)];
+        return true;
+    }
+    if (cJSON_IsString(v)) {
+        int i = find_named(L, v->valuestring);
+        if (i < 0) return jfail(&L->c, p, "undefined bsdf \"%s\" (not in the top-level bsdfs)", v->valuestring);
+        *out = &L->s->bsdfs[i];
+        return true;
+    }
+    if (!cJSON_IsObject(v)) return jfail(&L->c, p, "expected a bsdf name or a bsdf object");
+    int k = add_bsdf(L);
+    *out = &L->s->bsdfs[k];
+    return parse_bsdf(L, v, p, p, &L->s->bsdfs[k]);
+}
+
 /* Parses one bsdf object into b (which must be zeroed: texture ownership starts here). */
 static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const char *default_name,
                        struct bsdf *b)
@@ -123,12 +162,14 @@ static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const
     if (!jget_string(c, j, path, "type", true, &type) || !jget_string(c, j, path, "name", false, &name))
         return false;
     int t = 0;
-    while (t < NTYPES && strcmp(type_names[t], type) != 0) t++;
+    while (t < NTYPES && !(strcmp(type_names[t], type) == 0 && (t == BSDF_NULL || bsdf_ops_for(t)))) t++;
     if (t == NTYPES) {
-        char p[JPATH_MAX];
+        char p[JPATH_MAX], known[512] = "";
         jpath_key(p, path, "type");
-        return jfail(c, p, "unknown bsdf type \"%s\" (supported: null lambert mirror conductor rough_conductor "
-                           "dielectric rough_dielectric plastic rough_plastic)", type);
+        for (int k = 0; k < NTYPES; k++)
+            if (k == BSDF_NULL || bsdf_ops_for(k))
+                snprintf(known + strlen(known), sizeof known - strlen(known), "%s%s", k ? " " : "", type_names[k]);
+        return jfail(c, p, "unknown bsdf type \"%s\" (supported: %s)", type, known);
     }
     set_defaults(b, (enum bsdf_type)t);
     snprintf(b->name, sizeof b->name, "%s", name ? name : default_name);
@@ -158,6 +199,13 @@ static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const
         if (b->thickness < 0) return jfail(c, p, "expected a non-negative number");
         return nonneg(c, path, "sigma_a", b->sigma_a);
     }
+    case BSDF_TRANSPARENCY:
+        return parse_child(L, j, path, "base", &b->child[0]);
+    case BSDF_SMOOTH_COAT:
+    case BSDF_ROUGH_COAT:
+        return parse_child(L, j, path, "substrate", &b->child[0]);
+    case BSDF_MIXED:
+        return parse_child(L, j, path, "bsdf0", &b->child[0]) && parse_child(L, j, path, "bsdf1", &b->child[1]);
     default:
         return true;
     }
@@ -167,6 +215,58 @@ static int add_bsdf(struct loader *L)
 {
     ASSERT(L->s->nbsdfs < L->bsdf_cap);
     return L->s->nbsdfs++;
+}
+
+/* Tungsten gives primitives without a bsdf, and nested bsdfs left out, a default lambert
+ * (Primitive::_defaultBsdf); one shared slot. */
+static int default_lambert(struct loader *L)
+{
+    if (L->default_bsdf < 0) {
+        L->default_bsdf = add_bsdf(L);
+        set_defaults(&L->s->bsdfs[L->default_bsdf], BSDF_LAMBERT);
+        snprintf(L->s->bsdfs[L->default_bsdf].name, sizeof L->s->bsdfs[0].name, "default");
+    }
+    return L->default_bsdf;
+}
+
+static const char *const child_keys[] = {"base", "substrate", "bsdf0", "bsdf1"};
+
+int bsdf_json_slots(const cJSON *v)
+{
+    if (cJSON_IsArray(v)) {
+        int n = 0;
+        for (const cJSON *e = v->child; e; e = e->next) n += bsdf_json_slots(e);
+        return n;
+    }
+    if (!cJSON_IsObject(v)) return v ? 1 : 0; /* a name (or junk the parser refuses) */
+    int n = 1;
+    for (size_t k = 0; k < sizeof child_keys / sizeof child_keys[0]; k++)
+        n += bsdf_json_slots(cJSON_GetObjectItemCaseSensitive(v, child_keys[k]));
+    return n;
+}
+
+/* Depth of b's nesting; more than BSDF_MAX_NESTING means a cycle of names (or absurd nesting). */
+static int nesting(const struct bsdf *b, int depth)
+{
+    int d = depth;
+    for (int i = 0; i < 2 && d <= BSDF_MAX_NESTING; i++)
+        if (b->child[i]) {
+            int c = nesting(b->child[i], depth + 1);
+            d = c > d ? c : d;
+        }
+    return d;
+}
+
+bool check_bsdf_nesting(struct loader *L)
+{
+    for (int i = 0; i < L->s->nbsdfs; i++)
+        if (nesting(&L->s->bsdfs[i], 0) > BSDF_MAX_NESTING) {
+            char p[JPATH_MAX];
+            jpath_idx(p, "bsdfs", i);
+            return jfail(&L->c, p, "bsdf \"%s\": nested bsdfs refer to each other in a cycle or nest deeper than %d",
+                         L->s->bsdfs[i].name, BSDF_MAX_NESTING);
+        }
+    return true;
 }
 
 bool load_bsdfs(struct loader *L)
@@ -202,13 +302,7 @@ bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int pr
     char p[JPATH_MAX];
     jpath_key(p, path, "bsdf");
     if (!v) {
-        /* Tungsten gives such primitives a shared default lambert (Primitive::_defaultBsdf). */
-        if (L->default_bsdf < 0) {
-            L->default_bsdf = add_bsdf(L);
-            set_defaults(&L->s->bsdfs[L->default_bsdf], BSDF_LAMBERT);
-            snprintf(L->s->bsdfs[L->default_bsdf].name, sizeof L->s->bsdfs[0].name, "default");
-        }
-        *out = L->default_bsdf;
+        *out = default_lambert(L);
         return true;
     }
     if (cJSON_IsArray(v)) {

@@ -210,14 +210,15 @@ static bool load_root(struct loader *L, const cJSON *root)
     const cJSON *prims = cJSON_GetObjectItemCaseSensitive(root, "primitives");
     if (!prims) return jfail(c, "primitives", "missing required field");
     if (!cJSON_IsArray(prims)) return jfail(c, "primitives", "expected an array of primitive objects");
-    int nb = cJSON_IsArray(L->bsdfs_json) ? cJSON_GetArraySize(L->bsdfs_json) : 0;
     s->nprims = cJSON_GetArraySize(prims);
-    /* Every primitive adds at most one inline bsdf, plus one shared default. */
-    L->bsdf_cap = nb + s->nprims + 1;
+    /* Top-level and inline bsdfs with their nested ones, plus one shared default. */
+    L->bsdf_cap = bsdf_json_slots(L->bsdfs_json) + 1;
+    for (const cJSON *p = prims->child; p; p = p->next)
+        L->bsdf_cap += cJSON_IsObject(p) ? bsdf_json_slots(cJSON_GetObjectItemCaseSensitive(p, "bsdf")) : 0;
     s->bsdfs = xcalloc(L->bsdf_cap, sizeof *s->bsdfs);
     s->prims = xcalloc(s->nprims ? s->nprims : 1, sizeof *s->prims);
     for (int i = 0; i < s->nprims; i++) s->prims[i].bsdf = -1;
-    if (!load_bsdfs(L) || !load_primitives(L, prims)) return false;
+    if (!load_bsdfs(L) || !load_primitives(L, prims) || !check_bsdf_nesting(L)) return false;
     if (!load_camera(L, cJSON_GetObjectItemCaseSensitive(root, "camera"))) return false;
     if (!load_settings(L, cJSON_GetObjectItemCaseSensitive(root, "integrator"),
                        cJSON_GetObjectItemCaseSensitive(root, "renderer")))

@@ -23,6 +23,10 @@ bool loader_resource(const struct loader *L, const char *rel, char *out, size_t 
 bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out);
 
 bool load_bsdfs(struct loader *L);
+/* Slots a bsdf value (object, name, array of them) can take in scene.bsdfs, nested ones included. */
+int bsdf_json_slots(const cJSON *v);
+/* Refuses cycles of named nested bsdfs (after loading). */
+bool check_bsdf_nesting(struct loader *L);
 /* Resolves prim.bsdf (name, inline object, or absent → Tungsten's default lambert). */
 bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out);
 

@@ -127,7 +127,7 @@ static void check_reflection_reciprocity(enum bsdf_type type)
     for (int i = 0; i < 100000; i++) {
         b.dist = (i & 1) ? MF_GGX : MF_BECKMANN;
         b.roughness = 0.05 + rng_uniform(&r);
-        struct bsdf_ctx c = {&b, b.albedo};
+        struct bsdf_ctx c = bsdf_ctx_at(&b, NULL);
         double side = (type == BSDF_ROUGH_DIELECTRIC && (i & 2)) ? -1 : 1;
         vec3 wi = dir_cos(side * rng_uniform(&r), 2 * M_PI * rng_uniform(&r));
         vec3 wo = dir_cos(side * rng_uniform(&r), 2 * M_PI * rng_uniform(&r));
@@ -213,7 +213,7 @@ Test(bsdf_rough, dielectric_reflection_reciprocity) { check_reflection_reciproci
 Test(bsdf_rough, dielectric_refraction_generalized_reciprocity)
 {
     struct bsdf b = rough_material(BSDF_ROUGH_DIELECTRIC, MF_GGX, 0.3);
-    struct bsdf_ctx c = {&b, b.albedo};
+    struct bsdf_ctx c = bsdf_ctx_at(&b, NULL);
     rng r;
     rng_seed(&r, 33, 0);
     struct rng_sampler s;
@@ -253,7 +253,7 @@ Test(bsdf_rough, dielectric_reflection_only)
 {
     struct bsdf b = rough_material(BSDF_ROUGH_DIELECTRIC, MF_BECKMANN, 0.5);
     b.enable_refraction = false;
-    struct bsdf_ctx c = {&b, b.albedo};
+    struct bsdf_ctx c = bsdf_ctx_at(&b, NULL);
     vec3 wi = dir_cos(0.7, 0.2), wo = dir_cos(-0.6, 3.0);
     cr_assert_eq(bsdf_pdf(&c, wi, wo), 0.0);
     cr_assert_eq(bsdf_eval(&c, wi, wo, TRANSPORT_RADIANCE).x, 0.0);

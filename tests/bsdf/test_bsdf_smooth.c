@@ -54,7 +54,7 @@ Test(bsdf_smooth, dispatch_and_flags)
  * to Fi against the substrate's T (1 - Fi) mean(albedo). */
 static void check_sample_consistency(const struct bsdf *b)
 {
-    struct bsdf_ctx c = {b, b->albedo};
+    struct bsdf_ctx c = bsdf_ctx_at(b, NULL);
     const struct bsdf_ops *ops = bsdf_ops_for(b->type);
     struct sampler_independent s;
     sampler_independent_init(&s, 11, b->type);
@@ -108,7 +108,7 @@ Test(bsdf_smooth, below_horizon_is_black)
     const struct bsdf *bs[] = {&l, &p};
     vec3 up = dir_cos_phi(0.6, 1), down = dir_cos_phi(-0.6, 2);
     for (int i = 0; i < 2; i++) {
-        struct bsdf_ctx c = {bs[i], bs[i]->albedo};
+        struct bsdf_ctx c = bsdf_ctx_at(bs[i], NULL);
         cr_assert(vzero(bsdf_eval(&c, up, down, TRANSPORT_RADIANCE)));
         cr_assert(vzero(bsdf_eval(&c, down, up, TRANSPORT_RADIANCE)));
         cr_assert_eq(bsdf_pdf(&c, up, down), 0);
@@ -128,7 +128,7 @@ Test(bsdf_smooth, reciprocity)
     rng r;
     rng_seed(&r, 5, 0);
     for (int i = 0; i < 3; i++) {
-        struct bsdf_ctx c = {bs[i], bs[i]->albedo};
+        struct bsdf_ctx c = bsdf_ctx_at(bs[i], NULL);
         for (int j = 0; j < 10000; j++) {
             vec3 a = warp_cosine_hemisphere(rng_uniform(&r), rng_uniform(&r));
             vec3 b = warp_cosine_hemisphere(rng_uniform(&r), rng_uniform(&r));
@@ -148,7 +148,7 @@ Test(bsdf_smooth, mirror_and_conductor_reflect)
         vec3 wi = wi_up(i);
         struct bsdf_sample o;
         struct fixed_sampler f;
-        struct bsdf_ctx cm = {&m, m.albedo}, ck = {&k, k.albedo};
+        struct bsdf_ctx cm = bsdf_ctx_at(&m, NULL), ck = bsdf_ctx_at(&k, NULL);
         cr_assert(bsdf_sample(&cm, wi, fixed(&f, 0.5), TRANSPORT_RADIANCE, &o));
         cr_assert(o.delta && o.pdf == 1 && o.lobe == CONDUCTOR_LOBE_REFLECT);
         cr_assert(o.wo.x == -wi.x && o.wo.y == -wi.y && o.wo.z == wi.z);
@@ -169,7 +169,7 @@ Test(bsdf_smooth, dielectric_refraction_and_modes)
 {
     struct bsdf b = make_bsdf(BSDF_DIELECTRIC);
     b.albedo = v3(1, 0.9, 0.8);
-    struct bsdf_ctx c = {&b, b.albedo};
+    struct bsdf_ctx c = bsdf_ctx_at(&b, NULL);
     struct fixed_sampler f;
     for (int side = 0; side < 2; side++)
         for (int i = 0; i < N_WI_UP; i++) {
@@ -216,7 +216,7 @@ Test(bsdf_smooth, dielectric_without_refraction_reflects_with_weight_F)
 {
     struct bsdf b = make_bsdf(BSDF_DIELECTRIC);
     b.enable_refraction = false;
-    struct bsdf_ctx c = {&b, b.albedo};
+    struct bsdf_ctx c = bsdf_ctx_at(&b, NULL);
     struct fixed_sampler f;
     for (int i = 0; i < N_WI_UP; i++) {
         vec3 wi = wi_up(i);
@@ -241,7 +241,7 @@ Test(bsdf_smooth, invert_rejects_impossible_directions)
     vec3 wi = dir_cos_phi(0.7, 0.4), below = dir_cos_phi(-0.3, 2), other = dir_cos_phi(0.5, 1);
     const struct bsdf *all[] = {&l, &m, &k, &d, &p};
     for (int i = 0; i < 5; i++) {
-        struct bsdf_ctx c = {all[i], all[i]->albedo};
+        struct bsdf_ctx c = bsdf_ctx_at(all[i], NULL);
         sampler_begin(&w.base, STREAM_CAMERA, 0);
         cr_assert(!bsdf_invert(&c, wi, below, &w.base), "family %d accepted a wrong-side direction", i);
         sampler_begin(&w.base, STREAM_CAMERA, 0);
@@ -254,7 +254,7 @@ Test(bsdf_smooth, invert_rejects_impossible_directions)
         }
     }
     /* a reflection 1e-3 away from the mirror direction is not the delta direction */
-    struct bsdf_ctx cm = {&m, m.albedo};
+    struct bsdf_ctx cm = bsdf_ctx_at(&m, NULL);
     vec3 near = vnorm(vadd(smooth_reflect(wi), v3(10 * SMOOTH_DELTA_TOL, 0, 0)));
     sampler_begin(&w.base, STREAM_CAMERA, 0);
     cr_assert(!bsdf_invert(&cm, wi, near, &w.base));
@@ -271,7 +271,7 @@ Test(bsdf_smooth, invert_puts_dims_numbers_in_order)
     sampler_writer_init(&w, 4, 0);
     struct bsdf d = make_bsdf(BSDF_DIELECTRIC), p = make_bsdf(BSDF_PLASTIC), l = make_bsdf(BSDF_LAMBERT);
     vec3 wi = dir_cos_phi(0.7, 0.4);
-    struct bsdf_ctx cd = {&d, d.albedo}, cp = {&p, p.albedo}, cl = {&l, l.albedo};
+    struct bsdf_ctx cd = bsdf_ctx_at(&d, NULL), cp = bsdf_ctx_at(&p, NULL), cl = bsdf_ctx_at(&l, NULL);
     int base = 2 * SAMPLER_BLOCK;
     sampler_begin(&w.base, STREAM_EMITTER, 2);
     cr_assert(bsdf_invert(&cd, wi, smooth_reflect(wi), &w.base));
@@ -296,7 +296,7 @@ static void roundtrip_family(const struct bsdf *b, const vec3 *wis, int nwi, enu
     sampler_writer_init(&w, 99, b->type);
     struct sampler_independent s;
     sampler_independent_init(&s, 7, b->type);
-    struct bsdf_ctx c = {b, b->albedo};
+    struct bsdf_ctx c = bsdf_ctx_at(b, NULL);
     const long n = 100000;
     for (int k = 0; k < nwi; k++) {
         long fails[5] = {0};
@@ -355,7 +355,7 @@ Test(bsdf_smooth, delta_invert_accepts_path_space_rounding)
     static struct sampler_writer w;
     sampler_writer_init(&w, 8, 0);
     struct bsdf d = make_bsdf(BSDF_DIELECTRIC);
-    struct bsdf_ctx c = {&d, d.albedo};
+    struct bsdf_ctx c = bsdf_ctx_at(&d, NULL);
     struct fixed_sampler f;
     for (int side = 0; side < 2; side++)
         for (int lobe = 0; lobe < 2; lobe++) {

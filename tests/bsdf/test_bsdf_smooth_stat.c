@@ -46,7 +46,7 @@ static double case_pdf(void *p, vec3 d)
 
 static struct chi2_result run_chi2(const struct bsdf *b, vec3 wi, double scale, uint64_t seed)
 {
-    struct dir_case k = {{b, b->albedo}, wi, TRANSPORT_RADIANCE, {{0}, 0}, scale};
+    struct dir_case k = {bsdf_ctx_at(b, NULL), wi, TRANSPORT_RADIANCE, {{0}, 0}, scale};
     return chi2_test_dir(case_sample, case_pdf, &k, 32, 64, N_CHI2, seed);
 }
 
@@ -104,7 +104,7 @@ Test(stat_bsdf_smooth, dielectric_choice_frequencies)
             vec3 wi = wi_up(i);
             if (side) wi.z = -wi.z;
             double ct, F = fresnel_dielectric(fabs(wi.z), side ? 1 / b.ior : b.ior, &ct);
-            struct bsdf_ctx c = {&b, b.albedo}, cn = {&nr, nr.albedo};
+            struct bsdf_ctx c = bsdf_ctx_at(&b, NULL), cn = bsdf_ctx_at(&nr, NULL);
             long refl = 0, refl_nr = 0;
             for (long n = 0; n < N_CHI2; n++) {
                 struct bsdf_sample o;
@@ -144,7 +144,7 @@ Test(stat_bsdf_smooth, energy_white_albedo_at_most_one)
     sampler_independent_init(&s, 23, 0);
     for (int j = 0; j < 5; j++)
         for (int i = 0; i < N_WI_UP; i++) {
-            struct bsdf_ctx c = {&bs[j], bs[j].albedo};
+            struct bsdf_ctx c = bsdf_ctx_at(&bs[j], NULL);
             vec3 wi = wi_up(i);
             double sum = 0, sum2 = 0;
             for (long n = 0; n < N_CHI2; n++) {
@@ -173,7 +173,7 @@ static void uniformity(const struct bsdf *b, vec3 wi, int *tested)
     sampler_writer_init(&w, 31, b->type);
     struct sampler_independent s;
     sampler_independent_init(&s, 37, b->type);
-    struct bsdf_ctx c = {b, b->albedo};
+    struct bsdf_ctx c = bsdf_ctx_at(b, NULL);
     long bins[2][10] = {{0}}, count[2] = {0};
     double ct, pfirst;
     if (b->type == BSDF_DIELECTRIC) {

@@ -42,8 +42,7 @@ static inline struct bsdf rough_material(enum bsdf_type type, enum mf_dist dist,
 /* Must be called after the struct is in its final place (c.b points into it). */
 static inline void rough_case_bind(struct rough_case *k)
 {
-    k->c.b = &k->b;
-    k->c.albedo = k->b.albedo;
+    k->c = bsdf_ctx_at(&k->b, NULL);
     k->ops = bsdf_ops_for(k->b.type);
 }
 
