@@ -166,6 +166,8 @@ static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const
     if (t == NTYPES) {
         char p[JPATH_MAX], known[512] = "";
         jpath_key(p, path, "type");
+        const char *why = refused_feature(REFUSED_BSDF, type);
+        if (why) return jfail(c, p, "bsdf type \"%s\" is not supported: %s", type, why);
         for (int k = 0; k < NTYPES; k++)
             if (k == BSDF_NULL || bsdf_ops_for(k))
                 snprintf(known + strlen(known), sizeof known - strlen(known), "%s%s", k ? " " : "", type_names[k]);

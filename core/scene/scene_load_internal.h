@@ -32,6 +32,11 @@ bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int pr
 
 bool load_primitives(struct loader *L, const cJSON *arr);
 
+/* scene_refused.c: why a Tungsten type the harness knows by name is not rendered, or NULL when
+ * the name is not one of them (then it is simply unknown). */
+enum refused_kind { REFUSED_PRIMITIVE, REFUSED_BSDF, REFUSED_TEXTURE, REFUSED_CAMERA };
+const char *refused_feature(enum refused_kind kind, const char *name);
+
 /* Tungsten transform: {"position", "scale", "rotation", "look_at", "up", "x_axis", ...} or 16 numbers. */
 bool jval_transform(struct jctx *c, const cJSON *v, const char *path, mat4 *out);
 
