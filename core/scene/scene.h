@@ -75,6 +75,13 @@ struct bsdf {
     bool transmissive;             /* some lobe scatters to the other side: no two-sided flip */
     bool delta_only;               /* every lobe is a Dirac delta: never connect to it */
     bool needs_uv;                 /* a texture somewhere in it is read at the hit's uv */
+    /* nested BSDFs: parameters from JSON (alpha, ratio, ratio_tex), then derived by bsdf_prepare. */
+    double alpha;                  /* transparency: opacity, the probability that the base scatters */
+    double ratio;                  /* mixed: weight of child[0] (bsdf0) when ratio_tex is NULL */
+    struct texture *ratio_tex;     /* mixed: owned; the ratio is the texel's channel average */
+    bool refracts;                 /* some lobe refracts (a dielectric, or one nested in it) */
+    double refract_ior;            /* the ior it refracts with (the first refracting child's) */
+    bool pass_through;             /* has transparency's straight-through lobe (no refraction) */
 };
 
 enum prim_kind { PRIM_MESH, PRIM_QUAD, PRIM_SPHERE, PRIM_INFINITE_SPHERE };
