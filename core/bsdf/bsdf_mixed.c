@@ -1,5 +1,5 @@
 /* Mixed (Tungsten's MixedBsdf): a blend of bsdf0 and bsdf1 with weight r of bsdf0, r the constant
- * ratio or the channel average of its texture at the hit (Tungsten's REQUEST_AVERAGE), tinted by
+ * ratio or its scalar texture at the hit (Tungsten's REQUEST_AVERAGE: texture_load_average), tinted by
  * the mixed BSDF's own albedo:
  *   f = albedo (r f0 + (1 - r) f1),  pdf = r pdf0 + (1 - r) pdf1 (continuous lobes).
  * Numbers: one discrete (u < r -> bsdf0), then the chosen child's numbers, padded to 1 +
@@ -17,8 +17,7 @@ double mixed_ratio(const struct bsdf_ctx *c)
     const struct bsdf *b = c->b;
     double r = b->ratio;
     if (b->ratio_tex) {
-        rgb t = texture_lookup(b->ratio_tex, c->uv[0], c->uv[1]);
-        r = (t.x + t.y + t.z) / 3;
+        r = texture_lookup(b->ratio_tex, c->uv[0], c->uv[1]).x; /* scalar: the same in every channel */
     }
     return clampd(r, 0, 1);
 }

@@ -42,8 +42,8 @@ void nested_put(struct sampler *w, const struct nested_probe *p);
  * -1 when all weights are 0. */
 int nested_pick(struct sampler *w, int n, const double *dw, const double *cw);
 
-/* Probability with which the mixed BSDF of c picks child 0: its constant ratio or the channel
- * average of its ratio texture at c's uv, clamped to [0, 1]. */
+/* Probability with which the mixed BSDF of c picks child 0: its constant ratio or its scalar ratio
+ * texture at c's uv, clamped to [0, 1]. */
 double mixed_ratio(const struct bsdf_ctx *c);
 
 #endif

@@ -162,14 +162,14 @@ static bool parse_alpha(struct loader *L, const cJSON *j, const char *path, stru
     return parse_unit(L, v, p, &b->alpha);
 }
 
-/* mixed's ratio: a number, or a texture read as its channel average (Tungsten's REQUEST_AVERAGE). */
+/* mixed's ratio: a number, or a bitmap read as Tungsten's REQUEST_AVERAGE scalar texture. */
 static bool parse_ratio(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, "ratio");
     if (!v) return true;
     char p[JPATH_MAX];
     jpath_key(p, path, "ratio");
-    if (cJSON_IsString(v) || cJSON_IsObject(v)) return load_texture_value(L, v, p, &b->ratio_tex);
+    if (cJSON_IsString(v) || cJSON_IsObject(v)) return load_texture_average(L, v, p, &b->ratio_tex);
     return parse_unit(L, v, p, &b->ratio);
 }
 
