@@ -21,6 +21,8 @@ struct loader {
  * at path). */
 bool loader_resource(const struct loader *L, const char *rel, char *out, size_t n);
 bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out);
+/* The same bitmap as a scalar texture, Tungsten's REQUEST_AVERAGE (no gamma table; mixed's ratio). */
+bool load_texture_average(struct loader *L, const cJSON *v, const char *path, struct texture **out);
 
 bool load_bsdfs(struct loader *L);
 /* Slots a bsdf value (object, name, array of them) can take in scene.bsdfs, nested ones included. */

@@ -64,6 +64,10 @@ static const struct conf_scene conf_scenes[] = {
     {"filter-tent", 64, 64},
     {"bounces-2", 80, 60},
     {"bounces-3", 80, 60},
+    /* nested BSDFs */
+    {"bsdf-coat", 80, 60},
+    {"bsdf-mixed", 80, 60},
+    {"bsdf-transparency", 80, 60},
 };
 #define NSCENES (int)(sizeof conf_scenes / sizeof conf_scenes[0])
 
