@@ -31,6 +31,9 @@ bool check_bsdf_nesting(struct loader *L);
 bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out);
 
 bool load_primitives(struct loader *L, const cJSON *arr);
+/* scene_shapes.c: Tungsten's disk and cylinder as fine meshes (path: the primitive, for errors). */
+bool build_disk(struct loader *L, const char *path, struct prim *p, const mat4 *m);
+bool build_cylinder(struct loader *L, const char *path, struct prim *p, const mat4 *m, bool capped);
 
 /* Tungsten transform: {"position", "scale", "rotation", "look_at", "up", "x_axis", ...} or 16 numbers. */
 bool jval_transform(struct jctx *c, const cJSON *v, const char *path, mat4 *out);

@@ -64,6 +64,9 @@ static const struct conf_scene conf_scenes[] = {
     {"filter-tent", 64, 64},
     {"bounces-2", 80, 60},
     {"bounces-3", 80, 60},
+    {"prim-disk", 80, 60},
+    {"prim-cylinder", 80, 60},
+    {"env-cap", 80, 60},
 };
 #define NSCENES (int)(sizeof conf_scenes / sizeof conf_scenes[0])
 
