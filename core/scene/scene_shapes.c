@@ -36,7 +36,10 @@ static int add_vertex(struct mesh_builder *b, vec3 pos, vec3 n, double u, double
     return b->v++;
 }
 
-/* A triangle wound counter-clockwise seen from the side `front` points to (the front side). */
+/* A triangle wound counter-clockwise seen from the side `front` points to (the front side). i0
+ * stays first: callers put there the vertex whose two edges are closest to perpendicular, since
+ * the mesh emitter inverts a point to barycentrics along the edges from the first vertex, which
+ * loses precision when those edges are nearly parallel (thin triangles). */
 static void add_tri(struct mesh_builder *b, int i0, int i1, int i2, vec3 front)
 {
     struct prim *p = b->p;
@@ -94,7 +97,7 @@ bool build_disk(struct loader *L, const char *path, struct prim *p, const mat4 *
     }
     for (int k = 0; k < N; k++) {
         int ic = add_vertex(&b, c, n, (k + 0.5) / N, 0.0);
-        add_tri(&b, ic, k, k + 1, n);
+        add_tri(&b, k, k + 1, ic, n);
     }
     finish_area(p);
     return true;
@@ -128,8 +131,8 @@ bool build_cylinder(struct loader *L, const char *path, struct prim *p, const ma
         double s, co;
         sincos_turns((k + 0.5) / N - 0.5, &s, &co);
         vec3 out = vadd(vscale(a[0], co), vscale(a[2], s));
-        add_tri(&b, b0, b1, t1, out);
-        add_tri(&b, b0, t1, t0, out);
+        add_tri(&b, b1, t1, b0, out); /* right angles at b1 and t0 */
+        add_tri(&b, t0, b0, t1, out);
     }
     for (int side = -1; capped && side <= 1; side += 2) {
         vec3 nc = vscale(a[1], side), cc = vmad(pos, a[1], side * H);
@@ -140,7 +143,7 @@ bool build_cylinder(struct loader *L, const char *path, struct prim *p, const ma
             add_vertex(&b, vadd(cc, vadd(vscale(a[0], R * co), vscale(a[2], R * s))), nc, 0.5 * co + 0.5,
                        0.5 * s + 0.5);
         }
-        for (int k = 0; k < N; k++) add_tri(&b, ic, ring + k, ring + k + 1, nc);
+        for (int k = 0; k < N; k++) add_tri(&b, ring + k, ring + k + 1, ic, nc);
     }
     ASSERT(b.v == nv && b.t == nt);
     finish_area(p);
