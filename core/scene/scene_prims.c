@@ -313,7 +313,7 @@ static bool load_prim(struct loader *L, const cJSON *j, int i)
         if (!jget_bool(c, j, path, "capped", false, &capped) || !build_cylinder(L, path, p, &m, capped)) return false;
     } else if (env) {
         if (L->s->env_prim >= 0)
-            return jfail(c, path, "only one infinite_sphere or infinite_sphere_cap is supported per scene");
+            return jfail(c, path, "only one infinite_sphere is supported (an infinite_sphere_cap counts as one)");
         if (!(cap ? build_sphere_cap(L, j, path, p, &m) : build_infinite_sphere(L, path, p, &m))) return false;
         L->s->env_prim = i;
         if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(j, "sample")))

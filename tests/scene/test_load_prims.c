@@ -175,7 +175,7 @@ Test(load_prims, errors_name_the_json_path, .init = mk_tmp, .fini = rm_tmp)
         {"{\"type\": \"infinite_sphere_cap\", \"emission\": \"sky.png\"}",
          ": primitives[0].emission: textured emission is only supported on infinite_sphere"},
         {"{\"type\": \"infinite_sphere_cap\", \"emission\": 1}, {\"type\": \"infinite_sphere\", \"emission\": 1}",
-         ": primitives[1]: only one infinite_sphere or infinite_sphere_cap is supported per scene"},
+         ": primitives[1]: only one infinite_sphere is supported (an infinite_sphere_cap counts as one)"},
         {"{\"type\": \"torus\"}",
          ": primitives[0].type: unknown primitive type \"torus\" (supported: quad cube sphere mesh disk cylinder "
          "infinite_sphere infinite_sphere_cap)"},
