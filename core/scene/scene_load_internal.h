@@ -22,6 +22,10 @@ struct loader {
 bool loader_resource(const struct loader *L, const char *rel, char *out, size_t n);
 bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out);
 
+/* scene_shapes.c: Tungsten's disk and cylinder as fine meshes (path: the primitive, for errors). */
+bool build_disk(struct loader *L, const char *path, struct prim *p, const mat4 *m);
+bool build_cylinder(struct loader *L, const char *path, struct prim *p, const mat4 *m, bool capped);
+
 bool load_bsdfs(struct loader *L);
 /* Slots a bsdf value (object, name, array of them) can take in scene.bsdfs, nested ones included. */
 int bsdf_json_slots(const cJSON *v);
@@ -31,9 +35,6 @@ bool check_bsdf_nesting(struct loader *L);
 bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out);
 
 bool load_primitives(struct loader *L, const cJSON *arr);
-/* scene_shapes.c: Tungsten's disk and cylinder as fine meshes (path: the primitive, for errors). */
-bool build_disk(struct loader *L, const char *path, struct prim *p, const mat4 *m);
-bool build_cylinder(struct loader *L, const char *path, struct prim *p, const mat4 *m, bool capped);
 
 /* Tungsten transform: {"position", "scale", "rotation", "look_at", "up", "x_axis", ...} or 16 numbers. */
 bool jval_transform(struct jctx *c, const cJSON *v, const char *path, mat4 *out);
