@@ -321,7 +321,10 @@ static bool load_prim(struct loader *L, const cJSON *j, int i)
     } else {
         char p2[JPATH_MAX];
         jpath_key(p2, path, "type");
-        return jfail(c, p2, "unknown primitive type \"%s\" (supported: quad cube sphere mesh disk cylinder infinite_sphere infinite_sphere_cap)", type);
+        return jfail(c, p2,
+                     "unknown primitive type \"%s\" (supported: quad cube sphere mesh disk cylinder infinite_sphere "
+                     "infinite_sphere_cap)",
+                     type);
     }
     return load_emission(L, j, path, p);
 }

@@ -143,7 +143,8 @@ bool build_cylinder(struct loader *L, const char *path, struct prim *p, const ma
             add_vertex(&b, vadd(cc, vadd(vscale(a[0], R * co), vscale(a[2], R * s))), nc, 0.5 * co + 0.5,
                        0.5 * s + 0.5);
         }
-        for (int k = 0; k < N; k++) add_tri(&b, ring + k, ring + k + 1, ic, nc);
+        for (int k = 0; k < N; k++)
+            add_tri(&b, ring + k, ring + k + 1, ic, nc);
     }
     ASSERT(b.v == nv && b.t == nt);
     finish_area(p);

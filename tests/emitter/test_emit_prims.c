@@ -65,7 +65,8 @@ static void rt_report(const char *what, const struct rt_stats *st)
 
 static void draw_u(rng *r, int k)
 {
-    for (int i = 0; i < k; i++) U[STREAM_EMITTER][i] = rng_uniform(r);
+    for (int i = 0; i < k; i++)
+        U[STREAM_EMITTER][i] = rng_uniform(r);
 }
 
 /* The fixture's environment turned into a cap light of the given half-angle about dir. */

@@ -15,11 +15,11 @@
 
 static char buf[512];
 
-#define EXPECT_PASS(r) \
-    do { \
-        cr_log_info("%s", chi2_describe(&(r), buf, sizeof buf)); \
-        fprintf(stderr, "%s\n", buf); \
-        cr_assert((r).pass, "%s", buf); \
+#define EXPECT_PASS(r)                                                                                                 \
+    do {                                                                                                               \
+        cr_log_info("%s", chi2_describe(&(r), buf, sizeof buf));                                                       \
+        fprintf(stderr, "%s\n", buf);                                                                                  \
+        cr_assert((r).pass, "%s", buf);                                                                                \
     } while (0)
 
 /* An orthonormal frame (a, b, c) about c by Gram-Schmidt from the world axis least aligned with it. */
@@ -214,7 +214,8 @@ static double cyl_pdf(void *ctx, double u, double v)
         r = c->R;
         h = -c->H + 2 * c->H * (a - cap) / side;
     }
-    vec3 p = vadd(vadd(c->centre, vscale(c->fr.c, h)), vadd(vscale(c->fr.a, r * cos(phi)), vscale(c->fr.b, r * sin(phi))));
+    vec3 rim = vadd(vscale(c->fr.a, r * cos(phi)), vscale(c->fr.b, r * sin(phi)));
+    vec3 p = vadd(vadd(c->centre, vscale(c->fr.c, h)), rim);
     return emitter_pdf_pos(c->sc, 0, p) * total;
 }
 

@@ -185,8 +185,8 @@ Test(load_prims, errors_name_the_json_path, .init = mk_tmp, .fini = rm_tmp)
         struct scene *s = load_prim(cases[i].prim, err, sizeof err);
         cr_expect_null(s, "%s should not load", cases[i].prim);
         if (s) scene_model_free(s);
-        cr_expect(strstr(err, cases[i].expect) != NULL, "%s:\n  got      %s\n  expected ...%s...", cases[i].prim,
-                  err, cases[i].expect);
+        cr_expect(strstr(err, cases[i].expect) != NULL, "%s:\n  got      %s\n  expected ...%s...", cases[i].prim, err,
+                  cases[i].expect);
         cr_expect(strchr(err, '\n') == NULL, "one line: %s", err);
     }
 }
