@@ -1,4 +1,5 @@
-/* The environment emitter (infinite_sphere), following Tungsten's InfiniteSphere.
+/* The environment emitter (infinite_sphere), following Tungsten's InfiniteSphere, and the
+ * directional cap light (infinite_sphere_cap, Tungsten's InfiniteSphereCap).
  *
  * Orientation (Tungsten: InfiniteSphere::directionToUV / uvToDirection, BitmapTexture):
  * a world direction d (from the scene toward the environment) goes to the local frame by
@@ -7,13 +8,20 @@
  * the image column is x = phi / (2 pi) + 0.5 (so local +x is the middle column, -x the left
  * edge) and the row counted from the top (row 0 = first row as OpenImageIO reads it) is
  * y = theta / pi (so the top row is up). Tungsten's texture v = 1 - y and u = x.
- * Radiance is the nearest texel (Tungsten interpolates bilinearly by default: a known difference),
- * the texture replaces `emission` when present.
+ * Radiance is the texture's bilinear lookup at (u, v) = (x, 1 - y), wrapping around in both
+ * directions as Tungsten's BitmapTexture does (so within half a texel of a pole it blends the top
+ * and bottom rows); the texture replaces `emission` when present.
  *
- * Sampling: a 2D piecewise-constant distribution over the texels with weights
- * luminance(texel) * sin(theta at the row centre) (Tungsten: sin at the row's top edge, dilated
- * by a max filter); (u1 -> row, u2 -> column). pdf in solid angle = pdf_xy / (2 pi^2 sin theta),
- * the lat-long Jacobian. A constant environment is sampled uniformly over the sphere (world).
+ * Sampling (Tungsten: BitmapTexture::makeSamplable with MAP_SPHERICAL): a 2D piecewise-constant
+ * distribution over the texels with weights max_channel(texel) * sin(pi row / h) (the sine at the
+ * row's top edge), each then replaced by the largest weight of its 3x3 neighbourhood (wrapping
+ * around), so every texel the bilinear lookup can light has a positive density; (u1 -> row,
+ * u2 -> column). pdf in solid angle = pdf_xy / (2 pi^2 sin theta) at the sampled point, the
+ * lat-long Jacobian; the weights only shape the density, so pdf and inverse stay exact. A
+ * constant environment is sampled uniformly over the sphere (world).
+ *
+ * The cap light: constant radiance for directions within the cap (dot(d, cap_dir) >= cap_cos),
+ * sampled uniformly over the cap (warp_uniform_cap about cap_dir in frame_from_normal(cap_dir)).
  *
  * Emitter subpaths start on the disc of radius R (bounding sphere of the finite geometry,
  * enlarged by 0.1 %) perpendicular to d, centred at centre + R d, and travel along -d. */
@@ -31,6 +39,23 @@ static const struct prim *env(const struct scene *sc, const struct emitter_table
     return &sc->prims[(*t)->prim[(*t)->env_slot]];
 }
 
+/* Each weight becomes the largest of its 3x3 neighbourhood, wrapping around at the image's edges. */
+static void dilate_wrapped(double *wt, int w, int h)
+{
+    double *tmp = xmalloc(sizeof(double) * (size_t)w * (size_t)h);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            const double *row = wt + (size_t)y * w;
+            tmp[(size_t)y * w + x] = fmax(row[x], fmax(row[(x + w - 1) % w], row[(x + 1) % w]));
+        }
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            double a = tmp[(size_t)((y + h - 1) % h) * w + x], b = tmp[(size_t)((y + 1) % h) * w + x];
+            wt[(size_t)y * w + x] = fmax(tmp[(size_t)y * w + x], fmax(a, b));
+        }
+    free(tmp);
+}
+
 double env_build(struct emitter_table *t, const struct scene *sc, const struct prim *pr, char *err, size_t errlen,
                  const char *where)
 {
@@ -46,6 +71,10 @@ double env_build(struct emitter_table *t, const struct scene *sc, const struct p
     if (!(t->env_R > 0)) t->env_R = 1e-3;
 
     const struct texture *tex = pr->env_tex;
+    if (pr->env_is_cap) {
+        t->env_map = false;
+        return 2 * M_PI * (1 - pr->cap_cos) * fmax(0.0, luminance(pr->emission));
+    }
     if (!tex) {
         t->env_map = false;
         return 4 * M_PI * fmax(0.0, luminance(pr->emission));
@@ -58,7 +87,7 @@ double env_build(struct emitter_table *t, const struct scene *sc, const struct p
     double *wt = xmalloc(sizeof(double) * (size_t)w * (size_t)h);
     double integral = 0;
     for (int y = 0; y < h; y++) {
-        double s = sin(M_PI * (y + 0.5) / h);
+        double s = sin(M_PI * y / h);
         double dom = (2 * M_PI / w) * (cos(M_PI * y / h) - cos(M_PI * (y + 1) / h));
         for (int x = 0; x < w; x++) {
             const float *c = tex->rgb + 3 * ((size_t)y * w + x);
@@ -70,10 +99,11 @@ double env_build(struct emitter_table *t, const struct scene *sc, const struct p
                 return -1;
             }
             double l = fmax(0.0, luminance(v));
-            wt[(size_t)y * w + x] = l * s;
+            wt[(size_t)y * w + x] = fmax(0.0, fmax(v.x, fmax(v.y, v.z))) * s;
             integral += l * dom;
         }
     }
+    dilate_wrapped(wt, w, h);
     t->env_map = true;
     distrib2d_init(&t->env_dist, wt, w, h);
     free(wt);
@@ -111,20 +141,19 @@ static vec3 xy_to_dir(const struct prim *pr, double x, double y, double *sin_the
     return vnorm(mat4_vector(&pr->env_to_world, l));
 }
 
+static bool in_cap(const struct prim *pr, vec3 d) { return vdot(d, pr->cap_dir) >= pr->cap_cos * vlen(d); }
+
 rgb env_radiance(const struct scene *sc, vec3 d)
 {
     const struct emitter_table *t;
     const struct prim *pr = env(sc, &t);
     if (!pr) return v3s(0);
+    if (pr->env_is_cap) return in_cap(pr, d) ? pr->emission : v3s(0);
     const struct texture *tex = pr->env_tex;
     if (!tex) return pr->emission;
     double x, y, st;
     dir_to_xy(pr, d, &x, &y, &st);
-    int c = (int)(x * tex->w), r = (int)(y * tex->h);
-    c = c < 0 ? 0 : c >= tex->w ? tex->w - 1 : c;
-    r = r < 0 ? 0 : r >= tex->h ? tex->h - 1 : r;
-    const float *p = tex->rgb + 3 * ((size_t)r * tex->w + c);
-    return v3(p[0], p[1], p[2]);
+    return texture_lookup(tex, x, 1 - y);
 }
 
 bool env_sample_dir(const struct scene *sc, struct sampler *s, vec3 *d, double *pdf)
@@ -133,6 +162,12 @@ bool env_sample_dir(const struct scene *sc, struct sampler *s, vec3 *d, double *
     const struct prim *pr = env(sc, &t);
     double u1 = sampler_next(s, DIM_CONTINUOUS), u2 = sampler_next(s, DIM_CONTINUOUS);
     if (!pr) return false;
+    if (pr->env_is_cap) {
+        frame f = frame_from_normal(pr->cap_dir);
+        *d = vnorm(frame_to_world(&f, warp_uniform_cap(u1, u2, pr->cap_cos)));
+        *pdf = warp_uniform_cap_pdf(pr->cap_cos);
+        return true;
+    }
     if (!t->env_map) {
         *d = warp_uniform_sphere(u1, u2);
         *pdf = warp_uniform_sphere_pdf();
@@ -152,6 +187,7 @@ double env_pdf_dir(const struct scene *sc, vec3 d)
     const struct emitter_table *t;
     const struct prim *pr = env(sc, &t);
     if (!pr) return 0;
+    if (pr->env_is_cap) return in_cap(pr, d) ? warp_uniform_cap_pdf(pr->cap_cos) : 0;
     if (!t->env_map) return warp_uniform_sphere_pdf();
     double x, y, st;
     dir_to_xy(pr, d, &x, &y, &st);
@@ -165,7 +201,11 @@ bool env_invert_dir(const struct scene *sc, vec3 d, struct sampler *w)
     const struct prim *pr = env(sc, &t);
     if (!pr) return false;
     double u1, u2;
-    if (!t->env_map) {
+    if (pr->env_is_cap) {
+        if (!in_cap(pr, d)) return false;
+        frame f = frame_from_normal(pr->cap_dir);
+        warp_uniform_cap_invert(vnorm(frame_to_local(&f, d)), pr->cap_cos, &u1, &u2);
+    } else if (!t->env_map) {
         warp_uniform_sphere_invert(vnorm(d), &u1, &u2);
     } else {
         double x, y, st;

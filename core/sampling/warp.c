@@ -53,6 +53,23 @@ void warp_uniform_sphere_invert(vec3 d, double *u1, double *u2)
     *u2 = wrap01(warp_phi(d.x, d.y) / (2 * M_PI));
 }
 
+vec3 warp_uniform_cap(double u1, double u2, double cos_max)
+{
+    double h = u1 * (1.0 - cos_max); /* 1 - z */
+    double r = sqrt(maxd(h * (2.0 - h), 0.0)), sn, cs;
+    sincos_turns(u2, &sn, &cs);
+    return v3(r * cs, r * sn, 1.0 - h);
+}
+
+double warp_uniform_cap_pdf(double cos_max) { return 1.0 / (2 * M_PI * (1.0 - cos_max)); }
+
+void warp_uniform_cap_invert(vec3 d, double cos_max, double *u1, double *u2)
+{
+    double h = d.z > 0 ? (d.x * d.x + d.y * d.y) / (1.0 + d.z) : 1.0 - d.z;
+    *u1 = clampd(h / (1.0 - cos_max), 0.0, 1.0);
+    *u2 = wrap01(warp_phi(d.x, d.y) / (2 * M_PI));
+}
+
 void warp_triangle(double u1, double u2, double *b1, double *b2)
 {
     double s = sqrt(u1);

@@ -14,6 +14,13 @@ vec3 warp_uniform_sphere(double u1, double u2);
 double warp_uniform_sphere_pdf(void);
 void warp_uniform_sphere_invert(vec3 d, double *u1, double *u2);
 
+/* Uniform over the spherical cap of directions within acos(cos_max) of +z (cos_max < 1):
+ * 1 - z = u1 (1 - cos_max), phi = 2 pi u2. The inverse reads 1 - z as (x^2 + y^2) / (1 + z), which
+ * keeps its precision for narrow caps. */
+vec3 warp_uniform_cap(double u1, double u2, double cos_max);
+double warp_uniform_cap_pdf(double cos_max);
+void warp_uniform_cap_invert(vec3 d, double cos_max, double *u1, double *u2);
+
 /* Uniform disk of radius 1 in the xy plane: r = sqrt(u1), phi = 2 pi u2. */
 void warp_disk(double u1, double u2, double *x, double *y);
 void warp_disk_invert(double x, double y, double *u1, double *u2);

@@ -109,6 +109,12 @@ struct prim {
     /* PRIM_INFINITE_SPHERE: emission map (NULL = constant `emission`) and its frame */
     struct texture *env_tex;   /* owned, lat-long */
     mat4 env_to_world, env_to_local;
+    /* primitives: disk and cylinder load as PRIM_MESH tessellations (scene_shapes.c); an
+     * infinite_sphere_cap is a PRIM_INFINITE_SPHERE whose constant emission covers only the
+     * directions d with dot(d, cap_dir) >= cap_cos (cap_cos = -1: the whole sphere). */
+    bool env_is_cap;
+    vec3 cap_dir;              /* world, unit: the transform applied to local +y */
+    double cap_cos;            /* cos(cap_angle) */
     double area;               /* world surface area (0 for the infinite sphere) */
 };
 

@@ -55,6 +55,9 @@ static uint64_t hash_prim(uint64_t h, const struct prim *p)
     H(p->radius);
     H(p->sphere_axis);
     h = hash_texture(h, p->env_tex);
+    H(p->env_is_cap);
+    H(p->cap_dir);
+    H(p->cap_cos);
     return H(p->env_to_world);
 }
 

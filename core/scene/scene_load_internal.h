@@ -24,6 +24,10 @@ bool load_texture_value(struct loader *L, const cJSON *v, const char *path, stru
 /* The same bitmap as a scalar texture, Tungsten's REQUEST_AVERAGE (no gamma table; mixed's ratio). */
 bool load_texture_average(struct loader *L, const cJSON *v, const char *path, struct texture **out);
 
+/* scene_shapes.c: Tungsten's disk and cylinder as fine meshes (path: the primitive, for errors). */
+bool build_disk(struct loader *L, const char *path, struct prim *p, const mat4 *m);
+bool build_cylinder(struct loader *L, const char *path, struct prim *p, const mat4 *m, bool capped);
+
 bool load_bsdfs(struct loader *L);
 /* Slots a bsdf value (object, name, array of them) can take in scene.bsdfs, nested ones included. */
 int bsdf_json_slots(const cJSON *v);

@@ -6,8 +6,12 @@
  *   pointing outward, whatever the sign of det M;
  * - sphere (Sphere.cpp): centre M 0, radius = largest column length of M (unit radius locally);
  * - mesh (TriangleMesh.cpp): front side = counter-clockwise winding of the world-space triangle;
+ * - disk, cylinder (Disk.cpp, Cylinder.cpp): fine meshes, see scene_shapes.c;
+ * - infinite_sphere_cap (InfiniteSphereCap.cpp): constant radiance from the directions within
+ *   cap_angle (degrees, default 10) of normalize(M (0,1,0));
  * - emitters emit on the front side only; "power" becomes radiance through
- *   powerToRadianceFactor: 1/(pi area) for finite shapes, 1/(4 pi) for the infinite sphere. */
+ *   powerToRadianceFactor: 1/(pi area) for finite shapes, 1/(4 pi) for the infinite sphere,
+ *   1/(2 pi (1 - cos cap_angle)) for the cap. */
 #include "base/util.h"
 #include "io/mesh_io.h"
 #include "scene/scene_load_internal.h"
@@ -167,6 +171,7 @@ static bool build_infinite_sphere(struct loader *L, const char *path, struct pri
 {
     p->kind = PRIM_INFINITE_SPHERE;
     p->bsdf = -1;
+    p->cap_cos = -1;
     /* Tungsten keeps only the rotation of the transform (InfiniteSphere::prepareForRender). */
     mat4 r = mat4_identity();
     for (int j = 0; j < 3; j++) {
@@ -185,6 +190,30 @@ static bool build_infinite_sphere(struct loader *L, const char *path, struct pri
     return true;
 }
 
+static bool build_sphere_cap(struct loader *L, const cJSON *j, const char *path, struct prim *p, const mat4 *m)
+{
+    struct jctx *c = &L->c;
+    if (cJSON_GetObjectItemCaseSensitive(j, "skydome")) {
+        char sp[JPATH_MAX];
+        jpath_key(sp, path, "skydome");
+        return jfail(c, sp, "a skydome pivot is not supported (orient the cap with its own transform)");
+    }
+    double deg = 10;
+    if (!jget_number(c, j, path, "cap_angle", false, &deg)) return false;
+    if (!(deg > 0 && deg <= 180)) {
+        char ap[JPATH_MAX];
+        jpath_key(ap, path, "cap_angle");
+        return jfail(c, ap, "expected an angle in degrees with 0 < cap_angle <= 180");
+    }
+    vec3 up = col(m, 1);
+    if (!(vlen(up) > 0)) return jfail(c, path, "degenerate transform for infinite_sphere_cap");
+    if (!build_infinite_sphere(L, path, p, m)) return false;
+    p->env_is_cap = true;
+    p->cap_dir = vnorm(up);
+    p->cap_cos = cos(deg * (M_PI / 180));
+    return true;
+}
+
 static bool colour(struct loader *L, const cJSON *v, const char *path, rgb *out)
 {
     if (!jval_vec3(&L->c, v, path, out)) return false;
@@ -197,7 +226,7 @@ static bool load_emission(struct loader *L, const cJSON *j, const char *path, st
 {
     const cJSON *e = cJSON_GetObjectItemCaseSensitive(j, "emission");
     const cJSON *w = cJSON_GetObjectItemCaseSensitive(j, "power");
-    bool env = p->kind == PRIM_INFINITE_SPHERE;
+    bool env = p->kind == PRIM_INFINITE_SPHERE, cap = env && p->env_is_cap;
     char ep[JPATH_MAX], wp[JPATH_MAX];
     jpath_key(ep, path, "emission");
     jpath_key(wp, path, "power");
@@ -208,9 +237,12 @@ static bool load_emission(struct loader *L, const cJSON *j, const char *path, st
         rgb pw;
         if (!colour(L, w, wp, &pw)) return false;
         if (!env && !(p->area > 0) && !vzero(pw)) return jfail(&L->c, path, "zero-area emitter");
-        p->emission = env ? vscale(pw, 1 / (4 * M_PI)) : vzero(pw) ? pw : vscale(pw, 1 / (M_PI * p->area));
+        p->emission = cap   ? vscale(pw, 1 / (2 * M_PI * (1 - p->cap_cos)))
+                      : env ? vscale(pw, 1 / (4 * M_PI))
+                      : vzero(pw) ? pw
+                                  : vscale(pw, 1 / (M_PI * p->area));
     } else if (e && (cJSON_IsString(e) || cJSON_IsObject(e))) {
-        if (!env)
+        if (!env || cap)
             return jfail(&L->c, ep, "textured emission is only supported on infinite_sphere "
                                     "(expected a number or an array of 3 numbers)");
         if (!load_texture_value(L, e, ep, &p->env_tex)) return false;
@@ -220,6 +252,24 @@ static bool load_emission(struct loader *L, const cJSON *j, const char *path, st
     }
     p->emissive = !vzero(p->emission);
     if (p->emissive && !env && !(p->area > 0)) return jfail(&L->c, path, "zero-area emitter");
+    return true;
+}
+
+/* Tungsten 0.2.2 applies a disk's cone_angle only where a camera path hits the disk and in its
+ * path tracer's light sampling; emitter paths leave over the whole cosine hemisphere
+ * (Disk::sampleDirection, evalDirectionalEmission: "TODO: Cone angle"), and its BDPT reference is
+ * lit as if there were no cone. The harness emits over the whole front hemisphere, so a cone
+ * narrower than 90 degrees is accepted with a warning. */
+static bool disk_cone(struct loader *L, const cJSON *j, const char *path)
+{
+    double deg = 90;
+    if (!jget_number(&L->c, j, path, "cone_angle", false, &deg)) return false;
+    char cp[JPATH_MAX];
+    jpath_key(cp, path, "cone_angle");
+    if (!(deg > 0 && deg <= 90)) return jfail(&L->c, cp, "expected an angle in degrees with 0 < cone_angle <= 90");
+    if (deg < 90)
+        jwarn(&L->c, cp, "the disk emits over its whole front hemisphere (as Tungsten 0.2.2's emitter paths "
+                         "and its BDPT reference do); the cone is not applied");
     return true;
 }
 
@@ -246,7 +296,7 @@ static bool load_prim(struct loader *L, const cJSON *j, int i)
     char tp[JPATH_MAX];
     jpath_key(tp, path, "transform");
     if (t && !jval_transform(c, t, tp, &m)) return false;
-    bool env = strcmp(type, "infinite_sphere") == 0;
+    bool cap = strcmp(type, "infinite_sphere_cap") == 0, env = cap || strcmp(type, "infinite_sphere") == 0;
     if (!env && !load_bsdf_ref(L, j, path, i, &p->bsdf)) return false;
     if (strcmp(type, "quad") == 0)
         build_quad(p, &m);
@@ -256,16 +306,25 @@ static bool load_prim(struct loader *L, const cJSON *j, int i)
         build_sphere(p, &m);
     else if (strcmp(type, "mesh") == 0) {
         if (!build_mesh(L, j, path, p, &m)) return false;
+    } else if (strcmp(type, "disk") == 0) {
+        if (!disk_cone(L, j, path) || !build_disk(L, path, p, &m)) return false;
+    } else if (strcmp(type, "cylinder") == 0) {
+        bool capped = true;
+        if (!jget_bool(c, j, path, "capped", false, &capped) || !build_cylinder(L, path, p, &m, capped)) return false;
     } else if (env) {
-        if (L->s->env_prim >= 0) return jfail(c, path, "only one infinite_sphere is supported");
-        if (!build_infinite_sphere(L, path, p, &m)) return false;
+        if (L->s->env_prim >= 0)
+            return jfail(c, path, "only one infinite_sphere is supported (an infinite_sphere_cap counts as one)");
+        if (!(cap ? build_sphere_cap(L, j, path, p, &m) : build_infinite_sphere(L, path, p, &m))) return false;
         L->s->env_prim = i;
         if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(j, "sample")))
             jwarn(c, path, "\"sample\": false is ignored; the environment is always sampled");
     } else {
         char p2[JPATH_MAX];
         jpath_key(p2, path, "type");
-        return jfail(c, p2, "unknown primitive type \"%s\" (supported: quad cube sphere mesh infinite_sphere)", type);
+        return jfail(c, p2,
+                     "unknown primitive type \"%s\" (supported: quad cube sphere mesh disk cylinder infinite_sphere "
+                     "infinite_sphere_cap)",
+                     type);
     }
     return load_emission(L, j, path, p);
 }

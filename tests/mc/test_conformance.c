@@ -68,6 +68,9 @@ static const struct conf_scene conf_scenes[] = {
     {"bsdf-coat", 80, 60},
     {"bsdf-mixed", 80, 60},
     {"bsdf-transparency", 80, 60},
+    {"prim-disk", 80, 60},
+    {"prim-cylinder", 80, 60},
+    {"env-cap", 80, 60},
 };
 #define NSCENES (int)(sizeof conf_scenes / sizeof conf_scenes[0])
 

@@ -309,7 +309,7 @@ static const struct bad_case bad_cases[] = {
     {"missing_primitives.json", ": primitives: missing required field"},
     {"primitives_not_array.json", ": primitives: expected an array"},
     {"media_present.json", ": media: participating media are not supported"},
-    {"unknown_prim_type.json", ": primitives[0].type: unknown primitive type \"disk\""},
+    {"unknown_prim_type.json", ": primitives[0].type: unknown primitive type \"torus\""},
     {"unknown_bsdf_type.json", ": bsdfs[0].type: unknown bsdf type \"oren_nayar\""},
     {"undefined_bsdf.json", ": primitives[0].bsdf: undefined bsdf \"nope\""},
     {"scale_string.json", ": primitives[0].transform.scale: expected a number or an array of 3 numbers"},
