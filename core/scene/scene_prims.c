@@ -321,6 +321,8 @@ static bool load_prim(struct loader *L, const cJSON *j, int i)
     } else {
         char p2[JPATH_MAX];
         jpath_key(p2, path, "type");
+        const char *why = refused_feature(REFUSED_PRIMITIVE, type);
+        if (why) return jfail(c, p2, "primitive type \"%s\" is not supported: %s", type, why);
         return jfail(c, p2,
                      "unknown primitive type \"%s\" (supported: quad cube sphere mesh disk cylinder infinite_sphere "
                      "infinite_sphere_cap)",
