@@ -63,6 +63,7 @@ static void build_quad(struct prim *p, const mat4 *m)
 static void build_cube(struct prim *p, const mat4 *m)
 {
     p->kind = PRIM_MESH;
+    p->cube_tangents = true;
     alloc_tris(p, 24, 12, true);
     bool flip = det3(m) < 0; /* keep the outward orientation Tungsten's analytic cube has */
     int v = 0, t = 0;
@@ -240,7 +241,7 @@ static bool load_prim(struct loader *L, const cJSON *j, int i)
             return jfail(c, p2, "participating media are not supported");
         }
     if (cJSON_GetObjectItemCaseSensitive(j, "bump") || cJSON_GetObjectItemCaseSensitive(j, "bump_strength"))
-        jwarn(c, path, "bump mapping is not supported; ignored");
+        jwarn(c, path, "bump mapping on a primitive is not read (Tungsten reads `bump` on a bsdf); ignored");
     mat4 m = mat4_identity();
     const cJSON *t = cJSON_GetObjectItemCaseSensitive(j, "transform");
     char tp[JPATH_MAX];

@@ -64,6 +64,10 @@ static const struct conf_scene conf_scenes[] = {
     {"filter-tent", 64, 64},
     {"bounces-2", 80, 60},
     {"bounces-3", 80, 60},
+    /* textures: checker, textured roughness, bump maps */
+    {"texture-checker", 80, 60},
+    {"texture-roughness", 80, 60},
+    {"bump-map", 80, 60},
 };
 #define NSCENES (int)(sizeof conf_scenes / sizeof conf_scenes[0])
 
