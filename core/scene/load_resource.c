@@ -55,6 +55,8 @@ static bool load_texture(struct loader *L, const cJSON *v, const char *path, boo
         if (strcmp(type, "bitmap") != 0) {
             char tp[JPATH_MAX];
             jpath_key(tp, path, "type");
+            const char *why = refused_feature(REFUSED_TEXTURE, type);
+            if (why) return jfail(&L->c, tp, "texture type \"%s\" is not supported: %s", type, why);
             return jfail(&L->c, tp, "texture type \"%s\" is not supported (expected bitmap, checker or constant)", type);
         }
         if (!jget_string(&L->c, v, path, "file", true, &file)) return false;
