@@ -216,6 +216,15 @@ static bool load_emission(struct loader *L, const cJSON *j, const char *path, st
                                     "(expected a number or an array of 3 numbers)");
         if (!load_texture_value(L, e, ep, &p->env_tex)) return false;
         p->emission = v3s(1);
+        /* textures: the environment's sampling reads texels, so only a bitmap (or a constant) */
+        if (p->env_tex->kind != TEX_BITMAP) {
+            bool constant = p->env_tex->kind == TEX_CONSTANT;
+            p->emission = p->env_tex->on;
+            texture_free(p->env_tex);
+            p->env_tex = NULL;
+            if (!constant)
+                return jfail(&L->c, ep, "an infinite_sphere's emission texture must be a bitmap (or a constant)");
+        }
     } else if (e) {
         if (!colour(L, e, ep, &p->emission)) return false;
     }

@@ -13,15 +13,17 @@ static char tmpdir[256];
 static void mk_tmp(void) { tmpdir_make(tmpdir, sizeof tmpdir, "texture-loader-test"); }
 static void rm_tmp(void) { tmpdir_remove(tmpdir); }
 
-/* Writes a scene whose bsdfs[0] is `bsdf` into tmpdir; returns its path in out. */
-static void write_scene(const char *bsdf, char *out, size_t n)
+/* Writes a scene whose bsdfs[0] is `bsdf` into tmpdir, with an infinite_sphere of emission `env`
+ * unless NULL; returns its path in out. */
+static void write_scene(const char *bsdf, const char *env, char *out, size_t n)
 {
-    char json[4096];
+    char json[4096], sky[512] = "";
+    if (env) snprintf(sky, sizeof sky, ", {\"type\": \"infinite_sphere\", \"emission\": %s}", env);
     snprintf(json, sizeof json,
-             "{\"bsdfs\": [%s], \"primitives\": [{\"type\": \"quad\", \"bsdf\": \"a\"}],\n"
+             "{\"bsdfs\": [%s], \"primitives\": [{\"type\": \"quad\", \"bsdf\": \"a\"}%s],\n"
              " \"camera\": {\"type\": \"pinhole\", \"fov\": 60, \"resolution\": 16,\n"
              "   \"transform\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0]}}}\n",
-             bsdf);
+             bsdf, sky);
     snprintf(out, n, "%s/scene.json", tmpdir);
     FILE *f = fopen(out, "wb");
     cr_assert(f);
@@ -65,7 +67,7 @@ Test(texture_loader, bad_values_give_one_line_naming_the_json_path, .init = mk_t
 {
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char path[512], err[1024] = "";
-        write_scene(bad[i].bsdf, path, sizeof path);
+        write_scene(bad[i].bsdf, NULL, path, sizeof path);
         struct scene *s = scene_load_model(path, err, sizeof err);
         cr_expect_null(s, "case %zu loaded but should fail", i);
         scene_model_free(s);
@@ -79,7 +81,7 @@ Test(texture_loader, bad_values_give_one_line_naming_the_json_path, .init = mk_t
 Test(texture_loader, render_exits_with_status_2, .init = mk_tmp, .fini = rm_tmp)
 {
     char path[512], cmd[2048], log[600];
-    write_scene(bad[0].bsdf, path, sizeof path);
+    write_scene(bad[0].bsdf, NULL, path, sizeof path);
     snprintf(log, sizeof log, "%s/err.txt", tmpdir);
     snprintf(cmd, sizeof cmd, "bin/render %s --spp 1 --quiet --out %s/x 2> %s", path, tmpdir, log);
     int st = system(cmd);
@@ -92,4 +94,20 @@ Test(texture_loader, render_exits_with_status_2, .init = mk_tmp, .fini = rm_tmp)
     text[n] = 0;
     cr_assert(strstr(text, bad[0].expect), "%s", text);
     cr_assert(n > 0 && strchr(text, '\n') == text + n - 1, "not one line: %s", text);
+}
+
+/* The environment's sampling reads texels: a checker sky is refused, a constant one is its value. */
+Test(texture_loader, environment_takes_a_bitmap_or_a_constant, .init = mk_tmp, .fini = rm_tmp)
+{
+    const char *lambert = "{\"name\": \"a\", \"type\": \"lambert\"}";
+    char path[512], err[1024] = "";
+    write_scene(lambert, "{\"type\": \"checker\"}", path, sizeof path);
+    cr_assert_null(scene_load_model(path, err, sizeof err));
+    cr_assert(strstr(err, ": primitives[1].emission: an infinite_sphere's emission texture must be a bitmap"), "%s", err);
+    write_scene(lambert, "{\"type\": \"constant\", \"value\": [0.5, 1, 2]}", path, sizeof path);
+    struct scene *s = scene_load_model(path, err, sizeof err);
+    cr_assert(s, "%s", err);
+    const struct prim *e = &s->prims[s->env_prim];
+    cr_assert(!e->env_tex && e->emissive && e->emission.x == 0.5 && e->emission.y == 1 && e->emission.z == 2);
+    scene_model_free(s);
 }
