@@ -41,7 +41,7 @@ void bsdf_prepare(struct bsdf *b)
     b->dims = ops ? ops->dims : 0;
     b->transmissive = ops && ops->transmissive;
     b->delta_only = ops && ops->delta_only;
-    b->needs_uv = b->albedo_tex != NULL;
+    b->needs_uv = b->albedo_tex || b->roughness_tex || b->bump_tex;
     for (int i = 0; i < 2; i++)
         if (b->child[i]) b->needs_uv |= b->child[i]->needs_uv;
     /* nested BSDFs: which BSDFs refract (the radiance-mode eta^2 factor, pitp.c); nested types
@@ -78,5 +78,7 @@ struct bsdf_ctx bsdf_ctx_at(const struct bsdf *b, const double uv[2])
         c.uv[1] = uv[1];
     }
     if (b->albedo_tex) c.albedo = texture_lookup(b->albedo_tex, c.uv[0], c.uv[1]);
+    /* textures: Tungsten reads the first channel of the (averaged) roughness texture */
+    if (b->roughness_tex) c.roughness = texture_lookup(b->roughness_tex, c.uv[0], c.uv[1]).x;
     return c;
 }

@@ -15,6 +15,63 @@ void sphere_uv(const struct prim *pr, vec3 n, double uv[2])
     uv[1] = acos(fmin(1.0, fmax(-1.0, l.z))) * (1 / M_PI);
 }
 
+/* textures: the surface's tangents at a hit, as Tungsten's tangentSpace() gives them (the bump
+ * map's slope is added along them, so their length sets its scale): quads their edges (dp/du,
+ * dp/dv); triangles the directions of dp/du and dp/dv from the uv parameterisation, unit length,
+ * with TriangleMesh's sign (both flipped where the uv map reverses orientation); cubes their unit
+ * axes along u and v (Cube.cpp); spheres Tungsten's T = R (-l.y, l.x, l.z) of the local normal l
+ * and B = n x T. False where there is none (a mesh without uv or with degenerate uv). */
+static bool hit_tangents(const struct prim *pr, const struct vertex *v, vec3 n, vec3 *T, vec3 *B)
+{
+    if (pr->kind == PRIM_QUAD) {
+        *T = pr->quad_edge0;
+        *B = pr->quad_edge1;
+        return true;
+    }
+    if (pr->kind == PRIM_SPHERE) {
+        const vec3 *a = pr->sphere_axis;
+        vec3 l = v3(vdot(a[0], n), vdot(a[1], n), vdot(a[2], n));
+        *T = vadd(vadd(vscale(a[0], -l.y), vscale(a[1], l.x)), vscale(a[2], l.z));
+        *B = vcross(n, *T);
+        return true;
+    }
+    if (!pr->uv) return false;
+    const int *t = pr->tri + 3 * v->tri;
+    const double *uv0 = pr->uv + 2 * t[0], *uv1 = pr->uv + 2 * t[1], *uv2 = pr->uv + 2 * t[2];
+    vec3 q1 = vsub(pr->p[t[1]], pr->p[t[0]]), q2 = vsub(pr->p[t[2]], pr->p[t[0]]);
+    double s1 = uv1[0] - uv0[0], t1 = uv1[1] - uv0[1], s2 = uv2[0] - uv0[0], t2 = uv2[1] - uv0[1];
+    double det = s1 * t2 - s2 * t1;
+    if (fabs(det) < 1e-6) return false;
+    vec3 tu = vsub(vscale(q1, t2), vscale(q2, t1)), tv = vsub(vscale(q2, s1), vscale(q1, s2));
+    if (!(vlen2(tu) > 0 && vlen2(tv) > 0)) return false;
+    double sign = pr->cube_tangents && det < 0 ? -1 : 1; /* dp/du = tu / det */
+    *T = vscale(vnorm(tu), sign);
+    *B = vscale(vnorm(tv), sign);
+    return true;
+}
+
+/* textures: the shading normal a bump map gives at the hit (Tungsten's setupTangentFrame): the
+ * tangents T, B get the height slope (du, dv) of texture_derivs as their component along n,
+ * T' = T + n (du - n.T), B' = B + n (dv - n.B), and the normal is T' x B' on n's side. So a height
+ * rising along T tilts the normal toward -T; along B, the slope's sign is Tungsten's, whose dv runs
+ * down the image rows (-v), so a height rising with v tilts the normal toward +B. Falls back to n
+ * where there are no tangents or T' x B' vanishes. */
+static vec3 bump_normal(const struct prim *pr, const struct vertex *v, const struct texture *bump,
+                        const double uv[2], vec3 n)
+{
+    vec3 T, B;
+    if (!hit_tangents(pr, v, n, &T, &B)) return n;
+    double d[2];
+    texture_derivs(bump, uv[0], uv[1], d);
+    T = vmad(T, n, d[0] - vdot(n, T));
+    B = vmad(B, n, d[1] - vdot(n, B));
+    vec3 m = vcross(T, B);
+    double l2 = vlen2(m);
+    if (!(l2 > 0) || !isfinite(l2)) return n;
+    m = vscale(m, (vdot(m, n) < 0 ? -1 : 1) / sqrt(l2));
+    return m;
+}
+
 void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *h, struct vertex *v)
 {
     const struct prim *pr = &sc->prims[h->prim];
@@ -53,6 +110,10 @@ void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *
     v->front = vdot(v->ng, v->wi) > 0;
     if (v->bc.b) v->bc = bsdf_ctx_at(v->bc.b, uv);
     else v->bc.albedo = v3s(0);
+    /* A bump map makes the shading frame a function of the hit point alone (its uv and tangents),
+     * like an interpolated normal: the BSDF's inversion, which works in this frame, needs nothing
+     * more. One branch on surfaces without one. */
+    if (v->bc.b && v->bc.b->bump_tex) ns = bump_normal(pr, v, v->bc.b->bump_tex, uv, ns);
     /* Two-sided shading: opaque surfaces seen from the back shade as if seen from the front. */
     v->flipped = false;
     if (!v->front && v->bc.b && sc->two_sided_shading && !v->bc.b->transmissive) {

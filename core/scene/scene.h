@@ -35,26 +35,44 @@ enum mf_dist { MF_BECKMANN, MF_GGX };
 /* Deepest nesting of bsdfs inside bsdfs the loader accepts (a cycle of names nests forever). */
 #define BSDF_MAX_NESTING 8
 
-/* RGB float bitmap, row 0 at the top (as OpenImageIO reads it), Tungsten's BitmapTexture
- * conventions (README, "Textures"). */
+/* Textures, as Tungsten's texture types (README, "Textures"): a bitmap (BitmapTexture: RGB floats,
+ * row 0 at the top, as OpenImageIO reads it), a checkerboard (CheckerTexture) or a constant
+ * (ConstantTexture, as a `{"type": "constant"}` object). The bitmap fields come first so that
+ * {w, h, rgb, bits} initialisers stay bitmaps. */
+enum texture_kind { TEX_BITMAP, TEX_CHECKER, TEX_CONSTANT };
 struct texture {
     int w, h;
     float *rgb; /* w*h*3, linear */
     int bits;   /* bits per channel of an integer-format file (gamma-decoded at load), 0 for float */
+    enum texture_kind kind;
+    rgb on, off;      /* checker: the two cell values; constant: `on` */
+    int res_u, res_v; /* checker: cells along u and v */
 };
-/* Bilinear lookup with wrap-around: texel (i, j) (row j from the top) has its centre at
- * u = (i + 0.5) / w, v = 1 - (j + 0.5) / h, so v = 0 is the bottom edge (OBJ convention). */
+/* The one lookup every user goes through. Bitmaps: bilinear with wrap-around, texel (i, j) (row j
+ * from the top) centred at u = (i + 0.5) / w, v = 1 - (j + 0.5) / h, so v = 0 is the bottom edge
+ * (OBJ convention). Checkers: cell (x, y) = (u res_u, v res_v) truncated toward zero, `on` where
+ * x xor y is odd, `off` where it is even. */
 rgb texture_lookup(const struct texture *t, double u, double v);
+/* Tungsten's derivatives() (the height slope a bump map reads): for a bitmap, the bilinear blend
+ * of central differences of the texel values (channel mean) two texels apart, d[0] along the
+ * texel columns (+u) and d[1] along the rows, which run DOWN the image (-v); zero for checkers and
+ * constants. */
+void texture_derivs(const struct texture *t, double u, double v, double d[2]);
 /* Tungsten's 8-bit gamma table: floor(255 (code/255)^2.2) / 255 (a 2.2 power, not sRGB). */
 float texture_gamma_decode(int code);
 void texture_free(struct texture *t);
-/* nested BSDFs: a bitmap read as Tungsten's scalar REQUEST_AVERAGE texture (texture.c). */
-struct texture *texture_load_average(const char *path, char *err, size_t errlen);
 /* Reads an image file (OpenImageIO) into a texture; NULL and a message in err on failure. */
 struct texture *texture_load(const char *path, char *err, size_t errlen);
+/* The same read as Tungsten's REQUEST_AVERAGE (roughness, bump): every texel's channels replaced
+ * by their mean; for an integer file the mean of its raw 8-bit codes, truncated to a code, and NOT
+ * gamma-decoded (Tungsten's loadLdr decodes RGB requests only). */
+struct texture *texture_load_average(const char *path, char *err, size_t errlen);
 /* The loader's half of it, from decoded texels (3 per texel, malloc'ed, owned from here on: kept or
  * freed): refuses non-finite values, gamma-decodes an integer file's `bits`-bit codes. */
 struct texture *texture_from_rgb(const char *path, int w, int h, float *px, int bits, char *err, size_t errlen);
+/* A checker or constant texture (no texels). */
+struct texture *texture_checker(rgb on, rgb off, int res_u, int res_v);
+struct texture *texture_constant(rgb value);
 
 struct bsdf {
     enum bsdf_type type;
@@ -71,6 +89,12 @@ struct bsdf {
     /* Nested BSDFs (transparency, coats, mixed): slots of the same scene.bsdfs array, which is
      * allocated once, so the pointers stay valid; never NULL for the types that have them. */
     const struct bsdf *child[2];
+    /* textures: per-point parameters read at the hit's uv (owned; NULL = none). roughness_tex
+     * replaces `roughness` (rough_* types; Tungsten reads its first channel of the average);
+     * bump_tex perturbs the shading frame (any type; only the BSDF a primitive names is read,
+     * as in Tungsten, where a nested BSDF's bump is ignored). */
+    struct texture *roughness_tex;
+    struct texture *bump_tex;
     /* Derived by bsdf_prepare() after loading (children first); never read from JSON. */
     double diffuse_fresnel;        /* plastics: hemispherical average of the coat's Fresnel (inside) */
     int dims;                      /* numbers sample() consumes (nested types: their own + children's) */
@@ -106,6 +130,9 @@ struct prim {
     vec3 center;
     double radius;
     vec3 sphere_axis[3];       /* unit columns of the transform; local normal = (axis[i] . n), for uv */
+    /* textures: a mesh built from a `cube` takes the cube's axes as its bump-map tangents
+     * (Cube.cpp), where other meshes take their uv parameterisation's (TriangleMesh.cpp) */
+    bool cube_tangents;
     /* PRIM_INFINITE_SPHERE: emission map (NULL = constant `emission`) and its frame */
     struct texture *env_tex;   /* owned, lat-long */
     mat4 env_to_world, env_to_local;

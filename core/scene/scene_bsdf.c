@@ -99,10 +99,34 @@ static bool parse_roughness(struct loader *L, const cJSON *j, const char *path, 
     if (!r) return true;
     char p[JPATH_MAX];
     jpath_key(p, path, "roughness");
-    if (cJSON_IsString(r) || cJSON_IsObject(r))
-        return jfail(&L->c, p, "textured roughness is not supported (expected a number)");
+    if (cJSON_IsString(r) || cJSON_IsObject(r)) return load_texture_average(L, r, p, &b->roughness_tex);
+    if (!cJSON_IsNumber(r))
+        return jfail(&L->c, p, "expected a number, an image file name or a texture object");
     if (!jval_number(&L->c, r, p, &b->roughness)) return false;
     if (b->roughness < 0) return jfail(&L->c, p, "expected a non-negative number");
+    return true;
+}
+
+/* textures: `bump`, a height map on any bsdf, read as its average (Tungsten's Bsdf::fromJson). A
+ * constant height (a number, a constant object) leaves the frame as it is (Tungsten tests
+ * isConstant()), so it is dropped here. */
+static bool parse_bump(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, "bump");
+    if (!v) return true;
+    char p[JPATH_MAX];
+    jpath_key(p, path, "bump");
+    if (cJSON_IsNumber(v) || cJSON_IsArray(v)) {
+        vec3 c;
+        return jval_vec3(&L->c, v, p, &c);
+    }
+    if (!cJSON_IsString(v) && !cJSON_IsObject(v))
+        return jfail(&L->c, p, "expected a number, an image file name or a texture object");
+    if (!load_texture_average(L, v, p, &b->bump_tex)) return false;
+    if (b->bump_tex->kind == TEX_CONSTANT) {
+        texture_free(b->bump_tex);
+        b->bump_tex = NULL;
+    }
     return true;
 }
 
@@ -233,8 +257,7 @@ static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const
     }
     set_defaults(b, (enum bsdf_type)t);
     snprintf(b->name, sizeof b->name, "%s", name ? name : default_name);
-    if (cJSON_GetObjectItemCaseSensitive(j, "bump")) jwarn(c, path, "bump mapping is not supported; ignored");
-    if (!parse_albedo(L, j, path, b)) return false;
+    if (!parse_albedo(L, j, path, b) || !parse_bump(L, j, path, b)) return false;
     switch (b->type) {
     case BSDF_ROUGH_CONDUCTOR:
         if (!parse_distribution(L, j, path, b) || !parse_roughness(L, j, path, b)) return false;

@@ -10,6 +10,13 @@
 static uint64_t hash_texture(uint64_t h, const struct texture *t)
 {
     if (!t) return hash64(h, "-", 1);
+    if (t->kind != TEX_BITMAP) { /* (bitmaps hash as they did before there were other kinds) */
+        H(t->kind);
+        H(t->on);
+        H(t->off);
+        H(t->res_u);
+        return H(t->res_v);
+    }
     H(t->w);
     H(t->h);
     H(t->bits);
@@ -22,6 +29,9 @@ static uint64_t hash_bsdf(uint64_t h, const struct bsdf *b)
     h = hash64(h, b->name, sizeof b->name);
     H(b->albedo);
     h = hash_texture(h, b->albedo_tex);
+    /* textures: hashed only where present, so scenes without them keep their former hash */
+    if (b->roughness_tex) h = hash_texture(hash64(h, "r", 1), b->roughness_tex);
+    if (b->bump_tex) h = hash_texture(hash64(h, "b", 1), b->bump_tex);
     H(b->eta);
     H(b->k);
     H(b->ior);

@@ -261,6 +261,8 @@ void scene_model_free(struct scene *s)
     for (int i = 0; i < s->nbsdfs; i++) {
         texture_free(s->bsdfs[i].albedo_tex);
         texture_free(s->bsdfs[i].ratio_tex); /* nested BSDFs: mixed's ratio */
+        texture_free(s->bsdfs[i].roughness_tex);
+        texture_free(s->bsdfs[i].bump_tex);
     }
     for (int i = 0; s->prims && i < s->nprims; i++) {
         struct prim *p = &s->prims[i];

@@ -17,13 +17,13 @@ struct loader {
 };
 
 /* load_resource.c: a resource name resolved relative to the scene file (false if the result does
- * not fit), and a bitmap given as a file name or {"type": "bitmap", "file": ...} (v is the value
- * at path). */
+ * not fit), and a texture given as a file name, {"type": "bitmap", "file": ...}, or a checker or
+ * constant object (v is the value at path; v a string or an object). */
 bool loader_resource(const struct loader *L, const char *rel, char *out, size_t n);
 bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out);
-/* The same bitmap as a scalar texture, Tungsten's REQUEST_AVERAGE (no gamma table; mixed's ratio). */
+/* textures: a texture value (file name, bitmap, checker or constant object) read as Tungsten's
+ * REQUEST_AVERAGE reads it (roughness, bump): a bitmap's channels averaged. */
 bool load_texture_average(struct loader *L, const cJSON *v, const char *path, struct texture **out);
-
 /* scene_shapes.c: Tungsten's disk and cylinder as fine meshes (path: the primitive, for errors). */
 bool build_disk(struct loader *L, const char *path, struct prim *p, const mat4 *m);
 bool build_cylinder(struct loader *L, const char *path, struct prim *p, const mat4 *m, bool capped);

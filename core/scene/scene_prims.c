@@ -67,6 +67,7 @@ static void build_quad(struct prim *p, const mat4 *m)
 static void build_cube(struct prim *p, const mat4 *m)
 {
     p->kind = PRIM_MESH;
+    p->cube_tangents = true;
     alloc_tris(p, 24, 12, true);
     bool flip = det3(m) < 0; /* keep the outward orientation Tungsten's analytic cube has */
     int v = 0, t = 0;
@@ -247,6 +248,15 @@ static bool load_emission(struct loader *L, const cJSON *j, const char *path, st
                                     "(expected a number or an array of 3 numbers)");
         if (!load_texture_value(L, e, ep, &p->env_tex)) return false;
         p->emission = v3s(1);
+        /* textures: the environment's sampling reads texels, so only a bitmap (or a constant) */
+        if (p->env_tex->kind != TEX_BITMAP) {
+            bool constant = p->env_tex->kind == TEX_CONSTANT;
+            p->emission = p->env_tex->on;
+            texture_free(p->env_tex);
+            p->env_tex = NULL;
+            if (!constant)
+                return jfail(&L->c, ep, "an infinite_sphere's emission texture must be a bitmap (or a constant)");
+        }
     } else if (e) {
         if (!colour(L, e, ep, &p->emission)) return false;
     }
@@ -290,7 +300,7 @@ static bool load_prim(struct loader *L, const cJSON *j, int i)
             return jfail(c, p2, "participating media are not supported");
         }
     if (cJSON_GetObjectItemCaseSensitive(j, "bump") || cJSON_GetObjectItemCaseSensitive(j, "bump_strength"))
-        jwarn(c, path, "bump mapping is not supported; ignored");
+        jwarn(c, path, "bump mapping on a primitive is not read (Tungsten reads `bump` on a bsdf); ignored");
     mat4 m = mat4_identity();
     const cJSON *t = cJSON_GetObjectItemCaseSensitive(j, "transform");
     char tp[JPATH_MAX];

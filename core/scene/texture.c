@@ -1,5 +1,6 @@
-/* Bitmap textures as Tungsten's BitmapTexture reads them: loading through OpenImageIO, the 2.2 gamma
- * table for integer (LDR) files, bilinear lookup with wrap-around. */
+/* Textures as Tungsten reads them: bitmaps as its BitmapTexture (loading through OpenImageIO, the
+ * 2.2 gamma table for integer (LDR) files, bilinear lookup with wrap-around, the slope a bump map
+ * reads), checkerboards as its CheckerTexture, constants. */
 #include "base/util.h"
 #include "io/image.h"
 #include "scene/scene.h"
@@ -36,45 +37,10 @@ static int code8(float f, int bits)
     return code > 255 ? 255 : (int)code;
 }
 
-struct texture *texture_load(const char *path, char *err, size_t errlen)
-{
-    int w, h, bits = 0;
-    float *px;
-    if (!img_read_rgb(path, &w, &h, &px, &bits, err, errlen)) return NULL;
-    return texture_from_rgb(path, w, h, px, bits, err, errlen);
-}
-
-/* nested BSDFs (mixed's ratio): Tungsten's scalar bitmap for REQUEST_AVERAGE. An integer file's
- * texel is the integer mean of its three 8-bit codes over 255, WITHOUT the gamma table (ImageIO's
- * loadLdr applies it to RGB requests only); a float file's is the mean of its channels. The scalar is
- * stored in all three channels, so texture_lookup returns it in each. */
-struct texture *texture_load_average(const char *path, char *err, size_t errlen)
-{
-    int w, h, bits = 0;
-    float *px;
-    if (!img_read_rgb(path, &w, &h, &px, &bits, err, errlen)) return NULL;
-    for (size_t i = 0; i < (size_t)w * h; i++) {
-        float *t = px + 3 * i, v;
-        if (!isfinite(t[0]) || !isfinite(t[1]) || !isfinite(t[2])) {
-            snprintf(err, errlen, "%s: non-finite texel value", path);
-            free(px);
-            return NULL;
-        }
-        if (bits > 0 && bits <= 32)
-            v = (float)((code8(t[0], bits) + code8(t[1], bits) + code8(t[2], bits)) / 3) / 255;
-        else
-            v = (t[0] + t[1] + t[2]) / 3;
-        t[0] = t[1] = t[2] = v;
-    }
-    struct texture *t = xmalloc(sizeof *t);
-    t->w = w;
-    t->h = h;
-    t->bits = bits;
-    t->rgb = px;
-    return t;
-}
-
-struct texture *texture_from_rgb(const char *path, int w, int h, float *px, int bits, char *err, size_t errlen)
+/* Texels -> texture: refuses non-finite values; `average` = Tungsten's REQUEST_AVERAGE, else RGB
+ * with an integer file's codes gamma-decoded. */
+static struct texture *from_texels(const char *path, int w, int h, float *px, int bits, bool average, char *err,
+                                   size_t errlen)
 {
     size_t n = (size_t)w * h * 3;
     for (size_t i = 0; i < n; i++)
@@ -83,15 +49,45 @@ struct texture *texture_from_rgb(const char *path, int w, int h, float *px, int 
             free(px);
             return NULL;
         }
-    if (bits > 0 && bits <= 32)
-        for (size_t i = 0; i < n; i++)
-            px[i] = texture_gamma_decode(code8(px[i], bits));
-    struct texture *t = xmalloc(sizeof *t);
+    bool ldr = bits > 0 && bits <= 32;
+    if (average) {
+        /* Tungsten's loadLdr averages the raw 8-bit codes in integers, truncating, and does not
+         * gamma-decode them (its table is for RGB requests only); float files average as floats. */
+        for (size_t i = 0; i < n; i += 3) {
+            double m = ldr ? ((code8(px[i], bits) + code8(px[i + 1], bits) + code8(px[i + 2], bits)) / 3) / 255.0
+                           : ((double)px[i] + px[i + 1] + px[i + 2]) / 3;
+            px[i] = px[i + 1] = px[i + 2] = (float)m;
+        }
+    } else if (ldr) {
+        for (size_t i = 0; i < n; i++) px[i] = texture_gamma_decode(code8(px[i], bits));
+    }
+    struct texture *t = xcalloc(1, sizeof *t);
+    t->kind = TEX_BITMAP;
     t->w = w;
     t->h = h;
     t->bits = bits;
     t->rgb = px;
     return t;
+}
+
+static struct texture *load(const char *path, bool average, char *err, size_t errlen)
+{
+    int w, h, bits = 0;
+    float *px;
+    if (!img_read_rgb(path, &w, &h, &px, &bits, err, errlen)) return NULL;
+    return from_texels(path, w, h, px, bits, average, err, errlen);
+}
+
+struct texture *texture_load(const char *path, char *err, size_t errlen) { return load(path, false, err, errlen); }
+
+struct texture *texture_load_average(const char *path, char *err, size_t errlen)
+{
+    return load(path, true, err, errlen);
+}
+
+struct texture *texture_from_rgb(const char *path, int w, int h, float *px, int bits, char *err, size_t errlen)
+{
+    return from_texels(path, w, h, px, bits, false, err, errlen);
 }
 
 /* floor without the libm call that baseline x86-64 makes of it (no SSE4.1 round instruction);
@@ -115,7 +111,7 @@ static inline int bracket(double s, int n, int *i1, double *f)
     return i0 >= n ? n - 1 : i0;
 }
 
-rgb texture_lookup(const struct texture *t, double u, double v)
+static rgb bitmap_lookup(const struct texture *t, double u, double v)
 {
     /* One period first (texel coordinates then stay small whatever u and v are); r runs down from
      * the top row. */
@@ -132,6 +128,75 @@ rgb texture_lookup(const struct texture *t, double u, double v)
     return v3(w00 * p00[0] + w01 * p01[0] + w10 * p10[0] + w11 * p11[0],
               w00 * p00[1] + w01 * p01[1] + w10 * p10[1] + w11 * p11[1],
               w00 * p00[2] + w01 * p01[2] + w10 * p10[2] + w11 * p11[2]);
+}
+
+/* Tungsten converts u res to an int, which truncates toward zero (so the cells either side of
+ * u = 0 share an index); parity of negative indices as two's complement. Values no int holds
+ * (and NaN) take cell 0. */
+static inline long long cell(double x)
+{
+    return fabs(x) < 0x1p62 ? (long long)x : 0;
+}
+
+rgb texture_lookup(const struct texture *t, double u, double v)
+{
+    if (t->kind == TEX_BITMAP) return bitmap_lookup(t, u, v);
+    if (t->kind == TEX_CONSTANT) return t->on;
+    return ((cell(u * t->res_u) ^ cell(v * t->res_v)) & 1) ? t->on : t->off;
+}
+
+/* Mean of the channels of texel (x, y), both in range. */
+static inline double texel_mean(const struct texture *t, int x, int y)
+{
+    const float *p = t->rgb + 3 * ((size_t)y * t->w + x);
+    return ((double)p[0] + p[1] + p[2]) / 3;
+}
+
+void texture_derivs(const struct texture *t, double u, double v, double d[2])
+{
+    d[0] = d[1] = 0;
+    if (t->kind != TEX_BITMAP) return;
+    /* Texel coordinates with centres on integers, split as Tungsten splits them: the integer part
+     * truncated toward zero (not floored), so just left of u = 0 the fraction is negative and the
+     * blend extrapolates, as Tungsten's does. */
+    double x = u * t->w - 0.5, y = (1 - v) * t->h - 0.5;
+    if (!(fabs(x) < 0x1p30 && fabs(y) < 0x1p30)) return;
+    int ix = (int)x, iy = (int)y;
+    double fx = x - ix, fy = y - iy;
+    ix = ((ix % t->w) + t->w) % t->w;
+    iy = ((iy % t->h) + t->h) % t->h;
+    /* Columns x0..x3 and rows y0..y3 around the cell (x1, y1)-(x2, y2), wrapped. */
+    int xs[4] = {ix == 0 ? t->w - 1 : ix - 1, ix, (ix + 1) % t->w, (ix + 2) % t->w};
+    int ys[4] = {iy == 0 ? t->h - 1 : iy - 1, iy, (iy + 1) % t->h, (iy + 2) % t->h};
+    /* Central differences at the four corners of the cell, (row, column) = (1, 1), (1, 2), (2, 1),
+     * (2, 2): along the row for d[0], along the column for d[1]. */
+    double du[2][2], dv[2][2];
+    for (int r = 0; r < 2; r++)
+        for (int c = 0; c < 2; c++) {
+            du[r][c] = texel_mean(t, xs[c + 2], ys[r + 1]) - texel_mean(t, xs[c], ys[r + 1]);
+            dv[r][c] = texel_mean(t, xs[c + 1], ys[r + 2]) - texel_mean(t, xs[c + 1], ys[r]);
+        }
+    d[0] = (du[0][0] * (1 - fx) + du[0][1] * fx) * (1 - fy) + (du[1][0] * (1 - fx) + du[1][1] * fx) * fy;
+    d[1] = (dv[0][0] * (1 - fx) + dv[0][1] * fx) * (1 - fy) + (dv[1][0] * (1 - fx) + dv[1][1] * fx) * fy;
+}
+
+struct texture *texture_checker(rgb on, rgb off, int res_u, int res_v)
+{
+    struct texture *t = xcalloc(1, sizeof *t);
+    t->kind = TEX_CHECKER;
+    t->on = on;
+    t->off = off;
+    t->res_u = res_u;
+    t->res_v = res_v;
+    return t;
+}
+
+struct texture *texture_constant(rgb value)
+{
+    struct texture *t = xcalloc(1, sizeof *t);
+    t->kind = TEX_CONSTANT;
+    t->on = t->off = value;
+    return t;
 }
 
 void texture_free(struct texture *t)

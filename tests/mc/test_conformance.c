@@ -71,6 +71,10 @@ static const struct conf_scene conf_scenes[] = {
     {"prim-disk", 80, 60},
     {"prim-cylinder", 80, 60},
     {"env-cap", 80, 60},
+    /* textures: checker, textured roughness, bump maps */
+    {"texture-checker", 80, 60},
+    {"texture-roughness", 80, 60},
+    {"bump-map", 80, 60},
 };
 #define NSCENES (int)(sizeof conf_scenes / sizeof conf_scenes[0])
 

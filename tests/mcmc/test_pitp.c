@@ -191,6 +191,17 @@ Test(pitp, perturbation_leaves_the_path_unchanged_on_every_scene, .timeout = 600
     test_each_isa(invariance_under_isa, NULL);
 }
 
+/* The same on the texture conformance scenes (default Embree kernel): bump maps and textured
+ * roughness make the shading frame and the BSDF functions of the hit point, which the
+ * perturbation's inversions must see unchanged. */
+Test(pitp, perturbation_leaves_the_path_unchanged_on_textured_scenes, .timeout = 600)
+{
+    const char *scenes[] = {"tests/data/tungsten/bump-map.json", "tests/data/tungsten/texture-roughness.json",
+                            "tests/data/tungsten/texture-checker.json"};
+    struct invariance r;
+    for (int i = 0; i < 3; i++) pitp_invariance_on_scene(scenes[i], 1500, &r);
+}
+
 /* The chosen technique follows w_j(x) = (p_j / p_i) / sum_l (p_l / p_i) (Eq. 5.22-5.25): for each
  * perturbation, a randomised probability integral transform of j under w (a uniform point of j's
  * interval of w's CDF) is U(0, 1) whatever the state. 50000 perturbations per scene (4 in a row

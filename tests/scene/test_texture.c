@@ -124,7 +124,7 @@ static struct texture grid_tex(void)
             p[0] = p[1] = (float)(10 * j + i);
             p[2] = 1;
         }
-    return (struct texture){4, 2, grid, 0};
+    return (struct texture){.w = 4, .h = 2, .rgb = grid};
 }
 static double at(const struct texture *t, double u, double v)
 {

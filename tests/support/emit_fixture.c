@@ -81,7 +81,7 @@ void fx_init(struct emit_fixture *f, enum fx_env env, bool rotate_env)
                 }
             float *spot = f->texels + 3 * (2 * FX_TEX_W + 11);
             spot[0] = 60, spot[1] = 50, spot[2] = 40;
-            f->tex = (struct texture){FX_TEX_W, FX_TEX_H, f->texels, 0};
+            f->tex = (struct texture){.w = FX_TEX_W, .h = FX_TEX_H, .rgb = f->texels};
             e->env_tex = &f->tex;
         }
         n = 5;
