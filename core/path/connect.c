@@ -8,7 +8,7 @@
  * predecessor) scatters into unit direction d; for camera and emitter vertices their own densities. */
 static double scatter_pdf(const struct scene *sc, const struct vertex *at, vec3 from_dir, vec3 d)
 {
-    if (at->kind == VK_CAMERA) return camera_pdf_dir(&sc->cam, d);
+    if (at->kind == VK_CAMERA) return camera_pdf_dir(&sc->cam, at->p, d);
     if (at->kind == VK_ENV) return 1.0 / (M_PI * sqr(env_radius(sc))); /* the origin disc */
     if (at->kind == VK_EMITTER) return emitter_pdf_dir(at->ng, d);
     if (!at->bc.b) return 0;
@@ -74,7 +74,7 @@ static void densities(const struct path_ctx *pc, const struct vertex *y, int s, 
 /* f at a connection endpoint: the BSDF (no cosine), the emitted radiance, or the importance. */
 static rgb endpoint_f(const struct scene *sc, const struct vertex *v, vec3 d, enum transport mode)
 {
-    if (v->kind == VK_CAMERA) return v3s(camera_pdf_dir(&sc->cam, d));
+    if (v->kind == VK_CAMERA) return v3s(camera_pdf_dir(&sc->cam, v->p, d));
     if (v->kind == VK_EMITTER) return emitter_radiance(sc, v->prim, v->ng, d);
     if (v->kind == VK_ENV) return env_radiance(sc, vneg(d)); /* d leaves the environment */
     if (!v->bc.b || v->bc.b->delta_only) return v3s(0);
@@ -108,7 +108,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
         if (zc->kind == VK_ENV) return false; /* nothing scatters at infinity */
         d = edge_dir(yc, zc, &dist2); /* dist2 = 1 from the environment: no falloff */
         if (dist2 == 0) return false;
-        if (t == 1 && !((cam_pdf = camera_raster(&sc->cam, vneg(d), &out->px, &out->py)) > 0)) return false;
+        if (t == 1 && !((cam_pdf = camera_raster(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0)) return false;
         rgb fy = endpoint_f(sc, yc, d, TRANSPORT_IMPORTANCE);
         rgb fz = t == 1 ? v3s(cam_pdf) : endpoint_f(sc, zc, vneg(d), TRANSPORT_RADIANCE);
         double g = endpoint_cos(yc, d) * endpoint_cos(zc, d) / dist2;

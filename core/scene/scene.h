@@ -113,6 +113,11 @@ struct camera {
     double tan_half_fov;       /* horizontal */
     double aspect;             /* width / height */
     enum recon_filter filter;
+    /* thin lens: lens_radius is the aperture disc's radius about pos in the (s, t) plane (Tungsten's
+     * aperture_size is this radius), 0 for the pinhole; focus_dist is the distance along n of the
+     * plane in focus (Tungsten's focus_distance, a plane, not a sphere). */
+    double lens_radius;
+    double focus_dist;
 };
 
 /* The camera's set-up (camera_setup.c), part of the model: the basis from position, look_at and
