@@ -62,6 +62,10 @@ vec3 camera_sample_dir(const struct camera *c, vec3 lens, struct sampler *s, dou
     *py = uy * camera_film_height(c) - m;
     /* image-normalised position: (ux, uy) itself for the box filter */
     double ix = m ? *px / c->width : ux, iy = m ? *py / c->height : uy;
+    if (c->tungsten_defects) {
+        ix = (*px - 0.5) / c->width;
+        iy = (*py - 0.5) / c->height;
+    }
     vec3 l = v3(c->tan_half_fov * (2 * ix - 1), c->tan_half_fov * (1 - 2 * iy) / c->aspect, 1.0);
     if (c->lens_radius > 0) {
         double sx, sy;
@@ -117,4 +121,15 @@ double camera_pdf_dir(const struct camera *c, vec3 lens, vec3 d)
 {
     double px, py;
     return camera_raster(c, lens, d, &px, &py);
+}
+
+double camera_tungsten_leak(const struct camera *c, vec3 lens, vec3 d, double *px, double *py)
+{
+    double ux, uy, ct;
+    if (!c->tungsten_defects || !image_uv(c, lens, d, &ux, &uy, &ct)) return 0;
+    double x = ux * c->width, y = uy * c->height;
+    if (!(x >= -0.5 && x < c->width && y >= -0.5 && y < c->height) || (x >= 0 && y >= 0)) return 0;
+    *px = x < 0 ? 0 : x;
+    *py = y < 0 ? 0 : y;
+    return 1.0 / (plane_area(c) * ct * ct * ct);
 }

@@ -56,4 +56,9 @@ void camera_invert(const struct camera *c, double px, double py, struct sampler 
 /* Solid-angle density of camera_sample_dir from lens point `lens` (0 outside the film). */
 double camera_pdf_dir(const struct camera *c, vec3 lens, vec3 d);
 
+/* With c->tungsten_defects (tests only, scene.h): the importance camera_raster would give for a
+ * direction whose film position lies in Tungsten's leak strip [-1/2, 0) of either axis, with the
+ * raster moved onto pixel 0; else 0. */
+double camera_tungsten_leak(const struct camera *c, vec3 lens, vec3 d, double *px, double *py);
+
 #endif

@@ -99,6 +99,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     if (s + t - 1 < pc->min_length) return false; /* --min-length: a whole length left out, weights unchanged */
     vec3 d = v3s(0);
     double dist2 = 0, cam_pdf = 0;
+    bool leak = false; /* Tungsten's thin-lens splat off the film (tests only, camera.h) */
     if (s == 0) {
         if (t < 2) return false;
         if (zc->kind != VK_ENV && (zc->kind != VK_SURFACE || !zc->front || !sc->prims[zc->prim].emissive)) return false;
@@ -108,7 +109,10 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
         if (zc->kind == VK_ENV) return false; /* nothing scatters at infinity */
         d = edge_dir(yc, zc, &dist2); /* dist2 = 1 from the environment: no falloff */
         if (dist2 == 0) return false;
-        if (t == 1 && !((cam_pdf = camera_raster(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0)) return false;
+        if (t == 1 && !((cam_pdf = camera_raster(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0)) {
+            if (!((cam_pdf = camera_tungsten_leak(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0)) return false;
+            leak = true;
+        }
         rgb fy = endpoint_f(sc, yc, d, TRANSPORT_IMPORTANCE);
         rgb fz = t == 1 ? v3s(cam_pdf) : endpoint_f(sc, zc, vneg(d), TRANSPORT_RADIANCE);
         double g = endpoint_cos(yc, d) * endpoint_cos(zc, d) / dist2;
@@ -125,6 +129,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     double *rat = ratios ? ratios : r;
     out->w = mis_weights(&m, s, max_s, rat);
     if (pc->max_heuristic) out->w = mis_max_weight(rat, m.k, s);
+    if (leak) out->w = 1;
     out->f = nonfinite_inject(out->f);
     return true;
 }

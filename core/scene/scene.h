@@ -118,6 +118,12 @@ struct camera {
      * plane in focus (Tungsten's focus_distance, a plane, not a sphere). */
     double lens_radius;
     double focus_dist;
+    /* Tests only, never set by the loader: reproduce Tungsten 0.2.2's ThinlensCamera, whose camera
+     * rays for pixel i leave through film [i - 1/2, i + 1/2) (sampleDirection lacks PinholeCamera's
+     * + 1/2) while its light-tracing splats (t = 1) stay where the film is, and take film positions
+     * in [-1/2, 0) into pixel 0 with MIS weight 1 (evalDirection's bound is -filter width, its
+     * directionPdf is 0 there). Its references carry both (tests/mc/test_conformance.c). */
+    bool tungsten_defects;
 };
 
 /* The camera's set-up (camera_setup.c), part of the model: the basis from position, look_at and
