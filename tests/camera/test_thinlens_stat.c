@@ -6,6 +6,8 @@
 
 #include "camera/camera.h"
 #include "mc/render.h"
+#include "mcmc/controlled_step.h"
+#include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include "support/agree.h"
 #include "support/scenes.h"
@@ -97,5 +99,52 @@ Test(stat_thinlens, pt_bdpt_and_light_tracing_agree, .timeout = 300)
             pt2.mean, pt2.mean_se, lt.mean, lt.mean_se, f2, pm2, worst2);
     cr_assert_eq(f, 0, "PT vs BDPT: %d comparisons fail", f);
     cr_assert_eq(f2, 0, "PT vs light tracing: %d comparisons fail", f2);
+    scene_free(sc);
+}
+
+struct chain_run {
+    const struct scene *sc;
+    enum mlt_method m;
+    enum small_step step;
+};
+/* One MCMC render of 64 mutations per pixel (20k seed paths), 2 threads, p_large 0.1. */
+static struct image *chain_render(void *p, uint64_t seed)
+{
+    struct chain_run *c = p;
+    const struct scene *sc = c->sc;
+    struct mlt_opts mo = {.method = c->m, .p_large = 0.1, .mutations = 64L * sc->cam.width * sc->cam.height,
+                          .seed_paths = 20000, .seed = seed, .threads = 2, .max_length = 4, .small_step = c->step};
+    pss_opts_default(&mo.pss, sc->cam.width, sc->cam.height);
+    if (c->step == SMALL_STEP_CONTROLLED) mo.pss.kernel = KERNEL_GAUSSIAN;
+    struct mlt_result res;
+    char err[256];
+    cr_assert(mlt_render(sc, &mo, &res, err, sizeof err), "%s", err);
+    return res.img;
+}
+
+/* The Markov-chain methods on the thin lens (their camera vertex is the lens point, its numbers the
+ * first two of camera block 0; PITP grows and shrinks camera subpaths through t = 1): PSSMLT, MMLT,
+ * PITP and MMLT with controlled small steps, 8 runs each, against BDPT (8 runs of 32 spp), 16 x 16
+ * blocks and the image mean, alpha = 0.01 Sidak over the blocks, the mean and the 4 methods. */
+Test(stat_thinlens, markov_chain_methods_agree_with_bdpt, .timeout = 600)
+{
+    struct scene *sc = test_scene(SCENE);
+    struct stack ref, a;
+    struct run b = {sc, {.method = METHOD_BDPT, .spp = 32, .threads = 2, .max_length = 4}};
+    stack_runs(&ref, render_run, &b, 8, 700, 16);
+    const struct chain_run cfg[] = {{sc, MLT_PSSMLT, SMALL_STEP_PSS}, {sc, MLT_MMLT, SMALL_STEP_PSS},
+                                    {sc, MLT_PITP, SMALL_STEP_PSS}, {sc, MLT_MMLT, SMALL_STEP_CONTROLLED}};
+    const char *names[] = {"pssmlt", "mmlt", "pitp", "mmlt controlled"};
+    int total = 0;
+    for (int i = 0; i < 4; i++) {
+        struct chain_run c = cfg[i];
+        stack_runs(&a, chain_render, &c, 8, 800 + 20 * (uint64_t)i, 16);
+        double pm, worst;
+        int f = stack_compare(&a, &ref, 4, &pm, &worst);
+        fprintf(stderr, "thinlens %s: %g +- %g vs BDPT %g +- %g: %d failing (mean p %.3g, worst block p %.3g)\n", names[i],
+                a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+        total += f;
+    }
+    cr_assert_eq(total, 0, "%d comparisons fail", total);
     scene_free(sc);
 }
