@@ -110,7 +110,9 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
         d = edge_dir(yc, zc, &dist2); /* dist2 = 1 from the environment: no falloff */
         if (dist2 == 0) return false;
         if (t == 1 && !((cam_pdf = camera_raster(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0)) {
-            if (!((cam_pdf = camera_tungsten_leak(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0)) return false;
+            if (!sc->cam.tungsten_defects ||
+                !((cam_pdf = camera_tungsten_leak(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0))
+                return false;
             leak = true;
         }
         rgb fy = endpoint_f(sc, yc, d, TRANSPORT_IMPORTANCE);
