@@ -86,14 +86,11 @@ static void json_error(const char *path, const char *text, const char *at, char 
  * refused: the lens here is the uniform disc. */
 static bool load_thinlens(struct jctx *c, const cJSON *cam, struct camera *out)
 {
-    static const char *refused[] = {"aperture", "focus_pivot"};
-    for (size_t i = 0; i < sizeof refused / sizeof *refused; i++)
-        if (cJSON_GetObjectItemCaseSensitive(cam, refused[i])) {
-            char path[64];
-            snprintf(path, sizeof path, "camera.%s", refused[i]);
-            return jfail(c, path, "not supported (the thin lens's aperture is a uniform disc of radius aperture_size, "
-                                  "in focus at focus_distance)");
-        }
+    if (cJSON_GetObjectItemCaseSensitive(cam, "aperture"))
+        return jfail(c, "camera.aperture", "aperture textures are not supported (the aperture is a uniform disc of "
+                                           "radius aperture_size)");
+    if (cJSON_GetObjectItemCaseSensitive(cam, "focus_pivot"))
+        return jfail(c, "camera.focus_pivot", "not supported (give focus_distance instead)");
     double focus = 1, radius = 0.001, cateye = 0;
     if (!jget_number(c, cam, "camera", "cateye", false, &cateye)) return false;
     if (cateye != 0) return jfail(c, "camera.cateye", "cat's-eye vignetting is not supported (expected 0)");
