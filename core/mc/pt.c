@@ -113,7 +113,8 @@ void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, 
     int max_verts = pc->max_length + 1;
     double px, py;
     sampler_begin(s, STREAM_CAMERA, 0);
-    vec3 o = sc->cam.pos, d = camera_sample_dir(&sc->cam, s, &px, &py, NULL);
+    double pdf_lens;
+    vec3 o = camera_sample_lens(&sc->cam, s, &pdf_lens), d = camera_sample_dir(&sc->cam, o, s, &px, &py, NULL);
     double eps = 0;
     struct pt_vertex z = {.beta = v3s(1), .pdf_sa = 0, .after_delta = true};
     rgb sum = v3s(0);

@@ -3,6 +3,7 @@
  * partial inversion with a retrace of each gained vertex, the reverse move's check, the target
  * ratio of refracting paths (Eq. 5.18), and the update of the chain's numbers (technique number:
  * mmlt.h, Eq. 5.6). */
+#include "camera/camera.h"
 #include "mcmc/pitp.h"
 #include "bsdf/bsdf_smooth.h"
 #include "sampling/pick.h"
@@ -139,11 +140,17 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
 }
 
 /* Marks fresh the numbers a subpath of stream st stops using when it shrinks from n to n_new
- * vertices. A camera subpath of n vertices reads blocks 0..n-2; an emitter subpath blocks
- * 0..n-2 and, with a single vertex, the light choice and position at the start of block 0. */
+ * vertices. A camera subpath of n vertices reads blocks 0..n-2 and, with a single vertex, a thin
+ * lens's point at the start of block 0; an emitter subpath blocks 0..n-2 and, with a single
+ * vertex, the light choice and position at the start of block 0. */
 static void forget_dropped(const struct path_ctx *pc, struct pss_sampler *p, int st, int n, int n_new)
 {
     int first = n_new - 1, last = st == STREAM_EMITTER && n >= 1 ? (n >= 2 ? n - 2 : 0) : n - 2;
+    int lens = camera_lens_dims(&pc->sc->cam);
+    if (st == STREAM_CAMERA && n_new == 1 && lens > 0) {
+        for (int o = lens; o < SAMPLER_BLOCK; o++) pss_forget(p, st, o);
+        first = 1;
+    }
     if (st == STREAM_EMITTER && n_new == 1) {
         /* block 0 keeps what y_0 reads: replay its sampling on the current numbers to count them */
         struct vertex y;

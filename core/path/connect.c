@@ -8,7 +8,7 @@
  * predecessor) scatters into unit direction d; for camera and emitter vertices their own densities. */
 static double scatter_pdf(const struct scene *sc, const struct vertex *at, vec3 from_dir, vec3 d)
 {
-    if (at->kind == VK_CAMERA) return camera_pdf_dir(&sc->cam, d);
+    if (at->kind == VK_CAMERA) return camera_pdf_dir(&sc->cam, at->p, d);
     if (at->kind == VK_ENV) return 1.0 / (M_PI * sqr(env_radius(sc))); /* the origin disc */
     if (at->kind == VK_EMITTER) return emitter_pdf_dir(at->ng, d);
     if (!at->bc.b) return 0;
@@ -74,7 +74,7 @@ static void densities(const struct path_ctx *pc, const struct vertex *y, int s, 
 /* f at a connection endpoint: the BSDF (no cosine), the emitted radiance, or the importance. */
 static rgb endpoint_f(const struct scene *sc, const struct vertex *v, vec3 d, enum transport mode)
 {
-    if (v->kind == VK_CAMERA) return v3s(camera_pdf_dir(&sc->cam, d));
+    if (v->kind == VK_CAMERA) return v3s(camera_pdf_dir(&sc->cam, v->p, d));
     if (v->kind == VK_EMITTER) return emitter_radiance(sc, v->prim, v->ng, d);
     if (v->kind == VK_ENV) return env_radiance(sc, vneg(d)); /* d leaves the environment */
     if (!v->bc.b || v->bc.b->delta_only) return v3s(0);
@@ -99,6 +99,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     if (s + t - 1 < pc->min_length) return false; /* --min-length: a whole length left out, weights unchanged */
     vec3 d = v3s(0);
     double dist2 = 0, cam_pdf = 0;
+    bool leak = false; /* Tungsten's thin-lens splat off the film (tests only, camera.h) */
     if (s == 0) {
         if (t < 2) return false;
         if (zc->kind != VK_ENV && (zc->kind != VK_SURFACE || !zc->front || !sc->prims[zc->prim].emissive)) return false;
@@ -108,7 +109,12 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
         if (zc->kind == VK_ENV) return false; /* nothing scatters at infinity */
         d = edge_dir(yc, zc, &dist2); /* dist2 = 1 from the environment: no falloff */
         if (dist2 == 0) return false;
-        if (t == 1 && !((cam_pdf = camera_raster(&sc->cam, vneg(d), &out->px, &out->py)) > 0)) return false;
+        if (t == 1 && !((cam_pdf = camera_raster(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0)) {
+            if (!sc->cam.tungsten_defects ||
+                !((cam_pdf = camera_tungsten_leak(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0))
+                return false;
+            leak = true;
+        }
         rgb fy = endpoint_f(sc, yc, d, TRANSPORT_IMPORTANCE);
         rgb fz = t == 1 ? v3s(cam_pdf) : endpoint_f(sc, zc, vneg(d), TRANSPORT_RADIANCE);
         double g = endpoint_cos(yc, d) * endpoint_cos(zc, d) / dist2;
@@ -125,6 +131,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     double *rat = ratios ? ratios : r;
     out->w = mis_weights(&m, s, max_s, rat);
     if (pc->max_heuristic) out->w = mis_max_weight(rat, m.k, s);
+    if (leak) out->w = 1;
     out->f = nonfinite_inject(out->f);
     return true;
 }

@@ -3,11 +3,12 @@
  *
  * Camera subpath z_0 (camera), z_1, ...; emitter subpath y_0 (point on an emitter), y_1, ...
  * Technique (s, t) joins y_0..y_{s-1} and z_{t-1}..z_0 into a path of length s + t - 1 segments.
- * Dimension blocks: camera stream block 0 = image position; block i >= 1 = BSDF sampling at z_i.
+ * Dimension blocks: camera stream block 0 = lens point (thin lens) and image position; block
+ * i >= 1 = BSDF sampling at z_i.
  * Emitter stream block 0 = light choice, position, direction; block i >= 1 = BSDF sampling at y_i.
  *
- * Throughput convention: z_0.beta = 1 (the pinhole's importance equals its direction density, see
- * camera.h); y_0.beta = 1 / (pick * pdf_pos); vertex i's beta is the subpath's contribution up to
+ * Throughput convention: z_0.beta = 1 (the camera's importance equals the density of its lens
+ * point and direction, see camera.h; z_0.p is the lens point, z_0.pdf_fwd its area density); y_0.beta = 1 / (pick * pdf_pos); vertex i's beta is the subpath's contribution up to
  * and including the sampling of vertex i. pdf_fwd is the area density of a vertex given its
  * predecessor in its own subpath, pdf_rev the area density of generating it from its successor
  * (0 stands for a Dirac density, which cancels in the MIS ratios as in Veach's thesis). */

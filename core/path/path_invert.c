@@ -110,16 +110,27 @@ bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int
     const struct camera *cam = &pc->sc->cam;
     struct vertex at = v[from];
     struct tee t;
+    /* a lone thin-lens vertex still has its lens point (light tracing's t = 1) */
+    if (n == 1 && from == 0 && camera_lens_dims(cam) > 0) {
+        tee_begin(&t, w, STREAM_CAMERA, 0);
+        return camera_invert_lens(cam, v[0].p, &t.base);
+    }
     for (int i = from; i < n - 1; i++) {
         tee_begin(&t, w, STREAM_CAMERA, i);
         vec3 d = v3s(0);
         bool have_d = true;
         if (i == 0) {
+            /* the lens point, then the image position seen from the lens point the walk will
+             * have (closed loop: the replayed one, within rounding of v[0]) */
             double px, py, pdf;
-            if (!(camera_raster(cam, dir_to(&at, &v[1]), &px, &py) > 0)) return false;
+            if (!camera_invert_lens(cam, v[0].p, &t.base)) return false;
+            tee_replay(&t);
+            at.p = camera_sample_lens(cam, &t.base, &pdf);
+            if (!(camera_raster(cam, at.p, dir_to(&at, &v[1]), &px, &py) > 0)) return false;
             camera_invert(cam, px, py, &t.base);
             tee_replay(&t);
-            d = camera_sample_dir(cam, &t.base, &px, &py, &pdf);
+            at.p = camera_sample_lens(cam, &t.base, &pdf);
+            d = camera_sample_dir(cam, at.p, &t.base, &px, &py, &pdf);
         } else {
             if (!scatter(&at, v, i, &t)) return false;
             have_d = replay_scatter(&at, &t, TRANSPORT_RADIANCE, &d);

@@ -132,13 +132,15 @@ static int camera_walk(const struct path_ctx *pc, struct sampler *s, struct vert
     if (max_verts < 1) return 0;
     sampler_begin(s, STREAM_CAMERA, 0);
     struct vertex *z = &v[0];
-    *z = (struct vertex){.kind = VK_CAMERA, .p = cam->pos, .ng = cam->basis.n, .sh = cam->basis,
-                         .front = true, .prim = -1, .tri = -1, .beta = v3s(1), .pdf_fwd = 1};
+    double pdf_lens;
+    vec3 lens = camera_sample_lens(cam, s, &pdf_lens);
+    *z = (struct vertex){.kind = VK_CAMERA, .p = lens, .ng = cam->basis.n, .sh = cam->basis,
+                         .front = true, .prim = -1, .tri = -1, .beta = v3s(1), .pdf_fwd = pdf_lens};
     /* A lone camera vertex (light tracing's t = 1) gets its raster position from the connection:
      * drawing a direction would cost two numbers (and, under MCMC, two mutations) for nothing. */
     if (max_verts == 1) return 1;
     double pdf;
-    vec3 d = camera_sample_dir(cam, s, &z->px, &z->py, &pdf);
+    vec3 d = camera_sample_dir(cam, lens, s, &z->px, &z->py, &pdf);
     return trace(pc, s, v, 1, max_verts, d, pdf, v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA, to);
 }
 

@@ -25,6 +25,8 @@ void camera_setup(struct camera *c, vec3 pos, vec3 look_at, vec3 up, double fov_
     c->height = h;
     c->tan_half_fov = tan(fov_deg * M_PI / 360.0);
     c->aspect = (double)w / h;
+    c->lens_radius = 0; /* a pinhole until the loader reads a thin lens */
+    c->focus_dist = 1;
 }
 
 void camera_resize(struct camera *c, int w, int h)

@@ -155,6 +155,18 @@ struct camera {
     double tan_half_fov;       /* horizontal */
     double aspect;             /* width / height */
     enum recon_filter filter;
+    /* thin lens: lens_radius is the aperture disc's radius about pos in the (s, t) plane (Tungsten's
+     * aperture_size is this radius), 0 for the pinhole; focus_dist is the distance along n of the
+     * plane in focus (Tungsten's focus_distance, a plane, not a sphere). tungsten_defects (tests
+     * only, never set by the loader; with lens_radius > 0) reproduces Tungsten 0.2.2's
+     * ThinlensCamera, whose camera rays for pixel i leave through film [i - 1/2, i + 1/2)
+     * (sampleDirection lacks PinholeCamera's + 1/2) while its light-tracing splats (t = 1) stay
+     * where the film is and take film positions in [-1/2, 0) into pixel 0 with MIS weight 1
+     * (evalDirection's bound is -filter width, its directionPdf is 0 there); its references carry
+     * both (tests/mc/test_conformance.c). */
+    double lens_radius;
+    double focus_dist;
+    bool tungsten_defects;
 };
 
 /* The camera's set-up (camera_setup.c), part of the model: the basis from position, look_at and

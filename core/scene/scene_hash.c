@@ -81,6 +81,10 @@ uint64_t ckpt_scene_hash(const struct scene *sc)
     H(c->width);
     H(c->height);
     H(c->filter);
+    if (c->lens_radius > 0) { /* a pinhole hashes as before the thin lens existed */
+        H(c->lens_radius);
+        H(c->focus_dist);
+    }
     H(sc->two_sided_shading);
     H(sc->nbsdfs);
     for (int i = 0; i < sc->nbsdfs; i++) h = hash_bsdf(h, &sc->bsdfs[i]);

@@ -81,18 +81,39 @@ static void json_error(const char *path, const char *text, const char *at, char 
         snprintf(err, errlen, "%s:%d:%d: malformed JSON (unexpected end of line or file)", path, line, colno);
 }
 
+/* ThinlensCamera's fields and defaults (focus_distance 1, aperture_size 0.001, the disc's radius).
+ * Its other aperture shapes (an `aperture` texture, `cateye` vignetting) and `focus_pivot` are
+ * refused: the lens here is the uniform disc. */
+static bool load_thinlens(struct jctx *c, const cJSON *cam, struct camera *out)
+{
+    if (cJSON_GetObjectItemCaseSensitive(cam, "aperture"))
+        return jfail(c, "camera.aperture", "aperture textures are not supported (the aperture is a uniform disc of "
+                                           "radius aperture_size)");
+    if (cJSON_GetObjectItemCaseSensitive(cam, "focus_pivot"))
+        return jfail(c, "camera.focus_pivot", "not supported (give focus_distance instead)");
+    double focus = 1, radius = 0.001, cateye = 0;
+    if (!jget_number(c, cam, "camera", "cateye", false, &cateye)) return false;
+    if (cateye != 0) return jfail(c, "camera.cateye", "cat's-eye vignetting is not supported (expected 0)");
+    if (!jget_number(c, cam, "camera", "focus_distance", false, &focus)) return false;
+    if (!(focus > 0 && focus < 1e30)) return jfail(c, "camera.focus_distance", "expected a positive distance");
+    if (!jget_number(c, cam, "camera", "aperture_size", false, &radius)) return false;
+    if (!(radius >= 0 && radius < 1e30)) return jfail(c, "camera.aperture_size", "expected a radius >= 0");
+    out->lens_radius = radius;
+    out->focus_dist = focus;
+    return true;
+}
+
 static bool load_camera(struct loader *L, const cJSON *cam)
 {
     struct jctx *c = &L->c;
     struct camera *out = &L->s->cam;
-    if (!cam) return jfail(c, "camera", "missing (expected a pinhole camera object)");
+    if (!cam) return jfail(c, "camera", "missing (expected a pinhole or thinlens camera object)");
     if (!cJSON_IsObject(cam)) return jfail(c, "camera", "expected a camera object");
     const char *type = NULL, *filter = NULL;
     if (!jget_string(c, cam, "camera", "type", true, &type)) return false;
-    if (strcmp(type, "thinlens") == 0)
-        jwarn(c, "camera.type", "thinlens camera rendered as a pinhole (no depth of field)");
-    else if (strcmp(type, "pinhole") != 0)
-        return jfail(c, "camera.type", "unsupported camera type \"%s\" (expected \"pinhole\")", type);
+    bool thinlens = strcmp(type, "thinlens") == 0;
+    if (!thinlens && strcmp(type, "pinhole") != 0)
+        return jfail(c, "camera.type", "unsupported camera type \"%s\" (expected \"pinhole\" or \"thinlens\")", type);
     if (cJSON_GetObjectItemCaseSensitive(cam, "medium"))
         return jfail(c, "camera.medium", "participating media are not supported");
     double fov = 60; /* PinholeCamera's default */
@@ -130,6 +151,7 @@ static bool load_camera(struct loader *L, const cJSON *cam)
     vec3 fwd = v3(m.m[0][2], m.m[1][2], m.m[2][2]), up = v3(m.m[0][1], m.m[1][1], m.m[2][1]);
     if (!(vlen2(fwd) > 0) || !(vlen2(up) > 0)) return jfail(c, "camera.transform", "degenerate camera transform");
     camera_setup(out, pos, vadd(pos, fwd), up, fov, w, h);
+    if (thinlens && !load_thinlens(c, cam, out)) return false;
     /* Tungsten's default is the tent */
     out->filter = FILTER_TENT;
     if (!jget_string(c, cam, "camera", "reconstruction_filter", false, &filter)) return false;

@@ -42,7 +42,7 @@ bool *edge_mask(const struct scene *sc, int radius)
             struct centre_sampler cs = {{&centre_ops, 0, 0, 0},
                                         {(x + 0.5 + m) / camera_film_width(&sc->cam), (y + 0.5 + m) / camera_film_height(&sc->cam)}};
             double rx, ry;
-            vec3 d = camera_sample_dir(&sc->cam, &cs.base, &rx, &ry, NULL);
+            vec3 d = camera_sample_dir(&sc->cam, sc->cam.pos, &cs.base, &rx, &ry, NULL);
             struct hit h;
             struct px_hit *p = &px[(size_t)y * W + x];
             p->hit = accel_intersect(sc->accel, sc->cam.pos, d, 0, INFINITY, &h);

@@ -306,12 +306,12 @@ static void camera_roundtrip(enum recon_filter f)
         rng r2 = r;
         double ux = rng_uniform(&r2), uy = rng_uniform(&r2);
         sampler_begin(&s.base, STREAM_CAMERA, 0);
-        vec3 d = camera_sample_dir(&c, &s.base, &px, &py, &pdf);
+        vec3 d = camera_sample_dir(&c, c.pos, &s.base, &px, &py, &pdf);
         cr_assert(px == ux * (320 + 2 * m) - m && py == uy * (200 + 2 * m) - m);
-        double pr = camera_raster(&c, d, &qx, &qy);
+        double pr = camera_raster(&c, c.pos, d, &qx, &qy);
         cr_assert(pr > 0 && fabs(pdf - pr) <= 1e-9 * pr, "sampled pdf %g vs raster pdf %g", pdf, pr);
         cr_assert(fabs(qx - px) < 1e-7 * 320 && fabs(qy - py) < 1e-7 * 200, "%g %g vs %g %g", qx, qy, px, py);
-        cr_assert(camera_pdf_dir(&c, d) > 0);
+        cr_assert(camera_pdf_dir(&c, c.pos, d) > 0);
         sampler_writer_clear(&W);
         sampler_begin(&W.base, STREAM_CAMERA, 0);
         camera_invert(&c, qx, qy, &W.base);
@@ -320,7 +320,7 @@ static void camera_roundtrip(enum recon_filter f)
         struct sampler_replay rp;
         sampler_replay_init(&rp, (const double(*)[STREAM_DIMS])W.u);
         sampler_begin(&rp.base, STREAM_CAMERA, 0);
-        ok += close_rel(d, camera_sample_dir(&c, &rp.base, &qx, &qy, NULL));
+        ok += close_rel(d, camera_sample_dir(&c, c.pos, &rp.base, &qx, &qy, NULL));
     }
     cr_assert(ok >= RT_MIN_OK * NRT, "%ld", ok);
 }
@@ -335,14 +335,14 @@ Test(emit, camera_tent_film_margin)
     c.filter = FILTER_TENT;
     vec3 sd = c.basis.s, td = c.basis.t, nd = c.basis.n;
     double px, py;
-    cr_assert(camera_raster(&c, vnorm(vadd(nd, vscale(sd, 1.004))), &px, &py) && px > 400 && px < 401, "%g", px);
-    cr_assert(!camera_raster(&c, vnorm(vadd(nd, vscale(sd, 1.006))), &px, &py));
-    cr_assert(camera_raster(&c, vnorm(vsub(nd, vscale(sd, 1.004))), &px, &py) && px < 0 && px > -1, "%g", px);
-    cr_assert(camera_raster(&c, vnorm(vadd(nd, vscale(td, 0.504))), &px, &py) && py < 0 && py > -1, "%g", py);
-    cr_assert(!camera_raster(&c, vnorm(vadd(nd, vscale(td, 0.506))), &px, &py));
+    cr_assert(camera_raster(&c, c.pos, vnorm(vadd(nd, vscale(sd, 1.004))), &px, &py) && px > 400 && px < 401, "%g", px);
+    cr_assert(!camera_raster(&c, c.pos, vnorm(vadd(nd, vscale(sd, 1.006))), &px, &py));
+    cr_assert(camera_raster(&c, c.pos, vnorm(vsub(nd, vscale(sd, 1.004))), &px, &py) && px < 0 && px > -1, "%g", px);
+    cr_assert(camera_raster(&c, c.pos, vnorm(vadd(nd, vscale(td, 0.504))), &px, &py) && py < 0 && py > -1, "%g", py);
+    cr_assert(!camera_raster(&c, c.pos, vnorm(vadd(nd, vscale(td, 0.506))), &px, &py));
     /* uniform over a film of 402 x 202 pixels: 1 / (A cos^3) with A grown by that ratio */
     double a = 4 * 1.0 / 2 * (402.0 * 202) / (400.0 * 200);
-    cr_assert(fabs(camera_pdf_dir(&c, nd) - 1.0 / a) < 1e-12);
+    cr_assert(fabs(camera_pdf_dir(&c, c.pos, nd) - 1.0 / a) < 1e-12);
 }
 
 /* Tungsten's pinhole facts: horizontal fov, raster y downward, pdf 1/(A cos^3) with the plane area
@@ -352,19 +352,19 @@ Test(emit, camera_conventions)
     struct camera c = fx_camera(v3(0, 0, 0), v3(0, 0, 1), 45, 400, 200);
     vec3 sd = c.basis.s, td = c.basis.t, nd = c.basis.n;
     double px, py;
-    cr_assert(camera_raster(&c, nd, &px, &py) && fabs(px - 200) < 1e-9 && fabs(py - 100) < 1e-9);
+    cr_assert(camera_raster(&c, c.pos, nd, &px, &py) && fabs(px - 200) < 1e-9 && fabs(py - 100) < 1e-9);
     /* the right edge of the image is 45 degrees off axis (horizontal fov 90) */
-    cr_assert(camera_raster(&c, vnorm(vadd(nd, vscale(sd, 0.999))), &px, &py) && px > 399 && px < 400);
-    cr_assert(!camera_raster(&c, vnorm(vadd(nd, vscale(sd, 1.001))), &px, &py));
+    cr_assert(camera_raster(&c, c.pos, vnorm(vadd(nd, vscale(sd, 0.999))), &px, &py) && px > 399 && px < 400);
+    cr_assert(!camera_raster(&c, c.pos, vnorm(vadd(nd, vscale(sd, 1.001))), &px, &py));
     /* up (+t) is the top of the image: small raster y; the top edge at tan = 1 / aspect */
-    cr_assert(camera_raster(&c, vnorm(vadd(nd, vscale(td, 0.499))), &px, &py) && py < 1 && py >= 0);
-    cr_assert(!camera_raster(&c, vnorm(vadd(nd, vscale(td, 0.501))), &px, &py));
-    cr_assert(!camera_raster(&c, vneg(nd), &px, &py));
-    cr_assert_eq(camera_pdf_dir(&c, vneg(nd)), 0.0);
-    cr_assert_eq(camera_pdf_dir(&c, vnorm(vadd(nd, vscale(sd, 1.001)))), 0.0);
-    cr_assert(fabs(camera_pdf_dir(&c, nd) - 1.0 / (4 * 1.0 / 2)) < 1e-12);
+    cr_assert(camera_raster(&c, c.pos, vnorm(vadd(nd, vscale(td, 0.499))), &px, &py) && py < 1 && py >= 0);
+    cr_assert(!camera_raster(&c, c.pos, vnorm(vadd(nd, vscale(td, 0.501))), &px, &py));
+    cr_assert(!camera_raster(&c, c.pos, vneg(nd), &px, &py));
+    cr_assert_eq(camera_pdf_dir(&c, c.pos, vneg(nd)), 0.0);
+    cr_assert_eq(camera_pdf_dir(&c, c.pos, vnorm(vadd(nd, vscale(sd, 1.001)))), 0.0);
+    cr_assert(fabs(camera_pdf_dir(&c, c.pos, nd) - 1.0 / (4 * 1.0 / 2)) < 1e-12);
     vec3 d = vnorm(v3(0.5, 0.25, 1));
     double ct = vdot(d, v3(0, 0, 1));
     vec3 dw = vnorm(frame_to_world(&c.basis, d));
-    cr_assert(fabs(camera_pdf_dir(&c, dw) - 1.0 / (2 * ct * ct * ct)) < 1e-12);
+    cr_assert(fabs(camera_pdf_dir(&c, c.pos, dw) - 1.0 / (2 * ct * ct * ct)) < 1e-12);
 }

@@ -303,7 +303,7 @@ static bool cam_sample(void *ctx, rng *r, double *u, double *v)
     struct rng_sampler s;
     sampler_at(&s, r, STREAM_CAMERA);
     double px, py;
-    vec3 d = camera_sample_dir(&CAM, &s.base, &px, &py, NULL);
+    vec3 d = camera_sample_dir(&CAM, CAM.pos, &s.base, &px, &py, NULL);
     vec3 l = frame_to_local(&CAM.basis, d);
     double al = atan(l.x / l.z), be = atan(l.y / l.z);
     *u = fx_ss_inv(clampd((al / amax() + 1) / 2, 0, 1));
@@ -319,7 +319,7 @@ static double cam_pdf(void *ctx, double u, double v)
     double x = tan(al), y = tan(be), L = sqrt(1 + x * x + y * y);
     vec3 d = vnorm(frame_to_world(&CAM.basis, v3(x, y, 1)));
     double domega = (1 + x * x) * (1 + y * y) / (L * L * L);
-    return camera_pdf_dir(&CAM, d) * domega * (2 * amax() * ju) * (2 * bmax() * jv);
+    return camera_pdf_dir(&CAM, CAM.pos, d) * domega * (2 * amax() * ju) * (2 * bmax() * jv);
 }
 static void camera_direction(enum recon_filter f, uint64_t seed)
 {
@@ -343,7 +343,7 @@ static void camera_pdf_integrates_to_one(enum recon_filter f, uint64_t seed)
     double s = 0, s2 = 0;
     for (int i = 0; i < N; i++) {
         vec3 d = warp_uniform_sphere(rng_uniform(&r), rng_uniform(&r));
-        double f = camera_pdf_dir(&CAM, d) * 4 * M_PI;
+        double f = camera_pdf_dir(&CAM, CAM.pos, d) * 4 * M_PI;
         s += f;
         s2 += f * f;
     }

@@ -75,6 +75,7 @@ static const struct conf_scene conf_scenes[] = {
     {"texture-checker", 80, 60},
     {"texture-roughness", 80, 60},
     {"bump-map", 80, 60},
+    {"camera-thinlens", 80, 60},
 };
 #define NSCENES (int)(sizeof conf_scenes / sizeof conf_scenes[0])
 
@@ -92,6 +93,24 @@ static const struct {
     {"filter-tent", BLK},
 };
 /* ===== end ===== */
+
+/* ===== DEFECTS OF TUNGSTEN'S REPRODUCED FOR THE COMPARISON ONLY (core/scene/scene.h) =====
+ * Tungsten 0.2.2's ThinlensCamera shifts its camera rays half a pixel against its own light-tracing
+ * splats and adds a strip of film outside the image into row and column 0 through light tracing
+ * alone. Its BDPT reference is an MIS blend of the two film placements, which no consistent camera
+ * reproduces: the renderer's thin lens is the consistent one (the agreement tests hold PT and BDPT
+ * to it), and this comparison renders with the defects switched on. Without them 38 of 80 blocks
+ * fail (top row and left column 4 to 12 % darker, interior blocks at sharp edges); with a
+ * consistent half-pixel shift and the border ring left out still 9. */
+static const char *const with_tungsten_defects[] = {"camera-thinlens"};
+/* ===== end ===== */
+
+static bool tungsten_defects(const char *name)
+{
+    for (size_t i = 0; i < sizeof with_tungsten_defects / sizeof *with_tungsten_defects; i++)
+        if (!strcmp(name, with_tungsten_defects[i])) return true;
+    return false;
+}
 
 static int border_of(const char *name)
 {
@@ -176,6 +195,7 @@ ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
     char path[256];
     snprintf(path, sizeof path, DIR "%s.json", cs->name);
     struct scene *sc = test_scene(path);
+    sc->cam.tungsten_defects = tungsten_defects(cs->name);
     struct image *ref_full = read_exr(cs->name, "ref"), *t16_full = read_exr(cs->name, "t16");
     cr_assert(sc->cam.width == ref_full->w && sc->cam.height == ref_full->h && cs->w == ref_full->w &&
               cs->h == ref_full->h);

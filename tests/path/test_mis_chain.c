@@ -49,7 +49,7 @@ Test(path, mis_ratio_across_specular_chains_is_the_unfolded_paths)
         vec3 first = vnorm(vsub(z[2].p, z[1].p)), last = vnorm(vsub(light->p, z[t - 2].p));
         double cos_f = fabs(vdot(z[1].ng, first)), cos_l = fabs(vdot(light->ng, last));
         vec3 d_cam = vsub(z[1].p, z[0].p);
-        double pcam = camera_pdf_dir(&sc->cam, vnorm(d_cam)) * fabs(vdot(z[1].ng, vnorm(d_cam))) / vlen2(d_cam);
+        double pcam = camera_pdf_dir(&sc->cam, z[0].p, vnorm(d_cam)) * fabs(vdot(z[1].ng, vnorm(d_cam))) / vlen2(d_cam);
         double p0 = pcam * (cos_f / M_PI) * cos_l / (L * L);
         double pk = emitter_pick_prob(sc, light->prim) * emitter_pdf_pos(sc, light->prim, light->p) * (cos_l / M_PI) *
                     cos_f / (L * L);
