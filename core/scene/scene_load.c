@@ -112,6 +112,8 @@ static bool load_camera(struct loader *L, const cJSON *cam)
     const char *type = NULL, *filter = NULL;
     if (!jget_string(c, cam, "camera", "type", true, &type)) return false;
     bool thinlens = strcmp(type, "thinlens") == 0;
+    const char *why = refused_feature(REFUSED_CAMERA, type);
+    if (why) return jfail(c, "camera.type", "camera type \"%s\" is not supported: %s", type, why);
     if (!thinlens && strcmp(type, "pinhole") != 0)
         return jfail(c, "camera.type", "unsupported camera type \"%s\" (expected \"pinhole\" or \"thinlens\")", type);
     if (cJSON_GetObjectItemCaseSensitive(cam, "medium"))

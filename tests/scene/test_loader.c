@@ -356,6 +356,12 @@ static const struct bad_case bad_cases[] = {
     {"prim_not_object.json", ": primitives[0]: expected a primitive object"},
     {"prim_no_type.json", ": primitives[0].type: missing required field"},
     {"rotation_huge.json", ": primitives[3].transform.rotation[1]: expected an angle within +-1e6 degrees"},
+    /* Tungsten types the harness knows but does not render: named, with the reason */
+    {"refused_bsdf_hair.json", ": bsdfs[0].type: bsdf type \"hair\" is not supported: fibre BCSDFs need curve primitives"},
+    {"refused_prim_curves.json", ": primitives[0].type: primitive type \"curves\" is not supported: hair curves"},
+    {"refused_prim_instances.json", ": primitives[0].type: primitive type \"instances\" is not supported"},
+    {"refused_texture_blade.json", ": bsdfs[0].albedo.type: texture type \"blade\" is not supported: procedural aperture"},
+    {"refused_camera_cubemap.json", ": camera.type: camera type \"cubemap\" is not supported: only pinhole and thinlens"},
 };
 
 Test(loader, bad_inputs)
