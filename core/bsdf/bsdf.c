@@ -14,6 +14,10 @@ const struct bsdf_ops *const bsdf_ops_table[BSDF_NTYPES] = {
     [BSDF_ROUGH_DIELECTRIC] = &bsdf_rough_dielectric_ops,
     [BSDF_PLASTIC] = &bsdf_plastic_ops,
     [BSDF_ROUGH_PLASTIC] = &bsdf_rough_plastic_ops,
+    [BSDF_THINSHEET] = &bsdf_thinsheet_ops,
+    [BSDF_DIFFUSE_TRANSMISSION] = &bsdf_diffuse_transmission_ops,
+    [BSDF_OREN_NAYAR] = &bsdf_oren_nayar_ops,
+    [BSDF_PHONG] = &bsdf_phong_ops,
 };
 
 /* Hemispherical average of the coat's Fresnel reflectance seen from inside (cosine-weighted):

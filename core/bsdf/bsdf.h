@@ -68,6 +68,8 @@ struct bsdf_ops {
 extern const struct bsdf_ops bsdf_lambert_ops, bsdf_conductor_ops /* also the mirror */,
     bsdf_dielectric_ops, bsdf_plastic_ops, bsdf_rough_conductor_ops, bsdf_rough_dielectric_ops,
     bsdf_rough_plastic_ops;
+/* Leaf families of Tungsten's (bsdf_leaf.h). */
+extern const struct bsdf_ops bsdf_thinsheet_ops, bsdf_diffuse_transmission_ops, bsdf_oren_nayar_ops, bsdf_phong_ops;
 extern const struct bsdf_ops *const bsdf_ops_table[BSDF_NTYPES];
 
 /* The table entry for a type; NULL for BSDF_NULL (no scattering). Inline: every BSDF call on every

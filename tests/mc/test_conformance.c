@@ -64,6 +64,10 @@ static const struct conf_scene conf_scenes[] = {
     {"filter-tent", 64, 64},
     {"bounces-2", 80, 60},
     {"bounces-3", 80, 60},
+    {"bsdf-thinsheet", 80, 60},
+    {"bsdf-diffuse-transmission", 80, 60},
+    {"bsdf-oren-nayar", 80, 60},
+    {"bsdf-phong", 80, 60},
 };
 #define NSCENES (int)(sizeof conf_scenes / sizeof conf_scenes[0])
 
