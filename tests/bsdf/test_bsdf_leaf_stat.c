@@ -79,7 +79,7 @@ static void chi2_material(const struct bsdf *b, const char *name, uint64_t seed)
                                        : chi2_test_2d(hemi_sample, hemi_pdf, &k, 128, 64, N_CHI2, seed + i);
             cr_log_info("%s side %d cos=%.2f: %s", name, side, leaf_wi_cos[i], chi2_describe(&r, buf, sizeof buf));
             cr_assert(r.pass, "%s side %d wi %d: %s", name, side, i, chi2_describe(&r, buf, sizeof buf));
-            cr_assert(r.mass <= 1 + 1e-3);
+            cr_assert(r.mass <= 1 + 1e-3, "%s: mass %g", name, r.mass);
         }
 }
 
