@@ -138,6 +138,16 @@ static bool number_in(struct loader *L, const cJSON *j, const char *path, const 
     return true;
 }
 
+/* A non-negative number under key (absent: the default stays). */
+static bool number_nonneg(struct loader *L, const cJSON *j, const char *path, const char *key, double *out)
+{
+    if (!jget_number(&L->c, j, path, key, false, out)) return false;
+    char p[JPATH_MAX];
+    jpath_key(p, path, key);
+    if (!(*out >= 0)) return jfail(&L->c, p, "expected a non-negative number");
+    return true;
+}
+
 static bool parse_thinsheet(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
 {
     char p[JPATH_MAX];
@@ -146,7 +156,7 @@ static bool parse_thinsheet(struct loader *L, const cJSON *j, const char *path, 
     if (cJSON_IsString(t) || cJSON_IsObject(t))
         return jfail(&L->c, p, "textured thickness is not supported (expected a number)");
     bool interference = false;
-    if (!parse_ior(L, j, path, b) || !number_in(L, j, path, "thickness", 0, INFINITY, &b->thickness) ||
+    if (!parse_ior(L, j, path, b) || !number_nonneg(L, j, path, "thickness", &b->thickness) ||
         !jget_vec3(&L->c, j, path, "sigma_a", false, &b->sigma_a) || !nonneg(&L->c, path, "sigma_a", b->sigma_a) ||
         !jget_bool(&L->c, j, path, "enable_interference", false, &interference))
         return false;
@@ -171,7 +181,7 @@ static bool parse_diffuse_transmission(struct loader *L, const cJSON *j, const c
 
 static bool parse_phong(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
 {
-    return number_in(L, j, path, "exponent", 0, 1e6, &b->exponent) &&
+    return number_nonneg(L, j, path, "exponent", &b->exponent) &&
            number_in(L, j, path, "diffuse_ratio", 0, 1, &b->diffuse_ratio);
 }
 
