@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The report in a real browser: headless Chromium loads results/report/index.html, every image must
 # decode (naturalWidth > 0, checked by the page's own script after load), every local link must name
-# an existing file, and a screenshot is written to results/report/screenshot.png.
+# an existing file, every claims-ledger verdict must be holds, contradicted or undecided and every
+# figure on the page with a claims.csv must have its rows in the ledger (the page's script checks both),
+# and a screenshot is written to results/report/screenshot.png.
 # usage: report-check.sh [INDEX.html]; exit 0 ok, 1 a failure, 77 no Chromium.
 set -euo pipefail
 page=${1:-results/report/index.html}
@@ -16,6 +18,11 @@ case $check in
   *'"OK '*) ;;
   *) echo "report-check: images did not all decode: ${check:-page script did not run}" >&2; exit 1 ;;
 esac
+ledger=$(printf '%s' "$dom" | grep -o 'data-ledgercheck="[^"]*"' | head -1 | sed 's/^data-ledgercheck="//; s/"$//; s/&quot;/"/g')
+case $ledger in
+  'OK '*) ;;
+  *) echo "report-check: claims ledger: ${ledger:-page script did not run}" >&2; exit 1 ;;
+esac
 broken=0
 while read -r href; do
   case $href in http*|\#*) continue ;; esac
@@ -29,4 +36,4 @@ rm -f "$shot"
 (cd "$dir" && "$chrome" "${flags[@]}" --window-size=1300,16000 --force-device-scale-factor=1 --hide-scrollbars \
   --screenshot="$shot" "$url" >/dev/null 2>&1)
 [ -s "$shot" ] || { echo "report-check: no screenshot written" >&2; exit 1; }
-echo "report-check: ${check#data-imgcheck=}, links ok, screenshot $shot"
+echo "report-check: ${check#data-imgcheck=}, ledger "$ledger", links ok, screenshot $shot"

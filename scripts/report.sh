@@ -23,6 +23,7 @@ entries=(
 "fig4.6|Thesis Fig. 4.6: equal-time MMLT large steps vs MCTLS vs hybrid (no small steps)|make fig4.6|results/fig4.6/fig4.6.png|results/fig4.6/fig4.6.csv results/fig4.6/fig4.6-runs.csv results/fig4.6/fig4.6.md results/fig4.6/claims.csv|At equal time MMLT large steps and MCTLS are similarly noisy: an MCTLS step costs about 5x as much, which cancels its higher acceptance (§4.3).|@results/fig4.6/claims.md"
 "fig5.5|Thesis Fig. 5.5: angle change of MMLT vs controlled small steps|make fig5.5|results/fig5.5/fig5.5.png|results/fig5.5/fig5.5.csv results/fig5.5/fig5.5.md|MMLT's small steps change the path more near edges; controlled steps do not.|Holds: edge/elsewhere 1.73 ± 0.02 (MMLT) vs 1.15 ± 0.03 (controlled)."
 "fig5.6|Thesis Fig. 5.6: rendered images, MMLT vs controlled small steps|make fig5.6|results/fig5.6/fig5.6.png|results/fig5.6/fig5.6.csv results/fig5.6/fig5.6.md|Controlled small steps give streaky, splotchy noise and are not better.|Holds, more strongly: relMSE 0.56 ± 0.13 (controlled) vs 0.082 ± 0.011 (MMLT)."
+"fig6.1|Thesis Fig. 6.1: small-step acceptance per length, MMLT vs PITP, split by technique change|make fig6.1|results/fig6.1/fig6.1.png|results/fig6.1/fig6.1.csv results/fig6.1/fig6.1-pitp.csv results/fig6.1/fig6.1.md results/fig6.1/claims.csv|Technique changes in MMLT are very unlikely to be accepted, whereas technique changes in PITP have little effect on the acceptance probability (§6.1).|@results/fig6.1/claims.md"
 "table1-cmlt|CMLT paper Table 1 and Fig. 3: the two-light toy|make table1-cmlt|results/table1-cmlt/fig3.png|results/table1-cmlt/table1.csv results/table1-cmlt/table1_stats.csv results/table1-cmlt/table1.md|CMLT has the lowest RMSE of the six samplers.|See the measured table."
 "fig6.2|Thesis Fig. 6.2: living room, equal time, insets|make fig6.2|$ch6/living-room/fig6.2.png $ch6/living-room/error-vs-time.png|$ch6/living-room/summary.csv $ch6/living-room/runs.csv $ch6/living-room/living-room.md $ch6/living-room/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|@$ch6/living-room/claims.md"
 "fig6.3|Thesis Fig. 6.3: staircase, equal time, insets|make fig6.3|$ch6/staircase/fig6.3.png $ch6/staircase/error-vs-time.png|$ch6/staircase/summary.csv $ch6/staircase/runs.csv $ch6/staircase/staircase.md $ch6/staircase/claims.md|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|@$ch6/staircase/claims.md"
@@ -59,8 +60,8 @@ else
   for f in $ledger; do
     awk -F, '!/^#/ && $1 != "source" && NF >= 12 {
         need = ($9 == "undecided" && $10 > 0) ? sprintf(" (%d seeds would decide it)", $10) : ""
-        printf "<tr><td>%s</td><td>%s</td><td>%s</td><td>%s %.4g ± %.2g</td><td>%.1f</td><td class=\"v-%s\">%s</td><td>%s</td><td>%s</td></tr>\n",
-          $1, $2, $3, $4, $5, $6, $8, $9, $9 need, $11, $12 }' "$f" | sed 's/&/\&amp;/g'
+        printf "<tr class=\"ledger-row\" data-claims=\"%s\"><td>%s</td><td>%s</td><td>%s</td><td>%s %.4g ± %.2g</td><td>%.1f</td><td class=\"v-%s\">%s</td><td>%s</td><td>%s</td></tr>\n",
+          href, $1, $2, $3, $4, $5, $6, $8, $9, $9 need, $11, $12 }' href="../${f#results/}" "$f" | sed 's/&/\&amp;/g'
   done
   echo "</table>"
 fi
@@ -107,6 +108,21 @@ window.addEventListener('load', function () {
   var bad = [], n = 0;
   document.querySelectorAll('img').forEach(function (im) { n++; if (!(im.complete && im.naturalWidth > 0)) bad.push(im.getAttribute('src')); });
   document.body.setAttribute('data-imgcheck', bad.length ? 'BROKEN ' + bad.join(' ') : 'OK ' + n);
+  // The ledger: every verdict one of the three words, and a row for every figure on the page that
+  // links a claims.csv (the figure exists), so a figure's claims cannot drop out of the ledger.
+  var words = ['holds', 'contradicted', 'undecided'], lbad = [], rows = document.querySelectorAll('tr.ledger-row');
+  var inLedger = {};
+  rows.forEach(function (tr) {
+    inLedger[tr.getAttribute('data-claims')] = true;
+    var td = tr.querySelector('td[class^="v-"]'), w = td ? td.className.slice(2) : '';
+    if (words.indexOf(w) < 0 || td.textContent.split(' ')[0] !== w) lbad.push('verdict "' + (td ? td.textContent : '') + '"');
+  });
+  var figs = 0;
+  document.querySelectorAll('section[id] a[href$="claims.csv"]').forEach(function (a) {
+    figs++;
+    if (!inLedger[a.getAttribute('href')]) lbad.push('no ledger row for ' + a.getAttribute('href'));
+  });
+  document.body.setAttribute('data-ledgercheck', lbad.length ? 'BAD ' + lbad.join('; ') : 'OK ' + rows.length + ' rows, ' + figs + ' figures');
 });
 </script>
 </body></html>

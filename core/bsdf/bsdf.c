@@ -14,6 +14,11 @@ const struct bsdf_ops *const bsdf_ops_table[BSDF_NTYPES] = {
     [BSDF_ROUGH_DIELECTRIC] = &bsdf_rough_dielectric_ops,
     [BSDF_PLASTIC] = &bsdf_plastic_ops,
     [BSDF_ROUGH_PLASTIC] = &bsdf_rough_plastic_ops,
+    /* nested BSDFs */
+    [BSDF_TRANSPARENCY] = &bsdf_transparency_ops,
+    [BSDF_SMOOTH_COAT] = &bsdf_smooth_coat_ops,
+    [BSDF_ROUGH_COAT] = &bsdf_rough_coat_ops,
+    [BSDF_MIXED] = &bsdf_mixed_ops,
     [BSDF_THINSHEET] = &bsdf_thinsheet_ops,
     [BSDF_DIFFUSE_TRANSMISSION] = &bsdf_diffuse_transmission_ops,
     [BSDF_OREN_NAYAR] = &bsdf_oren_nayar_ops,
@@ -43,6 +48,11 @@ void bsdf_prepare(struct bsdf *b)
     b->needs_uv = b->albedo_tex != NULL;
     for (int i = 0; i < 2; i++)
         if (b->child[i]) b->needs_uv |= b->child[i]->needs_uv;
+    /* nested BSDFs: which BSDFs refract (the radiance-mode eta^2 factor, pitp.c); nested types
+     * override these in ops->prepare from their children */
+    b->refracts = (b->type == BSDF_DIELECTRIC || b->type == BSDF_ROUGH_DIELECTRIC) && b->enable_refraction;
+    b->refract_ior = b->refracts ? b->ior : 0;
+    b->pass_through = false;
     if (ops && ops->prepare) ops->prepare(b);
 }
 

@@ -68,6 +68,8 @@ struct bsdf_ops {
 extern const struct bsdf_ops bsdf_lambert_ops, bsdf_conductor_ops /* also the mirror */,
     bsdf_dielectric_ops, bsdf_plastic_ops, bsdf_rough_conductor_ops, bsdf_rough_dielectric_ops,
     bsdf_rough_plastic_ops;
+/* nested BSDFs: their children are b->child[0..1] (bsdf_nested.h) */
+extern const struct bsdf_ops bsdf_transparency_ops, bsdf_smooth_coat_ops, bsdf_rough_coat_ops, bsdf_mixed_ops;
 /* Leaf families of Tungsten's (bsdf_leaf.h). */
 extern const struct bsdf_ops bsdf_thinsheet_ops, bsdf_diffuse_transmission_ops, bsdf_oren_nayar_ops, bsdf_phong_ops;
 extern const struct bsdf_ops *const bsdf_ops_table[BSDF_NTYPES];
@@ -79,8 +81,8 @@ static inline const struct bsdf_ops *bsdf_ops_for(enum bsdf_type type)
     return (unsigned)type < BSDF_NTYPES ? bsdf_ops_table[type] : NULL;
 }
 
-/* Derived parameters (e.g. plastic's diffuse Fresnel, dims, the flags); called once after loading,
- * children first. */
+/* Derived parameters (e.g. plastic's diffuse Fresnel, dims, the flags, whether and with which ior
+ * it refracts); called after loading, children first; idempotent (the loader calls it to check dims). */
 void bsdf_prepare(struct bsdf *b);
 /* bsdf_prepare on every BSDF of a scene's array, nested ones before those that hold them. */
 void bsdf_prepare_all(struct bsdf *bs, int n);

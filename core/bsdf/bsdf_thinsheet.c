@@ -85,6 +85,10 @@ static bool thinsheet_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct 
     return false;
 }
 
+/* A mixed BSDF holding a sheet and a dielectric refracts; the sheet's straight lobe must not carry
+ * the dielectric's eta^2 in PITP's technique ratio (pitp.c, radiance_factor). */
+static void thinsheet_prepare(struct bsdf *b) { b->pass_through = true; }
+
 const struct bsdf_ops bsdf_thinsheet_ops = {
     .dims = 1,
     .sample = thinsheet_sample,
@@ -93,4 +97,5 @@ const struct bsdf_ops bsdf_thinsheet_ops = {
     .invert = thinsheet_invert,
     .transmissive = true,
     .delta_only = true,
+    .prepare = thinsheet_prepare,
 };

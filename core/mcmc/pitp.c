@@ -4,6 +4,7 @@
  * ratio of refracting paths (Eq. 5.18), and the update of the chain's numbers (technique number:
  * mmlt.h, Eq. 5.6). */
 #include "mcmc/pitp.h"
+#include "bsdf/bsdf_smooth.h"
 #include "sampling/pick.h"
 #include <math.h>
 
@@ -167,8 +168,7 @@ bool pitp_target_may_change(const struct mmlt_path *x)
     for (int i = 0; i < x->t + x->s; i++) {
         const struct vertex *v = i < x->t ? &x->cam[i] : &x->emi[i - x->t];
         if (!v->bc.b) continue;
-        enum bsdf_type ty = v->bc.b->type;
-        if (ty == BSDF_DIELECTRIC || ty == BSDF_ROUGH_DIELECTRIC || v->delta || v->bc.b->delta_only) return true;
+        if (v->bc.b->refracts || v->delta || v->bc.b->delta_only) return true;
     }
     return false;
 }
@@ -179,11 +179,13 @@ bool pitp_target_may_change(const struct mmlt_path *x)
 static double radiance_factor(const struct vertex *v, vec3 wc, vec3 wl)
 {
     if (v->kind != VK_SURFACE || !v->bc.b) return 1;
-    enum bsdf_type ty = v->bc.b->type;
-    if (ty != BSDF_DIELECTRIC && ty != BSDF_ROUGH_DIELECTRIC) return 1;
+    const struct bsdf *b = v->bc.b;
+    if (!b->refracts) return 1; /* b->refracts: a dielectric, also nested in a mixed or transparency BSDF */
     bool out_c = vdot(wc, v->sh.n) > 0, out_l = vdot(wl, v->sh.n) > 0; /* transmissive: never flipped */
     if (out_c == out_l) return 1;
-    double ec = out_c ? 1 : v->bc.b->ior, el = out_l ? 1 : v->bc.b->ior;
+    /* transparency's straight-through lobe crosses without refracting */
+    if (b->pass_through && smooth_same_dir(wc, vneg(wl))) return 1;
+    double ec = out_c ? 1 : b->refract_ior, el = out_l ? 1 : b->refract_ior;
     return sqr(ec / el);
 }
 

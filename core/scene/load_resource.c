@@ -10,7 +10,19 @@ bool loader_resource(const struct loader *L, const char *rel, char *out, size_t 
     return k >= 0 && (size_t)k < n;
 }
 
+static bool load_texture_as(struct loader *L, const cJSON *v, const char *path, bool average, struct texture **out);
+
 bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out)
+{
+    return load_texture_as(L, v, path, false, out);
+}
+
+bool load_texture_average(struct loader *L, const cJSON *v, const char *path, struct texture **out)
+{
+    return load_texture_as(L, v, path, true, out);
+}
+
+static bool load_texture_as(struct loader *L, const cJSON *v, const char *path, bool average, struct texture **out)
 {
     const char *file = NULL;
     char fpath[JPATH_MAX];
@@ -27,7 +39,7 @@ bool load_texture_value(struct loader *L, const cJSON *v, const char *path, stru
     }
     char full[8192], err[1024];
     if (!loader_resource(L, file, full, sizeof full)) return jfail(&L->c, fpath, "path too long");
-    *out = texture_load(full, err, sizeof err);
+    *out = average ? texture_load_average(full, err, sizeof err) : texture_load(full, err, sizeof err);
     if (!*out) return jfail(&L->c, fpath, "cannot load texture: %s", err);
     return true;
 }

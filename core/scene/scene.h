@@ -48,6 +48,8 @@ rgb texture_lookup(const struct texture *t, double u, double v);
 /* Tungsten's 8-bit gamma table: floor(255 (code/255)^2.2) / 255 (a 2.2 power, not sRGB). */
 float texture_gamma_decode(int code);
 void texture_free(struct texture *t);
+/* nested BSDFs: a bitmap read as Tungsten's scalar REQUEST_AVERAGE texture (texture.c). */
+struct texture *texture_load_average(const char *path, char *err, size_t errlen);
 /* Reads an image file (OpenImageIO) into a texture; NULL and a message in err on failure. */
 struct texture *texture_load(const char *path, char *err, size_t errlen);
 /* The loader's half of it, from decoded texels (3 per texel, malloc'ed, owned from here on: kept or
@@ -79,6 +81,13 @@ struct bsdf {
     bool transmissive;             /* some lobe scatters to the other side: no two-sided flip */
     bool delta_only;               /* every lobe is a Dirac delta: never connect to it */
     bool needs_uv;                 /* a texture somewhere in it is read at the hit's uv */
+    /* nested BSDFs: parameters from JSON (alpha, ratio, ratio_tex), then derived by bsdf_prepare. */
+    double alpha;                  /* transparency: opacity, the probability that the base scatters */
+    double ratio;                  /* mixed: weight of child[0] (bsdf0) when ratio_tex is NULL */
+    struct texture *ratio_tex;     /* mixed: owned; scalar (texture_load_average), NULL = constant */
+    bool refracts;                 /* some lobe refracts (a dielectric, or one nested in it) */
+    double refract_ior;            /* the ior it refracts with (the first refracting child's) */
+    bool pass_through;             /* has a straight-through lobe without refraction (transparency, thinsheet) */
 };
 
 enum prim_kind { PRIM_MESH, PRIM_QUAD, PRIM_SPHERE, PRIM_INFINITE_SPHERE };

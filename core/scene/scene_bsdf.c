@@ -1,8 +1,10 @@
 /* BSDF blocks of a Tungsten scene: types, parameters and Tungsten's defaults
  * (the constructors in src/core/bsdfs/): albedo 1; conductors Cu; rough_conductor and rough_dielectric
  * ggx with roughness 0.1; rough_plastic ggx with roughness 0.02; dielectrics and plastics ior 1.5;
- * plastics thickness 1, sigma_a 0; enable_refraction true; thinsheet thickness 0.5; oren_nayar
- * roughness 1; diffuse_transmission transmittance 0.5; phong exponent 64, diffuse_ratio 0.2. */
+ * plastics thickness 1, sigma_a 0; enable_refraction true. Nested BSDFs: transparency alpha 1; coats ior 1.3,
+ * thickness 1, sigma_a 0, substrate rough_conductor (Cu, ggx, 0.1); rough_coat ggx, roughness 0.02;
+ * mixed ratio 0.5. Leaf BSDFs: thinsheet thickness 0.5; oren_nayar roughness 1;
+ * diffuse_transmission transmittance 0.5; phong exponent 64, diffuse_ratio 0.2. */
 #include "base/util.h"
 #include "bsdf/bsdf.h"
 #include "scene/metals.h"
@@ -44,6 +46,12 @@ static void set_defaults(struct bsdf *b, enum bsdf_type t)
     b->roughness = t == BSDF_ROUGH_PLASTIC ? 0.02 : t == BSDF_OREN_NAYAR ? 1 : 0.1;
     b->thickness = t == BSDF_THINSHEET ? 0.5 : 1;
     b->sigma_a = v3s(0);
+    /* nested BSDFs */
+    if (t == BSDF_SMOOTH_COAT || t == BSDF_ROUGH_COAT) b->ior = 1.3;
+    if (t == BSDF_ROUGH_COAT) b->roughness = 0.02;
+    b->alpha = 1;
+    b->ratio = 0.5;
+    /* leaf BSDFs */
     b->transmittance = 0.5;
     b->exponent = 64;
     b->diffuse_ratio = 0.2;
@@ -127,6 +135,49 @@ static bool parse_ior(struct loader *L, const cJSON *j, const char *path, struct
     return true;
 }
 
+/* A plastic's or a coat's layer: ior, thickness, sigma_a. */
+static bool parse_layer(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    struct jctx *c = &L->c;
+    if (!parse_ior(L, j, path, b) || !jget_number(c, j, path, "thickness", false, &b->thickness) ||
+        !jget_vec3(c, j, path, "sigma_a", false, &b->sigma_a))
+        return false;
+    char p[JPATH_MAX];
+    jpath_key(p, path, "thickness");
+    if (b->thickness < 0) return jfail(c, p, "expected a non-negative number");
+    return nonneg(c, path, "sigma_a", b->sigma_a);
+}
+
+/* nested BSDFs: a probability in [0, 1] at key (transparency's alpha, mixed's constant ratio). */
+static bool parse_unit(struct loader *L, const cJSON *v, const char *p, double *out)
+{
+    if (!jval_number(&L->c, v, p, out)) return false;
+    if (!(*out >= 0 && *out <= 1)) return jfail(&L->c, p, "expected a number in [0, 1]");
+    return true;
+}
+
+static bool parse_alpha(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, "alpha");
+    if (!v) return true;
+    char p[JPATH_MAX];
+    jpath_key(p, path, "alpha");
+    if (cJSON_IsString(v) || cJSON_IsObject(v))
+        return jfail(&L->c, p, "textured alpha is not supported (expected a number in [0, 1])");
+    return parse_unit(L, v, p, &b->alpha);
+}
+
+/* mixed's ratio: a number, or a bitmap read as Tungsten's REQUEST_AVERAGE scalar texture. */
+static bool parse_ratio(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, "ratio");
+    if (!v) return true;
+    char p[JPATH_MAX];
+    jpath_key(p, path, "ratio");
+    if (cJSON_IsString(v) || cJSON_IsObject(v)) return load_texture_average(L, v, p, &b->ratio_tex);
+    return parse_unit(L, v, p, &b->ratio);
+}
+
 /* A number in [lo, hi] under key (absent: the default stays). */
 static bool number_in(struct loader *L, const cJSON *j, const char *path, const char *key, double lo, double hi,
                       double *out)
@@ -192,12 +243,20 @@ static int find_named(const struct loader *L, const char *name);
 static int default_lambert(struct loader *L);
 
 /* A nested bsdf (transparency's base, a coat's substrate, mixed's bsdf0/bsdf1): a top-level name, an
- * inline object, or absent (Tungsten's default lambert). */
+ * inline object, or absent: Tungsten's default, a lambert, except for a coat's substrate, which is
+ * a rough_conductor with its defaults (a slot of its own: bsdf_json_slots counts it). */
 static bool parse_child(struct loader *L, const cJSON *j, const char *path, const char *key, const struct bsdf **out)
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, key);
     char p[JPATH_MAX];
     jpath_key(p, path, key);
+    if (!v && strcmp(key, "substrate") == 0) {
+        int k = add_bsdf(L);
+        set_defaults(&L->s->bsdfs[k], BSDF_ROUGH_CONDUCTOR);
+        snprintf(L->s->bsdfs[k].name, sizeof L->s->bsdfs[k].name, "default substrate");
+        *out = &L->s->bsdfs[k];
+        return true;
+    }
     if (!v) {
         *out = &L->s->bsdfs[default_lambert(L)];
         return true;
@@ -228,6 +287,8 @@ static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const
     if (t == NTYPES) {
         char p[JPATH_MAX], known[512] = "";
         jpath_key(p, path, "type");
+        const char *why = refused_feature(REFUSED_BSDF, type);
+        if (why) return jfail(c, p, "bsdf type \"%s\" is not supported: %s", type, why);
         for (int k = 0; k < NTYPES; k++)
             if (k == BSDF_NULL || bsdf_ops_for(k))
                 snprintf(known + strlen(known), sizeof known - strlen(known), "%s%s", k ? " " : "", type_names[k]);
@@ -252,15 +313,8 @@ static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const
     case BSDF_ROUGH_PLASTIC:
         if (!parse_distribution(L, j, path, b) || !parse_roughness(L, j, path, b)) return false;
         /* fall through */
-    case BSDF_PLASTIC: {
-        if (!parse_ior(L, j, path, b) || !jget_number(c, j, path, "thickness", false, &b->thickness) ||
-            !jget_vec3(c, j, path, "sigma_a", false, &b->sigma_a))
-            return false;
-        char p[JPATH_MAX];
-        jpath_key(p, path, "thickness");
-        if (b->thickness < 0) return jfail(c, p, "expected a non-negative number");
-        return nonneg(c, path, "sigma_a", b->sigma_a);
-    }
+    case BSDF_PLASTIC:
+        return parse_layer(L, j, path, b);
     case BSDF_THINSHEET:
         return parse_thinsheet(L, j, path, b);
     case BSDF_DIFFUSE_TRANSMISSION:
@@ -269,13 +323,17 @@ static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const
         return parse_roughness(L, j, path, b);
     case BSDF_PHONG:
         return parse_phong(L, j, path, b);
+    /* nested BSDFs */
     case BSDF_TRANSPARENCY:
-        return parse_child(L, j, path, "base", &b->child[0]);
-    case BSDF_SMOOTH_COAT:
+        return parse_alpha(L, j, path, b) && parse_child(L, j, path, "base", &b->child[0]);
     case BSDF_ROUGH_COAT:
-        return parse_child(L, j, path, "substrate", &b->child[0]);
+        if (!parse_distribution(L, j, path, b) || !parse_roughness(L, j, path, b)) return false;
+        /* fall through */
+    case BSDF_SMOOTH_COAT:
+        return parse_layer(L, j, path, b) && parse_child(L, j, path, "substrate", &b->child[0]);
     case BSDF_MIXED:
-        return parse_child(L, j, path, "bsdf0", &b->child[0]) && parse_child(L, j, path, "bsdf1", &b->child[1]);
+        return parse_ratio(L, j, path, b) && parse_child(L, j, path, "bsdf0", &b->child[0]) &&
+               parse_child(L, j, path, "bsdf1", &b->child[1]);
     default:
         return true;
     }
@@ -312,6 +370,11 @@ int bsdf_json_slots(const cJSON *v)
     int n = 1;
     for (size_t k = 0; k < sizeof child_keys / sizeof child_keys[0]; k++)
         n += bsdf_json_slots(cJSON_GetObjectItemCaseSensitive(v, child_keys[k]));
+    /* nested BSDFs: a coat without substrate gets a default rough_conductor of its own */
+    const cJSON *t = cJSON_GetObjectItemCaseSensitive(v, "type");
+    if (cJSON_IsString(t) && (strcmp(t->valuestring, "smooth_coat") == 0 || strcmp(t->valuestring, "rough_coat") == 0) &&
+        !cJSON_GetObjectItemCaseSensitive(v, "substrate"))
+        n++;
     return n;
 }
 
@@ -336,6 +399,26 @@ bool check_bsdf_nesting(struct loader *L)
             return jfail(&L->c, p, "bsdf \"%s\": nested bsdfs refer to each other in a cycle or nest deeper than %d",
                          L->s->bsdfs[i].name, BSDF_MAX_NESTING);
         }
+    /* nested BSDFs: a vertex's block holds SAMPLER_BLOCK numbers. A nested bsdf needs at least as many
+     * as any bsdf nested in it, so checking the top-level and the primitives' own bsdfs finds every
+     * excess (top-level ones are slots 0..n-1, load_bsdfs; an inline one is a primitive's). */
+    bsdf_prepare_all(L->s->bsdfs, L->s->nbsdfs);
+    int ntop = L->bsdfs_json ? cJSON_GetArraySize(L->bsdfs_json) : 0;
+    char p[JPATH_MAX], q[JPATH_MAX];
+    for (int i = 0; i < ntop; i++)
+        if (L->s->bsdfs[i].dims > SAMPLER_BLOCK) {
+            jpath_idx(p, "bsdfs", i);
+            return jfail(&L->c, p, "bsdf \"%s\" needs %d random numbers per vertex, more than the %d of a vertex's block "
+                         "(nest fewer bsdfs)", L->s->bsdfs[i].name, L->s->bsdfs[i].dims, SAMPLER_BLOCK);
+        }
+    for (int i = 0; i < L->s->nprims; i++) {
+        int k = L->s->prims[i].bsdf;
+        if (k < ntop || L->s->bsdfs[k].dims <= SAMPLER_BLOCK) continue;
+        jpath_idx(q, "primitives", i);
+        jpath_key(p, q, "bsdf");
+        return jfail(&L->c, p, "bsdf \"%s\" needs %d random numbers per vertex, more than the %d of a vertex's block "
+                     "(nest fewer bsdfs)", L->s->bsdfs[k].name, L->s->bsdfs[k].dims, SAMPLER_BLOCK);
+    }
     return true;
 }
 
@@ -344,13 +427,15 @@ bool load_bsdfs(struct loader *L)
     const cJSON *arr = L->bsdfs_json;
     if (!arr) return true;
     if (!cJSON_IsArray(arr)) return jfail(&L->c, "bsdfs", "expected an array of bsdf objects");
-    int i = 0;
+    /* Top-level bsdf i is slot i (find_named returns array indices): their slots first, nested ones
+     * after them. */
+    int n = cJSON_GetArraySize(arr), i = 0;
+    for (int k = 0; k < n; k++) add_bsdf(L);
     for (const cJSON *j = arr->child; j; j = j->next, i++) {
         char p[JPATH_MAX], def[32];
         jpath_idx(p, "bsdfs", i);
         snprintf(def, sizeof def, "bsdfs[%d]", i);
-        int k = add_bsdf(L);
-        if (!parse_bsdf(L, j, p, def, &L->s->bsdfs[k])) return false;
+        if (!parse_bsdf(L, j, p, def, &L->s->bsdfs[i])) return false;
     }
     return true;
 }

@@ -29,6 +29,10 @@ static uint64_t hash_bsdf(uint64_t h, const struct bsdf *b)
     H(b->dist);
     H(b->roughness);
     H(b->thickness);
+    /* nested BSDFs */
+    H(b->alpha);
+    H(b->ratio);
+    h = hash_texture(h, b->ratio_tex);
     H(b->sigma_a);
     /* leaf BSDFs */
     H(b->transmittance);

@@ -258,7 +258,10 @@ struct scene *scene_load_model(const char *path, char *err, size_t errlen)
 void scene_model_free(struct scene *s)
 {
     if (!s) return;
-    for (int i = 0; i < s->nbsdfs; i++) texture_free(s->bsdfs[i].albedo_tex);
+    for (int i = 0; i < s->nbsdfs; i++) {
+        texture_free(s->bsdfs[i].albedo_tex);
+        texture_free(s->bsdfs[i].ratio_tex); /* nested BSDFs: mixed's ratio */
+    }
     for (int i = 0; s->prims && i < s->nprims; i++) {
         struct prim *p = &s->prims[i];
         free(p->p);

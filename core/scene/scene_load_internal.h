@@ -21,6 +21,8 @@ struct loader {
  * at path). */
 bool loader_resource(const struct loader *L, const char *rel, char *out, size_t n);
 bool load_texture_value(struct loader *L, const cJSON *v, const char *path, struct texture **out);
+/* The same bitmap as a scalar texture, Tungsten's REQUEST_AVERAGE (no gamma table; mixed's ratio). */
+bool load_texture_average(struct loader *L, const cJSON *v, const char *path, struct texture **out);
 
 bool load_bsdfs(struct loader *L);
 /* Slots a bsdf value (object, name, array of them) can take in scene.bsdfs, nested ones included. */
@@ -31,6 +33,11 @@ bool check_bsdf_nesting(struct loader *L);
 bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out);
 
 bool load_primitives(struct loader *L, const cJSON *arr);
+
+/* scene_refused.c: why a Tungsten type the harness knows by name is not rendered, or NULL when
+ * the name is not one of them (then it is simply unknown). */
+enum refused_kind { REFUSED_PRIMITIVE, REFUSED_BSDF, REFUSED_TEXTURE, REFUSED_CAMERA };
+const char *refused_feature(enum refused_kind kind, const char *name);
 
 /* Tungsten transform: {"position", "scale", "rotation", "look_at", "up", "x_axis", ...} or 16 numbers. */
 bool jval_transform(struct jctx *c, const cJSON *v, const char *path, mat4 *out);

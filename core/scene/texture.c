@@ -44,6 +44,36 @@ struct texture *texture_load(const char *path, char *err, size_t errlen)
     return texture_from_rgb(path, w, h, px, bits, err, errlen);
 }
 
+/* nested BSDFs (mixed's ratio): Tungsten's scalar bitmap for REQUEST_AVERAGE. An integer file's
+ * texel is the integer mean of its three 8-bit codes over 255, WITHOUT the gamma table (ImageIO's
+ * loadLdr applies it to RGB requests only); a float file's is the mean of its channels. The scalar is
+ * stored in all three channels, so texture_lookup returns it in each. */
+struct texture *texture_load_average(const char *path, char *err, size_t errlen)
+{
+    int w, h, bits = 0;
+    float *px;
+    if (!img_read_rgb(path, &w, &h, &px, &bits, err, errlen)) return NULL;
+    for (size_t i = 0; i < (size_t)w * h; i++) {
+        float *t = px + 3 * i, v;
+        if (!isfinite(t[0]) || !isfinite(t[1]) || !isfinite(t[2])) {
+            snprintf(err, errlen, "%s: non-finite texel value", path);
+            free(px);
+            return NULL;
+        }
+        if (bits > 0 && bits <= 32)
+            v = (float)((code8(t[0], bits) + code8(t[1], bits) + code8(t[2], bits)) / 3) / 255;
+        else
+            v = (t[0] + t[1] + t[2]) / 3;
+        t[0] = t[1] = t[2] = v;
+    }
+    struct texture *t = xmalloc(sizeof *t);
+    t->w = w;
+    t->h = h;
+    t->bits = bits;
+    t->rgb = px;
+    return t;
+}
+
 struct texture *texture_from_rgb(const char *path, int w, int h, float *px, int bits, char *err, size_t errlen)
 {
     size_t n = (size_t)w * h * 3;

@@ -3,13 +3,17 @@
  * steps whose proposal uses a different technique than the chain had before the iteration (for
  * PITP: before the perturbation) and those that do not. p_large = 0.1, the same seed for both,
  * equal expected mutations per length (acceptance is a property of each length's chain).
- * The budget is split over 4 independent runs. Writes OUT/fig6.1.csv:
+ * The budget is split over 4 independent runs; each also runs a pass of lengths 1-6 only (1.5x the
+ * budget), where MMLT's technique changes are otherwise too rare for a cell or near its threshold
+ * (about 1.5 % of its small steps at length 2). Writes OUT/fig6.1.csv:
  * method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,runs,run_se
  * (stderr: batch-means over the merged runs; run_se: standard error of the runs' means; cells with
  * fewer than 16000 proposals are left out), and OUT/fig6.1-pitp.csv: per length, PITP's perturbations, the fraction with j != i, the
- * inversion failures and the mean |j - i|. */
+ * inversion failures and the mean |j - i|; and OUT/claims.csv, OUT/claims.md: the thesis's claims on
+ * Fig. 6.1 decided from the runs' means and their standard error over the runs. */
 #include "base/parallel.h"
 #include "base/util.h"
+#include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
 #include "mcmc/mlt.h"
@@ -22,6 +26,69 @@
 
 enum { RUNS = 4 };              /* independent runs per method */
 enum { MIN_ATTEMPTS = 16000 };  /* proposals a cell needs to be written */
+enum { SHORT_MAX = 6 };         /* the short pass: lengths 1..SHORT_MAX */
+
+/* Per method (0 MMLT, 1 PITP), length and technique changed: the mean of the runs' mean
+ * acceptances and its standard error; have = the cell was written. */
+struct cells {
+    double mean[2][MAX_PATH_LENGTH + 1][2], se[2][MAX_PATH_LENGTH + 1][2];
+    bool have[2][MAX_PATH_LENGTH + 1][2];
+    int K;
+};
+
+/* The worse of two verdicts over lengths: the smallest z decides a claim made for every length. */
+static void keep_worst(struct verdict *worst, int *at, struct verdict v, int k)
+{
+    if (v.zmin < worst->zmin || *at < 0) *worst = v, *at = k;
+}
+
+/* Thesis §6.1 on Figure 6.1, every length with both cells; errors over the RUNS runs. */
+static char *claims(const struct cells *t, const char *out, const char *scale, char *err, size_t errlen)
+{
+    struct claims cl;
+    char command[64], zs[128], md[256];
+    snprintf(command, sizeof command, "make fig6.1 SCALE=%s", scale);
+    claims_begin(&cl, scale, command, "Claims of thesis §6.1 on Fig. 6.1 (ajar, lengths 2-%d; standard errors over %d runs)",
+                 t->K, RUNS);
+    const bool both[2] = {true, true};
+    struct verdict w[3];
+    int at[3] = {-1, -1, -1};
+    for (int k = 2; k <= t->K; k++) {
+        double z[2];
+        if (t->have[0][k][0] && t->have[0][k][1]) { /* MMLT: changes below keeps */
+            double m[2] = {t->mean[0][k][0], t->mean[0][k][1]}, e[2] = {t->se[0][k][0], t->se[0][k][1]};
+            keep_worst(&w[0], &at[0], verdict_extreme(m, e, both, 2, 1, -1, RUNS, z), k);
+        }
+        if (t->have[1][k][0] && t->have[1][k][1]) /* PITP: changes within 25 % of keeps */
+            keep_worst(&w[1], &at[1], verdict_similar(t->mean[1][k][1], t->se[1][k][1], t->mean[1][k][0], t->se[1][k][0], 0.25, RUNS), k);
+        if (t->have[0][k][1] && t->have[1][k][1]) { /* technique changes: PITP above MMLT */
+            double m[2] = {t->mean[0][k][1], t->mean[1][k][1]}, e[2] = {t->se[0][k][1], t->se[1][k][1]};
+            keep_worst(&w[2], &at[2], verdict_extreme(m, e, both, 2, 1, +1, RUNS, z), k);
+        }
+    }
+    static const char *const claim[3] = {
+        "small steps in MMLT that change the sampling technique are very likely to be rejected",
+        "the acceptance probabilities in PITP are largely unaffected by technique changes",
+        "PITP can change sampling techniques without such a penalty"};
+    static const char *const stat[3] = {"MMLT small-step acceptance, technique changed vs kept, per length",
+                                        "PITP acceptance ratio changed / kept within ±25 %, per length",
+                                        "acceptance of technique-changing small steps, PITP vs MMLT, per length"};
+    for (int c = 0; c < 3; c++) {
+        if (at[c] < 0) continue; /* no length with both cells */
+        int k = at[c], m = c == 0 ? 0 : 1; /* the technique-changing cell of the method claimed about */
+        double v = t->mean[m][k][1], se = t->se[m][k][1];
+        if (c == 1) { /* the ratio and its first-order error */
+            double a = t->mean[1][k][1], b = t->mean[1][k][0];
+            v = a / b;
+            se = v * sqrt(pow(t->se[1][k][1] / a, 2) + pow(t->se[1][k][0] / b, 2));
+        }
+        snprintf(zs, sizeof zs, "%s=%.2f@%d", c == 0 ? "mmlt-kept" : c == 1 ? "1x" : "mmlt-changed", w[c].zmin, k);
+        snprintf(md, sizeof md, "%s; smallest z = %.1f at length %d",
+                 c == 0 ? "MMLT's technique-keeping steps" : c == 1 ? "1 within ±25 %" : "MMLT's technique changes", w[c].zmin, k);
+        claims_row(&cl, "thesis §6.1, Fig. 6.1", claim[c], stat[c], m ? "pitp" : "mmlt", v, se, zs, md, &w[c]);
+    }
+    return claims_finish(&cl, out, err, errlen);
+}
 
 static bool write_file(const char *dir, const char *name, const char *text)
 {
@@ -55,11 +122,14 @@ int main(int argc, char **argv)
         csv_meta(g, "seed", "%llu", (unsigned long long)seed);
         csv_meta(g, "threads", "%d", threads);
         csv_meta(g, "mutations_per_method", "%ld", mutations);
+        csv_meta(g, "short_pass_mutations_per_method", "%ld (lengths 1..%d)", 3 * mutations / 2, SHORT_MAX);
         csv_meta(g, "seed_paths", "%ld", paper ? 1000000L : 100000L);
     }
     fprintf(f, "method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,runs,run_se\n");
     fprintf(pf, "length,perturbations,changed_fraction,failures,failure_fraction,mean_dtech\n");
     const char *names[2] = {"mmlt", "pitp"};
+    static struct cells cells;
+    cells.K = K;
     for (int m = 0; m < 2; m++) {
         /* R independent runs (seeds seed * 1000 + r, each with its own seed pass), merged: a chain
          * that rarely changes technique keeps its acceptance level for longer than a batch, so the
@@ -68,21 +138,29 @@ int main(int argc, char **argv)
         static struct mlt_stats all, run[RUNS];
         stats_clear(&all);
         for (int rr = 0; rr < RUNS; rr++) {
-            struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT, .p_large = 0.1, .mutations = mutations / RUNS,
-                                 .seed_paths = paper ? 1000000 : 100000, .seed = seed * 1000 + (uint64_t)rr,
-                                 .threads = threads, .max_length = K, .progress = isatty(2), .large_step = LARGE_MMLT,
-                                 .uniform_lengths = true};
-            pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
-            fprintf(stderr, "fig6.1: %s run %d of %d, %ld mutations over lengths 1..%d\n", names[m], rr + 1, RUNS,
-                    o.mutations, K);
-            struct mlt_result r;
-            if (!mlt_render(sc, &o, &r, err, sizeof err)) {
-                fprintf(stderr, "%s\n", err);
-                return 1;
+            stats_clear(&run[rr]);
+            /* the main pass, then the short one (its own seed and seed pass; a length's chain does
+             * not depend on the longest length, so the two merge) */
+            for (int pass = 0; pass < 2 && (pass == 0 || K > SHORT_MAX); pass++) {
+                int kmax = pass ? SHORT_MAX : K;
+                struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT, .p_large = 0.1,
+                                     .mutations = (pass ? 3 * mutations / 2 : mutations) / RUNS,
+                                     .seed_paths = paper ? 1000000 : 100000,
+                                     .seed = seed * 1000 + (uint64_t)rr + (pass ? 500 : 0), .threads = threads,
+                                     .max_length = kmax, .progress = isatty(2), .large_step = LARGE_MMLT,
+                                     .uniform_lengths = true};
+                pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+                fprintf(stderr, "fig6.1: %s run %d of %d, %ld mutations over lengths 1..%d\n", names[m], rr + 1, RUNS,
+                        o.mutations, kmax);
+                struct mlt_result r;
+                if (!mlt_render(sc, &o, &r, err, sizeof err)) {
+                    fprintf(stderr, "%s\n", err);
+                    return 1;
+                }
+                stats_merge(&run[rr], &r.stats);
+                stats_merge(&all, &r.stats);
+                mlt_result_free(&r);
             }
-            run[rr] = r.stats;
-            stats_merge(&all, &r.stats);
-            mlt_result_free(&r);
         }
         for (int k = 1; k <= K; k++) {
             for (int ch = 0; ch < 2; ch++) {
@@ -101,6 +179,9 @@ int main(int argc, char **argv)
                  * the next (MMLT's technique changes at lengths 2-3 on ajar: 0.3-14k proposals) */
                 if (c->attempts < MIN_ATTEMPTS || c->nbatches < 2 || n < 2) continue;
                 double rm = s1 / n, run_se = sqrt(fmax(0, (s2 - n * rm * rm) / (n - 1)) / n);
+                cells.mean[m][k][ch] = rm;
+                cells.se[m][k][ch] = run_se;
+                cells.have[m][k][ch] = true;
                 fprintf(f, "%s,%d,%s,%ld,%.9g,%.9g,%.9g,%d,%.9g\n", names[m], k, ch ? "yes" : "no", c->attempts,
                         cell_mean(c), cell_stderr(c), (double)c->accepted / c->attempts, n, run_se);
             }
@@ -114,6 +195,12 @@ int main(int argc, char **argv)
     fclose(f);
     fclose(pf);
     bool ok = write_file(a.fig.out, "fig6.1.csv", buf) && write_file(a.fig.out, "fig6.1-pitp.csv", pbuf);
+    char *md = ok ? claims(&cells, a.fig.out, a.fig.scale, err, sizeof err) : NULL;
+    if (ok && !md) {
+        fprintf(stderr, "%s\n", err);
+        ok = false;
+    }
+    free(md);
     free(buf);
     free(pbuf);
     scene_free(sc);

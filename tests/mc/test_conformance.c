@@ -64,6 +64,10 @@ static const struct conf_scene conf_scenes[] = {
     {"filter-tent", 64, 64},
     {"bounces-2", 80, 60},
     {"bounces-3", 80, 60},
+    /* nested BSDFs */
+    {"bsdf-coat", 80, 60},
+    {"bsdf-mixed", 80, 60},
+    {"bsdf-transparency", 80, 60},
     /* Known failures (scenes/README.md, "Leaf BSDFs of Tungsten"): bsdf-thinsheet fails only (a),
      * relMSE 2.21x, as Tungsten's shadow rays pass through its panes and ours are blocked (block and
      * mean tests pass); bsdf-diffuse-transmission's reference is biased by Tungsten's own BDPT (its
