@@ -69,7 +69,7 @@ static const struct conf_scene conf_scenes[] = {
     {"bsdf-mixed", 80, 60},
     {"bsdf-transparency", 80, 60},
     /* Known failures (scenes/README.md, "Leaf BSDFs of Tungsten"): bsdf-thinsheet fails only (a),
-     * relMSE 2.21x, as Tungsten's shadow rays pass through its panes and ours are blocked (block and
+     * relMSE 2.04x, as Tungsten's shadow rays pass through its panes and ours are blocked (block and
      * mean tests pass); bsdf-diffuse-transmission's reference is biased by Tungsten's own BDPT (its
      * sample() reports the pdf without the lobe choice, so its MIS weights do not sum to one). */
     {"bsdf-thinsheet", 80, 60},
