@@ -19,6 +19,10 @@ const struct bsdf_ops *const bsdf_ops_table[BSDF_NTYPES] = {
     [BSDF_SMOOTH_COAT] = &bsdf_smooth_coat_ops,
     [BSDF_ROUGH_COAT] = &bsdf_rough_coat_ops,
     [BSDF_MIXED] = &bsdf_mixed_ops,
+    [BSDF_THINSHEET] = &bsdf_thinsheet_ops,
+    [BSDF_DIFFUSE_TRANSMISSION] = &bsdf_diffuse_transmission_ops,
+    [BSDF_OREN_NAYAR] = &bsdf_oren_nayar_ops,
+    [BSDF_PHONG] = &bsdf_phong_ops,
 };
 
 /* Hemispherical average of the coat's Fresnel reflectance seen from inside (cosine-weighted):

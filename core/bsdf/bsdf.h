@@ -70,6 +70,8 @@ extern const struct bsdf_ops bsdf_lambert_ops, bsdf_conductor_ops /* also the mi
     bsdf_rough_plastic_ops;
 /* nested BSDFs: their children are b->child[0..1] (bsdf_nested.h) */
 extern const struct bsdf_ops bsdf_transparency_ops, bsdf_smooth_coat_ops, bsdf_rough_coat_ops, bsdf_mixed_ops;
+/* Leaf families of Tungsten's (bsdf_leaf.h). */
+extern const struct bsdf_ops bsdf_thinsheet_ops, bsdf_diffuse_transmission_ops, bsdf_oren_nayar_ops, bsdf_phong_ops;
 extern const struct bsdf_ops *const bsdf_ops_table[BSDF_NTYPES];
 
 /* The table entry for a type; NULL for BSDF_NULL (no scattering). Inline: every BSDF call on every

@@ -84,8 +84,12 @@ struct bsdf {
     bool enable_refraction;        /* dielectrics */
     enum mf_dist dist;             /* rough_* */
     double roughness;              /* alpha, as Tungsten's `roughness` */
-    double thickness;              /* plastics */
-    rgb sigma_a;                   /* plastics */
+    double thickness;              /* plastics, thinsheet */
+    rgb sigma_a;                   /* plastics, thinsheet */
+    /* leaf BSDFs: thinsheet uses ior, thickness (default 0.5), sigma_a above; oren_nayar roughness */
+    double transmittance;          /* diffuse_transmission: share sent to the other side (0.5) */
+    double exponent;               /* phong: cosine-lobe exponent (64) */
+    double diffuse_ratio;          /* phong: weight of the Lambertian lobe (0.2) */
     /* Nested BSDFs (transparency, coats, mixed): slots of the same scene.bsdfs array, which is
      * allocated once, so the pointers stay valid; never NULL for the types that have them. */
     const struct bsdf *child[2];
@@ -107,7 +111,7 @@ struct bsdf {
     struct texture *ratio_tex;     /* mixed: owned; scalar (texture_load_average), NULL = constant */
     bool refracts;                 /* some lobe refracts (a dielectric, or one nested in it) */
     double refract_ior;            /* the ior it refracts with (the first refracting child's) */
-    bool pass_through;             /* has transparency's straight-through lobe (no refraction) */
+    bool pass_through;             /* has a straight-through lobe without refraction (transparency, thinsheet) */
 };
 
 enum prim_kind { PRIM_MESH, PRIM_QUAD, PRIM_SPHERE, PRIM_INFINITE_SPHERE };

@@ -3,7 +3,8 @@
  * ggx with roughness 0.1; rough_plastic ggx with roughness 0.02; dielectrics and plastics ior 1.5;
  * plastics thickness 1, sigma_a 0; enable_refraction true. Nested BSDFs: transparency alpha 1; coats ior 1.3,
  * thickness 1, sigma_a 0, substrate rough_conductor (Cu, ggx, 0.1); rough_coat ggx, roughness 0.02;
- * mixed ratio 0.5. */
+ * mixed ratio 0.5. Leaf BSDFs: thinsheet thickness 0.5; oren_nayar roughness 1;
+ * diffuse_transmission transmittance 0.5; phong exponent 64, diffuse_ratio 0.2. */
 #include "base/util.h"
 #include "bsdf/bsdf.h"
 #include "scene/metals.h"
@@ -42,14 +43,18 @@ static void set_defaults(struct bsdf *b, enum bsdf_type t)
     b->ior = 1.5;
     b->enable_refraction = true;
     b->dist = MF_GGX;
-    b->roughness = t == BSDF_ROUGH_PLASTIC ? 0.02 : 0.1;
-    b->thickness = 1;
+    b->roughness = t == BSDF_ROUGH_PLASTIC ? 0.02 : t == BSDF_OREN_NAYAR ? 1 : 0.1;
+    b->thickness = t == BSDF_THINSHEET ? 0.5 : 1;
     b->sigma_a = v3s(0);
     /* nested BSDFs */
     if (t == BSDF_SMOOTH_COAT || t == BSDF_ROUGH_COAT) b->ior = 1.3;
     if (t == BSDF_ROUGH_COAT) b->roughness = 0.02;
     b->alpha = 1;
     b->ratio = 0.5;
+    /* leaf BSDFs */
+    b->transmittance = 0.5;
+    b->exponent = 64;
+    b->diffuse_ratio = 0.2;
 }
 
 static bool nonneg(struct jctx *c, const char *path, const char *key, vec3 v)
@@ -197,6 +202,64 @@ static bool parse_ratio(struct loader *L, const cJSON *j, const char *path, stru
     return parse_unit(L, v, p, &b->ratio);
 }
 
+/* A number in [lo, hi] under key (absent: the default stays). */
+static bool number_in(struct loader *L, const cJSON *j, const char *path, const char *key, double lo, double hi,
+                      double *out)
+{
+    if (!jget_number(&L->c, j, path, key, false, out)) return false;
+    char p[JPATH_MAX];
+    jpath_key(p, path, key);
+    if (!(*out >= lo && *out <= hi)) return jfail(&L->c, p, "expected a number in [%g, %g]", lo, hi);
+    return true;
+}
+
+/* A non-negative number under key (absent: the default stays). */
+static bool number_nonneg(struct loader *L, const cJSON *j, const char *path, const char *key, double *out)
+{
+    if (!jget_number(&L->c, j, path, key, false, out)) return false;
+    char p[JPATH_MAX];
+    jpath_key(p, path, key);
+    if (!(*out >= 0)) return jfail(&L->c, p, "expected a non-negative number");
+    return true;
+}
+
+static bool parse_thinsheet(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    char p[JPATH_MAX];
+    jpath_key(p, path, "thickness");
+    const cJSON *t = cJSON_GetObjectItemCaseSensitive(j, "thickness");
+    if (cJSON_IsString(t) || cJSON_IsObject(t))
+        return jfail(&L->c, p, "textured thickness is not supported (expected a number)");
+    bool interference = false;
+    if (!parse_ior(L, j, path, b) || !number_nonneg(L, j, path, "thickness", &b->thickness) ||
+        !jget_vec3(&L->c, j, path, "sigma_a", false, &b->sigma_a) || !nonneg(&L->c, path, "sigma_a", b->sigma_a) ||
+        !jget_bool(&L->c, j, path, "enable_interference", false, &interference))
+        return false;
+    jpath_key(p, path, "enable_interference");
+    if (interference) return jfail(&L->c, p, "thin-film interference is not supported (expected false)");
+    return true;
+}
+
+/* Tungsten 0.2.2's DiffuseTransmissionBsdf has no fromJson: it never reads `transmittance` and
+ * always transmits 0.5. The loader does the same, so that a scene renders as in Tungsten. */
+static bool parse_diffuse_transmission(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    double t = b->transmittance;
+    if (!number_in(L, j, path, "transmittance", 0, 1, &t)) return false;
+    if (t != b->transmittance) {
+        char p[JPATH_MAX];
+        jpath_key(p, path, "transmittance");
+        jwarn(&L->c, p, "Tungsten 0.2.2 ignores this parameter and transmits 0.5; so does this loader");
+    }
+    return true;
+}
+
+static bool parse_phong(struct loader *L, const cJSON *j, const char *path, struct bsdf *b)
+{
+    return number_nonneg(L, j, path, "exponent", &b->exponent) &&
+           number_in(L, j, path, "diffuse_ratio", 0, 1, &b->diffuse_ratio);
+}
+
 static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const char *default_name,
                        struct bsdf *b);
 static int add_bsdf(struct loader *L);
@@ -275,6 +338,14 @@ static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const
         /* fall through */
     case BSDF_PLASTIC:
         return parse_layer(L, j, path, b);
+    case BSDF_THINSHEET:
+        return parse_thinsheet(L, j, path, b);
+    case BSDF_DIFFUSE_TRANSMISSION:
+        return parse_diffuse_transmission(L, j, path, b);
+    case BSDF_OREN_NAYAR:
+        return parse_roughness(L, j, path, b);
+    case BSDF_PHONG:
+        return parse_phong(L, j, path, b);
     /* nested BSDFs */
     case BSDF_TRANSPARENCY:
         return parse_alpha(L, j, path, b) && parse_child(L, j, path, "base", &b->child[0]);

@@ -43,7 +43,11 @@ static uint64_t hash_bsdf(uint64_t h, const struct bsdf *b)
     H(b->alpha);
     H(b->ratio);
     h = hash_texture(h, b->ratio_tex);
-    return H(b->sigma_a);
+    H(b->sigma_a);
+    /* leaf BSDFs */
+    H(b->transmittance);
+    H(b->exponent);
+    return H(b->diffuse_ratio);
 }
 
 static uint64_t hash_prim(uint64_t h, const struct prim *p)

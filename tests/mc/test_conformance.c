@@ -76,6 +76,14 @@ static const struct conf_scene conf_scenes[] = {
     {"texture-roughness", 80, 60},
     {"bump-map", 80, 60},
     {"camera-thinlens", 80, 60},
+    /* Known failures (scenes/README.md, "Leaf BSDFs of Tungsten"): bsdf-thinsheet fails only (a),
+     * relMSE 2.04x, as Tungsten's shadow rays pass through its panes and ours are blocked (block and
+     * mean tests pass); bsdf-diffuse-transmission's reference is biased by Tungsten's own BDPT (its
+     * sample() reports the pdf without the lobe choice, so its MIS weights do not sum to one). */
+    {"bsdf-thinsheet", 80, 60},
+    {"bsdf-diffuse-transmission", 80, 60},
+    {"bsdf-oren-nayar", 80, 60},
+    {"bsdf-phong", 80, 60},
 };
 #define NSCENES (int)(sizeof conf_scenes / sizeof conf_scenes[0])
 

@@ -310,7 +310,7 @@ static const struct bad_case bad_cases[] = {
     {"primitives_not_array.json", ": primitives: expected an array"},
     {"media_present.json", ": media: participating media are not supported"},
     {"unknown_prim_type.json", ": primitives[0].type: unknown primitive type \"torus\""},
-    {"unknown_bsdf_type.json", ": bsdfs[0].type: unknown bsdf type \"oren_nayar\""},
+    {"unknown_bsdf_type.json", ": bsdfs[0].type: unknown bsdf type \"no_such_bsdf\""},
     {"undefined_bsdf.json", ": primitives[0].bsdf: undefined bsdf \"nope\""},
     {"scale_string.json", ": primitives[0].transform.scale: expected a number or an array of 3 numbers"},
     {"scale_two.json", ": primitives[0].transform.scale: expected a number or an array of 3 numbers"},
