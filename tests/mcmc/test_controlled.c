@@ -287,6 +287,17 @@ Test(stat_controlled, agrees_with_bdpt_with_sphere_cube_and_mesh_lights, .timeou
     cr_log_info("lights: mean p = %g, worst block p = %g\n", pm, worst);
 }
 
+/* scenes/surfaces (nested coats, mixed and transparency, thin sheet, phong, oren_nayar, diffuse
+ * transmission, textured roughness, a bump map, a disk lamp), 32x32: 12 runs of 1024 mutations per
+ * pixel (10k seed paths) vs 8 BDPT renders of 64 spp. */
+Test(stat_controlled, agrees_with_bdpt_on_tungsten_surfaces, .timeout = 600)
+{
+    double pm, worst, m, r;
+    int f = method_vs_bdpt(MLT_MMLT, "scenes/surfaces/scene.json", 32, 64, 1024, 10000, 12, 9100, &pm, &worst, &m, &r);
+    cr_assert_eq(f, 0, "controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
+    cr_log_info("surfaces: mean p = %g, worst block p = %g\n", pm, worst);
+}
+
 /* bin/render: --small-step controlled with --angle-stats writes the image, the statistics (with the
  * small-step kind and the impossible-inversion counts) and PREFIX.angle.exr / .angle.csv; the
  * Kelemen kernel is refused (exit status 2); and two runs with the same seed give the same image

@@ -375,6 +375,20 @@ Test(stat_mlt, all_methods_agree_on_door_ajar, .timeout = 900)
     scene_free(sc);
 }
 
+/* scenes/surfaces: the rest of Tungsten's surface model together (a disk lamp, a smooth-coated
+ * floor, a bump-mapped oren_nayar wall, a thin-sheet pane, a gold cube with a roughness texture, a
+ * mixed lambert/silver sphere, a rough-coated copper cylinder, a transparency card, a phong sphere
+ * and a diffuse-transmission sheet): every nested and leaf family's sample, pdf and delta lobes
+ * inside BDPT's MIS and the chains. At 32x32: BDPT 64 spp, PT 256 spp, PSSMLT 256 and MMLT/PITP
+ * 1024 mutations per pixel per run, 100000 seed paths per MCMC run. */
+Test(stat_mlt, all_methods_agree_on_tungsten_surfaces, .timeout = 900)
+{
+    struct scene *sc = test_scene("scenes/surfaces/scene.json");
+    const struct budget b = {32, 64, 256, 256, 1024, 100000};
+    all_methods_agree(sc, &b, 7000);
+    scene_free(sc);
+}
+
 /* Processes that spin until killed: load on the machine that is not the render's. */
 static int spin_start(pid_t *pid, int n)
 {
