@@ -101,17 +101,25 @@ static const struct conf_scene conf_scenes[] = {
  *  - bsdf-diffuse-transmission: Tungsten 0.2.2's reference is biased (its sample() reports the
  *    cosine pdf without the lobe choice while its pdf() includes it, so its MIS weights do not sum
  *    to one: image mean 4.6 % below ours, 67 of 80 blocks off; our BDPT reproduces the reference
- *    when given Tungsten's pdf, and our PT and BDPT agree). Not compared. */
+ *    when given Tungsten's pdf, and our PT and BDPT agree). Not compared.
+ *  - prim-disk: Tungsten applies the disk's cone_angle only where a camera path hits the disk (its
+ *    emitter paths leave over the whole hemisphere, "TODO: Cone angle" in Disk.cpp), so its BDPT
+ *    blends a spot light with a full one where the disk is seen directly; ours emits over the whole
+ *    hemisphere in every technique. Every block agrees, the image mean is 0.3 % above (1.0030 +-
+ *    0.0006; 1.0006 +- 0.0006 in a throwaway build with Tungsten's camera-hit-only cone), so (c) is
+ *    printed, not asserted. */
 static const struct {
     const char *name;
     int border;          /* pixels left out on every side */
     double relmse_bound; /* criterion (a)'s factor instead of 1.5; < 0: the reference is not compared */
+    bool mean_printed;   /* criterion (c) printed, not asserted */
 } not_followed[] = {
-    {"filter-tent", BLK, 1.5},
-    {"bsdf-thinsheet", 0, 2.9},
-    {"bsdf-transparency", 0, 7.9},
-    {"bsdf-coat", 0, 2.6},
-    {"bsdf-diffuse-transmission", 0, -1},
+    {"filter-tent", BLK, 1.5, false},
+    {"bsdf-thinsheet", 0, 2.9, false},
+    {"bsdf-transparency", 0, 7.9, false},
+    {"bsdf-coat", 0, 2.6, false},
+    {"bsdf-diffuse-transmission", 0, -1, false},
+    {"prim-disk", 0, 1.5, true},
 };
 /* ===== end ===== */
 
@@ -138,6 +146,13 @@ static int border_of(const char *name)
     for (size_t i = 0; i < sizeof not_followed / sizeof *not_followed; i++)
         if (!strcmp(name, not_followed[i].name)) return not_followed[i].border;
     return 0;
+}
+
+static bool mean_printed(const char *name)
+{
+    for (size_t i = 0; i < sizeof not_followed / sizeof *not_followed; i++)
+        if (!strcmp(name, not_followed[i].name)) return not_followed[i].mean_printed;
+    return false;
 }
 
 static double relmse_bound_of(const char *name)
@@ -314,5 +329,6 @@ ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
     cr_expect(rel <= bound * rel_t16, "%s: relMSE %.3e > %.1f x Tungsten's t16 %.3e", cs->name, rel, bound, rel_t16);
     cr_expect(fails == 0, "%s: %d of %d blocks differ from the reference (worst p %.2e < alpha %.2e)", cs->name, fails,
               nb, worst, alpha);
-    cr_expect(pmean >= alpha, "%s: image mean ratio %.4f, p %.2e < alpha %.2e", cs->name, cm / ref_mean, pmean, alpha);
+    if (!mean_printed(cs->name))
+        cr_expect(pmean >= alpha, "%s: image mean ratio %.4f, p %.2e < alpha %.2e", cs->name, cm / ref_mean, pmean, alpha);
 }
