@@ -74,7 +74,7 @@ void bsdf_prepare_all(struct bsdf *bs, int n)
     free(done);
 }
 
-struct bsdf_ctx bsdf_ctx_at(const struct bsdf *b, const double uv[2])
+struct bsdf_ctx bsdf_ctx_textured(const struct bsdf *b, const double uv[2])
 {
     struct bsdf_ctx c = {.b = b, .albedo = b->albedo, .roughness = b->roughness};
     if (uv) {

@@ -35,7 +35,15 @@ struct bsdf_ctx {
 };
 
 /* The context of b at texture coordinates uv (NULL: (0, 0)). */
-struct bsdf_ctx bsdf_ctx_at(const struct bsdf *b, const double uv[2]);
+/* The textured case, out of line. */
+struct bsdf_ctx bsdf_ctx_textured(const struct bsdf *b, const double uv[2]);
+/* Inline: every surface hit builds one, and most BSDFs read no texture (then uv stays 0: nothing
+ * reads it, b->needs_uv covering the nested BSDFs' textures too). */
+static inline struct bsdf_ctx bsdf_ctx_at(const struct bsdf *b, const double uv[2])
+{
+    if (b->needs_uv) return bsdf_ctx_textured(b, uv);
+    return (struct bsdf_ctx){.b = b, .albedo = b->albedo, .roughness = b->roughness};
+}
 /* The context of c's nested BSDF i at the same point. */
 static inline struct bsdf_ctx bsdf_child_ctx(const struct bsdf_ctx *c, int i)
 {
