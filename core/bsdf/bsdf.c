@@ -77,12 +77,11 @@ void bsdf_prepare_all(struct bsdf *bs, int n)
 struct bsdf_ctx bsdf_ctx_textured(const struct bsdf *b, const double uv[2])
 {
     struct bsdf_ctx c = {.b = b, .albedo = b->albedo, .roughness = b->roughness};
-    if (uv) {
-        c.uv[0] = uv[0];
-        c.uv[1] = uv[1];
-    }
-    if (b->albedo_tex) c.albedo = texture_lookup(b->albedo_tex, c.uv[0], c.uv[1]);
+    double u = uv ? uv[0] : 0, v = uv ? uv[1] : 0; /* this BSDF's own lookups in double */
+    c.uv[0] = (float)u;
+    c.uv[1] = (float)v;
+    if (b->albedo_tex) c.albedo = texture_lookup(b->albedo_tex, u, v);
     /* textures: Tungsten reads the first channel of the (averaged) roughness texture */
-    if (b->roughness_tex) c.roughness = texture_lookup(b->roughness_tex, c.uv[0], c.uv[1]).x;
+    if (b->roughness_tex) c.roughness = texture_lookup(b->roughness_tex, u, v).x;
     return c;
 }

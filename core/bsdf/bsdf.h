@@ -31,7 +31,8 @@ struct bsdf_ctx {
     const struct bsdf *b;
     rgb albedo;       /* b->albedo or the texture at the hit's uv */
     double roughness; /* b->roughness or its texture at the hit's uv */
-    double uv[2];     /* the hit's texture coordinates (0 where nothing reads them) */
+    float uv[2];      /* the hit's texture coordinates for nested BSDFs' and mixed's lookups (0 where
+                       * nothing reads them); float, as every path vertex carries one */
 };
 
 /* The context of b at texture coordinates uv (NULL: (0, 0)). */
@@ -47,7 +48,8 @@ static inline struct bsdf_ctx bsdf_ctx_at(const struct bsdf *b, const double uv[
 /* The context of c's nested BSDF i at the same point. */
 static inline struct bsdf_ctx bsdf_child_ctx(const struct bsdf_ctx *c, int i)
 {
-    return bsdf_ctx_at(c->b->child[i], c->uv);
+    const double uv[2] = {c->uv[0], c->uv[1]};
+    return bsdf_ctx_at(c->b->child[i], uv);
 }
 
 struct bsdf_sample {
