@@ -2,6 +2,7 @@
 #include "bsdf/bsdf.h"
 #include "base/util.h"
 #include "bsdf/fresnel.h"
+#include <float.h>
 #include <stdlib.h>
 
 const struct bsdf_ops *const bsdf_ops_table[BSDF_NTYPES] = {
@@ -74,12 +75,16 @@ void bsdf_prepare_all(struct bsdf *bs, int n)
     free(done);
 }
 
+/* A double beyond float's range converts to the nearest finite float (C leaves the cast undefined
+ * there; a mesh may carry any uv). */
+static float to_float(double x) { return x > FLT_MAX ? FLT_MAX : x < -FLT_MAX ? -FLT_MAX : (float)x; }
+
 struct bsdf_ctx bsdf_ctx_textured(const struct bsdf *b, const double uv[2])
 {
     struct bsdf_ctx c = {.b = b, .albedo = b->albedo, .roughness = b->roughness};
     double u = uv ? uv[0] : 0, v = uv ? uv[1] : 0; /* this BSDF's own lookups in double */
-    c.uv[0] = (float)u;
-    c.uv[1] = (float)v;
+    c.uv[0] = to_float(u);
+    c.uv[1] = to_float(v);
     if (b->albedo_tex) c.albedo = texture_lookup(b->albedo_tex, u, v);
     /* textures: Tungsten reads the first channel of the (averaged) roughness texture */
     if (b->roughness_tex) c.roughness = texture_lookup(b->roughness_tex, u, v).x;
