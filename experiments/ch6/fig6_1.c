@@ -8,8 +8,8 @@
  * (about 1.5 % of its small steps at length 2). Writes OUT/fig6.1.csv:
  * method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,runs,run_se
  * (stderr: batch-means over the merged runs; run_se: standard error of the runs' means; cells with
- * fewer than 16000 proposals are left out), and OUT/fig6.1-pitp.csv: per length, PITP's perturbations, the fraction with j != i, the
- * inversion failures and the mean |j - i|; and OUT/claims.csv, OUT/claims.md: the thesis's claims on
+ * fewer than 16000 proposals are left out), and OUT/fig6.1-pitp.csv: per length, PITP's perturbations, the fraction
+ * with j != i, the inversion failures and the mean |j - i|; and OUT/claims.csv, OUT/claims.md: the thesis's claims on
  * Fig. 6.1 decided from the runs' means and their standard error over the runs. */
 #include "base/parallel.h"
 #include "base/util.h"
@@ -18,15 +18,15 @@
 #include "common/opts.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <math.h>
 #include <unistd.h>
 
-enum { RUNS = 4 };              /* independent runs per method */
-enum { MIN_ATTEMPTS = 16000 };  /* proposals a cell needs to be written */
-enum { SHORT_MAX = 6 };         /* the short pass: lengths 1..SHORT_MAX */
+enum { RUNS = 4 };             /* independent runs per method */
+enum { MIN_ATTEMPTS = 16000 }; /* proposals a cell needs to be written */
+enum { SHORT_MAX = 6 };        /* the short pass: lengths 1..SHORT_MAX */
 
 /* Per method (0 MMLT, 1 PITP), length and technique changed: the mean of the runs' mean
  * acceptances and its standard error; have = the cell was written. */
@@ -39,7 +39,7 @@ struct cells {
 /* The worse of two verdicts over lengths: the smallest z decides a claim made for every length. */
 static void keep_worst(struct verdict *worst, int *at, struct verdict v, int k)
 {
-    if (v.zmin < worst->zmin || *at < 0) *worst = v, *at = k;
+    if (*at < 0 || v.zmin < worst->zmin) *worst = v, *at = k;
 }
 
 /* Thesis §6.1 on Figure 6.1, every length with both cells; errors over the RUNS runs. */
@@ -48,8 +48,8 @@ static char *claims(const struct cells *t, const char *out, const char *scale, c
     struct claims cl;
     char command[64], zs[128], md[256];
     snprintf(command, sizeof command, "make fig6.1 SCALE=%s", scale);
-    claims_begin(&cl, scale, command, "Claims of thesis §6.1 on Fig. 6.1 (ajar, lengths 2-%d; standard errors over %d runs)",
-                 t->K, RUNS);
+    claims_begin(&cl, scale, command,
+                 "Claims of thesis §6.1 on Fig. 6.1 (ajar, lengths 2-%d; standard errors over %d runs)", t->K, RUNS);
     const bool both[2] = {true, true};
     struct verdict w[3];
     int at[3] = {-1, -1, -1};
@@ -59,8 +59,11 @@ static char *claims(const struct cells *t, const char *out, const char *scale, c
             double m[2] = {t->mean[0][k][0], t->mean[0][k][1]}, e[2] = {t->se[0][k][0], t->se[0][k][1]};
             keep_worst(&w[0], &at[0], verdict_extreme(m, e, both, 2, 1, -1, RUNS, z), k);
         }
-        if (t->have[1][k][0] && t->have[1][k][1]) /* PITP: changes within 25 % of keeps */
-            keep_worst(&w[1], &at[1], verdict_similar(t->mean[1][k][1], t->se[1][k][1], t->mean[1][k][0], t->se[1][k][0], 0.25, RUNS), k);
+        if (t->have[1][k][0] && t->have[1][k][1]) { /* PITP: changes within 25 % of keeps */
+            struct verdict v =
+                verdict_similar(t->mean[1][k][1], t->se[1][k][1], t->mean[1][k][0], t->se[1][k][0], 0.25, RUNS);
+            keep_worst(&w[1], &at[1], v, k);
+        }
         if (t->have[0][k][1] && t->have[1][k][1]) { /* technique changes: PITP above MMLT */
             double m[2] = {t->mean[0][k][1], t->mean[1][k][1]}, e[2] = {t->se[0][k][1], t->se[1][k][1]};
             keep_worst(&w[2], &at[2], verdict_extreme(m, e, both, 2, 1, +1, RUNS, z), k);
@@ -74,7 +77,7 @@ static char *claims(const struct cells *t, const char *out, const char *scale, c
                                         "PITP acceptance ratio changed / kept within ±25 %, per length",
                                         "acceptance of technique-changing small steps, PITP vs MMLT, per length"};
     for (int c = 0; c < 3; c++) {
-        if (at[c] < 0) continue; /* no length with both cells */
+        if (at[c] < 0) continue;           /* no length with both cells */
         int k = at[c], m = c == 0 ? 0 : 1; /* the technique-changing cell of the method claimed about */
         double v = t->mean[m][k][1], se = t->se[m][k][1];
         if (c == 1) { /* the ratio and its first-order error */
@@ -83,8 +86,9 @@ static char *claims(const struct cells *t, const char *out, const char *scale, c
             se = v * sqrt(pow(t->se[1][k][1] / a, 2) + pow(t->se[1][k][0] / b, 2));
         }
         snprintf(zs, sizeof zs, "%s=%.2f@%d", c == 0 ? "mmlt-kept" : c == 1 ? "1x" : "mmlt-changed", w[c].zmin, k);
-        snprintf(md, sizeof md, "%s; smallest z = %.1f at length %d",
-                 c == 0 ? "MMLT's technique-keeping steps" : c == 1 ? "1 within ±25 %" : "MMLT's technique changes", w[c].zmin, k);
+        static const char *const against[3] = {"MMLT's technique-keeping steps", "1 within ±25 %",
+                                               "MMLT's technique changes"};
+        snprintf(md, sizeof md, "%s; smallest z = %.1f at length %d", against[c], w[c].zmin, k);
         claims_row(&cl, "thesis §6.1, Fig. 6.1", claim[c], stat[c], m ? "pitp" : "mmlt", v, se, zs, md, &w[c]);
     }
     return claims_finish(&cl, out, err, errlen);
@@ -105,8 +109,8 @@ static bool write_file(const char *dir, const char *name, const char *text)
 int main(int argc, char **argv)
 {
     struct opts_accept a;
-    struct scene *sc = opts_accept_parse(&a, "fig6_1", "scenes/ajar/scene.json", "results/fig6.1", "8000000", "100000000",
-                                         argc, argv);
+    struct scene *sc =
+        opts_accept_parse(&a, "fig6_1", "scenes/ajar/scene.json", "results/fig6.1", "8000000", "100000000", argc, argv);
     bool paper = a.fig.paper;
     long mutations = a.mutations;
     int K = a.max_length, threads = a.fig.threads;
@@ -143,11 +147,15 @@ int main(int argc, char **argv)
              * not depend on the longest length, so the two merge) */
             for (int pass = 0; pass < 2 && (pass == 0 || K > SHORT_MAX); pass++) {
                 int kmax = pass ? SHORT_MAX : K;
-                struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT, .p_large = 0.1,
+                struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT,
+                                     .p_large = 0.1,
                                      .mutations = (pass ? 3 * mutations / 2 : mutations) / RUNS,
                                      .seed_paths = paper ? 1000000 : 100000,
-                                     .seed = seed * 1000 + (uint64_t)rr + (pass ? 500 : 0), .threads = threads,
-                                     .max_length = kmax, .progress = isatty(2), .large_step = LARGE_MMLT,
+                                     .seed = seed * 1000 + (uint64_t)rr + (pass ? 500 : 0),
+                                     .threads = threads,
+                                     .max_length = kmax,
+                                     .progress = isatty(2),
+                                     .large_step = LARGE_MMLT,
                                      .uniform_lengths = true};
                 pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
                 fprintf(stderr, "fig6.1: %s run %d of %d, %ld mutations over lengths 1..%d\n", names[m], rr + 1, RUNS,

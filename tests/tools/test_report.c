@@ -23,20 +23,22 @@ Test(report, loads_in_chromium_with_every_image_and_link, .timeout = 180)
 static void expect_ledger_refused(const char *edit, const char *message)
 {
     char cmd[2048];
-    snprintf(cmd, sizeof cmd,
-             "set -e; d=results/report-ledger-test; rm -rf $d; mkdir -p $d; %s results/report/index.html > $d/index.html; "
-             "out=$(bash scripts/report-check.sh $d/index.html 2>&1 || true); rm -rf $d; "
-             "printf '%%s\\n' \"$out\" | grep -q '%s'",
-             edit, message);
+    snprintf(
+        cmd, sizeof cmd,
+        "set -e; d=results/report-ledger-test; rm -rf $d; mkdir -p $d; %s results/report/index.html > $d/index.html; "
+        "out=$(bash scripts/report-check.sh $d/index.html 2>&1 || true); rm -rf $d; "
+        "printf '%%s\\n' \"$out\" | grep -q '%s'",
+        edit, message);
     int st = system(cmd);
-    cr_expect(WIFEXITED(st) && WEXITSTATUS(st) == 0, "report-check did not refuse the page edited by `%s` with '%s'", edit,
-              message);
+    cr_expect(WIFEXITED(st) && WEXITSTATUS(st) == 0, "report-check did not refuse the page edited by `%s` with '%s'",
+              edit, message);
 }
 
 Test(report, ledger_check_refuses_a_bad_verdict_and_a_missing_figure, .timeout = 300)
 {
     if (access("results/report/index.html", R_OK)) cr_skip_test("no results/report/index.html (make report)");
-    if (system("grep -q 'class=\"ledger-row\"' results/report/index.html")) cr_skip_test("no ledger rows in the report");
+    if (system("grep -q 'class=\"ledger-row\"' results/report/index.html"))
+        cr_skip_test("no ledger rows in the report");
     if (system("command -v chromium >/dev/null || command -v chromium-browser >/dev/null"))
         cr_assert_fail("the report exists but Chromium is not installed (apt-get install chromium)");
     expect_ledger_refused("sed -E '0,/class=\"v-[a-z]+\">[a-z]+/s//class=\"v-maybe\">maybe/'",
