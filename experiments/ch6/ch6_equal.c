@@ -496,7 +496,7 @@ int main(int argc, char **argv)
     bool have[MAX_METHODS];
     double cm[MAX_METHODS][Q_COUNT], cs[MAX_METHODS][Q_COUNT];
     for (int mi = 0; mi < nm; mi++) {
-        snprintf(names[mi], sizeof names[mi], "%s", ms[mi].name);
+        snprintf(names[mi], sizeof names[mi], "%.63s", ms[mi].name); /* method names are short */
         have[mi] = ms[mi].available;
         for (int q = 0; q < Q_COUNT; q++) cm[mi][q] = have[mi] ? sum[mi][q][0] : NAN, cs[mi][q] = have[mi] ? sum[mi][q][1] : NAN;
     }
