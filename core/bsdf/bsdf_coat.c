@@ -148,21 +148,29 @@ static double sc_pdf(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
     return (1 - k.P) * p;
 }
 
+/* Inversion's share of the substrate at wo (both coats): its discrete weight *dw when the substrate
+ * reaches wo by a delta lobe, else its continuous pdf term *cw; pr keeps the substrate's numbers. */
+static void substrate_weight(const struct bsdf_ctx *c, const struct coat_in *k, vec3 wo, struct sampler *w,
+                             struct nested_probe *pr, double *dw, double *cw)
+{
+    double p;
+    vec3 wo_s;
+    if (!(k->P < 1 && coat_substrate(c, k, wo, TRANSPORT_RADIANCE, NULL, &p, &wo_s))) return;
+    struct bsdf_ctx s = bsdf_child_ctx(c, 0);
+    nested_probe(&s, k->wi_s, wo_s, w, pr);
+    if (pr->ok && pr->delta) *dw = (1 - k->P) * pr->p_delta;
+    else if (pr->ok) *cw = (1 - k->P) * p;
+}
+
 static bool sc_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler *w)
 {
     int end = w->offset + c->b->dims;
     struct coat_in k;
     if (!coat_enter(c->b, wi, &k) || wo.z <= 0) return false;
-    double dw[2] = {0, 0}, cw[2] = {0, 0}, p;
+    double dw[2] = {0, 0}, cw[2] = {0, 0};
     if (k.P > 0 && smooth_same_dir(wo, smooth_reflect(wi))) dw[0] = k.P;
     struct nested_probe pr = {0};
-    vec3 wo_s;
-    if (k.P < 1 && coat_substrate(c, &k, wo, TRANSPORT_RADIANCE, NULL, &p, &wo_s)) {
-        struct bsdf_ctx s = bsdf_child_ctx(c, 0);
-        nested_probe(&s, k.wi_s, wo_s, w, &pr);
-        if (pr.ok && pr.delta) dw[1] = (1 - k.P) * pr.p_delta;
-        else if (pr.ok) cw[1] = (1 - k.P) * p;
-    }
+    substrate_weight(c, &k, wo, w, &pr, &dw[1], &cw[1]);
     int pick = nested_pick(w, 2, dw, cw);
     if (pick < 0) return false;
     if (pick == 0) {
@@ -264,18 +272,13 @@ static bool rc_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     int end = w->offset + b->dims;
     struct coat_in k;
     if (!coat_enter(b, wi, &k) || wo.z <= 0) return false;
-    double dw[2] = {0, 0}, cw[2] = {0, 0}, u1 = 0, u2 = 0, p;
-    vec3 wo_s, h;
+    double dw[2] = {0, 0}, cw[2] = {0, 0}, u1 = 0, u2 = 0;
+    vec3 h;
     cw[0] = k.P * rc_glossy_pdf(c, wi, wo);
     if (!(cw[0] > 0 && mf_half_reflect(wi, wo, &h) && mf_invert(b->dist, mf_sample_alpha(c->roughness, wi.z), h, &u1, &u2)))
         cw[0] = 0;
     struct nested_probe pr = {0};
-    if (k.P < 1 && coat_substrate(c, &k, wo, TRANSPORT_RADIANCE, NULL, &p, &wo_s)) {
-        struct bsdf_ctx s = bsdf_child_ctx(c, 0);
-        nested_probe(&s, k.wi_s, wo_s, w, &pr);
-        if (pr.ok && pr.delta) dw[1] = (1 - k.P) * pr.p_delta;
-        else if (pr.ok) cw[1] = (1 - k.P) * p;
-    }
+    substrate_weight(c, &k, wo, w, &pr, &dw[1], &cw[1]);
     int pick = nested_pick(w, 2, dw, cw);
     if (pick < 0) return false;
     if (pick == 0) {
