@@ -161,32 +161,8 @@ static char tmpdir[256];
 static void mk_tmp(void) { tmpdir_make(tmpdir, sizeof tmpdir, "emit-prims"); }
 static void rm_tmp(void) { tmpdir_remove(tmpdir); }
 
-static struct scene *load_emitter(const char *prim)
-{
-    char path[512], json[4096], err[1024] = "";
-    snprintf(path, sizeof path, "%s/scene.json", tmpdir);
-    snprintf(json, sizeof json,
-             "{\"bsdfs\": [{\"name\": \"w\", \"type\": \"lambert\", \"albedo\": 0.5}], \"primitives\": [%s],"
-             " \"camera\": {\"type\": \"pinhole\", \"fov\": 45, \"resolution\": [8, 8], \"transform\":"
-             " {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0]}}}",
-             prim);
-    FILE *fp = fopen(path, "w");
-    cr_assert(fp);
-    fputs(json, fp);
-    fclose(fp);
-    struct scene *s = scene_load_model(path, err, sizeof err);
-    cr_assert(s, "%s", err);
-    s->emitters = emitters_build(s, err, sizeof err);
-    cr_assert(s->emitters, "%s", err);
-    return s;
-}
-
-static void free_emitter(struct scene *s)
-{
-    emitters_free(s->emitters);
-    s->emitters = NULL;
-    scene_model_free(s);
-}
+static struct scene *load_emitter(const char *prim) { return fx_load_one_prim(tmpdir, prim); }
+static void free_emitter(struct scene *s) { fx_free_loaded(s); }
 
 /* Position (triangle pick + 2) then emitted direction (2), as an emitter vertex draws them. */
 static void area_roundtrip(const char *prim, const char *name)

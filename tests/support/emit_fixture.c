@@ -1,6 +1,8 @@
 /* In-memory test scenes for emitters and camera (see emit_fixture.h). */
 #include "support/emit_fixture.h"
 #include <criterion/criterion.h>
+#include "scene/scene.h"
+#include <stdio.h>
 #include <string.h>
 
 static double rs_next(struct sampler *s, enum dim_kind kind)
@@ -115,4 +117,31 @@ struct camera fx_camera(vec3 pos, vec3 dir, double half_fov_deg, int w, int h)
     c.aspect = (double)w / h;
     c.filter = FILTER_BOX;
     return c;
+}
+
+struct scene *fx_load_one_prim(const char *dir, const char *prim)
+{
+    char path[512], json[4096], err[1024] = "";
+    snprintf(path, sizeof path, "%s/scene.json", dir);
+    snprintf(json, sizeof json,
+             "{\"bsdfs\": [{\"name\": \"w\", \"type\": \"lambert\", \"albedo\": 0.5}], \"primitives\": [%s],"
+             " \"camera\": {\"type\": \"pinhole\", \"fov\": 45, \"resolution\": [8, 8], \"transform\":"
+             " {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0]}}}",
+             prim);
+    FILE *fp = fopen(path, "w");
+    cr_assert(fp);
+    fputs(json, fp);
+    fclose(fp);
+    struct scene *s = scene_load_model(path, err, sizeof err);
+    cr_assert(s, "%s", err);
+    s->emitters = emitters_build(s, err, sizeof err);
+    cr_assert(s->emitters, "%s", err);
+    return s;
+}
+
+void fx_free_loaded(struct scene *s)
+{
+    emitters_free(s->emitters);
+    s->emitters = NULL;
+    scene_model_free(s);
 }

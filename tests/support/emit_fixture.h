@@ -32,6 +32,12 @@ struct rng_sampler {
 };
 void rng_sampler_init(struct rng_sampler *s, rng *r);
 
+/* A scene written to DIR/scene.json with one primitive (the JSON object `prim`) and a lambert
+ * bsdf "w", loaded by the real loader with its emitter table (asserts success); freed by
+ * fx_free_loaded. For emitters the loader builds (disks, cylinders). */
+struct scene *fx_load_one_prim(const char *dir, const char *prim);
+void fx_free_loaded(struct scene *s);
+
 /* A test camera: basis from frame_from_normal(dir), horizontal half-fov in degrees. */
 struct camera fx_camera(vec3 pos, vec3 dir, double half_fov_deg, int w, int h);
 
