@@ -445,5 +445,5 @@ static void rank_killed_and_resumed(const char *args, int victim_rank)
 Test(mpi, sigkill_of_one_rank_resumes_bit_identical)
 {
     rank_killed_and_resumed("--method pt --spp 1500", 1);
-    rank_killed_and_resumed("--method mmlt --spp 800 --seed-paths 4000", 0);
+    rank_killed_and_resumed("--method mmlt --spp 1600 --seed-paths 4000", 0);
 }
