@@ -27,19 +27,21 @@
 enum vertex_kind { VK_CAMERA, VK_EMITTER, VK_SURFACE, VK_ENV };
 
 struct vertex {
+    /* Small fields first and doubles after, so that no padding creeps in: every walk initialises
+     * and MMLT/PITP copy whole subpaths of these, and their size shows in instruction counts. */
     enum vertex_kind kind;
+    bool front;         /* reached from the front (emitting) side of the geometry */
+    bool flipped;       /* two-sided shading flipped the frame */
+    bool delta;         /* the next vertex of its subpath was sampled by a delta lobe */
+    int prim, tri;
     vec3 p;
     vec3 ng;            /* geometric normal, flipped to the incoming side for two-sided shading */
     frame sh;           /* shading frame, flipped like ng */
-    bool front;         /* reached from the front (emitting) side of the geometry */
-    bool flipped;       /* two-sided shading flipped the frame */
-    int prim, tri;
     double b1, b2;      /* barycentrics on triangles */
     struct bsdf_ctx bc; /* bc.b == NULL: no scattering (null BSDF) */
     vec3 wi;            /* unit, toward the previous vertex of its subpath (world) */
     rgb beta;
     double pdf_fwd, pdf_rev;
-    bool delta;         /* the next vertex of its subpath was sampled by a delta lobe */
     double px, py;      /* camera vertex: raster position of the primary ray */
 };
 

@@ -72,51 +72,70 @@ static vec3 bump_normal(const struct prim *pr, const struct vertex *v, const str
     return m;
 }
 
+/* textures: the hit's texture coordinates (spheres by sphere_uv of the geometric normal, meshes
+ * interpolated; (0, 0) on a mesh without them). */
+static void hit_uv(const struct prim *pr, const struct vertex *v, double uv[2])
+{
+    uv[0] = uv[1] = 0;
+    if (pr->kind == PRIM_SPHERE) {
+        sphere_uv(pr, v->ng, uv);
+        return;
+    }
+    if (!pr->uv) return;
+    const int *t = pr->tri + 3 * v->tri;
+    double b0 = 1.0 - v->b1 - v->b2;
+    for (int c = 0; c < 2; c++)
+        uv[c] = b0 * pr->uv[2 * t[0] + c] + v->b1 * pr->uv[2 * t[1] + c] + v->b2 * pr->uv[2 * t[2] + c];
+}
+
 void surface_from_hit(const struct scene *sc, vec3 o, vec3 d, const struct hit *h, struct vertex *v)
 {
     const struct prim *pr = &sc->prims[h->prim];
+    const struct bsdf *b = pr->bsdf >= 0 && sc->bsdfs[pr->bsdf].type != BSDF_NULL ? &sc->bsdfs[pr->bsdf] : NULL;
     v->kind = VK_SURFACE;
     v->prim = h->prim;
     v->tri = pr->kind == PRIM_SPHERE ? -1 : h->tri;
     v->b1 = h->b1;
     v->b2 = h->b2;
-    v->bc.b = pr->bsdf >= 0 && sc->bsdfs[pr->bsdf].type != BSDF_NULL ? &sc->bsdfs[pr->bsdf] : NULL;
-    bool need_uv = v->bc.b && v->bc.b->needs_uv;
     vec3 ns;
-    double uv[2] = {0, 0};
     if (pr->kind == PRIM_SPHERE) {
         vec3 q = vsub(vmad(o, d, h->t), pr->center);
         v->ng = vnorm(q);
         v->p = vmad(pr->center, v->ng, pr->radius); /* back onto the sphere in double precision */
         ns = v->ng;
-        if (need_uv) sphere_uv(pr, v->ng, uv);
     } else {
         const int *t = pr->tri + 3 * v->tri;
         vec3 p0 = pr->p[t[0]], p1 = pr->p[t[1]], p2 = pr->p[t[2]];
-        double b0 = 1.0 - h->b1 - h->b2;
         v->p = vadd(p0, vadd(vscale(vsub(p1, p0), h->b1), vscale(vsub(p2, p0), h->b2)));
         v->ng = pr->tri_n[v->tri];
         ns = v->ng;
         if (pr->n) {
+            double b0 = 1.0 - h->b1 - h->b2;
             vec3 n = vadd(vadd(vscale(pr->n[t[0]], b0), vscale(pr->n[t[1]], h->b1)), vscale(pr->n[t[2]], h->b2));
             if (vlen2(n) > 0) ns = vnorm(n);
             if (vdot(ns, v->ng) < 0) ns = vneg(ns);
         }
-        if (pr->uv && need_uv) /* only textures read them */
-            for (int c = 0; c < 2; c++)
-                uv[c] = b0 * pr->uv[2 * t[0] + c] + h->b1 * pr->uv[2 * t[1] + c] + h->b2 * pr->uv[2 * t[2] + c];
     }
     v->wi = vneg(d);
     v->front = vdot(v->ng, v->wi) > 0;
-    if (v->bc.b) v->bc = bsdf_ctx_at(v->bc.b, uv);
-    else v->bc.albedo = v3s(0);
-    /* A bump map makes the shading frame a function of the hit point alone (its uv and tangents),
-     * like an interpolated normal: the BSDF's inversion, which works in this frame, needs nothing
-     * more. One branch on surfaces without one. */
-    if (v->bc.b && v->bc.b->bump_tex) ns = bump_normal(pr, v, v->bc.b->bump_tex, uv, ns);
+    /* Untextured surfaces (most) take the BSDF's constants and skip the uv: every walk builds
+     * one of these per hit, so this path is kept short (instruction counts, issue 29). */
+    if (!b) {
+        v->bc = (struct bsdf_ctx){.b = NULL};
+    } else if (!b->needs_uv) {
+        v->bc = (struct bsdf_ctx){.b = b, .albedo = b->albedo, .roughness = b->roughness};
+    } else {
+        double uv[2];
+        hit_uv(pr, v, uv);
+        v->bc = bsdf_ctx_textured(b, uv);
+        /* A bump map makes the shading frame a function of the hit point alone (its uv and
+         * tangents), like an interpolated normal: the BSDF's inversion, which works in this
+         * frame, needs nothing more. */
+        if (b->bump_tex) ns = bump_normal(pr, v, b->bump_tex, uv, ns);
+    }
     /* Two-sided shading: opaque surfaces seen from the back shade as if seen from the front. */
     v->flipped = false;
-    if (!v->front && v->bc.b && sc->two_sided_shading && !v->bc.b->transmissive) {
+    if (!v->front && b && sc->two_sided_shading && !b->transmissive) {
         v->ng = vneg(v->ng);
         ns = vneg(ns);
         v->flipped = true;
