@@ -232,7 +232,9 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
     struct vertex *grow = to_emitter ? x->emi : x->cam, *shrink = to_emitter ? x->cam : x->emi;
     int ng = to_emitter ? si : x->t, ns = to_emitter ? x->t : si, ns_new = to_emitter ? tj : sj;
     int d = ns - ns_new;
-    struct block_sampler b = {.base = {&blk_ops, 0, 0, 0}, .r = &p->r};
+    struct block_sampler b; /* u[] is written before it is read (blk_next checks n): not cleared */
+    b.base = (struct sampler){&blk_ops, 0, 0, 0};
+    b.r = &p->r;
     struct block_rec rec[MAX_SUBPATH_VERTS];
     int nrec, nrev;
 

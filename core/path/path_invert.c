@@ -11,7 +11,8 @@
  * first hit (README). So each block is inverted at the vertex the walk will actually reach: the
  * block's numbers are replayed through the forward sampling and the ray is traced with walk_hit,
  * exactly as walk_* does. A non-delta vertex then aims from where the walk is, and only one ray's
- * rounding separates each retraced vertex from its target. Costs one ray per inverted block. */
+ * rounding separates each retraced vertex from its target. Costs one ray per inverted block but the
+ * last, whose direction nothing follows (PITP inverts one block at a time: no ray, no replay). */
 #include "camera/camera.h"
 #include "emitter/emitter.h"
 #include "path/path.h"
@@ -55,7 +56,11 @@ static const struct sampler_ops tee_ops = {tee_next, tee_put, tee_fresh};
 
 static void tee_begin(struct tee *t, struct sampler *w, int stream, int vertex)
 {
-    *t = (struct tee){.base = {&tee_ops, 0, 0, 0}, .w = w};
+    /* u[] is read only below n: not cleared (this runs once per inverted block) */
+    t->base = (struct sampler){&tee_ops, 0, 0, 0};
+    t->w = w;
+    t->n = 0;
+    t->short_ = false;
     sampler_begin(&t->base, stream, vertex);
     sampler_begin(w, stream, vertex);
 }
@@ -96,19 +101,22 @@ static bool replay_scatter(const struct vertex *at, struct tee *t, enum transpor
 
 /* The vertex the walk reaches from `at` along d, which the next block is inverted at: the retraced
  * hit when it lies on the target's primitive, else (a miss, another primitive, or a replay that
- * ran short) the target itself, as open-loop inversion would. */
-static void follow(const struct scene *sc, struct vertex *at, bool have_d, vec3 d, const struct tee *t,
-                   const struct vertex *target)
+ * ran short) the target itself, as open-loop inversion would. Written to *buf; returns where it is
+ * (the walk's vertex is kept by pointer and copied only here: PITP inverts one block at a time). */
+static const struct vertex *follow(const struct scene *sc, const struct vertex *at, bool have_d, vec3 d,
+                                   const struct tee *t, const struct vertex *target, struct vertex *buf)
 {
     struct vertex hit;
-    if (have_d && !t->short_ && walk_hit(sc, at, d, &hit) && hit.prim == target->prim) *at = hit;
-    else *at = *target;
+    if (have_d && !t->short_ && walk_hit(sc, at, d, &hit) && hit.prim == target->prim) *buf = hit;
+    else return target;
+    return buf;
 }
 
 bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w)
 {
     const struct camera *cam = &pc->sc->cam;
-    struct vertex at = v[from];
+    const struct vertex *at = &v[from];
+    struct vertex buf;
     struct tee t;
     /* a lone thin-lens vertex still has its lens point (light tracing's t = 1) */
     if (n == 1 && from == 0 && camera_lens_dims(cam) > 0) {
@@ -118,24 +126,29 @@ bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int
     for (int i = from; i < n - 1; i++) {
         tee_begin(&t, w, STREAM_CAMERA, i);
         vec3 d = v3s(0);
-        bool have_d = true;
+        bool have_d = true, follows = i + 1 < n - 1; /* the last block's direction is not replayed */
         if (i == 0) {
             /* the lens point, then the image position seen from the lens point the walk will
              * have (closed loop: the replayed one, within rounding of v[0]) */
             double px, py, pdf;
             if (!camera_invert_lens(cam, v[0].p, &t.base)) return false;
             tee_replay(&t);
-            at.p = camera_sample_lens(cam, &t.base, &pdf);
-            if (!(camera_raster(cam, at.p, dir_to(&at, &v[1]), &px, &py) > 0)) return false;
+            struct vertex z = v[0];
+            z.p = camera_sample_lens(cam, &t.base, &pdf);
+            if (!(camera_raster(cam, z.p, dir_to(&z, &v[1]), &px, &py) > 0)) return false;
             camera_invert(cam, px, py, &t.base);
+            if (!follows) break;
             tee_replay(&t);
-            at.p = camera_sample_lens(cam, &t.base, &pdf);
-            d = camera_sample_dir(cam, at.p, &t.base, &px, &py, &pdf);
+            z.p = camera_sample_lens(cam, &t.base, &pdf);
+            d = camera_sample_dir(cam, z.p, &t.base, &px, &py, &pdf);
+            buf = z;
+            at = &buf;
         } else {
-            if (!scatter(&at, v, i, &t)) return false;
-            have_d = replay_scatter(&at, &t, TRANSPORT_RADIANCE, &d);
+            if (!scatter(at, v, i, &t)) return false;
+            if (!follows) break;
+            have_d = replay_scatter(at, &t, TRANSPORT_RADIANCE, &d);
         }
-        if (i + 1 < n - 1) follow(pc->sc, &at, have_d, d, &t, &v[i + 1]);
+        at = follow(pc->sc, at, have_d, d, &t, &v[i + 1], &buf);
     }
     return true;
 }
@@ -143,35 +156,39 @@ bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int
 bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w)
 {
     const struct scene *sc = pc->sc;
-    struct vertex at = v[from];
+    const struct vertex *at = &v[from];
+    struct vertex buf;
     struct tee t;
     for (int i = from; i < n; i++) {
         tee_begin(&t, w, STREAM_EMITTER, i);
         vec3 d = v3s(0);
-        bool have_d = true;
+        bool have_d = true, follows = i + 1 < n - 1; /* the last block's direction is not replayed */
         if (i == 0 && v[0].kind == VK_ENV) {
             if (!emitter_pick_invert(sc, v[0].prim, &t.base) || !env_invert_dir(sc, env_dir(&v[0]), &t.base) ||
                 !env_invert_origin(sc, env_dir(&v[0]), v[0].p, &t.base))
                 return false;
+            if (!follows) continue;
             tee_replay(&t);
-            have_d = sample_emitter_vertex(sc, &t.base, &at);
-            d = vneg(env_dir(&at));
+            have_d = sample_emitter_vertex(sc, &t.base, &buf);
+            at = &buf;
+            d = vneg(env_dir(at));
         } else if (i == 0) {
             struct emitter_pos pos = {v[0].p, v[0].ng, 0, v[0].tri};
             if (!emitter_pick_invert(sc, v[0].prim, &t.base) || !emitter_invert_pos(sc, v[0].prim, &pos, &t.base))
                 return false;
             if (n > 1 && !emitter_invert_dir(v[0].ng, dir_to(&v[0], &v[1]), &t.base)) return false;
-            if (n > 1) {
-                double pdf;
-                tee_replay(&t);
-                have_d = sample_emitter_vertex(sc, &t.base, &at);
-                if (have_d) d = emitter_sample_dir(at.ng, &t.base, &pdf);
-            }
+            if (!follows) continue;
+            double pdf;
+            tee_replay(&t);
+            have_d = sample_emitter_vertex(sc, &t.base, &buf);
+            at = &buf;
+            if (have_d) d = emitter_sample_dir(at->ng, &t.base, &pdf);
         } else if (i < n - 1) {
-            if (!scatter(&at, v, i, &t)) return false;
-            have_d = replay_scatter(&at, &t, TRANSPORT_IMPORTANCE, &d);
+            if (!scatter(at, v, i, &t)) return false;
+            if (!follows) continue;
+            have_d = replay_scatter(at, &t, TRANSPORT_IMPORTANCE, &d);
         }
-        if (i + 1 < n - 1) follow(sc, &at, have_d, d, &t, &v[i + 1]);
+        if (follows) at = follow(sc, at, have_d, d, &t, &v[i + 1], &buf);
     }
     return true;
 }
