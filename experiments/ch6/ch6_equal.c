@@ -361,6 +361,13 @@ int main(int argc, char **argv)
                                   : ckpt_every > 0 && run_complete(path, csvp, scene);
                 fprintf(stderr, "ch6_equal: %s %s seed %d, %g s%s\n", name, m->name, s, budgets[bi], keep ? " (kept from an earlier run)" : "");
                 if (!keep && run_checkpointed(rv, c, prefix, ckpt_every, log) != 0) fail("a render failed; see ", log);
+                if (keep && ckpt_every > 0) {
+                    /* an interrupt between the render's end and our removal of its checkpoint
+                     * leaves one beside complete outputs: stale, so it goes now */
+                    char ck[4200];
+                    snprintf(ck, sizeof ck, "%.4000s.ckpt", prefix);
+                    unlink(ck);
+                }
                 struct image *im = img_read(path, err, sizeof err);
                 if (!im) fail(err, NULL);
                 if (im->w != ref->w || im->h != ref->h) fail("image and reference sizes differ: ", path);
