@@ -102,28 +102,28 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
         int take, len;
         bool ok;
         if (st == STREAM_EMITTER && n <= 1) {
-            struct vertex y[2];
+            struct vertex y0 = n == 0 ? as_emitter_origin(tgt[c]) : v[0]; /* v[0] is walked afresh */
+            const struct vertex *y1 = NULL;
             take = n == 0;
-            y[0] = n == 0 ? as_emitter_origin(tgt[c]) : v[0];
             len = 1;
             /* From no vertex, y_0 alone first: the direction is inverted in the frame of the normal
              * the emitter's own sampler gives y_0 (a camera hit's normal can differ from it in the
              * sign of a zero component, which turns the frame), by the next pass with n = 1. */
             if (n == 1 && c + take < m) {
-                y[1] = *tgt[c + take];
+                y1 = tgt[c + take];
                 take++;
                 len = 2;
                 /* the environment's origin is a point of the disc on the line through y_1 (for
                  * s = 1 it was any point: a lone y_0 is only connected to along its direction) */
-                if (y[0].kind == VK_ENV) y[0].p = y[1].p;
+                if (y0.kind == VK_ENV) y0.p = y1->p;
             }
-            ok = invert_emitter(pc, y, len, 0, &b->base) &&
-                 walk_extend_to(pc, &b->base, v, len - 1, STREAM_EMITTER, len == 2 ? &y[1] : NULL) == len && !b->bad &&
-                 same_vertex(&v[0], &y[0], tol) && (len < 2 || same_vertex(&v[1], &y[1], tol));
+            ok = (y1 ? invert_step(pc, STREAM_EMITTER, &y0, 1, y1, &b->base) : invert_emitter(pc, &y0, 1, 0, &b->base)) &&
+                 walk_extend_to(pc, &b->base, v, len - 1, STREAM_EMITTER, y1) == len && !b->bad &&
+                 same_vertex(&v[0], &y0, tol) && (!y1 || same_vertex(&v[1], y1, tol));
         } else {
-            v[n] = *tgt[c]; /* the inversion reads the direction toward it */
-            ok = st == STREAM_CAMERA ? invert_camera(pc, v, n + 1, n - 1, &b->base) : invert_emitter(pc, v, n + 1, n - 1, &b->base);
-            ok = ok && walk_extend_to(pc, &b->base, v, n, st, tgt[c]) == n + 1 && !b->bad && same_vertex(&v[n], tgt[c], tol);
+            /* the walk's step must reach the vertex its numbers were inverted toward */
+            ok = invert_step(pc, st, v, n, tgt[c], &b->base) && walk_extend_to(pc, &b->base, v, n, st, tgt[c]) == n + 1 &&
+                 !b->bad && same_vertex(&v[n], tgt[c], tol);
             take = 1;
             len = n + 1;
         }

@@ -91,6 +91,11 @@ bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, 
  * arrived along. */
 bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w);
 bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w);
+/* The last block of a subpath of n >= 1 vertices v[0..n-1] of `stream`, inverted toward vertex
+ * `to`: as invert_camera / invert_emitter with `to` as v[n] and from = n - 1, without `to` being
+ * copied into the subpath (PITP's extension). */
+bool invert_step(const struct path_ctx *pc, int stream, const struct vertex *v, int n, const struct vertex *to,
+                 struct sampler *w);
 
 /* The surface vertex a walk reaches from `prev` along unit d (Alg. 1 line 8: the ray, its
  * self-intersection offset and the surface set-up); false on a miss. Inversion retraces through the

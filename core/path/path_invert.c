@@ -74,19 +74,19 @@ static bool invert_dir(const struct vertex *at, vec3 wo, int i, struct tee *t)
     return bsdf_invert(&at->bc, frame_to_local(&at->sh, at->wi), frame_to_local(&at->sh, wo), &t->base);
 }
 
-/* Block i, first aimed from the walk's vertex `at` at v[i+1] (closed loop). A delta lobe accepts
- * only its own direction, which an offset hit point turns by about twice the offset over the
+/* Block i, first aimed from the walk's vertex `at` at next = v[i+1] (closed loop); cur = v[i].
+ * A delta lobe accepts only its own direction, which an offset hit point turns by about twice the offset over the
  * sphere's radius: then its numbers (the lobe) come from v[i] itself, and the walk follows the lobe
  * from `at`. Last, the direction the walk left v[i] in (-v[i+1].wi, exact where the two points are
  * not: a segment of 0.4 mm from the glass sphere to the floor it touches spans 1e-4 rad of hit
  * rounding), if v[i+1] lies on that ray to within a hit point's rounding. */
-static bool scatter(const struct vertex *at, const struct vertex *v, int i, struct tee *t)
+static bool scatter(const struct vertex *at, const struct vertex *cur, const struct vertex *next, int i, struct tee *t)
 {
-    if (!at->bc.b || !v[i].bc.b) return false;
-    if (invert_dir(at, dir_to(at, &v[i + 1]), i, t) || invert_dir(&v[i], dir_to(&v[i], &v[i + 1]), i, t)) return true;
-    vec3 wo = vneg(v[i + 1].wi), e = vsub(v[i + 1].p, v[i].p);
-    return v[i + 1].kind == VK_SURFACE && vdot(e, wo) > 0 && vlen(vcross(e, wo)) <= ray_eps(v[i + 1].p) &&
-           invert_dir(&v[i], wo, i, t);
+    if (!at->bc.b || !cur->bc.b) return false;
+    if (invert_dir(at, dir_to(at, next), i, t) || invert_dir(cur, dir_to(cur, next), i, t)) return true;
+    vec3 wo = vneg(next->wi), e = vsub(next->p, cur->p);
+    return next->kind == VK_SURFACE && vdot(e, wo) > 0 && vlen(vcross(e, wo)) <= ray_eps(next->p) &&
+           invert_dir(cur, wo, i, t);
 }
 
 /* The direction the walk leaves `at` in, from the block just inverted. */
@@ -97,6 +97,13 @@ static bool replay_scatter(const struct vertex *at, struct tee *t, enum transpor
     if (!bsdf_sample(&at->bc, frame_to_local(&at->sh, at->wi), &t->base, mode, &bs)) return false;
     *d = frame_to_world(&at->sh, bs.wo);
     return true;
+}
+
+/* Vertex i of a subpath given as v[0..n-1] and, if `last` is not NULL, last as vertex n: PITP
+ * inverts toward a vertex of the other subpath without copying it in. */
+static inline const struct vertex *vx(const struct vertex *v, int n, const struct vertex *last, int i)
+{
+    return i < n ? &v[i] : last;
 }
 
 /* The vertex the walk reaches from `at` along d, which the next block is inverted at: the retraced
@@ -112,10 +119,13 @@ static const struct vertex *follow(const struct scene *sc, const struct vertex *
     return buf;
 }
 
-bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w)
+/* Blocks from.. of a camera subpath of n vertices: v[0..n-1], or v[0..n-2] and *last. */
+static bool camera_blocks(const struct path_ctx *pc, const struct vertex *v, int n, const struct vertex *last, int from,
+                          struct sampler *w)
 {
+    int nv = last ? n - 1 : n; /* vertices in v */
     const struct camera *cam = &pc->sc->cam;
-    const struct vertex *at = &v[from];
+    const struct vertex *at = vx(v, nv, last, from);
     struct vertex buf;
     struct tee t;
     /* a lone thin-lens vertex still has its lens point (light tracing's t = 1) */
@@ -135,7 +145,7 @@ bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int
             tee_replay(&t);
             struct vertex z = v[0];
             z.p = camera_sample_lens(cam, &t.base, &pdf);
-            if (!(camera_raster(cam, z.p, dir_to(&z, &v[1]), &px, &py) > 0)) return false;
+            if (!(camera_raster(cam, z.p, dir_to(&z, vx(v, nv, last, 1)), &px, &py) > 0)) return false;
             camera_invert(cam, px, py, &t.base);
             if (!follows) break;
             tee_replay(&t);
@@ -144,19 +154,21 @@ bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int
             buf = z;
             at = &buf;
         } else {
-            if (!scatter(at, v, i, &t)) return false;
+            if (!scatter(at, &v[i], vx(v, nv, last, i + 1), i, &t)) return false;
             if (!follows) break;
             have_d = replay_scatter(at, &t, TRANSPORT_RADIANCE, &d);
         }
-        at = follow(pc->sc, at, have_d, d, &t, &v[i + 1], &buf);
+        at = follow(pc->sc, at, have_d, d, &t, vx(v, nv, last, i + 1), &buf);
     }
     return true;
 }
 
-bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w)
+static bool emitter_blocks(const struct path_ctx *pc, const struct vertex *v, int n, const struct vertex *last, int from,
+                           struct sampler *w)
 {
+    int nv = last ? n - 1 : n;
     const struct scene *sc = pc->sc;
-    const struct vertex *at = &v[from];
+    const struct vertex *at = vx(v, nv, last, from);
     struct vertex buf;
     struct tee t;
     for (int i = from; i < n; i++) {
@@ -176,7 +188,7 @@ bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, in
             struct emitter_pos pos = {v[0].p, v[0].ng, 0, v[0].tri};
             if (!emitter_pick_invert(sc, v[0].prim, &t.base) || !emitter_invert_pos(sc, v[0].prim, &pos, &t.base))
                 return false;
-            if (n > 1 && !emitter_invert_dir(v[0].ng, dir_to(&v[0], &v[1]), &t.base)) return false;
+            if (n > 1 && !emitter_invert_dir(v[0].ng, dir_to(&v[0], vx(v, nv, last, 1)), &t.base)) return false;
             if (!follows) continue;
             double pdf;
             tee_replay(&t);
@@ -184,11 +196,27 @@ bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, in
             at = &buf;
             if (have_d) d = emitter_sample_dir(at->ng, &t.base, &pdf);
         } else if (i < n - 1) {
-            if (!scatter(at, v, i, &t)) return false;
+            if (!scatter(at, &v[i], vx(v, nv, last, i + 1), i, &t)) return false;
             if (!follows) continue;
             have_d = replay_scatter(at, &t, TRANSPORT_IMPORTANCE, &d);
         }
-        if (follows) at = follow(sc, at, have_d, d, &t, &v[i + 1], &buf);
+        if (follows) at = follow(sc, at, have_d, d, &t, vx(v, nv, last, i + 1), &buf);
     }
     return true;
+}
+
+bool invert_camera(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w)
+{
+    return camera_blocks(pc, v, n, NULL, from, w);
+}
+
+bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, int from, struct sampler *w)
+{
+    return emitter_blocks(pc, v, n, NULL, from, w);
+}
+
+bool invert_step(const struct path_ctx *pc, int stream, const struct vertex *v, int n, const struct vertex *to,
+                 struct sampler *w)
+{
+    return stream == STREAM_CAMERA ? camera_blocks(pc, v, n + 1, to, n - 1, w) : emitter_blocks(pc, v, n + 1, to, n - 1, w);
 }
