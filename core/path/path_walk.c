@@ -132,15 +132,18 @@ static int camera_walk(const struct path_ctx *pc, struct sampler *s, struct vert
     if (max_verts < 1) return 0;
     sampler_begin(s, STREAM_CAMERA, 0);
     struct vertex *z = &v[0];
-    double pdf_lens;
-    vec3 lens = camera_sample_lens(cam, s, &pdf_lens);
-    *z = (struct vertex){.kind = VK_CAMERA, .p = lens, .ng = cam->basis.n, .sh = cam->basis,
-                         .front = true, .prim = -1, .tri = -1, .beta = v3s(1), .pdf_fwd = pdf_lens};
+    /* The pinhole's vertex is written in place, its lens point not passed around: every walk
+     * starts here (camera_sample_lens and camera_sample_dir, spelt out). */
+    bool thin_lens = cam->lens_radius > 0;
+    *z = (struct vertex){.kind = VK_CAMERA, .p = cam->pos, .ng = cam->basis.n, .sh = cam->basis,
+                         .front = true, .prim = -1, .tri = -1, .beta = v3s(1), .pdf_fwd = 1};
+    if (thin_lens) z->p = camera_sample_disc(cam, s, &z->pdf_fwd);
     /* A lone camera vertex (light tracing's t = 1) gets its raster position from the connection:
      * drawing a direction would cost two numbers (and, under MCMC, two mutations) for nothing. */
     if (max_verts == 1) return 1;
     double pdf;
-    vec3 d = camera_sample_dir(cam, lens, s, &z->px, &z->py, &pdf);
+    vec3 d = thin_lens ? camera_sample_dir_lens(cam, z->p, s, &z->px, &z->py, &pdf)
+                       : camera_sample_dir_pinhole(cam, s, &z->px, &z->py, &pdf);
     return trace(pc, s, v, 1, max_verts, d, pdf, v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA, to);
 }
 
