@@ -50,7 +50,10 @@ CHECK_fig4.3 := --key method,quantity --mean mean --se se --count seeds --alpha 
 $(eval $(call CHECK,fig4.3,fig4_3,101))
 
 # Thesis Figure 4.5: acceptance of MMLT large steps vs MCTLS per path length (scenes/ajar).
-fig4.5_POST = $(call GNUPLOT,scripts/fig4.5.gp,results/fig4.5/fig4.5.csv,results/fig4.5/fig4.5)
+define fig4.5_POST
+$(call GNUPLOT,scripts/fig4.5.gp,results/fig4.5/fig4.5.csv,results/fig4.5/fig4.5)
+$(call GNUPLOT,scripts/fig4.5-ratio.gp,results/fig4.5/fig4.5-ratios.csv,results/fig4.5/fig4.5-ratio)
+endef
 fig4.5_TABLE := bash scripts/fig4.5-table.sh results/fig4.5/fig4.5.csv
 $(eval $(call FIGURE,fig4.5,fig4_5))
 # Its own seed; every (method, length) acceptance: z-test with batch-means errors, Sidak alpha = 0.01.
