@@ -2,7 +2,8 @@
 # MCTLS's over the thesis-count MMLT large steps' (k + 2 techniques, t = 0 a failed try).
 # usage: gnuplot -e "csv='results/fig4.5/fig4.5-ratios.csv'; out='results/fig4.5/fig4.5-ratio'" scripts/fig4.5-ratio.gp
 set datafile separator ","
-set key top left box opaque
+set key at screen 0.5, screen 0.02 center bottom box
+set bmargin 10
 set title "Acceptance ratios per path length (scenes/ajar)"
 set xlabel "path length (segments)"
 set ylabel "acceptance ratio"
@@ -13,7 +14,7 @@ set yrange [0:*]
 set errorbars small
 sel(m, col) = (strcol(1) eq m) ? column(col) : NaN
 do for [fmt in "png pdf"] {
-    if (fmt eq "png") { set terminal pngcairo size 800,500 font ",11" } else { set terminal pdfcairo size 5in,3.2in font ",9" }
+    if (fmt eq "png") { set terminal pngcairo size 800,620 font ",11" } else { set terminal pdfcairo size 5in,4in font ",9" }
     set output out.".".fmt
     plot csv skip 0 using 2:(sel("mctls/mmlt-large", 3)):(sel("mctls/mmlt-large", 4)) with yerrorlines lw 2 pt 5 title "MCTLS / MMLT large steps (k + 1 techniques)", \
          csv skip 0 using 2:(sel("mctls/mctls-tries1-t0", 3)):(sel("mctls/mctls-tries1-t0", 4)) with yerrorlines lw 2 dt 2 pt 6 title "MCTLS / MMLT large steps among k + 2 (thesis count)", \
