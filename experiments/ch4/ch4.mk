@@ -56,7 +56,7 @@ define fig4.5_POST
 $(call GNUPLOT,scripts/fig4.5.gp,results/fig4.5/fig4.5.csv,results/fig4.5/fig4.5)
 $(call GNUPLOT,scripts/fig4.5-ratio.gp,results/fig4.5/fig4.5-ratios.csv,results/fig4.5/fig4.5-ratio)
 endef
-fig4.5_TABLE := bash scripts/fig4.5-table.sh results/fig4.5/fig4.5.csv
+fig4.5_TABLE := bash scripts/fig4.5-table.sh results/fig4.5/fig4.5.csv results/fig4.5/fig4.5-ratios.csv
 $(eval $(call FIGURE,fig4.5,fig4_5))
 # Its own seed; every (run, length) acceptance of the six runs: z-test with batch-means errors, Sidak alpha = 0.01.
 CHECK_fig4.5 := --key method,length --mean mean_accept --se stderr --alpha 0.01

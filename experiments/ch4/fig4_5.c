@@ -7,8 +7,10 @@
  * pinhole camera, a try that always fails): the thesis's MMLT large step.
  * Writes OUT/fig4.5.csv: method,length,attempts,mean_accept,stderr,accepted_fraction,seconds
  * (seconds: CPU time spent on that length's proposals), OUT/fig4.5-ratios.csv:
- * ratio,length,value,se (each run's acceptance over MMLT large steps', and MCTLS's over the
- * thesis-count MMLT large steps'), and OUT/claims.csv and claims.md: the thesis's statements on
+ * ratio,length,value,se (each run's acceptance over MMLT large steps', MCTLS's over the
+ * thesis-count MMLT large steps', and "contributing-techniques": the mean number of techniques with
+ * a contribution among subpath pairs that have one, from the two runs' shares of such proposals;
+ * "light:mctls/mmlt-large": the ratio of those shares), and OUT/claims.csv and claims.md: the thesis's statements on
  * the figure (§4.3) with their verdicts. */
 #include "base/parallel.h"
 #include "base/util.h"
@@ -40,6 +42,8 @@ static const struct variant {
 /* Mean acceptance and its batch-means standard error per run and length. */
 struct accept_table {
     double mean[NV][MAX_PATH_LENGTH + 1], se[NV][MAX_PATH_LENGTH + 1];
+    double nonzero[NV][MAX_PATH_LENGTH + 1]; /* share of proposals with a contribution (any trial's, for MCTLS) */
+    long attempts[NV][MAX_PATH_LENGTH + 1];
     int K;
 };
 
@@ -51,6 +55,15 @@ static void ratio_of(const struct accept_table *t, int a, int b, int k, double *
 }
 
 static void ratio_at(const struct accept_table *t, int k, double *r, double *se) { ratio_of(t, V_MCTLS, V_MMLT, k, r, se); }
+
+/* MCTLS's share of proposals with a contribution over MMLT large steps' at length k, with its
+ * standard error: a large step's proposal does not depend on the state, so both are binomial. */
+static void light_ratio(const struct accept_table *t, int k, double *r, double *se)
+{
+    double p0 = t->nonzero[V_MMLT][k], p1 = t->nonzero[V_MCTLS][k];
+    *r = p1 / p0;
+    *se = *r * sqrt((1 - p0) / (p0 * t->attempts[V_MMLT][k]) + (1 - p1) / (p1 * t->attempts[V_MCTLS][k]));
+}
 
 /* Thesis §4.3 on Figure 4.5. The errors are one run's batch-means errors, so "seeds_needed" counts
  * runs of this budget. */
@@ -125,6 +138,18 @@ static char *claims(const struct accept_table *t, const char *out, const char *s
     claims_row(&cl, "thesis Fig. 4.5 caption",
                "MCTLS gains with length because longer paths give more trials: at a fixed number of trials the gain "
                "stays flat", stat, "mctls-tries4", r, rse, zs, md, &v);
+    /* the caption's reason read directly: MCTLS's proposals carry light more often than MMLT's by
+     * a factor that grows with length (longest length against length 3) */
+    light_ratio(t, t->K, &r, &rse);
+    light_ratio(t, 3, &r3, &rse3);
+    double lm[2] = {r, r3}, ls[2] = {rse, rse3}, lz[2];
+    const bool two[2] = {true, true};
+    v = verdict_extreme(lm, ls, two, 2, 0, +1, 1, lz);
+    snprintf(zs, sizeof zs, "length3=%.2f", lz[1]);
+    snprintf(md, sizeof md, "length 3: %.3g ± %.2g (z = %.1f)", r3, rse3, lz[1]);
+    snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
+    claims_row(&cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat, "mctls",
+               r, rse, zs, md, &v);
     return claims_finish(&cl, out, err, errlen);
 }
 
@@ -172,6 +197,7 @@ int main(int argc, char **argv)
             fprintf(f, "%s,%d,%ld,%.9g,%.9g,%.9g,%.4f\n", va->name, k, c->attempts, cell_mean(c), cell_stderr(c),
                     (double)c->accepted / c->attempts, c->seconds);
             tab.mean[m][k] = cell_mean(c), tab.se[m][k] = cell_stderr(c);
+            tab.nonzero[m][k] = (double)c->nonzero / c->attempts, tab.attempts[m][k] = c->attempts;
         }
         mlt_result_free(&r);
     }
@@ -194,6 +220,23 @@ int main(int argc, char **argv)
             ratio_of(&tab, pairs[p][0], pairs[p][1], k, &r, &rse);
             fprintf(f, "%s/%s,%d,%.6g,%.3g\n", variants[pairs[p][0]].name, variants[pairs[p][1]].name, k, r, rse);
         }
+    /* How many techniques carry light for a pair of subpaths that has any: a large step's proposal
+     * is independent of the state, so both shares are binomial; an MMLT large step has a
+     * contribution with probability E[n] / (k + 1) and MCTLS's trials with P(n > 0), so
+     * E[n | n > 0] = (k + 1) P_mmlt / P_mctls. */
+    for (int k = 1; k <= K; k++) {
+        double p0 = tab.nonzero[V_MMLT][k], p1 = tab.nonzero[V_MCTLS][k];
+        if (!(p0 > 0 && p1 > 0)) continue;
+        double v = (k + 1) * p0 / p1;
+        double rse = sqrt((1 - p0) / (p0 * tab.attempts[V_MMLT][k]) + (1 - p1) / (p1 * tab.attempts[V_MCTLS][k]));
+        fprintf(f, "contributing-techniques,%d,%.6g,%.3g\n", k, v, v * rse);
+    }
+    for (int k = 1; k <= K; k++) {
+        if (!(tab.nonzero[V_MMLT][k] > 0 && tab.nonzero[V_MCTLS][k] > 0)) continue;
+        double r, rse;
+        light_ratio(&tab, k, &r, &rse);
+        fprintf(f, "light:mctls/mmlt-large,%d,%.6g,%.3g\n", k, r, rse);
+    }
     fclose(f);
     snprintf(path, sizeof path, "%s/fig4.5-ratios.csv", out);
     ok = ok && write_text_atomic(path, buf, err, sizeof err);
