@@ -32,7 +32,7 @@ double mctls_accept(double ysum, double xsum);
  * trials, mctls_tries and mctls_count_t0). Returns the acceptance
  * probability; *acc: accepted, *changed: the picked technique differs from the chain's, *nonzero:
  * any trial contributes. On acceptance the chain's path (c->x, PITP) is the picked technique's. */
-double mctls_step(const struct path_ctx *pc, const struct mlt_opts *o, struct chain *c, struct scratch *w, struct mctls_buf *b, rng *r,
-                  struct image *img, bool *acc, bool *changed, bool *nonzero);
+double mctls_step(const struct path_ctx *pc, const struct mlt_opts *o, struct chain *c, struct scratch *w,
+                  struct mctls_buf *b, rng *r, struct image *img, bool *acc, bool *changed, bool *nonzero);
 
 #endif

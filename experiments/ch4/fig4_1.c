@@ -11,12 +11,12 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
-#include "stats/noise_corr.h"
 #include "ch4/wall_noise.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
 #include "path/scene_ready.h"
+#include "stats/noise_corr.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -44,7 +44,8 @@ static char *claims(const double *ratio, int seeds, double aspect, const char *o
     struct verdict v = verdict_extreme(two, two_se, both, 2, 0, +1, seeds, z);
     snprintf(zs, sizeof zs, "1=%.2f", z[1]);
     snprintf(md, sizeof md, "1 (z = %.1f)", z[1]);
-    claims_row(&cl, src, "isotropic small steps stretch the noise horizontally", "l_x / l_y", "iso", m[0], se[0], zs, md, &v);
+    claims_row(&cl, src, "isotropic small steps stretch the noise horizontally", "l_x / l_y", "iso", m[0], se[0], zs,
+               md, &v);
     const double margin[2] = {0.25, 0.10};
     for (int i = 0; i < 2; i++) {
         v = verdict_similar(m[0], se[0], aspect, 0, margin[i], seeds);
@@ -55,7 +56,8 @@ static char *claims(const double *ratio, int seeds, double aspect, const char *o
     v = verdict_similar(m[1], se[1], 1, 0, 0.10, seeds);
     snprintf(zs, sizeof zs, "1=%.2f", v.zmin);
     snprintf(md, sizeof md, "1 within ±10 %% (z = %.1f)", v.zmin);
-    claims_row(&cl, src, "resolution-aware steps make the noise isotropic", "l_x / l_y", "rap", m[1], se[1], zs, md, &v);
+    claims_row(&cl, src, "resolution-aware steps make the noise isotropic", "l_x / l_y", "rap", m[1], se[1], zs, md,
+               &v);
     return claims_finish(&cl, out, err, errlen);
 }
 
@@ -71,8 +73,8 @@ int main(int argc, char **argv)
         OPT_MPP(mpp, .lo = 0.01, .hi = 1e6, .help = "PSSMLT mutations per pixel", .def = "8", .paper = "64"),
         OPT_SEEDS(seeds, .help = "runs per variant, seeds S..S+N-1", .def = "16", .paper = "16"),
         OPT_P_LARGE(p_large),
-        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 4096, .help = "autocorrelation lags 0..L pixels",
-         .def = "40"},
+        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 4096,
+         .help = "autocorrelation lags 0..L pixels", .def = "40"},
         OPTS_REFERENCE(refpath, refspp, "PT", "results/reference/wall-pt-WxH-SPP.exr", "64", "1024"),
         {0}};
     opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_1 [options]\n", .opts = opts, .paper = &fo.paper},

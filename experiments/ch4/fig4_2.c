@@ -40,8 +40,14 @@ static const int gres[NGLOSSY] = {1024, 512, 256, 512, 256};
 static bool glossy_accept(const struct scene *sc, bool rap_resolution, long mutations, double p_large, uint64_t seed,
                           int threads, double *accept, char *err, size_t errlen)
 {
-    struct mlt_opts o = {.method = MLT_PSSMLT, .p_large = p_large, .mutations = mutations, .seed_paths = 100000,
-                         .seed = seed, .threads = threads, .max_length = sc->max_length, .progress = isatty(2)};
+    struct mlt_opts o = {.method = MLT_PSSMLT,
+                         .p_large = p_large,
+                         .mutations = mutations,
+                         .seed_paths = 100000,
+                         .seed = seed,
+                         .threads = threads,
+                         .max_length = sc->max_length,
+                         .progress = isatty(2)};
     pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
     o.pss.rap = o.pss.rap_resolution = rap_resolution;
     struct mlt_result r;
@@ -49,25 +55,6 @@ static bool glossy_accept(const struct scene *sc, bool rap_resolution, long muta
     *accept = cell_mean(&r.stats.total[PROPOSAL_SMALL]);
     mlt_result_free(&r);
     return true;
-}
-
-/* One claim row: configuration m's mean of the per-run values x (n configurations of `seeds` runs)
- * is the largest (sign +1) or smallest (-1) among those with have[]. */
-static void extreme_row(struct claims *cl, const char *claim, const char *stat, const char *const *names, const double *x,
-                        int n, const bool *have, int m, int sign, int seeds)
-{
-    double mean[NCONF + NGLOSSY], se[NCONF + NGLOSSY], z[NCONF + NGLOSSY];
-    for (int i = 0; i < n; i++)
-        ch4_mean_se(x + i * seeds, seeds, &mean[i], &se[i]);
-    struct verdict v = verdict_extreme(mean, se, have, n, m, sign, seeds, z);
-    char zs[256] = "", md[512] = "";
-    for (int i = 0; i < n; i++) {
-        if (isnan(z[i])) continue;
-        size_t a = strlen(zs), b = strlen(md);
-        snprintf(zs + a, sizeof zs - a, "%s%s=%.2f", a ? ";" : "", names[i], z[i]);
-        snprintf(md + b, sizeof md - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", names[i], mean[i], se[i], z[i]);
-    }
-    claims_row(cl, "thesis §4.1, Fig. 4.2", claim, stat, names[m], mean[m], se[m], zs, md, &v);
 }
 
 /* Thesis §4.1 on Figure 4.2: the diffuse wall's noise at smaller resolutions and with resolution
@@ -81,24 +68,26 @@ static char *claims(const char *const *names, double *const *q, const double *ga
     snprintf(command, sizeof command, "make fig4.2 SCALE=%s", scale);
     claims_begin(&cl, scale, command, "Claims of thesis §4.1 on Fig. 4.2, %d seeds", seeds);
     const bool plain[NCONF] = {true, true, true, false}, at256[NCONF] = {false, false, true, true};
-    extreme_row(&cl, "smaller images get blotchier noise (PSSMLT, equal mutations per pixel)",
-                "lag-1 autocorrelation of the error", names, q[Q_RHO1], NCONF, plain, 2, +1, seeds);
-    extreme_row(&cl, "smaller images get blotchier noise (PSSMLT, equal mutations per pixel)", "relMSE", names,
-                q[Q_RELMSE], NCONF, plain, 2, +1, seeds);
-    extreme_row(&cl, "steps scaled to the resolution remove it at 256²", "lag-1 autocorrelation of the error", names,
-                q[Q_RHO1], NCONF, at256, 3, -1, seeds);
+    const char *src = "thesis §4.1, Fig. 4.2";
+    const char *blotchy = "smaller images get blotchier noise (PSSMLT, equal mutations per pixel)";
+    ch4_claim_extreme(&cl, src, blotchy, "lag-1 autocorrelation of the error", names, q[Q_RHO1], NCONF, plain, 2, +1,
+                      seeds);
+    ch4_claim_extreme(&cl, src, blotchy, "relMSE", names, q[Q_RELMSE], NCONF, plain, 2, +1, seeds);
+    ch4_claim_extreme(&cl, src, "steps scaled to the resolution remove it at 256²",
+                      "lag-1 autocorrelation of the error", names, q[Q_RHO1], NCONF, at256, 3, -1, seeds);
     double m[2], se[2];
     ch4_mean_se(q[Q_RELMSE] + 3 * seeds, seeds, &m[0], &se[0]);
     ch4_mean_se(q[Q_RELMSE], seeds, &m[1], &se[1]);
     struct verdict v = verdict_similar(m[0], se[0], m[1], se[1], 0.05, seeds);
     snprintf(zs, sizeof zs, "pssmlt-1024-5%%=%.2f", v.zmin);
     snprintf(md, sizeof md, "pssmlt-1024 %.4g ± %.2g within ±5 %% (z = %.1f)", m[1], se[1], v.zmin);
-    claims_row(&cl, "thesis §4.1, Fig. 4.2", "steps scaled to the resolution give 256² the relMSE of 1024²", "relMSE",
-               names[3], m[0], se[0], zs, md, &v);
+    claims_row(&cl, src, "steps scaled to the resolution give 256² the relMSE of 1024²", "relMSE", names[3], m[0],
+               se[0], zs, md, &v);
     /* glossy: scaled steps at 256² against unscaled ones at 256² and at 1024² (where the scaling is 1) */
     const bool g[NGLOSSY] = {true, false, true, false, true};
-    extreme_row(&cl, "glossy-to-glossy transport: steps scaled to the resolution lose acceptance as it decreases",
-                "small-step acceptance (scenes/wall-glossy)", gnames, gacc, NGLOSSY, g, 4, -1, seeds);
+    ch4_claim_extreme(&cl, src,
+                      "glossy-to-glossy transport: steps scaled to the resolution lose acceptance as it decreases",
+                      "small-step acceptance (scenes/wall-glossy)", gnames, gacc, NGLOSSY, g, 4, -1, seeds);
     return claims_finish(&cl, out, err, errlen);
 }
 
@@ -114,14 +103,16 @@ int main(int argc, char **argv)
         OPT_MPP(mpp, .lo = 0.01, .hi = 1e6, .help = "PSSMLT mutations per pixel", .def = "4", .paper = "64"),
         OPT_SEEDS(seeds, .help = "runs per configuration, seeds S..S+N-1", .def = "4", .paper = "8"),
         OPT_P_LARGE(p_large),
-        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 255, .help = "autocorrelation lags 0..L pixels",
-         .def = "64"},
+        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 255,
+         .help = "autocorrelation lags 0..L pixels", .def = "64"},
         {"--glossy-scene", OPT_STRING, OPT_DST(glossy_scene), .arg = "FILE",
          .help = "the glossy-to-glossy scene of the acceptance runs", .def = "scenes/wall-glossy/scene.json"},
         {"--glossy-mutations", OPT_INT, OPT_DST(gmut), .arg = "N", .lo = 1000, .hi = 1L << 40,
          .help = "PSSMLT mutations per glossy run, at every resolution", .def = "262144", .paper = "4194304"},
-        OPT_REFERENCE_SPP(refspp, .help = "PT samples per pixel of the references, cached as "
-                                          "results/reference/wall-pt-NxN-SPP.exr", .def = "32", .paper = "1024"),
+        OPT_REFERENCE_SPP(refspp,
+                          .help = "PT samples per pixel of the references, cached as "
+                                  "results/reference/wall-pt-NxN-SPP.exr",
+                          .def = "32", .paper = "1024"),
         {0}};
     opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_2 [options]\n", .opts = opts, .paper = &fo.paper},
                argc, argv);
@@ -239,7 +230,8 @@ int main(int argc, char **argv)
     }
     for (int c = 0; c < NGLOSSY; c++) {
         for (int s = 0; s < seeds; s++)
-            fprintf(fr, "%s,%d,%llu,,,,,,%.6g\n", gnames[c], gres[c], (unsigned long long)(fo.seed + s), gacc[c * seeds + s]);
+            fprintf(fr, "%s,%d,%llu,,,,,,%.6g\n", gnames[c], gres[c], (unsigned long long)(fo.seed + s),
+                    gacc[c * seeds + s]);
         double mean, se;
         ch4_mean_se(gacc + c * seeds, seeds, &mean, &se);
         fprintf(fs, "%s,%d,small_accept,%d,%.6g,%.6g\n", gnames[c], gres[c], seeds, mean, se);

@@ -38,25 +38,6 @@ static bool write_stats(const struct mlt_stats *st, const char *method, const ch
     return ok;
 }
 
-/* One claim: method m has the largest (sign +1) or smallest (-1) mean of quantity x among the
- * methods with have[] (x: NMETH rows of `seeds` runs). */
-static void claim_row(struct claims *cl, const char *claim, const char *stat, const char *const *names, const double *x,
-                      const bool *have, int m, int sign, int seeds)
-{
-    double mean[NMETH], se[NMETH], z[NMETH];
-    for (int i = 0; i < NMETH; i++)
-        ch4_mean_se(x + i * seeds, seeds, &mean[i], &se[i]);
-    struct verdict v = verdict_extreme(mean, se, have, NMETH, m, sign, seeds, z);
-    char zs[256] = "", md[512] = "";
-    for (int i = 0; i < NMETH; i++) {
-        if (isnan(z[i])) continue;
-        size_t a = strlen(zs), b = strlen(md);
-        snprintf(zs + a, sizeof zs - a, "%s%s=%.2f", a ? ";" : "", names[i], z[i]);
-        snprintf(md + b, sizeof md - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", names[i], mean[i], se[i], z[i]);
-    }
-    claims_row(cl, "thesis §4.2, Fig. 4.3", claim, stat, names[m], mean[m], se[m], zs, md, &v);
-}
-
 /* Thesis §4.2 on Figure 4.3, at equal samples per pixel. */
 static char *claims(const char *const *names, const double *rel, const double *acc, int seeds, const char *out,
                     const char *scale, char *err, size_t errlen)
@@ -66,10 +47,13 @@ static char *claims(const char *const *names, const double *rel, const double *a
     snprintf(command, sizeof command, "make fig4.3 SCALE=%s", scale);
     claims_begin(&cl, scale, command, "Claims of thesis §4.2 on Fig. 4.3, %d seeds", seeds);
     const bool mcmc[NMETH] = {false, true, true}, all[NMETH] = {true, true, true};
-    claim_row(&cl, "fixing discrete choices raises PSSMLT's small-step acceptance", "small-step acceptance", names, acc, mcmc,
-              2, +1, seeds);
-    claim_row(&cl, "fixing discrete choices lowers PSSMLT's error", "relMSE", names, rel, mcmc, 2, -1, seeds);
-    claim_row(&cl, "BDPT has difficulty rendering this scene", "relMSE", names, rel, all, 0, +1, seeds);
+    const char *src = "thesis §4.2, Fig. 4.3";
+    ch4_claim_extreme(&cl, src, "fixing discrete choices raises PSSMLT's small-step acceptance",
+                      "small-step acceptance", names, acc, NMETH, mcmc, 2, +1, seeds);
+    ch4_claim_extreme(&cl, src, "fixing discrete choices lowers PSSMLT's error", "relMSE", names, rel, NMETH, mcmc, 2,
+                      -1, seeds);
+    ch4_claim_extreme(&cl, src, "BDPT has difficulty rendering this scene", "relMSE", names, rel, NMETH, all, 0, +1,
+                      seeds);
     return claims_finish(&cl, out, err, errlen);
 }
 

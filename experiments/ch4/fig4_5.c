@@ -34,9 +34,9 @@ static const struct variant {
     int tries;
     bool t0;
 } variants[NV] = {
-    {"mmlt-large", LARGE_MMLT, 0, false},      {"mctls", LARGE_MCTLS, 0, false},
-    {"mctls-tries1", LARGE_MCTLS, 1, false},   {"mctls-tries1-t0", LARGE_MCTLS, 1, true},
-    {"mctls-tries2", LARGE_MCTLS, 2, false},   {"mctls-tries4", LARGE_MCTLS, 4, false},
+    {"mmlt-large", LARGE_MMLT, 0, false},    {"mctls", LARGE_MCTLS, 0, false},
+    {"mctls-tries1", LARGE_MCTLS, 1, false}, {"mctls-tries1-t0", LARGE_MCTLS, 1, true},
+    {"mctls-tries2", LARGE_MCTLS, 2, false}, {"mctls-tries4", LARGE_MCTLS, 4, false},
 };
 
 /* Mean acceptance and its batch-means standard error per run and length. */
@@ -54,7 +54,10 @@ static void ratio_of(const struct accept_table *t, int a, int b, int k, double *
     *se = *r * sqrt(pow(t->se[a][k] / t->mean[a][k], 2) + pow(t->se[b][k] / t->mean[b][k], 2));
 }
 
-static void ratio_at(const struct accept_table *t, int k, double *r, double *se) { ratio_of(t, V_MCTLS, V_MMLT, k, r, se); }
+static void ratio_at(const struct accept_table *t, int k, double *r, double *se)
+{
+    ratio_of(t, V_MCTLS, V_MMLT, k, r, se);
+}
 
 /* MCTLS's share of proposals with a contribution over MMLT large steps' at length k, with its
  * standard error: a large step's proposal does not depend on the state, so both are binomial. */
@@ -117,14 +120,15 @@ static char *claims(const struct accept_table *t, const char *out, const char *s
     snprintf(zs, sizeof zs, "mmlt-large5%%=%.2f", v.zmin);
     snprintf(md, sizeof md, "MMLT large steps %.4g ± %.2g within ±5 %% (z = %.1f)", m0, sqrt(s0), v.zmin);
     snprintf(stat, sizeof stat, "large-step acceptance, mean over lengths 2-%d", t->K);
-    claims_row(&cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1, sqrt(s1),
-               zs, md, &v);
+    claims_row(&cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1,
+               sqrt(s1), zs, md, &v);
     /* the thesis's count: its MMLT large steps draw among k + 2 techniques, t = 0 always failing */
     ratio_of(t, V_MCTLS, V_TRIES1_T0, t->K, &r, &rse);
     v = verdict_similar(r, rse, 5, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% at length %d (z = %.1f)", t->K, v.zmin);
-    claims_row(&cl, "thesis §4.3", "up to five times at the longest length, counting k + 2 techniques as the thesis does",
+    claims_row(&cl, "thesis §4.3",
+               "up to five times at the longest length, counting k + 2 techniques as the thesis does",
                "acceptance ratio MCTLS / MMLT large steps among k + 2", "mctls", r, rse, zs, md, &v);
     /* the caption's reason: longer paths give more trials. With a fixed number of trials (4) the
      * ratio to MMLT should then not grow from length 3 (4 techniques) to the longest */
@@ -137,7 +141,8 @@ static char *claims(const struct accept_table *t, const char *out, const char *s
     snprintf(stat, sizeof stat, "acceptance ratio, 4 drawn trials / MMLT, at length %d", t->K);
     claims_row(&cl, "thesis Fig. 4.5 caption",
                "MCTLS gains with length because longer paths give more trials: at a fixed number of trials the gain "
-               "stays flat", stat, "mctls-tries4", r, rse, zs, md, &v);
+               "stays flat",
+               stat, "mctls-tries4", r, rse, zs, md, &v);
     /* the caption's reason read directly: MCTLS's proposals carry light more often than MMLT's by
      * a factor that grows with length (longest length against length 3) */
     light_ratio(t, t->K, &r, &rse);
@@ -148,8 +153,8 @@ static char *claims(const struct accept_table *t, const char *out, const char *s
     snprintf(zs, sizeof zs, "length3=%.2f", lz[1]);
     snprintf(md, sizeof md, "length 3: %.3g ± %.2g (z = %.1f)", r3, rse3, lz[1]);
     snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
-    claims_row(&cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat, "mctls",
-               r, rse, zs, md, &v);
+    claims_row(&cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
+               "mctls", r, rse, zs, md, &v);
     return claims_finish(&cl, out, err, errlen);
 }
 
@@ -169,8 +174,9 @@ int main(int argc, char **argv)
     FILE *f = open_memstream(&buf, &len);
     csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets", a.fig.scene,
                   a.fig.scale);
-    csv_meta(f, NULL, "mctls-triesN: MCTLS with N trials drawn uniformly among the k + 1 techniques (Eq. 4.5; N = 1 is "
-                      "an MMLT large step); -t0: among k + 2, t = 0 a try that always fails (the thesis's count)");
+    csv_meta(f, NULL,
+             "mctls-triesN: MCTLS with N trials drawn uniformly among the k + 1 techniques (Eq. 4.5; N = 1 is "
+             "an MMLT large step); -t0: among k + 2, t = 0 a try that always fails (the thesis's count)");
     csv_meta(f, "seed", "%llu", (unsigned long long)seed);
     csv_meta(f, "threads", "%d", threads);
     csv_meta(f, "mutations_per_method", "%ld", mutations);
@@ -178,10 +184,19 @@ int main(int argc, char **argv)
     struct accept_table tab = {.K = K};
     for (int m = 0; m < NV; m++) {
         const struct variant *va = &variants[m];
-        struct mlt_opts o = {.method = MLT_MMLT, .p_large = 1, .mutations = mutations, .seed_paths = paper ? 1000000 : 100000,
-                             .seed = seed, .threads = threads, .max_length = K, .progress = isatty(2),
-                             .large_step = va->step, .mctls_tries = va->tries, .mctls_count_t0 = va->t0,
-                             .uniform_lengths = true, .time_proposals = true};
+        struct mlt_opts o = {.method = MLT_MMLT,
+                             .p_large = 1,
+                             .mutations = mutations,
+                             .seed_paths = paper ? 1000000 : 100000,
+                             .seed = seed,
+                             .threads = threads,
+                             .max_length = K,
+                             .progress = isatty(2),
+                             .large_step = va->step,
+                             .mctls_tries = va->tries,
+                             .mctls_count_t0 = va->t0,
+                             .uniform_lengths = true,
+                             .time_proposals = true};
         pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
         fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", va->name, mutations, K);
         struct mlt_result r;
@@ -211,8 +226,8 @@ int main(int argc, char **argv)
     csv_meta_head(f, "fig4.5: acceptance ratios per length (first-order standard errors from the batch-means errors)",
                   a.fig.scene, a.fig.scale);
     fprintf(f, "ratio,length,value,se\n");
-    const int pairs[][2] = {{V_MCTLS, V_MMLT}, {V_MCTLS, V_TRIES1_T0}, {V_TRIES1, V_MMLT}, {V_TRIES2, V_MMLT},
-                            {V_TRIES4, V_MMLT}};
+    const int pairs[][2] = {
+        {V_MCTLS, V_MMLT}, {V_MCTLS, V_TRIES1_T0}, {V_TRIES1, V_MMLT}, {V_TRIES2, V_MMLT}, {V_TRIES4, V_MMLT}};
     for (size_t p = 0; p < sizeof pairs / sizeof *pairs; p++)
         for (int k = 1; k <= K; k++) {
             if (!(tab.mean[pairs[p][0]][k] > 0 && tab.mean[pairs[p][1]][k] > 0)) continue;

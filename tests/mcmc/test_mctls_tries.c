@@ -3,12 +3,12 @@
  * the thesis's k + 2 techniques (t = 0 always failing); the option's refusals. */
 #include <criterion/criterion.h>
 
-#include "support/agree.h"
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "mcmc/mctls.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
+#include "support/agree.h"
 #include "support/scenes.h"
 #include <stdio.h>
 #include <string.h>
@@ -54,9 +54,16 @@ Test(stat_mctls_tries, drawn_trials_agree_with_bdpt_on_cornell_box, .timeout = 6
     } cfg[] = {{"2 trials", 2, false}, {"1 trial among k + 2", 1, true}};
     const int n = sizeof cfg / sizeof *cfg;
     for (int i = 0; i < n; i++) {
-        struct tries_ctx c = {sc, {.method = MLT_MMLT, .p_large = 0.5, .mutations = 16L * 64 * 64, .seed_paths = 10000,
-                                   .threads = 2, .max_length = 8, .large_step = LARGE_MCTLS, .mctls_tries = cfg[i].tries,
-                                   .mctls_count_t0 = cfg[i].t0}};
+        struct tries_ctx c = {sc,
+                              {.method = MLT_MMLT,
+                               .p_large = 0.5,
+                               .mutations = 16L * 64 * 64,
+                               .seed_paths = 10000,
+                               .threads = 2,
+                               .max_length = 8,
+                               .large_step = LARGE_MCTLS,
+                               .mctls_tries = cfg[i].tries,
+                               .mctls_count_t0 = cfg[i].t0}};
         pss_opts_default(&c.o.pss, 64, 64);
         stack_runs(&a, render_tries, &c, 12, 5000 + 100 * i, 8);
         double pm, worst;
@@ -84,8 +91,14 @@ Test(mctls_tries, refused_combinations)
                {MLT_MMLT, LARGE_MCTLS, MCTLS_MAX_TRIES + 1, false},
                {MLT_MMLT, LARGE_MCTLS, -1, false}};
     for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
-        struct mlt_opts o = {.method = bad[i].m, .p_large = 0.5, .mutations = 1000, .seed_paths = 1000, .threads = 1,
-                             .max_length = 4, .large_step = bad[i].ls, .mctls_tries = bad[i].tries,
+        struct mlt_opts o = {.method = bad[i].m,
+                             .p_large = 0.5,
+                             .mutations = 1000,
+                             .seed_paths = 1000,
+                             .threads = 1,
+                             .max_length = 4,
+                             .large_step = bad[i].ls,
+                             .mctls_tries = bad[i].tries,
                              .mctls_count_t0 = bad[i].t0};
         pss_opts_default(&o.pss, 16, 16);
         struct mlt_result r;
