@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Markdown table of results/fig4.2/fig4.2.csv: per configuration the error's correlation lengths in
 # pixels and as a fraction of the image width, lag-1 autocorrelation, relMSE and small-step
-# acceptance (mean ± standard error over seeds), then the thesis's claim. usage: fig4.2-table.sh CSV
+# acceptance (mean ± standard error over seeds); the glossy-to-glossy scene's small-step acceptance
+# per resolution without and with --rap-resolution; then the thesis's claim. usage: fig4.2-table.sh CSV
 set -euo pipefail
 awk -F, '
 /^# mutations_per_pixel/ { mpp = $0; sub(/^# mutations_per_pixel /, "", mpp) }
 /^# p_large/ { pl = $0; sub(/^# p_large /, "", pl) }
+/^# glossy/ { gl = $0; sub(/^# glossy /, "", gl) }
 /^#/ || $1 == "config" { next }
 { m[$1, $3] = $5; s[$1, $3] = $6; r[$1] = $2; n = $4 }
 function f(c, q, d) { return sprintf("%." d "f ± %." d "f", m[c, q], s[c, q]) }
@@ -21,5 +23,16 @@ END {
         printf "| %s | %s | %s | %.4f | %.3f | %s | %.4f |\n", name[c], f(c, "l_x", 2), f(c, "l_y", 2), m[c, "l"] / r[c], \
             m[c, "rho1"], f(c, "relmse", 4), m[c, "small_accept"]
     }
-    print "\nThesis: smaller images get smaller steps in pixels, so the chain lingers on a pixel longer and the noise is blotchier (higher error at equal mutations per pixel); scaling the steps to the resolution (d) removes it."
+    if (("glossy-pssmlt-256", "small_accept") in m) {
+        printf "\nGlossy-to-glossy (%s): small-step acceptance per resolution.\n\n", gl
+        print "| resolution | PSSMLT | `--rap-resolution` |"
+        print "| ---: | ---: | ---: |"
+        split("1024 512 256", R, " ")
+        for (i = 1; i <= 3; i++) {
+            g = "glossy-rap-resolution-" R[i]
+            printf "| %s² | %s | %s |\n", R[i], f("glossy-pssmlt-" R[i], "small_accept", 4), \
+                ((g, "small_accept") in m) ? f(g, "small_accept", 4) : "(scaling 1: as PSSMLT)"
+        }
+    }
+    print "\nThesis: smaller images get smaller steps in pixels, so the chain lingers on a pixel longer and the noise is blotchier (higher error at equal mutations per pixel); scaling the steps to the resolution (d) removes it; in glossy-to-glossy transport such scaling lowers acceptance as the resolution decreases."
 }' "$1"

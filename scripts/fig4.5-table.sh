@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # Markdown table of results/fig4.5/fig4.5.csv: per length, both methods' mean acceptance with its
-# batch-means standard error, and the MCTLS / MMLT ratio. usage: fig4.5-table.sh CSV > TABLE.md
+# batch-means standard error, and the MCTLS / MMLT ratio; then the ratios of the other runs
+# (fixed numbers of drawn trials, the thesis's k + 2 count) and, from RATIOS (fig4.5-ratios.csv), the
+# mean number of techniques that carry light for a pair of subpaths that has any.
+# usage: fig4.5-table.sh CSV [RATIOS] > TABLE.md
 set -euo pipefail
 awk -F, '
-/^#/ || $1 == "method" { next }
+/^#/ || $1 == "method" || $1 == "ratio" { next }
+FILENAME != ARGV[1] { if ($1 == "contributing-techniques") { ct[$2 + 0] = $3; cts[$2 + 0] = $4 }; next }
 { key = $2 + 0; m[$1, key] = $4; s[$1, key] = $5; if (key > K) K = key }
 END {
     print "| length | MMLT large steps | MCTLS | MCTLS / MMLT |"
@@ -14,4 +18,19 @@ END {
         r = (a > 0) ? sprintf("%.2f", b / a) : "–"
         printf "| %d | %.5f ± %.5f | %.5f ± %.5f | %s |\n", k, a, s["mmlt-large", k], b, s["mctls", k], r
     }
-}' "$1"
+    if (!(("mctls-tries1-t0", K) in m)) exit
+    print ""
+    print "Acceptance over MMLT large steps per length: with 1, 2, 4 trials drawn uniformly among the k + 1 techniques, and MCTLS over MMLT large steps drawn among k + 2 (the thesis count, t = 0 a failed try):"
+    print ""
+    print "| length | 1 trial / MMLT | 2 trials / MMLT | 4 trials / MMLT | MCTLS / MMLT (k + 1) | MCTLS / MMLT (k + 2) | techniques with light, of k + 1 | proposals with light, MCTLS / MMLT | acceptance given light, MCTLS / MMLT |"
+    print "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+    for (k = 1; k <= K; k++) {
+        a = m["mmlt-large", k]; t = m["mctls-tries1-t0", k]
+        if (!(a > 0) || !(t > 0)) continue
+        c = (k in ct) ? sprintf("%.2f ± %.2f of %d", ct[k], cts[k], k + 1) : "–"
+        # E[min(1, a)] = P(light) E[min(1, a) | light]: the ratio splits into the two factors
+        l = (k in ct) ? sprintf("%.2f", (k + 1) / ct[k]) : "–"
+        g = (k in ct) ? sprintf("%.2f", m["mctls", k] / a * ct[k] / (k + 1)) : "–"
+        printf "| %d | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %s | %s |\n", k, m["mctls-tries1", k] / a, m["mctls-tries2", k] / a, m["mctls-tries4", k] / a, m["mctls", k] / a, m["mctls", k] / t, c, l, g
+    }
+}' "$@"

@@ -187,7 +187,7 @@ static void iterate(struct worker *wk)
     if (large && use_mctls(o, c->k)) {
         bool acc, changed, nonzero;
         wk->w->conn_tried = wk->w->conn_nonzero = 0;
-        double a = mctls_step(&wk->pc, c, wk->w, wk->mb, &wk->r, wk->img, &acc, &changed, &nonzero);
+        double a = mctls_step(&wk->pc, o, c, wk->w, wk->mb, &wk->r, wk->img, &acc, &changed, &nonzero);
         take_connections(wk);
         stats_record(wk->st, PROPOSAL_MCTLS, c->k, changed, a, acc, nonzero, elapsed(o, t_start));
         return;

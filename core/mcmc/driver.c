@@ -35,6 +35,14 @@ static bool check_opts(const struct mlt_opts *o, char *err, size_t errlen)
         snprintf(err, errlen, "technique images are not merged across MPI ranks: make them without mpirun");
         return false;
     }
+    if ((o->mctls_tries || o->mctls_count_t0) &&
+        (o->method == MLT_PSSMLT || o->large_step == LARGE_MMLT || o->mctls_tries < (o->mctls_count_t0 ? 1 : 0) ||
+         o->mctls_tries > MCTLS_MAX_TRIES)) {
+        /* Eq. 4.7's sums do not change by a zero term: counting t = 0 needs drawn trials */
+        snprintf(err, errlen, "MCTLS trials: 1..%d, with mmlt or pitp and MCTLS large steps; counting t = 0 needs them",
+                 MCTLS_MAX_TRIES);
+        return false;
+    }
     if (o->angle_stats && (o->method == MLT_PSSMLT || o->large_step != LARGE_MMLT)) {
         snprintf(err, errlen, "angle statistics need mmlt or pitp with MMLT large steps");
         return false;

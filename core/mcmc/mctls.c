@@ -57,17 +57,57 @@ static void keep_path(const struct path_ctx *pc, struct mmlt_path *x, const stru
     connect_st(pc, x->emi, x->s, x->cam, t, k, &c, x->ratios);
 }
 
-double mctls_step(const struct path_ctx *pc, struct chain *c, struct scratch *w, struct mctls_buf *b, rng *r,
-                  struct image *img, bool *acc, bool *changed, bool *nonzero)
+/* A technique drawn uniformly among the k + 1 (t = 1..k+1) or, counting t = 0, the k + 2 the thesis
+ * counts. */
+static int draw_technique(int k, bool t0, rng *r)
 {
-    int k = c->k;
-    if (!c->xsum_valid) {
-        c->xsum = all_techniques(pc, &c->pss.base, w, k, b->xpi, b->xsp);
-        c->xsum_valid = true;
-    }
+    int n = k + 1 + t0, t = (int)(n * rng_uniform(r));
+    return (t < n ? t : n - 1) + !t0;
+}
+
+/* Eq. 4.5 with n trials (mlt_opts.mctls_tries): the current state's trials x_1..x_{n-1} drawn with
+ * its own technique as x_n, the proposal's y_1..y_n; returns the sum over the y_i and sets *j to
+ * the picked one's technique (0 when none has a target; pi[0] is 0, the camera hit) and *xsum. */
+static double drawn_trials(const struct path_ctx *pc, struct chain *c, struct scratch *w, struct mctls_buf *b, rng *r,
+                           int n, bool t0, int *j, double *xsum)
+{
+    int k = c->k, tech[MCTLS_MAX_TRIES];
+    double wt[MCTLS_MAX_TRIES];
+    all_techniques(pc, &c->pss.base, w, k, b->xpi, b->xsp);
+    b->xpi[0] = 0;
+    *xsum = b->xpi[c->tech];
+    for (int i = 1; i < n; i++)
+        *xsum += b->xpi[draw_technique(k, t0, r)];
     pss_begin(&c->pss, true);
-    double ysum = all_techniques(pc, &c->pss.base, w, k, b->pi, b->sp);
-    int j = ysum > 0 ? pick_weighted(b->pi + 1, k + 1, rng_uniform(r)) + 1 : 0;
+    all_techniques(pc, &c->pss.base, w, k, b->pi, b->sp);
+    b->pi[0] = 0;
+    double ysum = 0;
+    for (int i = 0; i < n; i++) {
+        tech[i] = draw_technique(k, t0, r);
+        wt[i] = b->pi[tech[i]];
+        ysum += wt[i];
+    }
+    *j = ysum > 0 ? tech[pick_weighted(wt, n, rng_uniform(r))] : 0;
+    return ysum;
+}
+
+double mctls_step(const struct path_ctx *pc, const struct mlt_opts *o, struct chain *c, struct scratch *w,
+                  struct mctls_buf *b, rng *r, struct image *img, bool *acc, bool *changed, bool *nonzero)
+{
+    int k = c->k, j;
+    double ysum;
+    if (o->mctls_tries > 0) {
+        ysum = drawn_trials(pc, c, w, b, r, o->mctls_tries, o->mctls_count_t0, &j, &c->xsum);
+        c->xsum_valid = false;
+    } else {
+        if (!c->xsum_valid) {
+            c->xsum = all_techniques(pc, &c->pss.base, w, k, b->xpi, b->xsp);
+            c->xsum_valid = true;
+        }
+        pss_begin(&c->pss, true);
+        ysum = all_techniques(pc, &c->pss.base, w, k, b->pi, b->sp);
+        j = ysum > 0 ? pick_weighted(b->pi + 1, k + 1, rng_uniform(r)) + 1 : 0;
+    }
     double a = mctls_accept(ysum, c->xsum);
     /* expected values (splat_ev.h); a trial with a target whenever any has one */
     if (ysum > 0) splat_list_weighted(img, &b->sp[j], a * c->scale / b->pi[j], c->dropped);
@@ -82,6 +122,7 @@ double mctls_step(const struct path_ctx *pc, struct chain *c, struct scratch *w,
         move_to(img, c, &b->sp[j], b->pi[j]);
         c->tech = j;
         c->xsum = ysum;
+        c->xsum_valid = o->mctls_tries == 0;
         if (c->x) keep_path(pc, c->x, w, k, j);
     } else {
         pss_reject(&c->pss);

@@ -11,6 +11,9 @@
 #include "mcmc/chain.h"
 #include "mcmc/mlt.h"
 
+/* The most trials mlt_opts.mctls_tries may ask for. */
+#define MCTLS_MAX_TRIES 64
+
 /* Per-thread buffers: the targets and splats of the k + 1 trials, for the proposal and for the
  * current numbers (index t = 1..k+1). */
 struct mctls_buf {
@@ -25,10 +28,11 @@ bool use_mctls(const struct mlt_opts *o, int k);
 double mctls_accept(double ysum, double xsum);
 
 /* One MCTLS proposal for chain c, splatted with expected values into img (r: the thread's
- * generator, for the pick, the acceptance and the new technique number). Returns the acceptance
+ * generator, for the pick, the acceptance, the new technique number and drawn trials; o: the
+ * trials, mctls_tries and mctls_count_t0). Returns the acceptance
  * probability; *acc: accepted, *changed: the picked technique differs from the chain's, *nonzero:
  * any trial contributes. On acceptance the chain's path (c->x, PITP) is the picked technique's. */
-double mctls_step(const struct path_ctx *pc, struct chain *c, struct scratch *w, struct mctls_buf *b, rng *r,
-                  struct image *img, bool *acc, bool *changed, bool *nonzero);
+double mctls_step(const struct path_ctx *pc, const struct mlt_opts *o, struct chain *c, struct scratch *w,
+                  struct mctls_buf *b, rng *r, struct image *img, bool *acc, bool *changed, bool *nonzero);
 
 #endif

@@ -59,6 +59,15 @@ struct mlt_opts {
     bool progress;
     enum large_step large_step;  /* MMLT only */
     int hybrid_length;
+    /* MCTLS's trials, for analysis (fig4.5): 0 = every technique once (Eq. 4.7, the limit of many
+     * trials); N > 0 = Eq. 4.5 with N trials whose techniques are drawn uniformly with replacement,
+     * the denominator the current state's own technique and N - 1 drawn ones (MCTM with N
+     * correlated tries; N = 1 is an MMLT large step). mctls_count_t0 (only with N > 0) draws them
+     * among k + 2 techniques, as the thesis counts them: t = 0, a hit on the pinhole camera, is a try
+     * with no contribution. Both recompute the current state's trials at every step: their timings
+     * and connection counts are not those of Eq. 4.7's. */
+    int mctls_tries;
+    bool mctls_count_t0;
     bool uniform_lengths;        /* MMLT: every length gets the same share of mutations, not b_k */
     bool time_proposals;         /* record each proposal's time in the statistics (two clock reads) */
     bool max_heuristic;          /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */

@@ -16,7 +16,8 @@ bash scripts/ch4-montage.sh results/fig4.1/fig4.1.png 2 640x360 \
 endef
 fig4.1_TABLE := bash scripts/fig4.1-table.sh results/fig4.1/fig4.1.csv
 $(eval $(call FIGURE,fig4.1,fig4_1))
-# Other seeds (101..108); every (variant, quantity) mean: Welch t over the seeds, Sidak alpha = 0.01.
+# Other seeds (101..116); every (variant, quantity) mean, l_x / l_y of the claims among them: Welch t over
+# the seeds, Sidak alpha = 0.01.
 CHECK_fig4.1 := --key variant,quantity --mean mean --se se --count seeds --alpha 0.01
 $(eval $(call CHECK,fig4.1,fig4_1,101))
 
@@ -31,7 +32,8 @@ bash scripts/ch4-montage.sh results/fig4.2/fig4.2.png 4 384x384 \
 endef
 fig4.2_TABLE := bash scripts/fig4.2-table.sh results/fig4.2/fig4.2.csv
 $(eval $(call FIGURE,fig4.2,fig4_2))
-# Other seeds (101..104); every (configuration, quantity) mean: Welch t over the seeds, Sidak alpha = 0.01.
+# Other seeds (101..104); every (configuration, quantity) mean, the glossy acceptances among them: Welch t
+# over the seeds, Sidak alpha = 0.01.
 CHECK_fig4.2 := --key config,quantity --mean mean --se se --count seeds --alpha 0.01
 $(eval $(call CHECK,fig4.2,fig4_2,101))
 
@@ -45,17 +47,29 @@ bash scripts/ch4-montage.sh results/fig4.3/fig4.3.png 2 512x288 \
 endef
 fig4.3_TABLE := bash scripts/fig4.3-table.sh results/fig4.3/fig4.3.csv results/fig4.3/fig4.3-runs.csv
 $(eval $(call FIGURE,fig4.3,fig4_3))
-# Other seeds (101..106); relMSE and small-step acceptance per method: Welch t over seeds, Sidak alpha = 0.01.
+# Other seeds (101..124); relMSE and small-step acceptance per method: Welch t over seeds, Sidak alpha = 0.01.
 CHECK_fig4.3 := --key method,quantity --mean mean --se se --count seeds --alpha 0.01
 $(eval $(call CHECK,fig4.3,fig4_3,101))
 
 # Thesis Figure 4.5: acceptance of MMLT large steps vs MCTLS per path length (scenes/ajar).
-fig4.5_POST = $(call GNUPLOT,scripts/fig4.5.gp,results/fig4.5/fig4.5.csv,results/fig4.5/fig4.5)
-fig4.5_TABLE := bash scripts/fig4.5-table.sh results/fig4.5/fig4.5.csv
+define fig4.5_POST
+$(call GNUPLOT,scripts/fig4.5.gp,results/fig4.5/fig4.5.csv,results/fig4.5/fig4.5)
+$(call GNUPLOT,scripts/fig4.5-ratio.gp,results/fig4.5/fig4.5-ratios.csv,results/fig4.5/fig4.5-ratio)
+endef
+fig4.5_TABLE := bash scripts/fig4.5-table.sh results/fig4.5/fig4.5.csv results/fig4.5/fig4.5-ratios.csv
 $(eval $(call FIGURE,fig4.5,fig4_5))
-# Its own seed; every (method, length) acceptance: z-test with batch-means errors, Sidak alpha = 0.01.
+# Its own seed; every (run, length) acceptance of the six runs: z-test with batch-means errors, Sidak
+# alpha = 0.01; then, the same way, every (ratio, length) row of fig4.5-ratios.csv, which holds the
+# claims' shares of proposals with light (binomial errors) that fig4.5.csv does not. Written out
+# rather than through CHECK for that second comparison.
 CHECK_fig4.5 := --key method,length --mean mean_accept --se stderr --alpha 0.01
-$(eval $(call CHECK,fig4.5,fig4_5,2))
+.PHONY: check-fig4.5
+check-fig4.5: deps $(BIN)/fig4_5 $(CHECK_STATS)
+	$(BIN)/fig4_5 --scale quick --seed 2 --out results/check-fig4.5
+	$(CHECK_STATS) $(CHECK_fig4.5) --out results/check-fig4.5/check.md results/baselines/fig4.5/fig4.5.csv results/check-fig4.5/fig4.5.csv
+	$(CHECK_STATS) --key ratio,length --mean value --se se --alpha 0.01 --out results/check-fig4.5/check-ratios.md \
+	  results/baselines/fig4.5/fig4.5-ratios.csv results/check-fig4.5/fig4.5-ratios.csv
+CHECK_TARGETS += check-fig4.5
 
 # Thesis Figure 4.6: equal-time renders, MMLT large steps vs MCTLS vs the hybrid, relMSE vs BDPT.
 define fig4.6_POST

@@ -131,3 +131,21 @@ void ch4_meta_runs(FILE *f, uint64_t seed, int seeds, int threads)
     csv_meta(f, "seeds", "%llu..%llu", (unsigned long long)seed, (unsigned long long)(seed + seeds - 1));
     csv_meta(f, "threads", "%d", threads);
 }
+
+void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim, const char *stat,
+                       const char *const *names, const double *x, int n, const bool *have, int m, int sign, int seeds)
+{
+    double mean[CH4_MAX_METHODS] = {0}, se[CH4_MAX_METHODS] = {0}, z[CH4_MAX_METHODS];
+    if (n > CH4_MAX_METHODS) n = CH4_MAX_METHODS;
+    for (int i = 0; i < n; i++)
+        ch4_mean_se(x + i * seeds, seeds, &mean[i], &se[i]);
+    struct verdict v = verdict_extreme(mean, se, have, n, m, sign, seeds, z);
+    char zs[512] = "", md[1024] = "";
+    for (int i = 0; i < n; i++) {
+        if (isnan(z[i])) continue;
+        size_t a = strlen(zs), b = strlen(md);
+        snprintf(zs + a, sizeof zs - a, "%s%s=%.2f", a ? ";" : "", names[i], z[i]);
+        snprintf(md + b, sizeof md - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", names[i], mean[i], se[i], z[i]);
+    }
+    claims_row(cl, source, claim, stat, names[m], mean[m], se[m], zs, md, &v);
+}

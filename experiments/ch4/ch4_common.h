@@ -3,6 +3,7 @@
 #ifndef CH4_COMMON_H
 #define CH4_COMMON_H
 
+#include "common/claims.h"
 #include "io/image.h"
 #include "mc/render.h"
 #include "scene/scene.h"
@@ -26,6 +27,14 @@ void ch4_mean_se(const double *x, int n, double *mean, double *se);
 /* Variance of a reference's pixel noise (luminance), from neighbouring-pixel differences:
  * mean((R(x+1,y) - R(x,y))^2) / 2, which the smooth image itself barely raises. */
 double ch4_pixel_noise_var(const struct image *ref);
+/* The most methods (configurations) a claim row compares. */
+#define CH4_MAX_METHODS 16
+
+/* A claims row (claims.h) for "method m has the largest (sign +1) or smallest (-1) mean" among the
+ * n methods with have[]: x holds `seeds` per-run values per method (method i at x + i * seeds);
+ * the verdict is verdict_extreme's over the seeds, the row lists every other method's mean and z. */
+void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim, const char *stat,
+                       const char *const *names, const double *x, int n, const bool *have, int m, int sign, int seeds);
 /* mkdir -p for one or two levels; false with a message on failure. */
 bool ch4_mkdir(const char *dir, char *err, size_t errlen);
 

@@ -5,22 +5,61 @@
  * y, the correlation lengths where it falls below 1/e, and their ratio, over several seeds.
  * Writes OUT/fig4.1.csv (variant,quantity,seeds,mean,se), OUT/fig4.1-runs.csv (one row per run),
  * OUT/fig4.1-profiles.csv (variant,lag,rho_x,rho_x_se,rho_y,rho_y_se), and the first seed's
- * images {iso,rap}.{exr,png}, error-{iso,rap}.png and reference.{exr,png}. */
+ * images {iso,rap}.{exr,png}, error-{iso,rap}.png and reference.{exr,png}; OUT/claims.csv and claims.md:
+ * the thesis's statements on the figure (§4.1) with their verdicts over the seeds. */
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
-#include "stats/noise_corr.h"
 #include "ch4/wall_noise.h"
+#include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
 #include "path/scene_ready.h"
+#include "stats/noise_corr.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define NVAR 2
+
+/* Thesis §4.1 on Figure 4.1, from l_x / l_y of each run (ratio[v * seeds + s]). "About the aspect
+ * ratio" is read as within ±25 % (the ledger's margin for "about", as in fig4.5) and shown at ±10 %
+ * too; "isotropic" as within ±10 % of 1. */
+static char *claims(const double *ratio, int seeds, double aspect, const char *out, const char *scale, char *err,
+                    size_t errlen)
+{
+    struct claims cl;
+    char command[64], zs[128], md[256];
+    snprintf(command, sizeof command, "make fig4.1 SCALE=%s", scale);
+    claims_begin(&cl, scale, command, "Claims of thesis §4.1 on Fig. 4.1, %d seeds, aspect ratio %.3g", seeds, aspect);
+    double m[NVAR], se[NVAR];
+    for (int v = 0; v < NVAR; v++)
+        ch4_mean_se(ratio + v * seeds, seeds, &m[v], &se[v]);
+    const char *src = "thesis §4.1, Fig. 4.1";
+    /* stretched: the isotropic kernel's ratio above 1 (a constant, se 0) */
+    double two[2] = {m[0], 1}, two_se[2] = {se[0], 0}, z[2];
+    const bool both[2] = {true, true};
+    struct verdict v = verdict_extreme(two, two_se, both, 2, 0, +1, seeds, z);
+    snprintf(zs, sizeof zs, "1=%.2f", z[1]);
+    snprintf(md, sizeof md, "1 (z = %.1f)", z[1]);
+    claims_row(&cl, src, "isotropic small steps stretch the noise horizontally", "l_x / l_y", "iso", m[0], se[0], zs,
+               md, &v);
+    const double margin[2] = {0.25, 0.10};
+    for (int i = 0; i < 2; i++) {
+        v = verdict_similar(m[0], se[0], aspect, 0, margin[i], seeds);
+        snprintf(zs, sizeof zs, "aspect%.0f%%=%.2f", 100 * margin[i], v.zmin);
+        snprintf(md, sizeof md, "aspect ratio %.3g within ±%.0f %% (z = %.1f)", aspect, 100 * margin[i], v.zmin);
+        claims_row(&cl, src, "by about the aspect ratio", "l_x / l_y", "iso", m[0], se[0], zs, md, &v);
+    }
+    v = verdict_similar(m[1], se[1], 1, 0, 0.10, seeds);
+    snprintf(zs, sizeof zs, "1=%.2f", v.zmin);
+    snprintf(md, sizeof md, "1 within ±10 %% (z = %.1f)", v.zmin);
+    claims_row(&cl, src, "resolution-aware steps make the noise isotropic", "l_x / l_y", "rap", m[1], se[1], zs, md,
+               &v);
+    return claims_finish(&cl, out, err, errlen);
+}
 
 int main(int argc, char **argv)
 {
@@ -32,10 +71,10 @@ int main(int argc, char **argv)
         OPTS_FIGURE(fo, "scenes/wall/scene.json", "results/fig4.1"),
         OPT_RESOLUTION(res, .lo = 8, .hi = 1 << 14, .help = "image size", .def = "320x180", .paper = "640x360"),
         OPT_MPP(mpp, .lo = 0.01, .hi = 1e6, .help = "PSSMLT mutations per pixel", .def = "8", .paper = "64"),
-        OPT_SEEDS(seeds, .help = "runs per variant, seeds S..S+N-1", .def = "8", .paper = "16"),
+        OPT_SEEDS(seeds, .help = "runs per variant, seeds S..S+N-1", .def = "16", .paper = "16"),
         OPT_P_LARGE(p_large),
-        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 4096, .help = "autocorrelation lags 0..L pixels",
-         .def = "40"},
+        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 4096,
+         .help = "autocorrelation lags 0..L pixels", .def = "40"},
         OPTS_REFERENCE(refpath, refspp, "PT", "results/reference/wall-pt-WxH-SPP.exr", "64", "1024"),
         {0}};
     opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_1 [options]\n", .opts = opts, .paper = &fo.paper},
@@ -162,6 +201,10 @@ int main(int argc, char **argv)
     snprintf(p3, sizeof p3, "%s/fig4.1-profiles.csv", fo.out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err) &&
               write_text_atomic(p3, pb, err, sizeof err);
+    char *md = ok ? claims(q[Q_RATIO], seeds, (double)W / H, fo.out, fo.scale, err, sizeof err) : NULL;
+    ok = ok && md;
+    if (md) fputs(md, stderr);
+    free(md);
     free(rb), free(sb), free(pb), free(tmp);
     for (int i = 0; i < NQ; i++)
         free(q[i]);

@@ -4,13 +4,20 @@
  * Over several seeds: the error's correlation lengths in pixels (as in fig4_1: lag where the
  * autocorrelation normalised at lag 1 falls below 1/e), relMSE against a PT reference per
  * resolution, small-step acceptance.
- * Writes OUT/fig4.2.csv (config,resolution,quantity,seeds,mean,se), OUT/fig4.2-runs.csv and the
- * first seed's images {pssmlt-1024,pssmlt-512,pssmlt-256,rap-resolution-256}.{exr,png}. */
+ * Then the glossy-to-glossy case for which the thesis does not scale steps to the resolution
+ * (scenes/wall-glossy: camera - glossy wall - glossy panel - light): small-step acceptance at 1024,
+ * 512 and 256 without and (512, 256; at 1024 the scaling is 1) with --rap-resolution, at a fixed
+ * number of mutations per run (acceptance needs no image statistics).
+ * Writes OUT/fig4.2.csv (config,resolution,quantity,seeds,mean,se; the glossy configurations are
+ * glossy-*), OUT/fig4.2-runs.csv, the first seed's images
+ * {pssmlt-1024,pssmlt-512,pssmlt-256,rap-resolution-256}.{exr,png}, and OUT/claims.csv and
+ * claims.md: the thesis's statements on the figure (§4.1) with their verdicts over the seeds. */
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
 #include "ch4/wall_noise.h"
+#include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
 #include "path/scene_ready.h"
@@ -18,15 +25,76 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #define NCONF 4
+#define NGLOSSY 5
 
 enum { Q_LX, Q_LY, Q_L, Q_RHO1, Q_RELMSE, Q_ACCEPT, NQ };
 static const char *qn[NQ] = {"l_x", "l_y", "l", "rho1", "relmse", "small_accept"};
+static const char *gnames[NGLOSSY] = {"glossy-pssmlt-1024", "glossy-pssmlt-512", "glossy-pssmlt-256",
+                                      "glossy-rap-resolution-512", "glossy-rap-resolution-256"};
+static const int gres[NGLOSSY] = {1024, 512, 256, 512, 256};
+
+/* Small-step acceptance of one PSSMLT run of `mutations` on the glossy scene at the camera's size. */
+static bool glossy_accept(const struct scene *sc, bool rap_resolution, long mutations, double p_large, uint64_t seed,
+                          int threads, double *accept, char *err, size_t errlen)
+{
+    struct mlt_opts o = {.method = MLT_PSSMLT,
+                         .p_large = p_large,
+                         .mutations = mutations,
+                         .seed_paths = 100000,
+                         .seed = seed,
+                         .threads = threads,
+                         .max_length = sc->max_length,
+                         .progress = isatty(2)};
+    pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+    o.pss.rap = o.pss.rap_resolution = rap_resolution;
+    struct mlt_result r;
+    if (!mlt_render(sc, &o, &r, err, errlen)) return false;
+    *accept = cell_mean(&r.stats.total[PROPOSAL_SMALL]);
+    mlt_result_free(&r);
+    return true;
+}
+
+/* Thesis §4.1 on Figure 4.2: the diffuse wall's noise at smaller resolutions and with resolution
+ * scaling (q: the per-run quantities of the NCONF configurations), and the glossy case's
+ * acceptance (gacc: NGLOSSY configurations). */
+static char *claims(const char *const *names, double *const *q, const double *gacc, int seeds, const char *out,
+                    const char *scale, char *err, size_t errlen)
+{
+    struct claims cl;
+    char command[64], zs[128], md[256];
+    snprintf(command, sizeof command, "make fig4.2 SCALE=%s", scale);
+    claims_begin(&cl, scale, command, "Claims of thesis §4.1 on Fig. 4.2, %d seeds", seeds);
+    const bool plain[NCONF] = {true, true, true, false}, at256[NCONF] = {false, false, true, true};
+    const char *src = "thesis §4.1, Fig. 4.2";
+    const char *blotchy = "smaller images get blotchier noise (PSSMLT, equal mutations per pixel)";
+    ch4_claim_extreme(&cl, src, blotchy, "lag-1 autocorrelation of the error", names, q[Q_RHO1], NCONF, plain, 2, +1,
+                      seeds);
+    ch4_claim_extreme(&cl, src, blotchy, "relMSE", names, q[Q_RELMSE], NCONF, plain, 2, +1, seeds);
+    ch4_claim_extreme(&cl, src, "steps scaled to the resolution remove it at 256²",
+                      "lag-1 autocorrelation of the error", names, q[Q_RHO1], NCONF, at256, 3, -1, seeds);
+    double m[2], se[2];
+    ch4_mean_se(q[Q_RELMSE] + 3 * seeds, seeds, &m[0], &se[0]);
+    ch4_mean_se(q[Q_RELMSE], seeds, &m[1], &se[1]);
+    struct verdict v = verdict_similar(m[0], se[0], m[1], se[1], 0.05, seeds);
+    snprintf(zs, sizeof zs, "pssmlt-1024-5%%=%.2f", v.zmin);
+    snprintf(md, sizeof md, "pssmlt-1024 %.4g ± %.2g within ±5 %% (z = %.1f)", m[1], se[1], v.zmin);
+    claims_row(&cl, src, "steps scaled to the resolution give 256² the relMSE of 1024²", "relMSE", names[3], m[0],
+               se[0], zs, md, &v);
+    /* glossy: scaled steps at 256² against unscaled ones at 256² and at 1024² (where the scaling is 1) */
+    const bool g[NGLOSSY] = {true, false, true, false, true};
+    ch4_claim_extreme(&cl, src,
+                      "glossy-to-glossy transport: steps scaled to the resolution lose acceptance as it decreases",
+                      "small-step acceptance (scenes/wall-glossy)", gnames, gacc, NGLOSSY, g, 4, -1, seeds);
+    return claims_finish(&cl, out, err, errlen);
+}
 
 int main(int argc, char **argv)
 {
-    const char *prog = "fig4_2";
+    const char *prog = "fig4_2", *glossy_scene;
+    long gmut;
     struct opts_figure fo;
     int seeds, refspp, maxlag;
     double mpp, p_large;
@@ -35,10 +103,16 @@ int main(int argc, char **argv)
         OPT_MPP(mpp, .lo = 0.01, .hi = 1e6, .help = "PSSMLT mutations per pixel", .def = "4", .paper = "64"),
         OPT_SEEDS(seeds, .help = "runs per configuration, seeds S..S+N-1", .def = "4", .paper = "8"),
         OPT_P_LARGE(p_large),
-        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 255, .help = "autocorrelation lags 0..L pixels",
-         .def = "64"},
-        OPT_REFERENCE_SPP(refspp, .help = "PT samples per pixel of the references, cached as "
-                                          "results/reference/wall-pt-NxN-SPP.exr", .def = "32", .paper = "1024"),
+        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 255,
+         .help = "autocorrelation lags 0..L pixels", .def = "64"},
+        {"--glossy-scene", OPT_STRING, OPT_DST(glossy_scene), .arg = "FILE",
+         .help = "the glossy-to-glossy scene of the acceptance runs", .def = "scenes/wall-glossy/scene.json"},
+        {"--glossy-mutations", OPT_INT, OPT_DST(gmut), .arg = "N", .lo = 1000, .hi = 1L << 40,
+         .help = "PSSMLT mutations per glossy run, at every resolution", .def = "262144", .paper = "4194304"},
+        OPT_REFERENCE_SPP(refspp,
+                          .help = "PT samples per pixel of the references, cached as "
+                                  "results/reference/wall-pt-NxN-SPP.exr",
+                          .def = "32", .paper = "1024"),
         {0}};
     opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_2 [options]\n", .opts = opts, .paper = &fo.paper},
                argc, argv);
@@ -98,6 +172,25 @@ int main(int argc, char **argv)
         }
     }
     img_destroy(ref);
+    struct scene *gsc = scene_load(glossy_scene, err, sizeof err);
+    if (!gsc) {
+        fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    double *gacc = xcalloc((size_t)NGLOSSY * seeds, sizeof *gacc);
+    for (int c = 0; c < NGLOSSY; c++) {
+        camera_resize(&gsc->cam, gres[c], gres[c]);
+        for (int s = 0; s < seeds; s++) {
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, gnames[c], (unsigned long long)(fo.seed + s), s + 1,
+                    seeds);
+            if (!glossy_accept(gsc, c >= 3, gmut, p_large, fo.seed + s, fo.threads, &gacc[c * seeds + s], err,
+                               sizeof err)) {
+                fprintf(stderr, "%s: %s\n", prog, err);
+                return 1;
+            }
+        }
+    }
+    scene_free(gsc);
     char *rb = NULL, *sb = NULL;
     size_t rl = 0, sl = 0;
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
@@ -115,6 +208,7 @@ int main(int argc, char **argv)
                      errvar[c]);
         csv_meta(all[i], NULL, "l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
                                " l = their mean; rho1 = mean lag-1 autocorrelation");
+        csv_meta(all[i], "glossy", "%s, %ld mutations per run (glossy-*: small_accept only)", glossy_scene, gmut);
     }
     fprintf(fr, "config,resolution,seed");
     for (int i = 0; i < NQ; i++)
@@ -134,12 +228,24 @@ int main(int argc, char **argv)
             fprintf(fs, "%s,%d,%s,%d,%.6g,%.6g\n", names[c], res[c], qn[i], seeds, mean, se);
         }
     }
+    for (int c = 0; c < NGLOSSY; c++) {
+        for (int s = 0; s < seeds; s++)
+            fprintf(fr, "%s,%d,%llu,,,,,,%.6g\n", gnames[c], gres[c], (unsigned long long)(fo.seed + s),
+                    gacc[c * seeds + s]);
+        double mean, se;
+        ch4_mean_se(gacc + c * seeds, seeds, &mean, &se);
+        fprintf(fs, "%s,%d,small_accept,%d,%.6g,%.6g\n", gnames[c], gres[c], seeds, mean, se);
+    }
     fclose(fr), fclose(fs);
     char p1[4096], p2[4096];
     snprintf(p1, sizeof p1, "%s/fig4.2-runs.csv", fo.out);
     snprintf(p2, sizeof p2, "%s/fig4.2.csv", fo.out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err);
-    free(rb), free(sb);
+    char *md = ok ? claims(names, q, gacc, seeds, fo.out, fo.scale, err, sizeof err) : NULL;
+    ok = ok && md;
+    if (md) fputs(md, stderr);
+    free(md);
+    free(rb), free(sb), free(gacc);
     for (int i = 0; i < NQ; i++)
         free(q[i]);
     scene_free(sc);

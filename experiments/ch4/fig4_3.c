@@ -6,11 +6,13 @@
  * each MCMC variant. Writes OUT/fig4.3.csv (method,quantity,seeds,mean,se), OUT/fig4.3-runs.csv
  * (one row per run, with its wall-clock seconds, which the statistics leave out: they do not reproduce),
  * the first seed's images {bdpt,pssmlt,pssmlt-cdc}.{exr,png}, their acceptance statistics
- * {pssmlt,pssmlt-cdc}-stats.csv (the render tool's CSV rows) and reference.{exr,png}. */
+ * {pssmlt,pssmlt-cdc}-stats.csv (the render tool's CSV rows) and reference.{exr,png}; OUT/claims.csv and
+ * claims.md: the thesis's statements on the figure (§4.2) with their verdicts over the seeds. */
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
+#include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
 #include "mcmc/mlt.h"
@@ -36,6 +38,25 @@ static bool write_stats(const struct mlt_stats *st, const char *method, const ch
     return ok;
 }
 
+/* Thesis §4.2 on Figure 4.3, at equal samples per pixel. */
+static char *claims(const char *const *names, const double *rel, const double *acc, int seeds, const char *out,
+                    const char *scale, char *err, size_t errlen)
+{
+    struct claims cl;
+    char command[64];
+    snprintf(command, sizeof command, "make fig4.3 SCALE=%s", scale);
+    claims_begin(&cl, scale, command, "Claims of thesis §4.2 on Fig. 4.3, %d seeds", seeds);
+    const bool mcmc[NMETH] = {false, true, true}, all[NMETH] = {true, true, true};
+    const char *src = "thesis §4.2, Fig. 4.3";
+    ch4_claim_extreme(&cl, src, "fixing discrete choices raises PSSMLT's small-step acceptance",
+                      "small-step acceptance", names, acc, NMETH, mcmc, 2, +1, seeds);
+    ch4_claim_extreme(&cl, src, "fixing discrete choices lowers PSSMLT's error", "relMSE", names, rel, NMETH, mcmc, 2,
+                      -1, seeds);
+    ch4_claim_extreme(&cl, src, "BDPT has difficulty rendering this scene", "relMSE", names, rel, NMETH, all, 0, +1,
+                      seeds);
+    return claims_finish(&cl, out, err, errlen);
+}
+
 int main(int argc, char **argv)
 {
     const char *prog = "fig4_3", *refpath = NULL;
@@ -47,7 +68,7 @@ int main(int argc, char **argv)
         OPT_RESOLUTION(res, .lo = 1, .hi = 1 << 14, .help = "image size; quick: the scene's", .paper = "256x144"),
         {"--spp", OPT_INT, OPT_DST(spp), .arg = "N", .lo = 1, .hi = 1 << 20,
          .help = "samples (mutations) per pixel of every method", .def = "64"},
-        OPT_SEEDS(seeds, .help = "runs per method, seeds S..S+N-1", .def = "6", .paper = "16"),
+        OPT_SEEDS(seeds, .help = "runs per method, seeds S..S+N-1", .def = "24", .paper = "16"),
         OPT_P_LARGE(p_large),
         OPTS_REFERENCE(refpath, refspp, "BDPT", "results/reference/window-bdpt-WxH-SPP.exr", "1024", "16384"),
         {0}};
@@ -170,6 +191,10 @@ int main(int argc, char **argv)
     snprintf(p1, sizeof p1, "%s/fig4.3-runs.csv", fo.out);
     snprintf(p2, sizeof p2, "%s/fig4.3.csv", fo.out);
     bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err);
+    char *md = ok ? claims(names, rel, acc, seeds, fo.out, fo.scale, err, sizeof err) : NULL;
+    ok = ok && md;
+    if (md) fputs(md, stderr);
+    free(md);
     free(rb), free(sb), free(rel), free(acc), free(sec);
     img_destroy(ref);
     scene_free(sc);

@@ -1,9 +1,17 @@
 /* bin/fig4_5: thesis Figure 4.5. Average acceptance probability per path length of MMLT large steps
  * versus multiple correlated-try large steps (MCTLS), both alone (p_large = 1, no small steps),
- * with equal expected mutation budgets per length and the same seeds.
+ * with equal expected mutation budgets per length and the same seeds. Then what sets the shape of
+ * their ratio: MCTLS with a fixed number N of trials drawn uniformly among the techniques (Eq. 4.5;
+ * N = 1 is an MMLT large step taken through MCTLS's code, a check of it), with N = 2 and 4 at every
+ * length, and N = 1 drawn among k + 2 techniques as the thesis counts them (t = 0, a hit on the
+ * pinhole camera, a try that always fails): the thesis's MMLT large step.
  * Writes OUT/fig4.5.csv: method,length,attempts,mean_accept,stderr,accepted_fraction,seconds
- * (seconds: CPU time spent on that length's proposals), and OUT/claims.csv and claims.md: the
- * thesis's statements on the figure (§4.3) with their verdicts. */
+ * (seconds: CPU time spent on that length's proposals), OUT/fig4.5-ratios.csv:
+ * ratio,length,value,se (each run's acceptance over MMLT large steps', MCTLS's over the
+ * thesis-count MMLT large steps', and "contributing-techniques": the mean number of techniques with
+ * a contribution among subpath pairs that have one, from the two runs' shares of such proposals;
+ * "light:mctls/mmlt-large": the ratio of those shares), and OUT/claims.csv and claims.md: the thesis's statements on
+ * the figure (§4.3) with their verdicts. */
 #include "base/parallel.h"
 #include "base/util.h"
 #include "common/claims.h"
@@ -17,17 +25,47 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Mean acceptance and its batch-means standard error per method and length. */
+/* The runs: the large step, MCTLS's trials (mlt_opts.mctls_tries, 0 = Eq. 4.7) and whether t = 0
+ * is counted. */
+enum { V_MMLT, V_MCTLS, V_TRIES1, V_TRIES1_T0, V_TRIES2, V_TRIES4, NV };
+static const struct variant {
+    const char *name;
+    enum large_step step;
+    int tries;
+    bool t0;
+} variants[NV] = {
+    {"mmlt-large", LARGE_MMLT, 0, false},    {"mctls", LARGE_MCTLS, 0, false},
+    {"mctls-tries1", LARGE_MCTLS, 1, false}, {"mctls-tries1-t0", LARGE_MCTLS, 1, true},
+    {"mctls-tries2", LARGE_MCTLS, 2, false}, {"mctls-tries4", LARGE_MCTLS, 4, false},
+};
+
+/* Mean acceptance and its batch-means standard error per run and length. */
 struct accept_table {
-    double mean[2][MAX_PATH_LENGTH + 1], se[2][MAX_PATH_LENGTH + 1];
+    double mean[NV][MAX_PATH_LENGTH + 1], se[NV][MAX_PATH_LENGTH + 1];
+    double nonzero[NV][MAX_PATH_LENGTH + 1]; /* share of proposals with a contribution (any trial's, for MCTLS) */
+    long attempts[NV][MAX_PATH_LENGTH + 1];
     int K;
 };
 
-/* The ratio MCTLS / MMLT at length k and its standard error (first-order). */
+/* The ratio of run a's acceptance to run b's at length k and its standard error (first-order). */
+static void ratio_of(const struct accept_table *t, int a, int b, int k, double *r, double *se)
+{
+    *r = t->mean[a][k] / t->mean[b][k];
+    *se = *r * sqrt(pow(t->se[a][k] / t->mean[a][k], 2) + pow(t->se[b][k] / t->mean[b][k], 2));
+}
+
 static void ratio_at(const struct accept_table *t, int k, double *r, double *se)
 {
-    *r = t->mean[1][k] / t->mean[0][k];
-    *se = *r * sqrt(pow(t->se[1][k] / t->mean[1][k], 2) + pow(t->se[0][k] / t->mean[0][k], 2));
+    ratio_of(t, V_MCTLS, V_MMLT, k, r, se);
+}
+
+/* MCTLS's share of proposals with a contribution over MMLT large steps' at length k, with its
+ * standard error: a large step's proposal does not depend on the state, so both are binomial. */
+static void light_ratio(const struct accept_table *t, int k, double *r, double *se)
+{
+    double p0 = t->nonzero[V_MMLT][k], p1 = t->nonzero[V_MCTLS][k];
+    *r = p1 / p0;
+    *se = *r * sqrt((1 - p0) / (p0 * t->attempts[V_MMLT][k]) + (1 - p1) / (p1 * t->attempts[V_MCTLS][k]));
 }
 
 /* Thesis §4.3 on Figure 4.5. The errors are one run's batch-means errors, so "seeds_needed" counts
@@ -67,10 +105,56 @@ static char *claims(const struct accept_table *t, const char *out, const char *s
     v = verdict_similar(t->mean[0][t->K], t->se[0][t->K], t->mean[0][2], t->se[0][2], 0.25, 1);
     snprintf(zs, sizeof zs, "length2=%.2f", v.zmin);
     snprintf(md, sizeof md, "length 2: %.4g ± %.2g, within ±25 %% (z = %.1f)", t->mean[0][2], t->se[0][2], v.zmin);
-    char stat[64];
+    char stat[96];
     snprintf(stat, sizeof stat, "MMLT large-step acceptance at length %d", t->K);
     claims_row(&cl, "thesis §4.3", "MMLT large steps are consistently low over all path lengths", stat, "mmlt-large",
                t->mean[0][t->K], t->se[0][t->K], zs, md, &v);
+    /* one drawn trial is an MMLT large step (a check of the drawn trials): the acceptance averaged
+     * over lengths 2..K (equal mutations per length) within ±5 % */
+    double m1 = 0, s1 = 0, m0 = 0, s0 = 0;
+    for (int k = 2; k <= t->K; k++) {
+        m1 += t->mean[V_TRIES1][k] / (t->K - 1), s1 += pow(t->se[V_TRIES1][k] / (t->K - 1), 2);
+        m0 += t->mean[V_MMLT][k] / (t->K - 1), s0 += pow(t->se[V_MMLT][k] / (t->K - 1), 2);
+    }
+    v = verdict_similar(m1, sqrt(s1), m0, sqrt(s0), 0.05, 1);
+    snprintf(zs, sizeof zs, "mmlt-large5%%=%.2f", v.zmin);
+    snprintf(md, sizeof md, "MMLT large steps %.4g ± %.2g within ±5 %% (z = %.1f)", m0, sqrt(s0), v.zmin);
+    snprintf(stat, sizeof stat, "large-step acceptance, mean over lengths 2-%d", t->K);
+    claims_row(&cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1,
+               sqrt(s1), zs, md, &v);
+    /* the thesis's count: its MMLT large steps draw among k + 2 techniques, t = 0 always failing */
+    ratio_of(t, V_MCTLS, V_TRIES1_T0, t->K, &r, &rse);
+    v = verdict_similar(r, rse, 5, 0, 0.25, 1);
+    snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
+    snprintf(md, sizeof md, "5 within ±25 %% at length %d (z = %.1f)", t->K, v.zmin);
+    claims_row(&cl, "thesis §4.3",
+               "up to five times at the longest length, counting k + 2 techniques as the thesis does",
+               "acceptance ratio MCTLS / MMLT large steps among k + 2", "mctls", r, rse, zs, md, &v);
+    /* the caption's reason: longer paths give more trials. With a fixed number of trials (4) the
+     * ratio to MMLT should then not grow from length 3 (4 techniques) to the longest */
+    double r3, rse3;
+    ratio_of(t, V_TRIES4, V_MMLT, 3, &r3, &rse3);
+    ratio_of(t, V_TRIES4, V_MMLT, t->K, &r, &rse);
+    v = verdict_similar(r, rse, r3, rse3, 0.25, 1);
+    snprintf(zs, sizeof zs, "length3=%.2f", v.zmin);
+    snprintf(md, sizeof md, "length 3: %.3g ± %.2g, within ±25 %% (z = %.1f)", r3, rse3, v.zmin);
+    snprintf(stat, sizeof stat, "acceptance ratio, 4 drawn trials / MMLT, at length %d", t->K);
+    claims_row(&cl, "thesis Fig. 4.5 caption",
+               "MCTLS gains with length because longer paths give more trials: at a fixed number of trials the gain "
+               "stays flat",
+               stat, "mctls-tries4", r, rse, zs, md, &v);
+    /* the caption's reason read directly: MCTLS's proposals carry light more often than MMLT's by
+     * a factor that grows with length (longest length against length 3) */
+    light_ratio(t, t->K, &r, &rse);
+    light_ratio(t, 3, &r3, &rse3);
+    double lm[2] = {r, r3}, ls[2] = {rse, rse3}, lz[2];
+    const bool two[2] = {true, true};
+    v = verdict_extreme(lm, ls, two, 2, 0, +1, 1, lz);
+    snprintf(zs, sizeof zs, "length3=%.2f", lz[1]);
+    snprintf(md, sizeof md, "length 3: %.3g ± %.2g (z = %.1f)", r3, rse3, lz[1]);
+    snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
+    claims_row(&cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
+               "mctls", r, rse, zs, md, &v);
     return claims_finish(&cl, out, err, errlen);
 }
 
@@ -90,31 +174,45 @@ int main(int argc, char **argv)
     FILE *f = open_memstream(&buf, &len);
     csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets", a.fig.scene,
                   a.fig.scale);
+    csv_meta(f, NULL,
+             "mctls-triesN: MCTLS with N trials drawn uniformly among the k + 1 techniques (Eq. 4.5; N = 1 is "
+             "an MMLT large step); -t0: among k + 2, t = 0 a try that always fails (the thesis's count)");
     csv_meta(f, "seed", "%llu", (unsigned long long)seed);
     csv_meta(f, "threads", "%d", threads);
     csv_meta(f, "mutations_per_method", "%ld", mutations);
     fprintf(f, "method,length,attempts,mean_accept,stderr,accepted_fraction,seconds\n");
-    const char *names[2] = {"mmlt-large", "mctls"};
     struct accept_table tab = {.K = K};
-    for (int m = 0; m < 2; m++) {
-        struct mlt_opts o = {.method = MLT_MMLT, .p_large = 1, .mutations = mutations, .seed_paths = paper ? 1000000 : 100000,
-                             .seed = seed, .threads = threads, .max_length = K, .progress = isatty(2),
-                             .large_step = m ? LARGE_MCTLS : LARGE_MMLT, .uniform_lengths = true, .time_proposals = true};
+    for (int m = 0; m < NV; m++) {
+        const struct variant *va = &variants[m];
+        struct mlt_opts o = {.method = MLT_MMLT,
+                             .p_large = 1,
+                             .mutations = mutations,
+                             .seed_paths = paper ? 1000000 : 100000,
+                             .seed = seed,
+                             .threads = threads,
+                             .max_length = K,
+                             .progress = isatty(2),
+                             .large_step = va->step,
+                             .mctls_tries = va->tries,
+                             .mctls_count_t0 = va->t0,
+                             .uniform_lengths = true,
+                             .time_proposals = true};
         pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
-        fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", names[m], mutations, K);
+        fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", va->name, mutations, K);
         struct mlt_result r;
         if (!mlt_render(sc, &o, &r, err, sizeof err)) {
             fprintf(stderr, "%s\n", err);
             return 1;
         }
-        enum proposal_kind kind = m ? PROPOSAL_MCTLS : PROPOSAL_LARGE;
+        enum proposal_kind kind = va->step == LARGE_MMLT ? PROPOSAL_LARGE : PROPOSAL_MCTLS;
         for (int k = 1; k <= K; k++) {
             /* both technique outcomes together: the figure plots all large steps of a length */
             const struct accept_cell *c = &r.stats.any[kind][k];
             if (!c->attempts) continue;
-            fprintf(f, "%s,%d,%ld,%.9g,%.9g,%.9g,%.4f\n", names[m], k, c->attempts, cell_mean(c), cell_stderr(c),
+            fprintf(f, "%s,%d,%ld,%.9g,%.9g,%.9g,%.4f\n", va->name, k, c->attempts, cell_mean(c), cell_stderr(c),
                     (double)c->accepted / c->attempts, c->seconds);
             tab.mean[m][k] = cell_mean(c), tab.se[m][k] = cell_stderr(c);
+            tab.nonzero[m][k] = (double)c->nonzero / c->attempts, tab.attempts[m][k] = c->attempts;
         }
         mlt_result_free(&r);
     }
@@ -122,6 +220,41 @@ int main(int argc, char **argv)
     char path[4096];
     snprintf(path, sizeof path, "%s/fig4.5.csv", out);
     bool ok = write_text_atomic(path, buf, err, sizeof err);
+    free(buf);
+    /* the ratios whose shape the figure is about, with first-order standard errors */
+    f = open_memstream(&buf, &len);
+    csv_meta_head(f, "fig4.5: acceptance ratios per length (first-order standard errors from the batch-means errors)",
+                  a.fig.scene, a.fig.scale);
+    fprintf(f, "ratio,length,value,se\n");
+    const int pairs[][2] = {
+        {V_MCTLS, V_MMLT}, {V_MCTLS, V_TRIES1_T0}, {V_TRIES1, V_MMLT}, {V_TRIES2, V_MMLT}, {V_TRIES4, V_MMLT}};
+    for (size_t p = 0; p < sizeof pairs / sizeof *pairs; p++)
+        for (int k = 1; k <= K; k++) {
+            if (!(tab.mean[pairs[p][0]][k] > 0 && tab.mean[pairs[p][1]][k] > 0)) continue;
+            double r, rse;
+            ratio_of(&tab, pairs[p][0], pairs[p][1], k, &r, &rse);
+            fprintf(f, "%s/%s,%d,%.6g,%.3g\n", variants[pairs[p][0]].name, variants[pairs[p][1]].name, k, r, rse);
+        }
+    /* How many techniques carry light for a pair of subpaths that has any: a large step's proposal
+     * is independent of the state, so both shares are binomial; an MMLT large step has a
+     * contribution with probability E[n] / (k + 1) and MCTLS's trials with P(n > 0), so
+     * E[n | n > 0] = (k + 1) P_mmlt / P_mctls. */
+    for (int k = 1; k <= K; k++) {
+        double p0 = tab.nonzero[V_MMLT][k], p1 = tab.nonzero[V_MCTLS][k];
+        if (!(p0 > 0 && p1 > 0)) continue;
+        double v = (k + 1) * p0 / p1;
+        double rse = sqrt((1 - p0) / (p0 * tab.attempts[V_MMLT][k]) + (1 - p1) / (p1 * tab.attempts[V_MCTLS][k]));
+        fprintf(f, "contributing-techniques,%d,%.6g,%.3g\n", k, v, v * rse);
+    }
+    for (int k = 1; k <= K; k++) {
+        if (!(tab.nonzero[V_MMLT][k] > 0 && tab.nonzero[V_MCTLS][k] > 0)) continue;
+        double r, rse;
+        light_ratio(&tab, k, &r, &rse);
+        fprintf(f, "light:mctls/mmlt-large,%d,%.6g,%.3g\n", k, r, rse);
+    }
+    fclose(f);
+    snprintf(path, sizeof path, "%s/fig4.5-ratios.csv", out);
+    ok = ok && write_text_atomic(path, buf, err, sizeof err);
     free(buf);
     char *md = ok ? claims(&tab, out, a.fig.scale, err, sizeof err) : NULL;
     ok = ok && md;

@@ -2,8 +2,9 @@
  * independent committed run (seeds 101..) agree under bin/check_stats (Welch t over seeds, Sidak
  * alpha = 0.01), and the same run with the row carrying the thesis's claim moved to where the claim
  * would fail is rejected: the isotropic noise no longer stretched (fig4.1), resolution-scaled steps
- * at 256² no better than plain ones (fig4.2), constrained discrete choices no longer raising
- * small-step acceptance (fig4.3). */
+ * at 256² no better than plain ones (fig4.2), and no loss of acceptance with them in the
+ * glossy-to-glossy case (fig4.2), constrained discrete choices no longer raising small-step
+ * acceptance (fig4.3). */
 #include <criterion/criterion.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -72,6 +73,11 @@ Test(check_ch4, fig4_1_isotropic_ratio_of_one_fails)
 Test(check_ch4, fig4_2_resolution_scaling_without_gain_fails)
 {
     replicate_passes_perturbed_fails("fig4.2", "config,quantity", "rap-resolution-256,256,relmse", 0.3208);
+}
+
+Test(check_ch4, fig4_2_glossy_scaling_without_acceptance_loss_fails)
+{
+    replicate_passes_perturbed_fails("fig4.2", "config,quantity", "glossy-rap-resolution-256,256,small_accept", 0.888);
 }
 
 Test(check_ch4, fig4_3_cdc_acceptance_like_pssmlt_fails)

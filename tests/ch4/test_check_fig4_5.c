@@ -1,6 +1,9 @@
-/* make check-fig4.5's comparison can fail: the committed fig4.5 baseline (seed 1) and an
- * independent committed run (seed 2) agree under bin/check_stats (Sidak alpha = 0.01 over 22 rows),
- * and the same run with one row's acceptance raised by 30 % (> 10 standard errors) is rejected. */
+/* make check-fig4.5's comparisons can fail: the committed fig4.5 baseline (seed 1) and an
+ * independent committed run (seed 2) agree under bin/check_stats (Sidak alpha = 0.01 over the 66
+ * rows: six runs, lengths 2-12), and the same run with one row's acceptance raised by 30 % (> 10
+ * standard errors) is rejected. The second comparison, over fig4.5-ratios.csv (with the claims'
+ * shares of proposals with light), passes the replicate and rejects MCTLS's share over MMLT's at
+ * length 12 set to its acceptance ratio (3.3 for 5.7: no more light than acceptance gain). */
 #include <criterion/criterion.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -55,5 +58,46 @@ Test(check_fig4_5, replicate_passes_perturbed_fails)
     cr_assert_eq(check(tmp), 1, "a 30 %% shift of mctls,8 was not detected");
     perturbed(tmp, "mctls,8", 1.0);
     cr_assert_eq(check(tmp), 0, "an unmodified copy failed");
+    remove(tmp);
+}
+
+#define RBASE "results/baselines/fig4.5/fig4.5-ratios.csv"
+#define RREPL "results/baselines/fig4.5/replicate-seed2-ratios.csv"
+
+static int check_ratios(const char *current)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, BIN_DIR "/check_stats --key ratio,length --mean value --se se %s %s > /dev/null 2>&1",
+             RBASE, current);
+    int st = system(cmd);
+    cr_assert(WIFEXITED(st), "check_stats did not run");
+    return WEXITSTATUS(st);
+}
+
+Test(check_fig4_5, ratios_replicate_passes_light_share_moved_fails)
+{
+    cr_assert_eq(check_ratios(RREPL), 0, "two independent runs' ratios disagree");
+    char tmp[] = "/tmp/fig45r-perturbed-XXXXXX";
+    int fd = mkstemp(tmp);
+    cr_assert(fd >= 0);
+    FILE *in = fopen(RREPL, "r"), *f = fopen(tmp, "w");
+    cr_assert(in && f);
+    char line[1024];
+    const char *key = "light:mctls/mmlt-large,12,";
+    int hit = 0;
+    while (fgets(line, sizeof line, in)) {
+        if (strncmp(line, key, strlen(key))) {
+            fputs(line, f);
+            continue;
+        }
+        double v, se;
+        cr_assert(sscanf(line + strlen(key), "%lf,%lf", &v, &se) == 2);
+        fprintf(f, "%s%.6g,%.3g\n", key, 3.3, se);
+        hit++;
+    }
+    fclose(in);
+    fclose(f);
+    cr_assert_eq(hit, 1, "row %s not found", key);
+    cr_assert_eq(check_ratios(tmp), 1, "the light share moved to the acceptance ratio was not detected");
     remove(tmp);
 }
