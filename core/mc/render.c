@@ -7,6 +7,7 @@
 #include "camera/camera.h"
 #include "io/image_merge.h"
 #include "mc/integrator.h"
+#include "sampler/sobol02.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -26,17 +27,23 @@ bool method_parse(const char *s, enum method *m)
 
 /* Stratifies camera samples by film cell: the image dims land inside cell (x, y) of the film
  * (camera.h; the image's pixels, plus a one-pixel ring for the tent filter), every other number is
- * independent. The annotation is what makes this possible without touching path code. */
+ * independent, or with --sampler sobol a scrambled (0,2)-sequence over the cell's samples
+ * (dimension: the number's place in its stream's vector). The annotation is what makes this
+ * possible without touching path code. */
 struct pixel_sampler {
     struct sampler base;
     rng r;
     double x0, y0, sx, sy;
+    bool sobol;
+    uint64_t key;   /* the cell's sequence */
+    uint32_t index; /* the sample's place in it */
 };
 
 static double pixel_next(struct sampler *s, enum dim_kind kind)
 {
     struct pixel_sampler *p = (struct pixel_sampler *)s;
-    double u = rng_uniform(&p->r);
+    double u = p->sobol ? sobol02_sample(p->key, p->index, (uint32_t)(s->stream * STREAM_DIMS + sampler_index(s)))
+                        : rng_uniform(&p->r);
     if (kind == DIM_IMAGE_X) return (p->x0 + u) * p->sx;
     if (kind == DIM_IMAGE_Y) return (p->y0 + u) * p->sy;
     return u;
@@ -131,7 +138,7 @@ static void worker(int tid, void *p)
     struct scratch *w = xmalloc(sizeof *w);
     struct image *img = j->img[tid];
     int W = camera_film_width(&sc->cam), H = camera_film_height(&sc->cam);
-    struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H};
+    struct pixel_sampler s = {{&pixel_ops, 0, 0, 0}, {0, 0}, 0, 0, 1.0 / W, 1.0 / H, o->sobol, 0, 0};
     struct ckpt_sync *sync = o->ckpt ? &j->sync : NULL;
     struct mc_pos at = {j->g0 + tid, 0, j->first};
     bool bad = j->resume && !load_thread(&j->resume[tid], j, tid, &at, W, H);
@@ -148,7 +155,13 @@ static void worker(int tid, void *p)
                 s.y0 = at.y;
                 for (; at.i < j->first + j->count; at.i++) {
                     if (((at.i - j->first) & 4095) == 0 && interrupted()) goto stopped;
-                    rng_seed(&s.r, o->seed, ((uint64_t)at.y * W + at.x) * j->key + (uint64_t)at.i);
+                    uint64_t cell = (uint64_t)at.y * W + at.x;
+                    if (o->sobol) {
+                        s.key = cell * 0x9E3779B97F4A7C15ull + o->seed;
+                        s.index = (uint32_t)at.i;
+                    } else {
+                        rng_seed(&s.r, o->seed, cell * j->key + (uint64_t)at.i);
+                    }
                     if (o->method == METHOD_PT) pt_sample(&pc, &s.base, w, img);
                     else bdpt_sample(&pc, &s.base, w, img);
                     done++;

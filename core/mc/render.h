@@ -30,6 +30,7 @@ struct render_opts {
     int min_length; /* paths shorter than this (segments) are left out */
     bool progress;
     int only_s, only_t; /* BDPT: one technique, unweighted (only_t > 0) */
+    bool sobol;         /* scrambled (0,2)-sequences instead of independent numbers (sampler/sobol02.h) */
     /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a spp budget
      * a resumed run ends bit-identical to an uninterrupted one; with a time budget it continues
      * the passes with what the budget had left. */

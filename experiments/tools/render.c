@@ -22,9 +22,10 @@
 
 /* Which methods read an option (struct opt's tag); given to another method it would be silently
  * ignored, which would quietly change an experiment: a warning names it. */
-enum { MCMC = 1, MMLT_ONLY = 2, PSSMLT_ONLY = 4 };
+enum { MCMC = 1, MMLT_ONLY = 2, PSSMLT_ONLY = 4, MC_ONLY = 8 };
 static const char *const methods[] = {"pt", "bdpt", "pssmlt", "mmlt", "pitp", NULL};
 static const char *const kernels[] = {"kelemen", "gaussian", NULL};
+static const char *const samplers[] = {"independent", "sobol", NULL};
 static const char *const large_steps[] = {"mmlt", "mctls", "hybrid", NULL};
 static const char *const small_steps[] = {"pss", "controlled", "root", NULL};
 
@@ -33,7 +34,7 @@ struct args {
     double checkpoint, cpu_seconds;
     struct render_opts mc;
     struct mlt_opts mlt;
-    int res[2], kernel;
+    int res[2], kernel, sampler;
     const char *res_arg; /* --resolution as given */
     bool quiet;
 };
@@ -65,7 +66,8 @@ static void warn_unused(const struct opts_spec *spec, const char *method, int ar
         const char *o = argv[i];
         const struct opt *e = opts_find(spec, o);
         int tag = e ? e->tag : 0;
-        const char *only = !mcmc && (tag & MCMC)                                    ? "pssmlt, mmlt and pitp"
+        const char *only = mcmc && (tag & MC_ONLY)                                  ? "pt and bdpt"
+                           : !mcmc && (tag & MCMC)                                  ? "pssmlt, mmlt and pitp"
                            : !strcmp(method, "pssmlt") && (tag & MMLT_ONLY) ? "mmlt and pitp"
                            : multiplexed && (tag & PSSMLT_ONLY)                     ? "pssmlt"
                                                                                     : NULL;
@@ -107,6 +109,9 @@ static void parse(int argc, char **argv, struct args *a)
          .help = "as --time, in CPU seconds per thread (the process's CPU time over --threads): other load on the "
                  "machine then changes the wall time, not the work done"},
         OPT_SEED(a->mc.seed, .help = "random seed; same seed and threads -> same output", .def = "1"),
+        {"--sampler", OPT_CHOICE, OPT_DST(a->sampler), .choices = samplers, .def = "independent", .tag = MC_ONLY,
+         .help = "pt/bdpt numbers: independent, or sobol (scrambled (0,2)-sequences per pixel, as Tungsten's default): "
+                 "lower error at equal samples, equally unbiased"},
         OPT_THREADS(a->mc.threads, .hi = 1024, .help = "worker threads (default: all cores)", .def_int = cpu_count),
         OPT_MAX_LENGTH(a->mc.max_length, .help = "maximum path length in segments (default: integrator.max_bounces)"),
         OPT_MIN_LENGTH(a->mc.min_length, .hi = MAX_PATH_LENGTH,
@@ -171,6 +176,7 @@ static void parse(int argc, char **argv, struct args *a)
         a->mc.seconds = a->cpu_seconds;
         a->mc.cpu_time = m->cpu_time = true;
     }
+    a->mc.sobol = a->sampler == 1;
     /* the options both drivers read */
     m->seconds = a->mc.seconds, m->seed = a->mc.seed, m->threads = a->mc.threads;
     a->mc.progress = m->progress = !a->quiet;
@@ -301,6 +307,8 @@ static void options_text(const struct args *a, const struct scene *sc, char *buf
     int len = snprintf(buf, n, "method=%s spp=%d time=%g%s seed=%llu threads=%d max_length=%d min_length=%d resolution=%dx%d isa=%s",
                        a->method, a->mc.spp, a->mc.seconds, a->mc.cpu_time ? "cpu" : "", (unsigned long long)a->mc.seed, a->mc.threads,
                        a->mc.max_length, a->mc.min_length, sc->cam.width, sc->cam.height, isa ? isa : "?");
+    /* only when not the default, so that checkpoints of independent-number runs stay resumable */
+    if (a->mc.sobol && len > 0 && (size_t)len < n) len += snprintf(buf + len, n - (size_t)len, " sampler=sobol");
     if (strcmp(a->method, "pt") && strcmp(a->method, "bdpt") && len > 0 && (size_t)len < n) {
         const struct mlt_opts *m = &a->mlt;
         snprintf(buf + len, n - (size_t)len,
@@ -429,8 +437,8 @@ int main(int argc, char **argv)
         ok = ctl.err[0] || !dist_root() || img_write_exr_png(img, a.out, err, sizeof err);
         partial = st.partial;
         if (ok && !ctl.err[0] && dist_root())
-            printf("%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",
-                   partial ? "PARTIAL (interrupted) " : "", a.method, st.samples, st.spp, st.seconds, st.samples / st.seconds,
+            printf("%s%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",
+                   partial ? "PARTIAL (interrupted) " : "", a.method, a.mc.sobol ? " (sobol)" : "", st.samples, st.spp, st.seconds, st.samples / st.seconds,
                    threads_note(a.mc.threads), st.nonfinite, nonfinite_note(&st.nonfinite_len));
         if (ok && !ctl.err[0] && dist_root()) warn_nonfinite(st.nonfinite, &st.nonfinite_len);
         img_destroy(img);
