@@ -38,7 +38,9 @@ static struct image *reference(const struct scene *sc, const struct fig5_cfg *c,
 
 /* How far the error of a render spreads: the lag (pixels) where the luminance error's
  * autocorrelation, normalised at lag 1, falls below 1/e (noise_corr.h), mean of the horizontal and
- * vertical lengths, lags up to 32; the statistic chapter 6 calls splotchiness. NAN when undefined. */
+ * vertical lengths, lags up to 32; the statistic chapter 6 calls splotchiness. An axis whose lag-1
+ * correlation is not positive has no correlated part: its length is 1, the floor of the measure
+ * (a render dominated by isolated fireflies gives that). NAN only for an error-free render. */
 static double corr_length_px(const struct image *img, const struct image *ref)
 {
     int maxlag = 32;
@@ -49,7 +51,7 @@ static double corr_length_px(const struct image *img, const struct image *ref)
     free(e);
     if (!ok) return NAN;
     double lx = corr_length_lag1(rx, maxlag + 1), ly = corr_length_lag1(ry, maxlag + 1);
-    return 0.5 * (lx + ly);
+    return 0.5 * ((isnan(lx) ? 1 : lx) + (isnan(ly) ? 1 : ly));
 }
 
 /* The share of the relative error's energy that survives averaging over k x k blocks: 1/k^2 for
