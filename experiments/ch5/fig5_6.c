@@ -92,8 +92,9 @@ static void write_claims(const struct fig5_cfg *c, double mean[2][NQ], double se
     struct claims cl;
     char command[64], zs[128], md[256];
     snprintf(command, sizeof command, "make fig5.6 SCALE=%s", c->fig.scale);
-    claims_begin(&cl, c->fig.scale, command, "Claims of thesis §5.3 (Fig. 5.6) on %s at %dx%d, %ld mutations per pixel, %d seeds",
-                 c->fig.scene, c->width, c->height, c->mpp, c->seeds);
+    claims_begin(&cl, c->fig.scale, command,
+                 "Claims of thesis §5.3 (Fig. 5.6) on %s at %dx%d, %ld mutations per pixel, %d seeds", c->fig.scene,
+                 c->width, c->height, c->mpp, c->seeds);
     const bool both[2] = {true, true};
     for (int q = 0; q < NQ; q++) {
         double m[2] = {mean[0][q], mean[1][q]}, s[2] = {se[0][q], se[1][q]}, z[2];
@@ -152,7 +153,8 @@ int main(int argc, char **argv)
             }
             mlt_result_free(&r);
         }
-        for (int q = 0; q < NQ; q++) mean_se(x + (size_t)q * c.seeds, c.seeds, &mean[kind][q], &se[kind][q]);
+        for (int q = 0; q < NQ; q++)
+            mean_se(x + (size_t)q * c.seeds, c.seeds, &mean[kind][q], &se[kind][q]);
         fprintf(f, "%s,%.9g,%.9g,%d,%.6f,%.0f,%.6g,%.3g,%.6g,%.3g\n", fig5_kind_name[kind], mean[kind][0], se[kind][0],
                 c.seeds, acc, rate, mean[kind][1], se[kind][1], mean[kind][2], se[kind][2]);
     }

@@ -20,8 +20,10 @@ static const struct ordering {
 
 static const char *fmt_n(uint64_t n, char *buf, size_t len)
 {
-    if (n % 1000000 == 0) snprintf(buf, len, "%lluM", (unsigned long long)(n / 1000000));
-    else snprintf(buf, len, "%llu", (unsigned long long)n);
+    if (n % 1000000 == 0)
+        snprintf(buf, len, "%lluM", (unsigned long long)(n / 1000000));
+    else
+        snprintf(buf, len, "%llu", (unsigned long long)n);
     return buf;
 }
 
@@ -51,18 +53,19 @@ char *cmlt_write_claims(const struct cmlt_claims_in *in, char *err, size_t errle
             const struct ordering *o = &orderings[k];
             bool have[CMLT_NALGO];
             double z[CMLT_NALGO];
-            for (int a = 0; a < CMLT_NALGO; a++) have[a] = !o->against || (o->against >> a & 1u) || a == o->m;
+            for (int a = 0; a < CMLT_NALGO; a++)
+                have[a] = !o->against || (o->against >> a & 1u) || a == o->m;
             v = verdict_extreme(mean, se, have, CMLT_NALGO, o->m, o->sign, in->seeds, z);
             zs[0] = md[0] = 0;
             for (int a = 0; a < CMLT_NALGO; a++) {
                 if (isnan(z[a])) continue;
                 size_t p = strlen(zs), q = strlen(md);
                 snprintf(zs + p, sizeof zs - p, "%s%s=%.2f", p ? ";" : "", cmlt_algo_names[a], z[a]);
-                snprintf(md + q, sizeof md - q, "%s%s %.4g ± %.2g (z = %.1f)", q ? "; " : "", cmlt_algo_names[a], mean[a],
-                         se[a], z[a]);
+                snprintf(md + q, sizeof md - q, "%s%s %.4g ± %.2g (z = %.1f)", q ? "; " : "", cmlt_algo_names[a],
+                         mean[a], se[a], z[a]);
             }
-            claims_row(&cl, "CMLT paper §5, Table 1", o->text, stat, cmlt_algo_names[o->m], mean[o->m], se[o->m], zs, md,
-                       &v);
+            claims_row(&cl, "CMLT paper §5, Table 1", o->text, stat, cmlt_algo_names[o->m], mean[o->m], se[o->m], zs,
+                       md, &v);
         }
     }
     return claims_finish(&cl, in->dir, err, errlen);

@@ -123,7 +123,8 @@ static uint64_t fnv(uint64_t h, double v)
 {
     unsigned char b[sizeof v];
     memcpy(b, &v, sizeof v);
-    for (size_t i = 0; i < sizeof v; i++) h = (h ^ b[i]) * 0x100000001b3ull;
+    for (size_t i = 0; i < sizeof v; i++)
+        h = (h ^ b[i]) * 0x100000001b3ull;
     return h;
 }
 

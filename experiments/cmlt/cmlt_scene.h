@@ -31,7 +31,7 @@
 #define CMLT_A1 0.11
 #define CMLT_K1 3.0
 #define CMLT_EXPK1 20.085536923187668 /* exp(CMLT_K1), checked by a test */
-#define CMLT_G0 0.15 /* light 1's green and blue ramps (red is 1, the max component) */
+#define CMLT_G0 0.15                  /* light 1's green and blue ramps (red is 1, the max component) */
 #define CMLT_G1 0.75
 #define CMLT_B0 0.9
 #define CMLT_B1 (-0.8)

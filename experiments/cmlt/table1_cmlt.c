@@ -471,10 +471,9 @@ int main(int argc, char **argv)
     char command[64], scale[64];
     snprintf(command, sizeof command, "make table1-cmlt SCALE=%s", o.scale);
     snprintf(scale, sizeof scale, "%s%s", o.scale, partial ? " (interrupted)" : "");
-    char *claims = cmlt_write_claims(&(struct cmlt_claims_in){.dir = o.out, .scale = scale, .command = command,
-                                                              .seeds = o.seeds, .nbudgets = o.nbudgets,
-                                                              .budgets = o.budgets, .mean = mean, .se = se},
-                                     err, sizeof err);
+    struct cmlt_claims_in ci = {.dir = o.out, .scale = scale, .command = command, .seeds = o.seeds,
+                                .nbudgets = o.nbudgets, .budgets = o.budgets, .mean = mean, .se = se};
+    char *claims = cmlt_write_claims(&ci, err, sizeof err);
     if (!claims) {
         fprintf(stderr, "table1_cmlt: %s\n", err);
         return 1;

@@ -40,10 +40,11 @@ static void *work(void *arg)
         c.n = n_steps;
         c.n_seed = n_steps / 16;
         struct cmlt_stats st;
-        cmlt_run((enum cmlt_algo)jobs[k].algo, &c, 1000003ull + (uint64_t)jobs[k].seed, (uint64_t)jobs[k].algo, img, &st,
-                 NULL, NULL);
+        cmlt_run((enum cmlt_algo)jobs[k].algo, &c, 1000003ull + (uint64_t)jobs[k].seed, (uint64_t)jobs[k].algo, img,
+                 &st, NULL, NULL);
         double s = 0;
-        for (int i = 0; i < 3 * W * W; i++) s += (img[i] - ref[i]) * (img[i] - ref[i]);
+        for (int i = 0; i < 3 * W * W; i++)
+            s += (img[i] - ref[i]) * (img[i] - ref[i]);
         jobs[k].rmse = sqrt(s / (3.0 * W * W));
     }
     free(img);
@@ -55,18 +56,24 @@ int main(int argc, char **argv)
     if (argc != 4) return fprintf(stderr, "usage: scan N_MILLIONS SEEDS REF_SPP\n"), 2;
     n_steps = (uint64_t)(atof(argv[1]) * 1e6);
     int seeds = atoi(argv[2]), spp = atoi(argv[3]);
-    if (n_steps < 1024 || seeds < 2 || 2 * seeds > MAX_JOBS || spp < 1) return fprintf(stderr, "scan: bad arguments\n"), 2;
+    if (n_steps < 1024 || seeds < 2 || 2 * seeds > MAX_JOBS || spp < 1)
+        return fprintf(stderr, "scan: bad arguments\n"), 2;
     ref = xmalloc(sizeof(double) * 3 * W * W);
     struct cmlt_ref_result rr;
     cmlt_reference(W, W, spp, 0xC3117ull, 2, ref, &rr, NULL);
     for (int s = 0; s < seeds; s++)
-        for (int a = 0; a < 2; a++) jobs[njobs++] = (struct job){a, s, 0};
+        for (int a = 0; a < 2; a++)
+            jobs[njobs++] = (struct job){a, s, 0};
     pthread_t t[2];
-    for (int i = 0; i < 2; i++) pthread_create(&t[i], NULL, work, NULL);
-    for (int i = 0; i < 2; i++) pthread_join(t[i], NULL);
+    for (int i = 0; i < 2; i++)
+        pthread_create(&t[i], NULL, work, NULL);
+    for (int i = 0; i < 2; i++)
+        pthread_join(t[i], NULL);
     double m[2] = {0}, v[2] = {0}; /* v: squared standard error of the mean */
-    for (int k = 0; k < njobs; k++) m[jobs[k].algo] += jobs[k].rmse / seeds;
-    for (int k = 0; k < njobs; k++) v[jobs[k].algo] += pow(jobs[k].rmse - m[jobs[k].algo], 2) / (seeds - 1) / seeds;
+    for (int k = 0; k < njobs; k++)
+        m[jobs[k].algo] += jobs[k].rmse / seeds;
+    for (int k = 0; k < njobs; k++)
+        v[jobs[k].algo] += pow(jobs[k].rmse - m[jobs[k].algo], 2) / (seeds - 1) / seeds;
     double r = m[0] / m[1], rse = r * sqrt(v[0] / m[0] / m[0] + v[1] / m[1] / m[1]);
     printf("pss1 %.4e +- %.1e  pss2 %.4e +- %.1e  ratio %.3f +- %.3f  refnoise %.2e b %.4g\n", m[0], sqrt(v[0]), m[1],
            sqrt(v[1]), r, rse, rr.noise_rmse, rr.b[0]);
