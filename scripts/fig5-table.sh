@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Markdown table of results/fig5.5/fig5.5.csv (kind,region,mean,stderr,seeds) or
-# results/fig5.6/fig5.6.csv (kind,relmse,stderr,seeds,...). usage: fig5-table.sh CSV > TABLE.md
+# results/fig5.6/fig5.6.csv (kind,relmse,stderr,seeds,accept_small,mutations_per_second,corrlen,corrlen_se,
+# blur8,blur8_se). usage: fig5-table.sh CSV > TABLE.md
 set -euo pipefail
 awk -F, '
 /^#/ { next }
 $1 == "kind" { fig = ($2 == "region") ? 5 : 6; next }
 fig == 5 { m[$1, $2] = $3; s[$1, $2] = $4; n = $5 }
-fig == 6 { printf "%s| %s | %.5f ± %.5f | %.3f | %.0f |\n", (rows++ ? "" : "| small step | relMSE (± s.e. over " $4 " seeds) | small-step acceptance | mutations/s |\n| --- | ---: | ---: | ---: |\n"), $1, $2, $3, $5, $6 }
+fig == 6 { printf "%s| %s | %.5f ± %.5f | %.2f ± %.2f | %.3f ± %.3f | %.3f | %.0f |\n", (rows++ ? "" : "| small step | relMSE (± s.e. over " $4 " seeds) | error correlation length (px) | error share in 8×8 blobs | small-step acceptance | mutations/s |\n| --- | ---: | ---: | ---: | ---: | ---: |\n"), $1, $2, $3, $7, $8, $9, $10, $5, $6 }
 END {
     if (fig != 5) exit
     print "| small step | mean Δψ (rad), all pixels | within 2 px of an edge | elsewhere | edge / elsewhere |"

@@ -8,10 +8,12 @@
  *   edges.png                              the edge mask (white: within 2 px of an edge)
  *   fig5.5.csv   kind,region,mean,stderr,seeds  (region all / edge / elsewhere: mean over the
  *                pixels of the region that saw a step; ratio: edge / elsewhere; stderr over seeds)
- *   fig5.5-lengths.csv  kind,length,steps,mean_dpsi,stderr  (steps pooled, stderr over seeds) */
+ *   fig5.5-lengths.csv  kind,length,steps,mean_dpsi,stderr  (steps pooled, stderr over seeds)
+ *   claims.csv, claims.md   the thesis's claims on the edge / elsewhere ratio with their verdicts */
 #include "base/util.h"
 #include "ch5/edge_mask.h"
 #include "ch5/fig5_common.h"
+#include "common/claims.h"
 #include "common/csv_meta.h"
 #include "path/scene_ready.h"
 #include <stdio.h>
@@ -22,13 +24,44 @@ enum { R_ALL, R_EDGE, R_ELSE, R_RATIO, REGIONS };
 enum { NK = 3 }; /* small-step kinds, in enum small_step's order: MMLT's, controlled, root */
 static const char *const region_name[REGIONS] = {"all", "edge", "elsewhere", "ratio"};
 
-static void mean_se(const double *x, int n, double *m, double *se)
+/* Thesis §5.3 on Fig. 5.5, tested on the edge / elsewhere ratio of the mean angle change (per seed,
+ * then mean and standard error over seeds): MMLT's steps change paths more near edges (ratio above
+ * 1), controlled steps less than MMLT's, and controlled steps show no halo, taken as a ratio within
+ * ±25 % of 1 (the ledger's similarity margin, as in fig4.6). */
+static void write_claims(const struct fig5_cfg *c, const double *ratio_mean, const double *ratio_se)
 {
-    double s = 0, v = 0;
-    for (int i = 0; i < n; i++) s += x[i];
-    *m = s / n;
-    for (int i = 0; i < n; i++) v += (x[i] - *m) * (x[i] - *m);
-    *se = sqrt(v / (n - 1) / n);
+    struct claims cl;
+    char command[64], zs[128], md[256];
+    snprintf(command, sizeof command, "make fig5.5 SCALE=%s", c->fig.scale);
+    claims_begin(&cl, c->fig.scale, command,
+                 "Claims of thesis §5.3 (Fig. 5.5) on %s at %dx%d, %ld mutations per pixel, %d seeds", c->fig.scene,
+                 c->width, c->height, c->mpp, c->seeds);
+    const char *stat = "mean angle change within 2 px of an edge / elsewhere";
+    double m[2] = {ratio_mean[0], 1}, s[2] = {ratio_se[0], 0}, z[2];
+    const bool both[2] = {true, true};
+    struct verdict v = verdict_extreme(m, s, both, 2, 0, +1, c->seeds, z);
+    snprintf(zs, sizeof zs, "no-edge-effect=%.2f", z[1]);
+    snprintf(md, sizeof md, "1, no edge effect (z = %.1f)", z[1]);
+    claims_row(&cl, "thesis §5.3", "MMLT small steps change the path more near edges (halos)", stat, "mmlt", m[0], s[0],
+               zs, md, &v);
+    v = verdict_extreme(ratio_mean, ratio_se, both, 2, 1, -1, c->seeds, z);
+    snprintf(zs, sizeof zs, "mmlt=%.2f", z[0]);
+    snprintf(md, sizeof md, "mmlt %.4g ± %.2g (z = %.1f)", ratio_mean[0], ratio_se[0], z[0]);
+    claims_row(&cl, "thesis §5.3", "controlled small steps are less sensitive to edges than MMLT's", stat, "controlled",
+               ratio_mean[1], ratio_se[1], zs, md, &v);
+    v = verdict_similar(ratio_mean[1], ratio_se[1], 1, 0, 0.25, c->seeds);
+    snprintf(zs, sizeof zs, "1=%.2f", v.zmin);
+    snprintf(md, sizeof md, "1 within ±25 %% (z = %.1f)", v.zmin);
+    claims_row(&cl, "thesis §5.3", "controlled small steps show no halos at edges", stat, "controlled", ratio_mean[1],
+               ratio_se[1], zs, md, &v);
+    char err[1024];
+    char *text = claims_finish(&cl, c->fig.out, err, sizeof err);
+    if (!text) {
+        fprintf(stderr, "%s\n", err);
+        exit(1);
+    }
+    fputs(text, stderr);
+    free(text);
 }
 
 int main(int argc, char **argv)
@@ -86,11 +119,13 @@ int main(int argc, char **argv)
     csv_meta(f, "p_large", "%g", c.p_large);
     fig5_meta_runs(f, &c);
     fprintf(f, "kind,region,mean,stderr,seeds\n");
+    double ratio_mean[NK], ratio_se[NK];
     for (int kind = 0; kind < NK; kind++)
         for (int g = 0; g < REGIONS; g++) {
             double m, se;
             mean_se(reg + ((size_t)kind * REGIONS + g) * c.seeds, c.seeds, &m, &se);
             fprintf(f, "%s,%s,%.9g,%.9g,%d\n", fig5_kind_name[kind], region_name[g], m, se, c.seeds);
+            if (g == R_RATIO) ratio_mean[kind] = m, ratio_se[kind] = se;
         }
     fclose(f);
     fig5_write_text(&c, "fig5.5.csv", buf);
@@ -110,6 +145,7 @@ int main(int argc, char **argv)
     fclose(f);
     fig5_write_text(&c, "fig5.5-lengths.csv", buf);
     free(buf);
+    write_claims(&c, ratio_mean, ratio_se);
     free(reg);
     free(len_mean);
     free(mask);

@@ -2,12 +2,17 @@
  * steps do nearly all the exploring): MMLT small steps vs controlled small steps (Alg. 4), equal
  * mutation counts, the same Gaussian kernel (sigma 1/64), beside a BDPT reference (cached as
  * results/reference/jewelry-bdpt-<spp>-<W>x<H>.exr). Writes to OUT: reference.png, mmlt.png,
- * controlled.png (first seed), and fig5.6.csv: kind,relmse,stderr,seeds with relMSE = mean over
- * pixels and channels of (I - R)^2 / (R^2 + 0.01), averaged over seeds, stderr over seeds. */
+ * controlled.png (first seed), fig5.6.csv (kind,relmse,stderr,seeds,accept_small,
+ * mutations_per_second,corrlen,corrlen_se,blur8,blur8_se: relMSE = mean over pixels and channels of
+ * (I - R)^2 / (R^2 + 0.01); corrlen, blur8 the error's correlation length in pixels and its share
+ * in 8x8 blobs, below; each averaged over seeds with its standard error over seeds) and
+ * claims.csv, claims.md: the thesis's claims with their verdicts. */
 #include "ch5/fig5_common.h"
+#include "common/claims.h"
 #include "common/csv_meta.h"
 #include "mc/render.h"
 #include "path/scene_ready.h"
+#include "stats/noise_corr.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,6 +36,83 @@ static struct image *reference(const struct scene *sc, const struct fig5_cfg *c,
     return ref;
 }
 
+/* How far the error of a render spreads: the lag (pixels) where the luminance error's
+ * autocorrelation, normalised at lag 1, falls below 1/e (noise_corr.h), mean of the horizontal and
+ * vertical lengths, lags up to 32; the statistic chapter 6 calls splotchiness. An axis whose lag-1
+ * correlation is not positive has no correlated part: its length is 1, the floor of the measure
+ * (a render dominated by isolated fireflies gives that). NAN only for an error-free render. */
+static double corr_length_px(const struct image *img, const struct image *ref)
+{
+    int maxlag = 32;
+    if (maxlag >= img->w) maxlag = img->w - 1;
+    if (maxlag >= img->h) maxlag = img->h - 1;
+    double *e = error_field(img, ref), rx[33], ry[33];
+    bool ok = maxlag >= 2 && corr_profiles(e, img->w, img->h, maxlag, rx, ry);
+    free(e);
+    if (!ok) return NAN;
+    double lx = corr_length_lag1(rx, maxlag + 1), ly = corr_length_lag1(ry, maxlag + 1);
+    return 0.5 * ((isnan(lx) ? 1 : lx) + (isnan(ly) ? 1 : ly));
+}
+
+/* The share of the relative error's energy that survives averaging over k x k blocks: 1/k^2 for
+ * white noise, towards 1 when the error comes in blobs of k pixels or more (splotches). The error
+ * is relMSE's, (s I - R) / sqrt(R^2 + 0.01) per channel, after scaling I to R's mean (s), so that
+ * the chain's one normalisation error does not count as a blob covering the whole image. */
+static double blur_share(const struct image *img, const struct image *ref, int k)
+{
+    double s = mean_lum_scale(img, ref), all = 0, blurred = 0;
+    for (int by = 0; by < img->h / k; by++)
+        for (int bx = 0; bx < img->w / k; bx++)
+            for (int ch = 0; ch < 3; ch++) {
+                double m = 0;
+                for (int y = by * k; y < (by + 1) * k; y++)
+                    for (int x = bx * k; x < (bx + 1) * k; x++) {
+                        size_t i = 3 * ((size_t)y * img->w + x) + (size_t)ch;
+                        double r = ref->px[i], e = (s * img->px[i] - r) / sqrt(r * r + 0.01);
+                        m += e;
+                        all += e * e;
+                    }
+                m /= (double)k * k;
+                blurred += m * m * k * k; /* a block's squared mean stands for its k^2 pixels */
+            }
+    return all > 0 ? blurred / all : NAN;
+}
+
+/* Thesis §5.3 on Fig. 5.6: controlled small steps are not better (their relMSE is the larger) and
+ * their noise is streaky and splotchy (the longer error correlation length, the larger share of the
+ * error in 8 x 8 blobs). */
+enum { Q_RELMSE, Q_CORRLEN, Q_BLUR8, NQ };
+static void write_claims(const struct fig5_cfg *c, double mean[2][NQ], double se[2][NQ])
+{
+    static const char *const claim[NQ] = {"controlled small steps are not better than MMLT's (worse noise)",
+                                          "controlled small steps give streaky, splotchy noise",
+                                          "controlled small steps give streaky, splotchy noise"};
+    static const char *const stat[NQ] = {"relMSE against BDPT", "error correlation length (pixels)",
+                                         "error share surviving an 8x8 blur"};
+    struct claims cl;
+    char command[64], zs[128], md[256];
+    snprintf(command, sizeof command, "make fig5.6 SCALE=%s", c->fig.scale);
+    claims_begin(&cl, c->fig.scale, command,
+                 "Claims of thesis §5.3 (Fig. 5.6) on %s at %dx%d, %ld mutations per pixel, %d seeds", c->fig.scene,
+                 c->width, c->height, c->mpp, c->seeds);
+    const bool both[2] = {true, true};
+    for (int q = 0; q < NQ; q++) {
+        double m[2] = {mean[0][q], mean[1][q]}, s[2] = {se[0][q], se[1][q]}, z[2];
+        struct verdict v = verdict_extreme(m, s, both, 2, 1, +1, c->seeds, z);
+        snprintf(zs, sizeof zs, "mmlt=%.2f", z[0]);
+        snprintf(md, sizeof md, "mmlt %.4g ± %.2g (z = %.1f)", m[0], s[0], z[0]);
+        claims_row(&cl, "thesis §5.3", claim[q], stat[q], "controlled", m[1], s[1], zs, md, &v);
+    }
+    char err[1024];
+    char *text = claims_finish(&cl, c->fig.out, err, sizeof err);
+    if (!text) {
+        fprintf(stderr, "%s\n", err);
+        exit(1);
+    }
+    fputs(text, stderr);
+    free(text);
+}
+
 int main(int argc, char **argv)
 {
     struct fig5_cfg c = {.prog = "fig5_6", .fig.out = "results/fig5.6", .p_large = 0.01};
@@ -50,15 +132,17 @@ int main(int argc, char **argv)
     fig5_meta_head(f, &c, title);
     csv_meta(f, "reference_spp", "%d", spp);
     fig5_meta_runs(f, &c);
-    fprintf(f, "kind,relmse,stderr,seeds,accept_small,mutations_per_second\n");
+    fprintf(f, "kind,relmse,stderr,seeds,accept_small,mutations_per_second,corrlen,corrlen_se,blur8,blur8_se\n");
+    double mean[2][NQ], se[2][NQ];
+    double *x = xmalloc(sizeof *x * NQ * (size_t)c.seeds);
     for (int kind = 0; kind < 2; kind++) {
-        double s = 0, s2 = 0, acc = 0, rate = 0;
+        double acc = 0, rate = 0;
         for (int i = 0; i < c.seeds; i++) {
             struct mlt_result r;
             fig5_run(sc, &c, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, c.fig.seed + (uint64_t)i, false, &r);
-            double e = img_relmse(r.img, ref, 0.01);
-            s += e;
-            s2 += e * e;
+            x[i] = img_relmse(r.img, ref, 0.01);
+            x[c.seeds + i] = corr_length_px(r.img, ref);
+            x[2 * c.seeds + i] = blur_share(r.img, ref, 8);
             acc += cell_mean(&r.stats.total[PROPOSAL_SMALL]) / c.seeds;
             rate += r.mutations / r.seconds / c.seeds;
             if (i == 0) {
@@ -69,12 +153,16 @@ int main(int argc, char **argv)
             }
             mlt_result_free(&r);
         }
-        double m = s / c.seeds, se = sqrt(fmax(0, s2 / c.seeds - m * m) / (c.seeds - 1));
-        fprintf(f, "%s,%.9g,%.9g,%d,%.6f,%.0f\n", fig5_kind_name[kind], m, se, c.seeds, acc, rate);
+        for (int q = 0; q < NQ; q++)
+            mean_se(x + (size_t)q * c.seeds, c.seeds, &mean[kind][q], &se[kind][q]);
+        fprintf(f, "%s,%.9g,%.9g,%d,%.6f,%.0f,%.6g,%.3g,%.6g,%.3g\n", fig5_kind_name[kind], mean[kind][0], se[kind][0],
+                c.seeds, acc, rate, mean[kind][1], se[kind][1], mean[kind][2], se[kind][2]);
     }
+    free(x);
     fclose(f);
     fig5_write_text(&c, "fig5.6.csv", buf);
     free(buf);
+    write_claims(&c, mean, se);
     img_destroy(ref);
     scene_free(sc);
     return 0;

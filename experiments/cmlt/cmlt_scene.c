@@ -1,6 +1,7 @@
 /* The CMLT §5 toy: emission, visibility, geometric term, ray cast. Geometry in cmlt_scene.h. */
 #include "cmlt/cmlt_scene.h"
 #include <math.h>
+#include <string.h>
 
 double cmlt_phi1(void) { return CMLT_A1 * (CMLT_EXPK1 - 1.0) / CMLT_K1; }
 double cmlt_phi2(void) { return CMLT_LE2; }
@@ -10,7 +11,7 @@ rgb cmlt_le(int light, double la)
 {
     if (light == CMLT_L1) {
         double s = CMLT_A1 * exp(CMLT_K1 * la);
-        return v3(s, s * (0.15 + 0.75 * la), s * (0.9 - 0.8 * la));
+        return v3(s, s * (CMLT_G0 + CMLT_G1 * la), s * (CMLT_B0 + CMLT_B1 * la));
     }
     if (light == CMLT_L2) return v3(0, CMLT_LE2, 0);
     return v3s(0);
@@ -107,15 +108,8 @@ void cmlt_eval(const struct cmlt_path *x, struct cmlt_eval *e)
     e->f = v3s(0);
     e->fs = e->p1 = e->p2 = 0;
     if (x->light != CMLT_L1 && x->light != CMLT_L2) return;
-    double les;
-    rgb le;
-    if (x->light == CMLT_L1) {
-        les = CMLT_A1 * exp(CMLT_K1 * x->la);
-        le = v3(les, les * (0.15 + 0.75 * x->la), les * (0.9 - 0.8 * x->la));
-    } else {
-        les = CMLT_LE2;
-        le = v3(0, CMLT_LE2, 0);
-    }
+    rgb le = cmlt_le(x->light, x->la);
+    double les = x->light == CMLT_L1 ? le.x : le.y; /* the max component */
     e->p1 = les * (1.0 / (CMLT_A1 * (CMLT_EXPK1 - 1.0) / CMLT_K1 + CMLT_LE2));
     if (!cmlt_visible(x)) return;
     double g = cmlt_geom(x);
@@ -123,4 +117,40 @@ void cmlt_eval(const struct cmlt_path *x, struct cmlt_eval *e)
     double k = CMLT_RHO / M_PI * g;
     e->f = vscale(le, k);
     e->fs = les * k;
+}
+
+static uint64_t fnv(uint64_t h, double v)
+{
+    unsigned char b[sizeof v];
+    memcpy(b, &v, sizeof v);
+    for (size_t i = 0; i < sizeof v; i++)
+        h = (h ^ b[i]) * 0x100000001b3ull;
+    return h;
+}
+
+uint64_t cmlt_scene_fingerprint(void)
+{
+    uint64_t h = 0xcbf29ce484222325ull;
+    /* 17 x 17 ground points (the grid's odd step puts some near the strip's shadow and the hole's
+     * beam), 9 x 9 points on each light, and 9 x 9 directions per ground point */
+    for (int i = 0; i <= 16; i++)
+        for (int j = 0; j <= 16; j++) {
+            double gx = (i + 0.37) / 17, gy = (j + 0.61) / 17;
+            for (int l = CMLT_L1; l <= CMLT_L2; l++)
+                for (int a = 0; a <= 8; a++)
+                    for (int b = 0; b <= 8; b++) {
+                        struct cmlt_path x = {gx, gy, l, (a + 0.29) / 9, (b + 0.53) / 9};
+                        struct cmlt_eval e;
+                        cmlt_eval(&x, &e);
+                        h = fnv(fnv(fnv(fnv(fnv(h, e.f.x), e.f.y), e.f.z), e.p1), e.p2);
+                    }
+            for (int a = 0; a <= 8; a++)
+                for (int b = 0; b <= 8; b++) {
+                    double ph = 2 * M_PI * (a + 0.31) / 9, ct = (b + 0.5) / 9, st = sqrt(1 - ct * ct);
+                    struct cmlt_path x;
+                    bool hit = cmlt_trace(gx, gy, v3(st * cos(ph), st * sin(ph), ct), &x);
+                    h = fnv(h, hit ? x.light + x.la + 2 * x.lb : -1);
+                }
+        }
+    return h;
 }

@@ -8,7 +8,7 @@
  *            beyond the ground's near edge y = 0. The gap keeps the geometric term bounded
  *            (G <= 0.325/0.03^2 = 361) but strongly peaked near the edge: that peak is what the
  *            Eq. 13 target of chart 1 (proportional to G) chases.
- *            Emission Le1(x) = A1 exp(K1 x) (1, 0.15 + 0.75 x, 0.9 - 0.8 x): grows along x and goes
+ *            Emission Le1(x) = A1 exp(K1 x) (1, G0 + G1 x, B0 + B1 x): grows along x and goes
  *            from magenta-red to orange-yellow; max component A1 exp(K1 x).
  *   strip    thin black two-sided occluder in the plane y = STRIP_Y: x in [STRIP_X0, STRIP_X1],
  *            z in [0, 1]: a vertical strip in front of light 1's brightest part.
@@ -24,12 +24,17 @@
 
 #include "base/vecmath.h"
 #include <stdbool.h>
+#include <stdint.h>
 
 #define CMLT_RHO 0.8
 #define CMLT_L1_Y (-0.03)
-#define CMLT_A1 0.5
+#define CMLT_A1 0.11
 #define CMLT_K1 3.0
 #define CMLT_EXPK1 20.085536923187668 /* exp(CMLT_K1), checked by a test */
+#define CMLT_G0 0.15                  /* light 1's green and blue ramps (red is 1, the max component) */
+#define CMLT_G1 0.75
+#define CMLT_B0 0.9
+#define CMLT_B1 (-0.8)
 #define CMLT_STRIP_Y 0.25
 #define CMLT_STRIP_X0 0.80
 #define CMLT_STRIP_X1 0.84
@@ -75,5 +80,10 @@ bool cmlt_trace(double gx, double gy, vec3 d, struct cmlt_path *x);
 
 /* f, f*, p1, p2 of a path. */
 void cmlt_eval(const struct cmlt_path *x, struct cmlt_eval *e);
+
+/* A hash (FNV-1a over the exact doubles) of what the functions above return on a fixed set of paths
+ * and rays: any change to the toy's geometry, emission or visibility changes it, so that a cached
+ * reference keyed by it cannot outlive the scene it was computed for. */
+uint64_t cmlt_scene_fingerprint(void);
 
 #endif

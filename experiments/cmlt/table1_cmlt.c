@@ -3,9 +3,11 @@
  * the two-light toy (experiments/cmlt/cmlt_scene.h), at two sample budgets, over several seeds.
  * Writes into --out: table1.csv (algorithm,n,rmse: mean over seeds), table1_stats.csv (mean, standard
  * error, seeds, throughput; what `make check-table1-cmlt` compares), table1_seeds.csv, table1.md,
- * reference.exr/.png (cached, keyed by reference.key), and <algo>_<n>.exr/.png of the first seed.
+ * reference.exr/.png (cached, keyed by reference.key), <algo>_<n>.exr/.png of the first seed, and
+ * claims.csv/claims.md (the paper's orderings per budget with their verdicts, cmlt_claims.h).
  * --bench instead times every algorithm on one core and prints chain steps per second. */
 #include "base/util.h"
+#include "cmlt/cmlt_claims.h"
 #include "cmlt/cmlt_mcmc.h"
 #include "cmlt/cmlt_reference.h"
 #include "cmlt/cmlt_scene.h"
@@ -199,10 +201,10 @@ static struct image *get_reference(const struct opts *o, struct cmlt_ref_result 
     char path[1024], keypath[1024], key[512], err[512];
     snprintf(path, sizeof path, "%s/reference.exr", o->out);
     snprintf(keypath, sizeof keypath, "%s/reference.key", o->out);
-    snprintf(key, sizeof key,
-             "cmlt-toy-v2 res=%d spp=%d L1Y=%g A1=%g K1=%g strip=%g,%g,%g hole=%g,%g,%g L2=%g,%g rho=%g\n",
-             o->res, o->ref_spp, CMLT_L1_Y, CMLT_A1, CMLT_K1, CMLT_STRIP_Y, CMLT_STRIP_X0, CMLT_STRIP_X1, CMLT_HOLE_X,
-             CMLT_HOLE_Z, CMLT_HOLE_R, CMLT_L2_Y, CMLT_LE2, CMLT_RHO);
+    /* The scene's fingerprint stands for every constant and line of the toy; bump the version when
+     * cmlt_reference.c's estimator changes. */
+    snprintf(key, sizeof key, "cmlt-reference-v3 res=%d spp=%d scene=%016llx\n", o->res, o->ref_spp,
+             (unsigned long long)cmlt_scene_fingerprint());
     FILE *f = fopen(keypath, "r");
     if (f) {
         char line[1024] = "";
@@ -466,6 +468,16 @@ int main(int argc, char **argv)
     write_text(path, &md);
     snprintf(path, sizeof path, "%s/table1.csv", o.out);
     write_text(path, &csv);
+    char command[64], scale[64];
+    snprintf(command, sizeof command, "make table1-cmlt SCALE=%s", o.scale);
+    snprintf(scale, sizeof scale, "%s%s", o.scale, partial ? " (interrupted)" : "");
+    struct cmlt_claims_in ci = {.dir = o.out, .scale = scale, .command = command, .seeds = o.seeds,
+                                .nbudgets = o.nbudgets, .budgets = o.budgets, .mean = mean, .se = se};
+    char *claims = cmlt_write_claims(&ci, err, sizeof err);
+    if (!claims) {
+        fprintf(stderr, "table1_cmlt: %s\n", err);
+        return 1;
+    }
     for (int b = 0; b < o.nbudgets; b++)
         for (int a = 0; a < CMLT_NALGO; a++) {
             struct image im = {.w = o.res, .h = o.res, .px = p.keep[b * CMLT_NALGO + a]};
@@ -481,6 +493,8 @@ int main(int argc, char **argv)
             }
         }
     fputs(md.buf, stderr);
+    fputs(claims, stderr);
+    free(claims);
     free(csv.buf);
     free(stats.buf);
     free(seeds.buf);

@@ -293,9 +293,12 @@ Test(stat_cmlt, chart_density_chisq)
 
 /* Every algorithm converges to the reference: on a 32 x 32 image, the RMSE at n = 2M is below half
  * the RMSE at n = 250k (n^-1/2 predicts 1/2.83) and above 1/6 of it, and the image's total agrees
- * with the reference's within 3%. One seed per algorithm; the margins are wide compared with the
- * seed-to-seed spread seen in the experiment (a few %), so the false-failure rate is far below
- * 0.01. Reference: 16384 spp per pixel, its own noise far below the chains' error at 32 x 32. */
+ * with the reference's within 10%. One seed per algorithm. Seed-to-seed spread of this set-up (8
+ * seeds each, toy with A1 = 0.11): the 250k/2M RMSE ratio 2.6-3.0 (sd <= 0.37); the total's relative
+ * error sd 0.8-1.7 %, but 3.2 % for PSS-MLT-AVG, whose two Eq. 13 chains carry the light seen through
+ * the hole (most of the image since A1 = 0.11) in rare excursions: 10 % is 3.2 of its sd, the
+ * two-sided Sidak bound for alpha = 0.01 over the six algorithms being 3.0. Reference: 16384 spp per
+ * pixel, its own noise far below the chains' error at 32 x 32. */
 Test(stat_cmlt, all_algorithms_converge, .timeout = 600)
 {
     const int W = 32;
@@ -323,7 +326,7 @@ Test(stat_cmlt, all_algorithms_converge, .timeout = 600)
             }
             e[b] = sqrt(s / npx);
             if (b == 1)
-                cr_assert(fabs(sum / ref_sum - 1) < 0.03, "%s: image total off by %.3g", cmlt_algo_names[a],
+                cr_assert(fabs(sum / ref_sum - 1) < 0.10, "%s: image total off by %.3g", cmlt_algo_names[a],
                           sum / ref_sum - 1);
         }
         cr_log_info("%s: RMSE %.4g -> %.4g (ratio %.2f, n^-1/2 predicts 2.83)", cmlt_algo_names[a], e[0], e[1],
