@@ -117,13 +117,14 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
                  * s = 1 it was any point: a lone y_0 is only connected to along its direction) */
                 if (y0.kind == VK_ENV) y0.p = y1->p;
             }
-            ok = (y1 ? invert_step(pc, STREAM_EMITTER, &y0, 1, y1, &b->base) : invert_emitter(pc, &y0, 1, 0, &b->base)) &&
+            ok = (y1 ? invert_step(pc, STREAM_EMITTER, &y0, 1, y1, &b->base)
+                     : invert_emitter(pc, &y0, 1, 0, &b->base)) &&
                  walk_extend_to(pc, &b->base, v, len - 1, STREAM_EMITTER, y1) == len && !b->bad &&
                  same_vertex(&v[0], &y0, tol) && (!y1 || same_vertex(&v[1], y1, tol));
         } else {
             /* the walk's step must reach the vertex its numbers were inverted toward */
-            ok = invert_step(pc, st, v, n, tgt[c], &b->base) && walk_extend_to(pc, &b->base, v, n, st, tgt[c]) == n + 1 &&
-                 !b->bad && same_vertex(&v[n], tgt[c], tol);
+            ok = invert_step(pc, st, v, n, tgt[c], &b->base) &&
+                 walk_extend_to(pc, &b->base, v, n, st, tgt[c]) == n + 1 && !b->bad && same_vertex(&v[n], tgt[c], tol);
             take = 1;
             len = n + 1;
         }

@@ -75,11 +75,11 @@ static bool invert_dir(const struct vertex *at, vec3 wo, int i, struct tee *t)
 }
 
 /* Block i, first aimed from the walk's vertex `at` at next = v[i+1] (closed loop); cur = v[i].
- * A delta lobe accepts only its own direction, which an offset hit point turns by about twice the offset over the
- * sphere's radius: then its numbers (the lobe) come from v[i] itself, and the walk follows the lobe
- * from `at`. Last, the direction the walk left v[i] in (-v[i+1].wi, exact where the two points are
- * not: a segment of 0.4 mm from the glass sphere to the floor it touches spans 1e-4 rad of hit
- * rounding), if v[i+1] lies on that ray to within a hit point's rounding. */
+ * A delta lobe accepts only its own direction, which an offset hit point turns by about twice the
+ * offset over the sphere's radius: then its numbers (the lobe) come from v[i] itself, and the walk
+ * follows the lobe from `at`. Last, the direction the walk left v[i] in (-v[i+1].wi, exact where
+ * the two points are not: a segment of 0.4 mm from the glass sphere to the floor it touches spans
+ * 1e-4 rad of hit rounding), if v[i+1] lies on that ray to within a hit point's rounding. */
 static bool scatter(const struct vertex *at, const struct vertex *cur, const struct vertex *next, int i, struct tee *t)
 {
     if (!at->bc.b || !cur->bc.b) return false;
@@ -114,8 +114,8 @@ static const struct vertex *follow(const struct scene *sc, const struct vertex *
                                    const struct tee *t, const struct vertex *target, struct vertex *buf)
 {
     struct vertex hit;
-    if (have_d && !t->short_ && walk_hit(sc, at, d, &hit) && hit.prim == target->prim) *buf = hit;
-    else return target;
+    if (!(have_d && !t->short_ && walk_hit(sc, at, d, &hit) && hit.prim == target->prim)) return target;
+    *buf = hit;
     return buf;
 }
 
@@ -163,8 +163,8 @@ static bool camera_blocks(const struct path_ctx *pc, const struct vertex *v, int
     return true;
 }
 
-static bool emitter_blocks(const struct path_ctx *pc, const struct vertex *v, int n, const struct vertex *last, int from,
-                           struct sampler *w)
+static bool emitter_blocks(const struct path_ctx *pc, const struct vertex *v, int n, const struct vertex *last,
+                           int from, struct sampler *w)
 {
     int nv = last ? n - 1 : n;
     const struct scene *sc = pc->sc;
@@ -218,5 +218,6 @@ bool invert_emitter(const struct path_ctx *pc, const struct vertex *v, int n, in
 bool invert_step(const struct path_ctx *pc, int stream, const struct vertex *v, int n, const struct vertex *to,
                  struct sampler *w)
 {
-    return stream == STREAM_CAMERA ? camera_blocks(pc, v, n + 1, to, n - 1, w) : emitter_blocks(pc, v, n + 1, to, n - 1, w);
+    return stream == STREAM_CAMERA ? camera_blocks(pc, v, n + 1, to, n - 1, w)
+                                   : emitter_blocks(pc, v, n + 1, to, n - 1, w);
 }

@@ -2,11 +2,11 @@
  * error, and that PT and BDPT stay unbiased with them and gain from them. */
 #include <criterion/criterion.h>
 
-#include "support/agree.h"
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "path/scene_ready.h"
 #include "sampler/sobol02.h"
+#include "support/agree.h"
 #include "support/scenes.h"
 #include <math.h>
 #include <string.h>
@@ -33,8 +33,9 @@ Test(sobol02, every_pair_of_dimensions_is_a_0_m_2_net)
                             count[cx * (1 << (m - a)) + cy]++;
                         }
                         for (int c = 0; c < n; c++)
-                            cr_assert_eq(count[c], 1, "m %d key %d pair %u block %u: interval %d of shape 2^-%d x 2^-%d holds %d",
-                                         m, (int)key, pair, block, c, a, m - a, count[c]);
+                            cr_assert_eq(count[c], 1,
+                                         "m %d key %d pair %u block %u: interval %d of shape 2^-%d x 2^-%d holds %d", m,
+                                         (int)key, pair, block, c, a, m - a, count[c]);
                     }
                 }
 }
@@ -74,7 +75,8 @@ struct sob_ctx {
 static struct image *render_sob(void *p, uint64_t seed)
 {
     struct sob_ctx *c = p;
-    struct render_opts o = {.method = c->m, .spp = c->spp, .seed = seed, .threads = 2, .max_length = 8, .sobol = c->sobol};
+    struct render_opts o = {
+        .method = c->m, .spp = c->spp, .seed = seed, .threads = 2, .max_length = 8, .sobol = c->sobol};
     struct render_stats st;
     return render_mc(c->sc, &o, &st);
 }
@@ -131,8 +133,10 @@ Test(stat_sobol02, sobol_lowers_pt_error_on_cornell_box)
     double m[2], v[2];
     for (int q = 0; q < 2; q++) {
         m[q] = v[q] = 0;
-        for (int s = 0; s < 6; s++) m[q] += e[q][s] / 6;
-        for (int s = 0; s < 6; s++) v[q] += (e[q][s] - m[q]) * (e[q][s] - m[q]) / 5;
+        for (int s = 0; s < 6; s++)
+            m[q] += e[q][s] / 6;
+        for (int s = 0; s < 6; s++)
+            v[q] += (e[q][s] - m[q]) * (e[q][s] - m[q]) / 5;
     }
     double z = (m[0] - m[1]) / sqrt(v[0] / 6 + v[1] / 6);
     fprintf(stderr, "sobol02: PT 16 spp squared error independent %.4g, sobol %.4g (ratio %.3f), z %.1f\n", m[0], m[1],
