@@ -111,7 +111,7 @@ static void parse(int argc, char **argv, struct args *a)
         OPT_SEED(a->mc.seed, .help = "random seed; same seed and threads -> same output", .def = "1"),
         {"--sampler", OPT_CHOICE, OPT_DST(a->sampler), .choices = samplers, .def = "independent", .tag = MC_ONLY,
          .help = "pt/bdpt numbers: independent, or sobol (scrambled (0,2)-sequences per pixel, as Tungsten's default): "
-                 "lower error at equal samples, equally unbiased"},
+                 "equally unbiased, lower error where stratification pays (pixel area, direct light; not fireflies)"},
         OPT_THREADS(a->mc.threads, .hi = 1024, .help = "worker threads (default: all cores)", .def_int = cpu_count),
         OPT_MAX_LENGTH(a->mc.max_length, .help = "maximum path length in segments (default: integrator.max_bounces)"),
         OPT_MIN_LENGTH(a->mc.min_length, .hi = MAX_PATH_LENGTH,
@@ -438,7 +438,8 @@ int main(int argc, char **argv)
         partial = st.partial;
         if (ok && !ctl.err[0] && dist_root())
             printf("%s%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",
-                   partial ? "PARTIAL (interrupted) " : "", a.method, a.mc.sobol ? " (sobol)" : "", st.samples, st.spp, st.seconds, st.samples / st.seconds,
+                   partial ? "PARTIAL (interrupted) " : "", a.method, a.mc.sobol ? " (sobol)" : "", st.samples, st.spp,
+                   st.seconds, st.samples / st.seconds,
                    threads_note(a.mc.threads), st.nonfinite, nonfinite_note(&st.nonfinite_len));
         if (ok && !ctl.err[0] && dist_root()) warn_nonfinite(st.nonfinite, &st.nonfinite_len);
         img_destroy(img);
