@@ -47,12 +47,11 @@ Test(sobol02, every_pair_of_dimensions_is_a_0_m_2_net)
 Test(sobol02, pairs_and_pixels_are_decorrelated)
 {
     const int n = 4096;
-    double s[4] = {0}, sxx = 0, syy[3] = {0}, sxy[3] = {0};
+    double sxx = 0, syy[3] = {0}, sxy[3] = {0};
     for (int i = 0; i < n; i++) {
         double x = sobol02_sample(7, (uint32_t)i, 0) - 0.5;
         double y[3] = {sobol02_sample(7, (uint32_t)i, 2) - 0.5, sobol02_sample(7, (uint32_t)i, 3) - 0.5,
                        sobol02_sample(8, (uint32_t)i, 0) - 0.5};
-        s[0] += x;
         sxx += x * x;
         for (int k = 0; k < 3; k++) {
             syy[k] += y[k] * y[k];
