@@ -54,14 +54,7 @@ static void write_claims(const struct fig5_cfg *c, const double *ratio_mean, con
     snprintf(md, sizeof md, "1 within ±25 %% (z = %.1f)", v.zmin);
     claims_row(&cl, "thesis §5.3", "controlled small steps show no halos at edges", stat, "controlled", ratio_mean[1],
                ratio_se[1], zs, md, &v);
-    char err[1024];
-    char *text = claims_finish(&cl, c->fig.out, err, sizeof err);
-    if (!text) {
-        fprintf(stderr, "%s\n", err);
-        exit(1);
-    }
-    fputs(text, stderr);
-    free(text);
+    claims_finish_print(&cl, c->fig.out);
 }
 
 int main(int argc, char **argv)

@@ -103,14 +103,7 @@ static void write_claims(const struct fig5_cfg *c, double mean[2][NQ], double se
         snprintf(md, sizeof md, "mmlt %.4g ± %.2g (z = %.1f)", m[0], s[0], z[0]);
         claims_row(&cl, "thesis §5.3", claim[q], stat[q], "controlled", m[1], s[1], zs, md, &v);
     }
-    char err[1024];
-    char *text = claims_finish(&cl, c->fig.out, err, sizeof err);
-    if (!text) {
-        fprintf(stderr, "%s\n", err);
-        exit(1);
-    }
-    fputs(text, stderr);
-    free(text);
+    claims_finish_print(&cl, c->fig.out);
 }
 
 int main(int argc, char **argv)

@@ -68,3 +68,15 @@ char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen
     free(cl->md);
     return NULL;
 }
+
+void claims_finish_print(struct claims *cl, const char *dir)
+{
+    char err[1024];
+    char *text = claims_finish(cl, dir, err, sizeof err);
+    if (!text) {
+        fprintf(stderr, "%s\n", err);
+        exit(1);
+    }
+    fputs(text, stderr);
+    free(text);
+}

@@ -25,5 +25,7 @@ void claims_row(struct claims *cl, const char *source, const char *claim, const 
 /* Writes DIR/claims.csv and DIR/claims.md and returns the Markdown (caller frees), or NULL with one
  * line in err. */
 char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen);
+/* claims_finish, then the Markdown on stderr; on failure its one line there and exit status 1. */
+void claims_finish_print(struct claims *cl, const char *dir);
 
 #endif

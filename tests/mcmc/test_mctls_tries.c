@@ -13,23 +13,6 @@
 #include <stdio.h>
 #include <string.h>
 
-struct tries_ctx {
-    const struct scene *sc;
-    struct mlt_opts o;
-};
-
-static struct image *render_tries(void *p, uint64_t seed)
-{
-    struct tries_ctx *c = p;
-    struct mlt_opts o = c->o;
-    o.seed = seed;
-    struct mlt_result r;
-    char err[256];
-    cr_assert(mlt_render(c->sc, &o, &r, err, sizeof err), "%s", err);
-    cr_assert_eq(r.nonfinite, 0);
-    return r.img;
-}
-
 static struct image *render_bdpt(void *p, uint64_t seed)
 {
     struct render_opts o = {.method = METHOD_BDPT, .spp = 16, .seed = seed, .threads = 2, .max_length = 8};
@@ -54,7 +37,7 @@ Test(stat_mctls_tries, drawn_trials_agree_with_bdpt_on_cornell_box, .timeout = 6
     } cfg[] = {{"2 trials", 2, false}, {"1 trial among k + 2", 1, true}};
     const int n = sizeof cfg / sizeof *cfg;
     for (int i = 0; i < n; i++) {
-        struct tries_ctx c = {sc,
+        struct mlt_ctx c = {sc,
                               {.method = MLT_MMLT,
                                .p_large = 0.5,
                                .mutations = 16L * 64 * 64,
@@ -65,7 +48,7 @@ Test(stat_mctls_tries, drawn_trials_agree_with_bdpt_on_cornell_box, .timeout = 6
                                .mctls_tries = cfg[i].tries,
                                .mctls_count_t0 = cfg[i].t0}};
         pss_opts_default(&c.o.pss, 64, 64);
-        stack_runs(&a, render_tries, &c, 12, 5000 + 100 * i, 8);
+        stack_runs(&a, render_mlt, &c, 12, 5000 + 100 * i, 8);
         double pm, worst;
         int f = stack_compare(&a, &ref, n, &pm, &worst);
         fprintf(stderr, "cornell mctls %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", cfg[i].name,

@@ -21,11 +21,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-struct mlt_ctx {
-    const struct scene *sc;
-    struct mlt_opts o;
-};
-
 static const char *const method_names[] = {"pssmlt", "mmlt", "pitp"};
 
 static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, long mutations)
@@ -35,17 +30,6 @@ static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, 
     pss_opts_default(&o->pss, sc->cam.width, sc->cam.height);
 }
 
-static struct image *render_mlt(void *p, uint64_t seed)
-{
-    struct mlt_ctx *c = p;
-    struct mlt_opts o = c->o;
-    o.seed = seed;
-    struct mlt_result r;
-    char err[256];
-    cr_assert(mlt_render(c->sc, &o, &r, err, sizeof err), "%s", err);
-    cr_assert_eq(r.nonfinite, 0);
-    return r.img;
-}
 
 static struct image *render_plain(const struct scene *sc, enum method m, int spp, uint64_t seed)
 {

@@ -80,3 +80,15 @@ int stack_compare(const struct stack *a, const struct stack *b, int families, do
     if (*pmean < alpha) fails++;
     return fails;
 }
+
+struct image *render_mlt(void *p, uint64_t seed)
+{
+    struct mlt_ctx *c = p;
+    struct mlt_opts o = c->o;
+    o.seed = seed;
+    struct mlt_result r;
+    char err[256];
+    cr_assert(mlt_render(c->sc, &o, &r, err, sizeof err), "%s", err);
+    cr_assert_eq(r.nonfinite, 0);
+    return r.img;
+}

@@ -4,6 +4,7 @@
 #define AGREE_H
 
 #include "io/image.h"
+#include "mcmc/mlt.h"
 #include <stdint.h>
 
 #define AGREE_MAX_REPS 16
@@ -24,5 +25,13 @@ void stack_runs(struct stack *out, render_fn render, void *ctx, int reps, uint64
  * receive p-values. */
 int stack_compare(const struct stack *a, const struct stack *b, int families, double *pmean, double *worst);
 double image_mean_luminance(const struct image *im);
+
+/* A replicate of an MLT render for stack_runs: ctx is a struct mlt_ctx, rendered with its options
+ * and the replicate's seed (asserting success and no non-finite contribution). */
+struct mlt_ctx {
+    const struct scene *sc;
+    struct mlt_opts o;
+};
+struct image *render_mlt(void *ctx, uint64_t seed);
 
 #endif
