@@ -85,6 +85,34 @@ $(eval $(call CH6_FIG,fig6.5,living-room,full))
 $(eval $(call CH6_FIG,fig6.6,staircase,full))
 $(eval $(call CH6_FIG,fig6.7,ajar,full))
 
+# make check-fig6.2 … check-fig6.4 (6.5-6.7 are the same runs' full images): the equal-time runs at
+# a fixed number of mutations per pixel instead of a time budget, so that nothing depends on the
+# machine's speed: 16 mutations per pixel, quick resolution, 8 seeds (101-108; the baseline's 1-8),
+# paths of length >= 3, against the cached quick reference. Every statistic of stats.csv (relMSE,
+# its normalisation-free and firefly-robust variants, the splotch statistics, the non-zero ratios,
+# the seed pass's error) per method: Welch t over the seeds, Sidak alpha = 0.01 over the rows. The
+# baselines are `make ch6-baselines`.
+CH6_CHECK_OPTS := --spp 16 --seeds 8 --min-length 3 --reference-spp 256 --render-args "--p-large 0.1"
+CH6_CHECK_ajar := --resolution 256x144
+define CH6_CHECK
+.PHONY: check-$(1)
+check-$(1): deps $$(BIN)/ch6_equal $$(BIN)/render $$(CHECK_STATS)
+	$$(BIN)/ch6_equal --scene scenes/$(2)/scene.json --out results/check-$(1) --first-seed 101 $$(CH6_CHECK_OPTS) $$(CH6_CHECK_$(2)) >/dev/null
+	$$(CHECK_STATS) --key scene,method,statistic --count seeds --alpha 0.01 --out results/check-$(1)/check.md \
+	  results/baselines/$(1)/stats.csv results/check-$(1)/stats.csv
+CHECK_TARGETS += check-$(1)
+.PHONY: ch6-baseline-$(1)
+ch6-baseline-$(1): deps $$(BIN)/ch6_equal $$(BIN)/render
+	$$(BIN)/ch6_equal --scene scenes/$(2)/scene.json --out results/ch6-baseline/$(1) --first-seed 1 $$(CH6_CHECK_OPTS) $$(CH6_CHECK_$(2)) >/dev/null
+	mkdir -p results/baselines/$(1)
+	mv results/ch6-baseline/$(1)/stats.csv results/baselines/$(1)/stats.csv
+endef
+$(eval $(call CH6_CHECK,fig6.2,living-room))
+$(eval $(call CH6_CHECK,fig6.3,staircase))
+$(eval $(call CH6_CHECK,fig6.4,ajar))
+.PHONY: ch6-baselines
+ch6-baselines: ch6-baseline-fig6.2 ch6-baseline-fig6.3 ch6-baseline-fig6.4
+
 # Rerun the chapter-6 experiments from scratch (the references stay cached).
 ch6-clean:
 	rm -rf $(CH6_OUT) results/mmlt-ratio $(HYB_OUT)

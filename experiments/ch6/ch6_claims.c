@@ -24,8 +24,8 @@ static const struct claim {
     {"(3) PITP is the most uniform", "pitp", -1, Q_BLUR8, "error share surviving an 8x8 blur", NULL, NULL},
     {"(3) PITP is the most uniform", "pitp", -1, Q_CORRLEN, "error correlation length (pixels)", NULL, NULL},
     /* 11.81 % of PSSMLT's samples against 29.75 % of MMLT's on the door scene */
-    {"(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO, "non-zero fraction per proposal", "pssmlt",
-     "MMLT paper §5"},
+    {"(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO, "non-zero fraction per proposal",
+     "pssmlt", "MMLT paper §5"},
     {"(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO_CONN, "non-zero fraction per connection",
      "pssmlt", "MMLT paper §5"},
 };
@@ -40,7 +40,8 @@ static int find(const struct ch6_claims_in *in, const char *method)
 char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
 {
     struct claims out;
-    claims_begin(&out, in->scale, in->command, "Claims on %s at %g s per run, %d seeds", in->scene, in->budget, in->seeds);
+    claims_begin(&out, in->scale, in->command, "Claims on %s at %g %s per run, %d seeds", in->scene, in->budget,
+                 in->unit, in->seeds);
     double mean[MAX_METHODS], se[MAX_METHODS], z[MAX_METHODS];
     for (size_t k = 0; k < sizeof claims / sizeof *claims; k++) {
         const struct claim *cl = &claims[k];
@@ -57,11 +58,11 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
             if (isnan(z[i])) continue;
             size_t a = strlen(zs), b = strlen(against);
             snprintf(zs + a, sizeof zs - a, "%s%s=%.2f", a ? ";" : "", in->name[i], z[i]);
-            snprintf(against + b, sizeof against - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", in->name[i], mean[i],
-                     se[i], z[i]);
+            snprintf(against + b, sizeof against - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", in->name[i],
+                     mean[i], se[i], z[i]);
         }
-        claims_row(&out, cl->source ? cl->source : in->source, cl->text, cl->statistic, cl->method, mean[mi], se[mi], zs,
-                   against, &v);
+        claims_row(&out, cl->source ? cl->source : in->source, cl->text, cl->statistic, cl->method, mean[mi], se[mi],
+                   zs, against, &v);
     }
     return claims_finish(&out, in->out, err, errlen);
 }

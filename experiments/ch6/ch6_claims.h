@@ -16,18 +16,21 @@ enum ch6_q {
     Q_NONZERO,
     Q_LARGE_NONZERO,
     Q_MUTATIONS,
-    Q_BLOCK_MEDIAN, /* median of the per-block relMSE: a firefly-robust relMSE */
-    Q_TRIMMED,      /* relMSE without the 0.1 % largest pixel errors */
-    Q_BLUR4,        /* share of the relative error surviving a 4 x 4 box blur */
-    Q_BLUR8,        /* ... an 8 x 8 box blur */
-    Q_CORRLEN,      /* correlation length of the error, pixels */
-    Q_NONZERO_CONN, /* the fraction of evaluated connections with a contribution (MMLT paper §5) */
+    Q_BLOCK_MEDIAN,  /* median of the per-block relMSE: a firefly-robust relMSE */
+    Q_TRIMMED,       /* relMSE without the 0.1 % largest pixel errors */
+    Q_BLUR4,         /* share of the relative error surviving a 4 x 4 box blur */
+    Q_BLUR8,         /* ... an 8 x 8 box blur */
+    Q_CORRLEN,       /* correlation length of the error, pixels */
+    Q_NONZERO_CONN,  /* the fraction of evaluated connections with a contribution (MMLT paper §5) */
+    Q_RELMSE_SCALED, /* relMSE of the image scaled to the reference's mean: without the normalisation's part */
+    Q_B_RSE,         /* the seed pass's relative standard error (the render CSV's b_rse) */
     Q_COUNT
 };
 
 struct ch6_claims_in {
     const char *scene, *source, *command, *scale, *out;
     double budget;
+    const char *unit; /* the budget's: "s" or "mutations per pixel" */
     int seeds, methods;
     const char (*name)[64];
     const bool *have;

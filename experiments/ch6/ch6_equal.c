@@ -4,16 +4,19 @@
  * `bin/render --method M --help`) is skipped and named in the outputs.
  *
  * For each seed 1..N, budget t0, 2 t0, ..., T seconds and method, in that order (interleaved): a
- * separate render with that seed and a --cpu-time budget (--wall-clock: --time) (the core has no snapshot facility; the doubling budgets are separate runs, not
- * snapshots of one run). Each image is compared with a BDPT reference rendered once and cached:
- * relMSE = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01 m^2), m the reference's mean
+ * separate render with that seed and a --cpu-time budget (--wall-clock: --time) (the core has no snapshot facility; the
+ * doubling budgets are separate runs, not snapshots of one run). Each image is compared with a BDPT reference rendered
+ * once and cached: relMSE = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01 m^2), m the reference's mean
  * luminance (the relMSE of both images scaled to a mean of 1, so a dark scene is not all epsilon);
  * PNGs are exposed by 0.5 / m. The spread of the per-block
  * relMSE over B x B blocks (coefficient of variation: 0 = uniform error); mutations/s and the fraction
  * of proposals with non-zero contribution from the render's statistics CSV.
+ * With --spp the budget is a number of mutations per pixel instead (one run per seed and method):
+ * statistics that do not depend on the machine, which make check-fig6.N compares with a baseline.
  * Writes OUT/runs.csv (one row per run), OUT/summary.csv (mean +- standard error over seeds per method
- * and budget), OUT/NAME.md (the table and the claims), OUT/reference.png and OUT/<method>.png (seed 1,
- * budget T); all atomically. */
+ * and budget), OUT/stats.csv (the same at the largest budget, one row per method and statistic),
+ * OUT/NAME.md (the table and the claims), OUT/reference.png and OUT/<method>.png (first seed, budget
+ * T); all atomically. */
 #include "base/dist.h"
 #include "base/util.h"
 #include "ch6/ch6_claims.h"
@@ -134,7 +137,8 @@ static double csv_nonzero(const char *text, const char *kind)
         char m[32], k[32], len[32], tc[32];
         double a, ma, se, af, n;
         if (*l == '#') continue; /* metadata, some of it comma-separated numbers (# nonfinite_by_length) */
-        if (sscanf(l, "%31[^,],%31[^,],%31[^,],%31[^,],%lf,%lf,%lf,%lf,%lf", m, k, len, tc, &a, &ma, &se, &af, &n) != 9) continue;
+        if (sscanf(l, "%31[^,],%31[^,],%31[^,],%31[^,],%lf,%lf,%lf,%lf,%lf", m, k, len, tc, &a, &ma, &se, &af, &n) != 9)
+            continue;
         if (strcmp(len, "total") || (kind && strcmp(k, kind))) continue;
         att += a;
         nz += n;
@@ -162,68 +166,127 @@ static void fail(const char *msg1, const char *msg2)
     exit(1);
 }
 
+/* OUT/stats.csv: the statistics that do not depend on the machine's speed (at --spp budgets), one
+ * row per method and statistic at the largest budget (runs[method][seed]), for make check-fig6.N
+ * (bin/check_stats --key scene,method,statistic --count seeds). A statistic undefined in a run (the
+ * correlation length of an error without a correlated part) is left out of its mean, and its row
+ * out when fewer than two runs define it. */
+static void write_stats(const char *out, const char *name, const struct method *ms, int nm, int seeds,
+                        const struct run (*runs)[MAX_SEEDS])
+{
+    static const struct {
+        enum ch6_q q;
+        const char *name;
+    } st[] = {{Q_RELMSE, "relmse"},
+              {Q_RELMSE_SCALED, "relmse_scaled"},
+              {Q_BLOCK_MEDIAN, "block_median_relmse"},
+              {Q_TRIMMED, "trimmed_relmse"},
+              {Q_SPREAD, "block_spread"},
+              {Q_BLUR4, "blur4_share"},
+              {Q_BLUR8, "blur8_share"},
+              {Q_CORRLEN, "corr_length"},
+              {Q_NONZERO, "nonzero"},
+              {Q_LARGE_NONZERO, "large_nonzero"},
+              {Q_NONZERO_CONN, "nonzero_per_connection"},
+              {Q_B_RSE, "b_rse"}};
+    char *buf = NULL, path[4200], err[1024];
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    csv_meta(f, NULL, "ch6_equal: mean +- standard error over %d seeds at the largest budget", seeds);
+    fprintf(f, "scene,method,statistic,mean,se,seeds\n");
+    for (int mi = 0; mi < nm; mi++)
+        for (size_t k = 0; ms[mi].available && k < sizeof st / sizeof *st; k++) {
+            double v[MAX_SEEDS], mean, se;
+            int n = 0;
+            for (int s = 0; s < seeds; s++)
+                if (isfinite(runs[mi][s].q[st[k].q])) v[n++] = runs[mi][s].q[st[k].q];
+            if (n < 2) continue;
+            mean_se(v, n, &mean, &se);
+            fprintf(f, "%s,%s,%s,%.6g,%.3g,%d\n", name, ms[mi].name, st[k].name, mean, se, n);
+        }
+    fclose(f);
+    snprintf(path, sizeof path, "%.4000s/stats.csv", out);
+    if (!write_text_atomic(path, buf, err, sizeof err)) fail(err, NULL);
+    free(buf);
+}
+
 int main(int argc, char **argv)
 {
     const char *prog = "ch6_equal", *scene = NULL, *out = NULL, *name = NULL, *refpath = NULL, *res = NULL;
     const char *methods_arg, *extra_arg, *render_arg = NULL, *source, *command, *scale;
     char methods_s[4096], extra_s[1024], render[4096] = "";
-    int seeds, refspp, blk, threads, minlen;
+    int seeds, refspp, blk, threads, minlen, spp, first_seed;
     double T, t0 = -1;
     bool reuse = false, wall = false;
     double ckpt_every;
     const struct opt opts[] = {
         OPT_SCENE(scene, .help = "scene JSON"),
-        {"--name", OPT_STRING, OPT_DST(name), .arg = "NAME", .help = "label in the outputs (default: the scene's folder name)"},
+        {"--name", OPT_STRING, OPT_DST(name), .arg = "NAME",
+         .help = "label in the outputs (default: the scene's folder name)"},
         OPT_OUT(out, .arg = "DIR", .help = "output folder"),
         {"--methods", OPT_STRING, OPT_DST(methods_arg), .arg = "LIST", .def = "pssmlt,mmlt,pitp",
          .help = "comma-separated methods; an item NAME=ARGS runs bin/render with ARGS (spaces separate them), e.g. "
                  "'mctls=--method mmlt --large-step mctls'"},
-        {"--seeds", OPT_INT, OPT_DST(seeds), .arg = "N", .lo = 2, .hi = MAX_SEEDS, .help = "seeds 1..N per method and budget",
-         .def = "4"},
-        {"--time", OPT_DOUBLE, OPT_DST(T), .arg = "T", .lo = 0.01, .hi = 1e6, .help = "largest budget in seconds per run",
-         .def = "8"},
+        {"--seeds", OPT_INT, OPT_DST(seeds), .arg = "N", .lo = 2, .hi = MAX_SEEDS,
+         .help = "seeds 1..N per method and budget", .def = "4"},
+        {"--time", OPT_DOUBLE, OPT_DST(T), .arg = "T", .lo = 0.01, .hi = 1e6,
+         .help = "largest budget in seconds per run", .def = "8"},
+        {"--spp", OPT_INT, OPT_DST(spp), .arg = "N", .lo = 0, .hi = 1 << 20, .def = "0",
+         .help =
+             "instead of time budgets, N mutations per pixel per run (bin/render --spp): statistics that do not depend "
+             "on the machine's speed, for make check-fig6.N (0: the time budgets)"},
+        {"--first-seed", OPT_INT, OPT_DST(first_seed), .arg = "S", .lo = 1, .hi = 1 << 20, .def = "1",
+         .help = "seeds S .. S+N-1 (a regression check's seeds differ from its baseline's)"},
         {"--t0", OPT_DOUBLE, OPT_DST(t0), .arg = "S", .lo = 0.01, .hi = 1e6,
          .help = "smallest budget; budgets double from it up to T (default T: one budget)"},
-        {"--resolution", OPT_WXH, .str = &res, .arg = "WxH", .lo = 1, .hi = INT_MAX, .expect = "WxH with positive integers",
-         .help = "override the camera (also for the reference)"},
+        {"--resolution", OPT_WXH, .str = &res, .arg = "WxH", .lo = 1, .hi = INT_MAX,
+         .expect = "WxH with positive integers", .help = "override the camera (also for the reference)"},
         OPT_REFERENCE(refpath, .help = "cached BDPT reference EXR, re-rendered when older than the scene file (default "
                                        "results/reference/NAME-bdpt-WxH-minK-SPP.exr)"),
         OPT_REFERENCE_SPP(refspp, .help = "BDPT samples per pixel of the reference", .def = "256"),
         OPT_MIN_LENGTH(minlen, .hi = 64, .def = "1",
-                       .help = "paths of K segments or more only, reference and runs (1: all; the thesis's chapter 6 uses "
-                               "3: no direct lighting)"),
-        {"--render-args", OPT_STRING, OPT_DST(extra_arg), .arg = "ARGS", .help = "extra bin/render options for every run",
-         .def = "--p-large 0.1"},
-        {"--block", OPT_INT, OPT_DST(blk), .arg = "B", .lo = 2, .hi = 1024, .help = "block size of the error spread", .def = "16"},
+                       .help =
+                           "paths of K segments or more only, reference and runs (1: all; the thesis's chapter 6 uses "
+                           "3: no direct lighting)"),
+        {"--render-args", OPT_STRING, OPT_DST(extra_arg), .arg = "ARGS",
+         .help = "extra bin/render options for every run", .def = "--p-large 0.1"},
+        {"--block", OPT_INT, OPT_DST(blk), .arg = "B", .lo = 2, .hi = 1024, .help = "block size of the error spread",
+         .def = "16"},
         OPT_THREADS(threads, .hi = 1024, .help = "threads per run", .def = "2"),
-        {"--render", OPT_STRING, OPT_DST(render_arg), .arg = "PATH", .help = "the renderer (default: bin/render beside this tool)"},
+        {"--render", OPT_STRING, OPT_DST(render_arg), .arg = "PATH",
+         .help = "the renderer (default: bin/render beside this tool)"},
         {"--wall-clock", OPT_FLAG, OPT_DST(wall),
-         .help = "budgets in wall-clock seconds (bin/render --time); default CPU seconds per thread (--cpu-time), which "
-                 "other processes on the machine do not shift"},
+         .help =
+             "budgets in wall-clock seconds (bin/render --time); default CPU seconds per thread (--cpu-time), which "
+             "other processes on the machine do not shift"},
         {"--source", OPT_STRING, OPT_DST(source), .arg = "TEXT", .def = "thesis ch. 6",
          .help = "the claims' source item, for claims.csv (e.g. 'thesis Figs. 6.4, 6.7')"},
         {"--command", OPT_STRING, OPT_DST(command), .arg = "TEXT", .def = "bin/ch6_equal",
          .help = "the command that reproduces this run, for claims.csv"},
-        {"--scale", OPT_STRING, OPT_DST(scale), .arg = "NAME", .def = "custom", .help = "the scale's name, for claims.csv"},
+        {"--scale", OPT_STRING, OPT_DST(scale), .arg = "NAME", .def = "custom",
+         .help = "the scale's name, for claims.csv"},
         {"--checkpoint", OPT_DOUBLE, OPT_DST(ckpt_every), .arg = "S", .lo = 0, .hi = 1e6, .def = "0",
          .help = "every render (reference too) checkpoints every S seconds, and a rerun after an interruption keeps "
                  "the completed runs and resumes the interrupted one (0: off)"},
-        {"--reuse", OPT_FLAG, OPT_DST(reuse), .help = "keep the run files already in OUT/runs (same names) instead of rendering"},
+        {"--reuse", OPT_FLAG, OPT_DST(reuse),
+         .help = "keep the run files already in OUT/runs (same names) instead of rendering"},
         {0}};
     /* Several copies would each run every render; MPI goes through --render instead (README MPI). */
     dist_refuse_ranks();
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: ch6_equal --scene FILE --out DIR [options]\n", .opts = opts},
-               argc, argv);
+    opts_parse(
+        &(struct opts_spec){.prog = prog, .usage = "usage: ch6_equal --scene FILE --out DIR [options]\n", .opts = opts},
+        argc, argv);
     snprintf(methods_s, sizeof methods_s, "%s", methods_arg);
     snprintf(extra_s, sizeof extra_s, "%s", extra_arg);
     if (render_arg) snprintf(render, sizeof render, "%s", render_arg);
     if (!scene || !out) opts_fail(prog, "--scene and --out are required (see --help)");
     if (strlen(out) > 2000) opts_fail(prog, "--out: path too long");
-    if (t0 < 0) t0 = T;
+    if (t0 < 0 || spp > 0) t0 = T = spp > 0 ? spp : T;
     if (t0 > T) opts_fail(prog, "--t0 %g is larger than --time %g", t0, T);
     int nb = 0;
     double budgets[MAX_BUDGETS];
-    for (double b = t0; b <= T * (1 + 1e-9) && nb < MAX_BUDGETS; b *= 2) budgets[nb++] = b;
+    for (double b = t0; b <= T * (1 + 1e-9) && nb < MAX_BUDGETS; b *= 2)
+        budgets[nb++] = b;
     if (fabs(budgets[nb - 1] - T) > 1e-9 * T && nb < MAX_BUDGETS) budgets[nb++] = T;
     if (access(scene, R_OK)) opts_fail(prog, "--scene: cannot read '%s'", scene);
     char sname[256];
@@ -268,11 +331,13 @@ int main(int argc, char **argv)
         char *pv[MAX_ARGS + 4];
         int pc = 0;
         pv[pc++] = render;
-        for (int k = 0; k < m->argc; k++) pv[pc++] = m->argv[k];
+        for (int k = 0; k < m->argc; k++)
+            pv[pc++] = m->argv[k];
         pv[pc++] = "--help";
         pv[pc] = NULL;
         m->available = run_cmd(pv, NULL) == 0;
-        if (!m->available) fprintf(stderr, "ch6_equal: %s: %s does not accept '%s'; skipped\n", m->name, render, eq ? eq + 1 : item);
+        if (!m->available)
+            fprintf(stderr, "ch6_equal: %s: %s does not accept '%s'; skipped\n", m->name, render, eq ? eq + 1 : item);
     }
     char *extra_argv[MAX_ARGS];
     int extra_c = 0;
@@ -292,7 +357,8 @@ int main(int argc, char **argv)
     struct image *probe_ref = NULL;
     if (!refpath) {
         make_dirs("results/reference");
-        snprintf(defref, sizeof defref, "results/reference/%s-bdpt-%s-min%d-%d.exr", name, res ? res : "native", minlen, refspp);
+        snprintf(defref, sizeof defref, "results/reference/%s-bdpt-%s-min%d-%d.exr", name, res ? res : "native", minlen,
+                 refspp);
         refpath = defref;
     }
     probe_ref = older_than(refpath, scene) ? NULL : img_read(refpath, err, sizeof err);
@@ -305,8 +371,8 @@ int main(int argc, char **argv)
          * partial image, which must never pass for the cached reference */
         char part[1200];
         snprintf(part, sizeof part, "%s.rendering", prefix);
-        char *rv[24] = {render, (char *)scene, "--method", "bdpt", "--spp", spp_s, "--seed", "12345", "--threads", thr,
-                        "--quiet", "--min-length", minlen_s, "--out", part};
+        char *rv[24] = {render,      (char *)scene, "--method", "bdpt",         "--spp",  spp_s,   "--seed", "12345",
+                        "--threads", thr,           "--quiet",  "--min-length", minlen_s, "--out", part};
         int c = 15;
         if (res) rv[c++] = "--resolution", rv[c++] = (char *)res;
         if (run_checkpointed(rv, c, part, ckpt_every, NULL) != 0) fail("the reference render failed: ", refpath);
@@ -319,7 +385,8 @@ int main(int argc, char **argv)
     struct image *ref = probe_ref;
     double mlum = 0;
     for (int y = 0; y < ref->h; y++)
-        for (int x = 0; x < ref->w; x++) mlum += luminance(img_get(ref, x, y));
+        for (int x = 0; x < ref->w; x++)
+            mlum += luminance(img_get(ref, x, y));
     mlum /= (double)ref->w * ref->h;
     if (!(mlum > 0)) fail("the reference is black: ", refpath);
     const double eps = 0.01 * mlum * mlum, expo = 0.5 / mlum;
@@ -338,17 +405,33 @@ int main(int argc, char **argv)
                 struct method *m = &ms[mi];
                 if (!m->available) continue;
                 char prefix[4096], seed_s[32], time_s[32];
-                snprintf(prefix, sizeof prefix, "%.3000s/%.60s-s%d-t%g", runsdir, m->name, s, budgets[bi]);
-                snprintf(seed_s, sizeof seed_s, "%d", s);
+                snprintf(prefix, sizeof prefix, "%.3000s/%.60s-s%d-%s%g", runsdir, m->name, first_seed + s - 1,
+                         spp > 0 ? "spp" : "t", budgets[bi]);
+                snprintf(seed_s, sizeof seed_s, "%d", first_seed + s - 1);
                 snprintf(time_s, sizeof time_s, "%g", budgets[bi]);
                 char *rv[MAX_ARGS * 2 + 24];
                 int c = 0;
                 rv[c++] = render;
                 rv[c++] = (char *)scene;
-                for (int k = 0; k < m->argc; k++) rv[c++] = m->argv[k];
-                for (int k = 0; k < extra_c; k++) rv[c++] = extra_argv[k];
-                char *fixed[] = {wall ? "--time" : "--cpu-time", time_s, "--seed", seed_s, "--threads", thr, "--min-length", minlen_s, "--quiet", "--out", prefix};
-                for (size_t k = 0; k < sizeof fixed / sizeof *fixed; k++) rv[c++] = fixed[k];
+                for (int k = 0; k < m->argc; k++)
+                    rv[c++] = m->argv[k];
+                for (int k = 0; k < extra_c; k++)
+                    rv[c++] = extra_argv[k];
+                char *fixed[] = {spp > 0 ? "--spp"
+                                 : wall  ? "--time"
+                                         : "--cpu-time",
+                                 time_s,
+                                 "--seed",
+                                 seed_s,
+                                 "--threads",
+                                 thr,
+                                 "--min-length",
+                                 minlen_s,
+                                 "--quiet",
+                                 "--out",
+                                 prefix};
+                for (size_t k = 0; k < sizeof fixed / sizeof *fixed; k++)
+                    rv[c++] = fixed[k];
                 if (res) {
                     rv[c++] = "--resolution";
                     rv[c++] = (char *)res;
@@ -359,7 +442,8 @@ int main(int argc, char **argv)
                 snprintf(csvp, sizeof csvp, "%.4000s.csv", prefix);
                 bool keep = reuse ? !access(path, R_OK) && !access(csvp, R_OK)
                                   : ckpt_every > 0 && run_complete(path, csvp, scene);
-                fprintf(stderr, "ch6_equal: %s %s seed %d, %g s%s\n", name, m->name, s, budgets[bi], keep ? " (kept from an earlier run)" : "");
+                fprintf(stderr, "ch6_equal: %s %s seed %d, %g %s%s\n", name, m->name, first_seed + s - 1, budgets[bi],
+                        spp > 0 ? "mutations per pixel" : "s", keep ? " (kept from an earlier run)" : "");
                 if (!keep && run_checkpointed(rv, c, prefix, ckpt_every, log) != 0) fail("a render failed; see ", log);
                 if (keep && ckpt_every > 0) {
                     /* an interrupt between the render's end and our removal of its checkpoint
@@ -373,6 +457,7 @@ int main(int argc, char **argv)
                 if (im->w != ref->w || im->h != ref->h) fail("image and reference sizes differ: ", path);
                 struct run *r = &R[mi][bi][s - 1];
                 r->q[Q_RELMSE] = img_relmse(im, ref, eps);
+                r->q[Q_RELMSE_SCALED] = ch6_relmse_scaled(im, ref, eps);
                 int n = ch6_block_relmse(im, ref, blk, eps, blocks, cap);
                 if (n > cap) n = cap;
                 r->q[Q_SPREAD] = ch6_spread(blocks, n);
@@ -398,6 +483,7 @@ int main(int argc, char **argv)
                 r->q[Q_LARGE_NONZERO] = csv_nonzero(csv, "large");
                 double tried = csv_header(csv, "connections_evaluated");
                 r->q[Q_NONZERO_CONN] = tried > 0 ? csv_header(csv, "connections_nonzero") / tried : NAN;
+                r->q[Q_B_RSE] = csv_header(csv, "b_rse");
                 free(csv);
             }
 
@@ -411,21 +497,26 @@ int main(int argc, char **argv)
     csv_meta(f, "render args", "%s", extra_s);
     csv_meta(f, "min_length", "%d", minlen);
     csv_meta(f, "relmse eps", "= 0.01 * (reference mean luminance %.6g)^2", mlum);
-    csv_meta(f, NULL, "budgets are separate runs with the same seed (no snapshots), methods interleaved seed by seed; %s",
-             wall ? "wall-clock --time" : "--cpu-time: CPU seconds per thread");
+    csv_meta(f, NULL,
+             "budgets are separate runs with the same seed (no snapshots), methods interleaved seed by seed; %s",
+             spp > 0 ? "budget = mutations per pixel (--spp)"
+             : wall  ? "wall-clock --time"
+                     : "--cpu-time: CPU seconds per thread");
     for (int mi = 0; mi < nm; mi++)
         if (!ms[mi].available) csv_meta(f, "method", "%s not available in this build (skipped)", ms[mi].name);
     fprintf(f, "scene,method,seed,budget,seconds,mutations,mutations_per_s,relmse,block_spread,nonzero,large_nonzero,"
-               "block_median_relmse,trimmed_relmse,blur4_share,blur8_share,corr_length,nonzero_per_connection\n");
+               "block_median_relmse,trimmed_relmse,blur4_share,blur8_share,corr_length,nonzero_per_connection,relmse_"
+               "scaled,b_rse\n");
     for (int mi = 0; mi < nm; mi++)
         if (ms[mi].available)
             for (int bi = 0; bi < nb; bi++)
                 for (int s = 0; s < seeds; s++) {
                     const double *q = R[mi][bi][s].q;
-                    fprintf(f, "%s,%s,%d,%g,%.3f,%.0f,%.0f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", name, ms[mi].name,
-                            s + 1, budgets[bi], R[mi][bi][s].seconds, q[Q_MUTATIONS], q[Q_MPS], q[Q_RELMSE], q[Q_SPREAD],
-                            q[Q_NONZERO], q[Q_LARGE_NONZERO], q[Q_BLOCK_MEDIAN], q[Q_TRIMMED], q[Q_BLUR4], q[Q_BLUR8],
-                            q[Q_CORRLEN], q[Q_NONZERO_CONN]);
+                    fprintf(
+                        f, "%s,%s,%d,%g,%.3f,%.0f,%.0f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
+                        name, ms[mi].name, first_seed + s, budgets[bi], R[mi][bi][s].seconds, q[Q_MUTATIONS], q[Q_MPS],
+                        q[Q_RELMSE], q[Q_SPREAD], q[Q_NONZERO], q[Q_LARGE_NONZERO], q[Q_BLOCK_MEDIAN], q[Q_TRIMMED],
+                        q[Q_BLUR4], q[Q_BLUR8], q[Q_CORRLEN], q[Q_NONZERO_CONN], q[Q_RELMSE_SCALED], q[Q_B_RSE]);
                 }
     fclose(f);
     snprintf(path, sizeof path, "%s/runs.csv", out);
@@ -436,61 +527,85 @@ int main(int argc, char **argv)
     f = open_memstream(&buf, &len);
     csv_meta(f, NULL, "mean +- standard error over %d seeds", seeds);
     /* the first five quantities in their old columns (scripts read them by position), then the rest */
-    static const enum ch6_q col[] = {Q_RELMSE,       Q_SPREAD,  Q_MPS,   Q_NONZERO, Q_LARGE_NONZERO,
-                                     Q_BLOCK_MEDIAN, Q_TRIMMED, Q_BLUR4, Q_BLUR8,   Q_CORRLEN, Q_NONZERO_CONN};
-    fprintf(f, "scene,method,budget,seeds,relmse,relmse_se,block_spread,block_spread_se,mutations_per_s,mutations_per_s_se,"
-               "nonzero,nonzero_se,large_nonzero,large_nonzero_se,block_median_relmse,block_median_relmse_se,trimmed_relmse,"
-               "trimmed_relmse_se,blur4_share,blur4_share_se,blur8_share,blur8_share_se,corr_length,corr_length_se,"
-               "nonzero_per_connection,nonzero_per_connection_se\n");
+    static const enum ch6_q col[] = {Q_RELMSE,       Q_SPREAD,        Q_MPS,   Q_NONZERO, Q_LARGE_NONZERO,
+                                     Q_BLOCK_MEDIAN, Q_TRIMMED,       Q_BLUR4, Q_BLUR8,   Q_CORRLEN,
+                                     Q_NONZERO_CONN, Q_RELMSE_SCALED, Q_B_RSE};
+    fprintf(
+        f,
+        "scene,method,budget,seeds,relmse,relmse_se,block_spread,block_spread_se,mutations_per_s,mutations_per_s_se,"
+        "nonzero,nonzero_se,large_nonzero,large_nonzero_se,block_median_relmse,block_median_relmse_se,trimmed_relmse,"
+        "trimmed_relmse_se,blur4_share,blur4_share_se,blur8_share,blur8_share_se,corr_length,corr_length_se,"
+        "nonzero_per_connection,nonzero_per_connection_se,relmse_scaled,relmse_scaled_se,b_rse,b_rse_se\n");
     double sum[MAX_METHODS][Q_COUNT][2];
     for (int mi = 0; mi < nm; mi++) {
         if (!ms[mi].available) continue;
         for (int bi = 0; bi < nb; bi++) {
             double v[MAX_SEEDS], mean[Q_COUNT], se[Q_COUNT];
             for (int q = 0; q < Q_COUNT; q++) {
-                for (int s = 0; s < seeds; s++) v[s] = R[mi][bi][s].q[q];
+                for (int s = 0; s < seeds; s++)
+                    v[s] = R[mi][bi][s].q[q];
                 mean_se(v, seeds, &mean[q], &se[q]);
             }
             fprintf(f, "%s,%s,%g,%d", name, ms[mi].name, budgets[bi], seeds);
-            for (size_t k = 0; k < sizeof col / sizeof *col; k++) fprintf(f, ",%.6g,%.3g", mean[col[k]], se[col[k]]);
+            for (size_t k = 0; k < sizeof col / sizeof *col; k++)
+                fprintf(f, ",%.6g,%.3g", mean[col[k]], se[col[k]]);
             fputc('\n', f);
             if (bi == nb - 1)
-                for (int q = 0; q < Q_COUNT; q++) sum[mi][q][0] = mean[q], sum[mi][q][1] = se[q];
+                for (int q = 0; q < Q_COUNT; q++)
+                    sum[mi][q][0] = mean[q], sum[mi][q][1] = se[q];
         }
     }
     fclose(f);
     snprintf(path, sizeof path, "%s/summary.csv", out);
     if (!write_text_atomic(path, buf, err, sizeof err)) fail(err, NULL);
     free(buf);
+    struct run last[MAX_METHODS][MAX_SEEDS];
+    for (int mi = 0; mi < nm; mi++)
+        for (int s = 0; s < seeds; s++)
+            last[mi][s] = R[mi][nb - 1][s];
+    write_stats(out, name, ms, nm, seeds, (const struct run(*)[MAX_SEEDS])last);
 
     /* The Markdown table at the largest budget, with the error-vs-time slope. */
     buf = NULL;
     f = open_memstream(&buf, &len);
-    fprintf(f, "**%s**, %g s per run (%s, %d threads), %d seeds, paths of length >= %d, reference %d spp BDPT; mean ± standard error over seeds\n\n",
-            name, T, wall ? "wall clock" : "CPU seconds per thread", threads, seeds, minlen, refspp);
-    fprintf(f, "| method | relMSE | median block relMSE | block-relMSE spread (CV, %dx%d) | error share after 8x8 blur | "
-               "error correlation length (px) | mutations/s | non-zero proposals | large-step non-zero | relMSE slope vs time |\n",
+    fprintf(f,
+            "**%s**, %g %s per run (%d threads), %d seeds, paths of length >= %d, reference %d spp BDPT; mean ± "
+            "standard error over seeds\n\n",
+            name, T,
+            spp > 0 ? "mutations per pixel"
+            : wall  ? "s (wall clock)"
+                    : "s (CPU seconds per thread)",
+            threads, seeds, minlen, refspp);
+    fprintf(f,
+            "| method | relMSE | median block relMSE | block-relMSE spread (CV, %dx%d) | error share after 8x8 blur | "
+            "error correlation length (px) | mutations/s | non-zero proposals | large-step non-zero | relMSE slope vs "
+            "time | "
+            "normalisation's share of relMSE | seed pass rel. s.e. |\n",
             blk, blk);
-    fprintf(f, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    fprintf(f, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (int mi = 0; mi < nm; mi++) {
         if (!ms[mi].available) {
-            fprintf(f, "| %s | not available in this build | | | | | | | | |\n", ms[mi].name);
+            fprintf(f, "| %s | not available in this build | | | | | | | | | | |\n", ms[mi].name);
             continue;
         }
         double bx[MAX_BUDGETS], by[MAX_BUDGETS];
         for (int bi = 0; bi < nb; bi++) {
             double v[MAX_SEEDS], se;
-            for (int s = 0; s < seeds; s++) v[s] = R[mi][bi][s].q[Q_RELMSE];
+            for (int s = 0; s < seeds; s++)
+                v[s] = R[mi][bi][s].q[Q_RELMSE];
             mean_se(v, seeds, &by[bi], &se);
             bx[bi] = budgets[bi];
         }
         double slope = ch6_loglog_slope(bx, by, nb);
         const double(*q)[2] = sum[mi];
-        fprintf(f, "| %s | %.4g ± %.2g | %.4g ± %.2g | %.3g ± %.2g | %.3g ± %.2g | %.2f ± %.2f | %.0f ± %.0f | %.4f ± %.4f | "
-                   "%.4f ± %.4f | %.2f |\n",
-                ms[mi].name, q[Q_RELMSE][0], q[Q_RELMSE][1], q[Q_BLOCK_MEDIAN][0], q[Q_BLOCK_MEDIAN][1], q[Q_SPREAD][0],
-                q[Q_SPREAD][1], q[Q_BLUR8][0], q[Q_BLUR8][1], q[Q_CORRLEN][0], q[Q_CORRLEN][1], q[Q_MPS][0], q[Q_MPS][1],
-                q[Q_NONZERO][0], q[Q_NONZERO][1], q[Q_LARGE_NONZERO][0], q[Q_LARGE_NONZERO][1], slope);
+        fprintf(
+            f,
+            "| %s | %.4g ± %.2g | %.4g ± %.2g | %.3g ± %.2g | %.3g ± %.2g | %.2f ± %.2f | %.0f ± %.0f | %.4f ± %.4f | "
+            "%.4f ± %.4f | %.2f | %.0f %% | %.2f %% |\n",
+            ms[mi].name, q[Q_RELMSE][0], q[Q_RELMSE][1], q[Q_BLOCK_MEDIAN][0], q[Q_BLOCK_MEDIAN][1], q[Q_SPREAD][0],
+            q[Q_SPREAD][1], q[Q_BLUR8][0], q[Q_BLUR8][1], q[Q_CORRLEN][0], q[Q_CORRLEN][1], q[Q_MPS][0], q[Q_MPS][1],
+            q[Q_NONZERO][0], q[Q_NONZERO][1], q[Q_LARGE_NONZERO][0], q[Q_LARGE_NONZERO][1], slope,
+            100 * (1 - q[Q_RELMSE_SCALED][0] / q[Q_RELMSE][0]) + 0.0, 100 * q[Q_B_RSE][0]);
     }
     fclose(f);
     snprintf(path, sizeof path, "%s/%s.md", out, name);
@@ -505,11 +620,22 @@ int main(int argc, char **argv)
     for (int mi = 0; mi < nm; mi++) {
         snprintf(names[mi], sizeof names[mi], "%.63s", ms[mi].name); /* method names are short */
         have[mi] = ms[mi].available;
-        for (int q = 0; q < Q_COUNT; q++) cm[mi][q] = have[mi] ? sum[mi][q][0] : NAN, cs[mi][q] = have[mi] ? sum[mi][q][1] : NAN;
+        for (int q = 0; q < Q_COUNT; q++)
+            cm[mi][q] = have[mi] ? sum[mi][q][0] : NAN, cs[mi][q] = have[mi] ? sum[mi][q][1] : NAN;
     }
-    struct ch6_claims_in ci = {.scene = name, .source = source, .command = command, .scale = scale, .out = out, .budget = T,
-                               .seeds = seeds, .methods = nm, .name = (const char(*)[64])names, .have = have,
-                               .mean = (const double(*)[Q_COUNT])cm, .se = (const double(*)[Q_COUNT])cs};
+    struct ch6_claims_in ci = {.scene = name,
+                               .source = source,
+                               .command = command,
+                               .scale = scale,
+                               .out = out,
+                               .budget = T,
+                               .unit = spp > 0 ? "mutations per pixel" : "s",
+                               .seeds = seeds,
+                               .methods = nm,
+                               .name = (const char(*)[64])names,
+                               .have = have,
+                               .mean = (const double(*)[Q_COUNT])cm,
+                               .se = (const double(*)[Q_COUNT])cs};
     char *claims = ch6_write_claims(&ci, err, sizeof err);
     if (!claims) fail(err, NULL);
     fputs(claims, stdout);

@@ -14,7 +14,8 @@ int ch6_block_relmse(const struct image *a, const struct image *ref, int blk, do
             for (int y = by * blk; y < (by + 1) * blk; y++)
                 for (int x = bx * blk; x < (bx + 1) * blk; x++) {
                     const double *p = a->px + 3 * ((size_t)y * a->w + x), *r = ref->px + 3 * ((size_t)y * ref->w + x);
-                    for (int c = 0; c < 3; c++) s += (p[c] - r[c]) * (p[c] - r[c]) / (r[c] * r[c] + eps);
+                    for (int c = 0; c < 3; c++)
+                        s += (p[c] - r[c]) * (p[c] - r[c]) / (r[c] * r[c] + eps);
                 }
             if (n < cap) out[n] = s / (3.0 * blk * blk);
             n++;
@@ -68,14 +69,27 @@ double ch6_trimmed_relmse(const struct image *a, const struct image *ref, double
     for (size_t i = 0; i < n; i++) {
         const double *p = a->px + 3 * i, *r = ref->px + 3 * i;
         e[i] = 0;
-        for (int c = 0; c < 3; c++) e[i] += (p[c] - r[c]) * (p[c] - r[c]) / (r[c] * r[c] + eps);
+        for (int c = 0; c < 3; c++)
+            e[i] += (p[c] - r[c]) * (p[c] - r[c]) / (r[c] * r[c] + eps);
     }
     qsort(e, n, sizeof *e, cmp_double);
     size_t keep = n - (size_t)floor(drop * (double)n);
     double s = 0;
-    for (size_t i = 0; i < keep; i++) s += e[i];
+    for (size_t i = 0; i < keep; i++)
+        s += e[i];
     free(e);
     return keep ? s / (3.0 * (double)keep) : NAN;
+}
+
+double ch6_relmse_scaled(const struct image *a, const struct image *ref, double eps)
+{
+    double s = mean_lum_scale(a, ref), sum = 0;
+    size_t n = (size_t)a->w * a->h * 3;
+    for (size_t i = 0; i < n; i++) {
+        double d = s * a->px[i] - ref->px[i];
+        sum += d * d / (ref->px[i] * ref->px[i] + eps);
+    }
+    return n ? sum / (double)n : NAN;
 }
 
 double ch6_blur_share(const struct image *a, const struct image *ref, double eps, int k)

@@ -23,6 +23,9 @@ double ch6_median(double *v, int n);
 /* relMSE of a against ref with the largest `drop` fraction of per-pixel errors (the sum over the
  * three channels) left out: the error without its fireflies. */
 double ch6_trimmed_relmse(const struct image *a, const struct image *ref, double eps, double drop);
+/* relMSE of a scaled to ref's mean luminance (as ch6_blur_share scales it) against ref: the error
+ * without the normalisation's part, which scales the whole image by one number. */
+double ch6_relmse_scaled(const struct image *a, const struct image *ref, double eps);
 /* The share of the relative error that survives a k x k box blur. The relative error per pixel and
  * channel is (s a - ref) / sqrt(ref^2 + eps), with a first scaled by s to ref's mean luminance, so
  * that the normalisation's one number (which survives every blur) is left out; the blur is the

@@ -11,57 +11,21 @@
 #include <string.h>
 #include <sys/wait.h>
 
-#ifndef BIN_DIR
-#define BIN_DIR "bin"
-#endif
-
-static int check(const char *key, const char *base, const char *current)
-{
-    char cmd[2048];
-    snprintf(cmd, sizeof cmd, BIN_DIR "/check_stats --key %s --mean mean --se se --count seeds %s %s > /dev/null 2>&1",
-             key, base, current);
-    int st = system(cmd);
-    cr_assert(WIFEXITED(st), "check_stats did not run");
-    return WEXITSTATUS(st);
-}
-
-/* Copies `in` to `out`, replacing the mean (the next-to-last field) of the row starting with
- * `row` by `mean`. */
-static void perturbed(const char *in_path, const char *out, const char *row, double mean)
-{
-    FILE *in = fopen(in_path, "r"), *f = fopen(out, "w");
-    cr_assert(in && f);
-    char line[1024];
-    size_t rl = strlen(row);
-    int hit = 0;
-    while (fgets(line, sizeof line, in)) {
-        if (strncmp(line, row, rl) || line[rl] != ',') {
-            fputs(line, f);
-            continue;
-        }
-        char *last = strrchr(line, ','), *mid;
-        *last = 0;
-        mid = strrchr(line, ',');
-        *mid = 0;
-        fprintf(f, "%s,%.9g,%s", line, mean, last + 1);
-        hit++;
-    }
-    fclose(in);
-    fclose(f);
-    cr_assert_eq(hit, 1, "row %s not found in %s", row, in_path);
-}
+#include "support/check_csv.h"
 
 static void replicate_passes_perturbed_fails(const char *fig, const char *key, const char *row, double mean)
 {
     char base[256], repl[256];
     snprintf(base, sizeof base, "results/baselines/%s/%s.csv", fig, fig);
     snprintf(repl, sizeof repl, "results/baselines/%s/replicate-seed101.csv", fig);
-    cr_assert_eq(check(key, base, repl), 0, "%s: two independent runs disagree", fig);
+    char opts[256];
+    snprintf(opts, sizeof opts, "--key %s --mean mean --se se --count seeds", key);
+    cr_assert_eq(check_csv_run(opts, base, repl), 0, "%s: two independent runs disagree", fig);
     char tmp[] = "/tmp/ch4-perturbed-XXXXXX";
     int fd = mkstemp(tmp);
     cr_assert(fd >= 0);
-    perturbed(repl, tmp, row, mean);
-    cr_assert_eq(check(key, base, tmp), 1, "%s: %s moved to %g was not detected", fig, row, mean);
+    check_csv_perturbed(repl, tmp, row, -2, mean);
+    cr_assert_eq(check_csv_run(opts, base, tmp), 1, "%s: %s moved to %g was not detected", fig, row, mean);
     remove(tmp);
 }
 

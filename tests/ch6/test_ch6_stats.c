@@ -20,7 +20,8 @@ Test(ch6_stats, mean_and_standard_error)
 }
 
 /* An error confined to one of four blocks: that block's relMSE, zero elsewhere, and a spread of
- * 2 (sample standard deviation over mean of {v, 0, 0, 0}); the same error spread evenly over every pixel gives spread 0. */
+ * 2 (sample standard deviation over mean of {v, 0, 0, 0}); the same error spread evenly over every pixel gives spread
+ * 0. */
 Test(ch6_stats, block_relmse_finds_a_concentrated_error)
 {
     struct image *ref = img_create(32, 32), *a = img_create(32, 32), *b = img_create(32, 32);
@@ -50,7 +51,8 @@ Test(ch6_stats, loglog_slope_of_a_power_law)
 {
     const double x[5] = {1, 2, 4, 8, 16};
     double y[5];
-    for (int i = 0; i < 5; i++) y[i] = 0.3 * pow(x[i], -1.0);
+    for (int i = 0; i < 5; i++)
+        y[i] = 0.3 * pow(x[i], -1.0);
     cr_assert_float_eq(ch6_loglog_slope(x, y, 5), -1, 1e-12);
     y[2] = 0; /* dropped, not logged */
     cr_assert_float_eq(ch6_loglog_slope(x, y, 5), -1, 1e-12);
@@ -71,10 +73,12 @@ static struct image *synthetic(bool splotches, uint64_t seed)
         for (int b = 0; b < 24; b++) {
             double cx = 128 * rng_uniform(&r), cy = 128 * rng_uniform(&r), a = rng_uniform(&r) < 0.5 ? -0.4 : 0.4;
             for (int y = 0; y < 128; y++)
-                for (int x = 0; x < 128; x++) f[y * 128 + x] += a * exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / 72.0);
+                for (int x = 0; x < 128; x++)
+                    f[y * 128 + x] += a * exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / 72.0);
         }
     else
-        for (int k = 0; k < 12; k++) f[(int)(128 * 128 * rng_uniform(&r))] += 40;
+        for (int k = 0; k < 12; k++)
+            f[(int)(128 * 128 * rng_uniform(&r))] += 40;
     for (int y = 0; y < 128; y++)
         for (int x = 0; x < 128; x++) {
             /* Box-Muller */
@@ -90,7 +94,8 @@ static struct image *constant(double v)
 {
     struct image *im = img_create(128, 128);
     for (int y = 0; y < 128; y++)
-        for (int x = 0; x < 128; x++) img_add(im, x, y, (rgb){v, v, v});
+        for (int x = 0; x < 128; x++)
+            img_add(im, x, y, (rgb){v, v, v});
     return im;
 }
 
@@ -107,10 +112,12 @@ Test(ch6_stats, fireflies_and_splotches_told_apart)
     double b4f = ch6_blur_share(ff, ref, eps, 4), b8f = ch6_blur_share(ff, ref, eps, 8);
     double b4s = ch6_blur_share(sp, ref, eps, 4), b8s = ch6_blur_share(sp, ref, eps, 8);
     double lf = ch6_corr_length(ff, ref), ls = ch6_corr_length(sp, ref);
-    cr_log_info("fireflies: relMSE %.4g trimmed %.4g block median %.4g spread %.3g blur4 %.4f blur8 %.4f corr length %.2f", rf,
-                tf, mf, spread_f, b4f, b8f, lf);
-    cr_log_info("splotches: relMSE %.4g trimmed %.4g block median %.4g spread %.3g blur4 %.4f blur8 %.4f corr length %.2f", rs,
-                ts, msp, spread_s, b4s, b8s, ls);
+    cr_log_info(
+        "fireflies: relMSE %.4g trimmed %.4g block median %.4g spread %.3g blur4 %.4f blur8 %.4f corr length %.2f", rf,
+        tf, mf, spread_f, b4f, b8f, lf);
+    cr_log_info(
+        "splotches: relMSE %.4g trimmed %.4g block median %.4g spread %.3g blur4 %.4f blur8 %.4f corr length %.2f", rs,
+        ts, msp, spread_s, b4s, b8s, ls);
     /* fireflies: white in the blur (1/16, 1/64 within 50 %), short correlation, and almost all of
      * the relMSE in the 0.1 % largest pixels */
     cr_expect(b4f < 1.5 / 16 && b8f < 1.5 / 64, "fireflies survive the blur: %g %g", b4f, b8f);
@@ -141,6 +148,11 @@ Test(ch6_stats, normalisation_offset_is_not_a_splotch)
     double b8 = ch6_blur_share(off, ref, 0.01, 8), l = ch6_corr_length(off, ref);
     cr_expect(b8 < 1.5 / 64, "the offset survives the blur: %g", b8);
     cr_expect(isnan(l) || l < 1.5, "the offset correlates: %g", l);
+    /* relMSE: the noise's 0.05^2 / 1.01 plus the offset's 0.05^2 / 1.01; scaled, the noise's alone
+     * (within 10 %: 16 384 pixels of noise) */
+    double all = img_relmse(off, ref, 0.01), scaled = ch6_relmse_scaled(off, ref, 0.01), noise = 0.0025 / 1.01;
+    cr_expect(fabs(all / (2 * noise) - 1) < 0.1, "relMSE %g, expected %g", all, 2 * noise);
+    cr_expect(fabs(scaled / noise - 1) < 0.1, "scaled relMSE %g, expected %g", scaled, noise);
     img_destroy(off);
     img_destroy(ff);
     img_destroy(ref);
@@ -210,9 +222,11 @@ Test(ch6_tool, skips_a_method_the_renderer_lacks_and_writes_its_tables, .timeout
     cr_assert(mkdtemp(dir));
     char cmd[1024];
     snprintf(cmd, sizeof cmd,
-             BIN_DIR "/ch6_equal --scene scenes/cornell-box/scene.json --out %s/o --methods 'pssmlt,nosuch,big=--method mmlt --p-large 1' "
-                     "--seeds 2 --time 0.2 --t0 0.1 --resolution 16x16 --reference-spp 4 --reference %s/ref.exr --min-length 2 "
-                     "--render-args '--seed-paths 2000' --render " BIN_DIR "/render >/dev/null 2>&1",
+             BIN_DIR
+             "/ch6_equal --scene scenes/cornell-box/scene.json --out %s/o --methods 'pssmlt,nosuch,big=--method mmlt "
+             "--p-large 1' "
+             "--seeds 2 --time 0.2 --t0 0.1 --resolution 16x16 --reference-spp 4 --reference %s/ref.exr --min-length 2 "
+             "--render-args '--seed-paths 2000' --render " BIN_DIR "/render >/dev/null 2>&1",
              dir, dir);
     cr_assert_eq(system(cmd), 0, "%s", cmd);
     snprintf(cmd, sizeof cmd, "%s/o/runs.csv", dir);
@@ -226,7 +240,8 @@ Test(ch6_tool, skips_a_method_the_renderer_lacks_and_writes_its_tables, .timeout
     /* the claims: only (1) has its method here (pssmlt), once per statistic, each with a verdict word */
     snprintf(cmd, sizeof cmd, "%s/o/claims.csv", dir);
     char *claims = slurp_file(cmd);
-    cr_assert(strstr(claims, "\nsource,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n"),
+    cr_assert(strstr(claims,
+                     "\nsource,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n"),
               "%s", claims);
     int rows = 0;
     for (char *line = strtok(claims, "\n"); line; line = strtok(NULL, "\n")) {
@@ -240,14 +255,55 @@ Test(ch6_tool, skips_a_method_the_renderer_lacks_and_writes_its_tables, .timeout
         cr_assert_eq(n, 12, "%s", line);
         cr_assert(!strncmp(f[1], "(1) PSSMLT is worst,", 20) && !strncmp(f[3], "pssmlt,", 7), "%s", line);
         cr_assert(strstr(f[6], "big="), "%s", line);
-        cr_assert(!strncmp(f[8], "holds,", 6) || !strncmp(f[8], "contradicted,", 13) || !strncmp(f[8], "undecided,", 10), "%s",
-                  line);
+        cr_assert(!strncmp(f[8], "holds,", 6) || !strncmp(f[8], "contradicted,", 13) ||
+                      !strncmp(f[8], "undecided,", 10),
+                  "%s", line);
         rows++;
     }
     cr_assert_eq(rows, 3);
-    snprintf(cmd, sizeof cmd, BIN_DIR "/ch6_equal --scene scenes/cornell-box/scene.json --out %s/o --seeds 1 2>/dev/null", dir);
+    snprintf(cmd, sizeof cmd,
+             BIN_DIR "/ch6_equal --scene scenes/cornell-box/scene.json --out %s/o --seeds 1 2>/dev/null", dir);
     int st = system(cmd);
     cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2);
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    cr_assert_eq(system(cmd), 0);
+}
+
+/* ch6_equal --spp (make check-fig6.N): a fixed number of mutations per pixel makes the statistics
+ * the machine's speed does not touch. Two runs with the same seeds write the same stats.csv (every
+ * method, every statistic, the seeds counted), which bin/check_stats accepts against itself; the
+ * run files carry the first seed and the budget in mutations per pixel. */
+Test(ch6_tool, fixed_mutations_give_a_reproducible_stats_csv, .timeout = 120)
+{
+    char dir[] = "/tmp/ch6-spp-XXXXXX";
+    cr_assert(mkdtemp(dir));
+    char cmd[1400], a[96], b[96];
+    for (int k = 0; k < 2; k++) {
+        snprintf(cmd, sizeof cmd,
+                 BIN_DIR
+                 "/ch6_equal --scene scenes/cornell-box/scene.json --out %s/%c --methods pssmlt,mmlt --seeds 2 "
+                 "--first-seed 7 --spp 2 --resolution 32x32 --reference-spp 4 --reference %s/ref.exr --min-length 2 "
+                 "--render-args '--seed-paths 2000' --render " BIN_DIR "/render >/dev/null 2>&1",
+                 dir, 'a' + k, dir);
+        cr_assert_eq(system(cmd), 0, "%s", cmd);
+    }
+    snprintf(a, sizeof a, "%s/a/stats.csv", dir);
+    snprintf(b, sizeof b, "%s/b/stats.csv", dir);
+    char *sa = strdup(slurp_file(a));
+    cr_assert_str_eq(sa, slurp_file(b));
+    cr_assert(strstr(sa, "\nscene,method,statistic,mean,se,seeds\n"), "%s", sa);
+    int rows = 0;
+    for (const char *l = strstr(sa, "\ncornell-box,"); l; l = strstr(l + 1, "\ncornell-box,"))
+        rows++;
+    cr_assert(rows >= 2 * 11, "%s", sa); /* the correlation length may be undefined on 32 x 32 */
+    cr_assert(strstr(sa, "\ncornell-box,mmlt,nonzero_per_connection,") &&
+                  strstr(sa, "\ncornell-box,pssmlt,relmse_scaled,"),
+              "%s", sa);
+    free(sa);
+    snprintf(cmd, sizeof cmd, "%s/a/runs/mmlt-s8-spp2.csv", dir);
+    cr_assert_eq(access(cmd, F_OK), 0, "%s", cmd);
+    snprintf(cmd, sizeof cmd, BIN_DIR "/check_stats --key scene,method,statistic --count seeds %s %s >/dev/null", a, b);
+    cr_assert_eq(system(cmd), 0, "%s", cmd);
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     cr_assert_eq(system(cmd), 0);
 }
@@ -312,10 +368,32 @@ Test(ch6_tool, an_interrupted_run_resumes_and_keeps_what_it_completed, .timeout 
     snprintf(refck, sizeof refck, "%s/ref.rendering.ckpt", dir);
     snprintf(runs, sizeof runs, "%s/o/runs", dir);
     snprintf(err, sizeof err, "%s/err", dir);
-    char *args[] = {BIN_DIR "/ch6_equal", "--scene", "scenes/cornell-box/scene.json", "--out", out, "--methods", "pssmlt,mmlt",
-                    "--seeds", "3", "--time", "0.5", "--resolution", "32x24", "--reference-spp", "4000", "--reference", ref,
-                    "--min-length", "2", "--render-args", "--seed-paths 2000", "--checkpoint", "0.1", "--render",
-                    BIN_DIR "/render", NULL};
+    char *args[] = {BIN_DIR "/ch6_equal",
+                    "--scene",
+                    "scenes/cornell-box/scene.json",
+                    "--out",
+                    out,
+                    "--methods",
+                    "pssmlt,mmlt",
+                    "--seeds",
+                    "3",
+                    "--time",
+                    "0.5",
+                    "--resolution",
+                    "32x24",
+                    "--reference-spp",
+                    "4000",
+                    "--reference",
+                    ref,
+                    "--min-length",
+                    "2",
+                    "--render-args",
+                    "--seed-paths 2000",
+                    "--checkpoint",
+                    "0.1",
+                    "--render",
+                    BIN_DIR "/render",
+                    NULL};
     /* 1: inside the reference */
     pid_t pid = start_group(args, err);
     cr_assert(wait_for(file_exists, refck, 60), "the reference render wrote no checkpoint");
@@ -330,7 +408,8 @@ Test(ch6_tool, an_interrupted_run_resumes_and_keeps_what_it_completed, .timeout 
     usleep(200000);
     kill(-pid, SIGINT);
     waitpid(pid, &st, 0);
-    cr_assert(file_exists(ref) && !file_exists(refck), "the resumed reference is not in place, or its checkpoint stayed");
+    cr_assert(file_exists(ref) && !file_exists(refck),
+              "the resumed reference is not in place, or its checkpoint stayed");
     char p[160];
     struct stat before[2];
     const char *kept[2] = {"pssmlt-s1-t0.5.csv", "mmlt-s1-t0.5.csv"};
@@ -348,7 +427,8 @@ Test(ch6_tool, an_interrupted_run_resumes_and_keeps_what_it_completed, .timeout 
     waitpid(pid, &st, 0);
     char *e = slurp_file(err);
     cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 0, "%s", e);
-    cr_assert(strstr(e, "pssmlt seed 1, 0.5 s (kept from an earlier run)") && strstr(e, "mmlt seed 1, 0.5 s (kept from an earlier run)"),
+    cr_assert(strstr(e, "pssmlt seed 1, 0.5 s (kept from an earlier run)") &&
+                  strstr(e, "mmlt seed 1, 0.5 s (kept from an earlier run)"),
               "%s", e);
     for (int i = 0; i < 2; i++) {
         struct stat now;
