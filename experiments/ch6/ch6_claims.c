@@ -46,7 +46,8 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
     for (size_t k = 0; k < sizeof claims / sizeof *claims; k++) {
         const struct claim *cl = &claims[k];
         int mi = find(in, cl->method), oi = cl->against ? find(in, cl->against) : -1;
-        if (mi < 0 || (cl->against && oi < 0)) continue;
+        if (mi < 0 || (cl->against && oi < 0) || isnan(in->mean[mi][cl->q]))
+            continue; /* no reference: no image claims */
         bool have[MAX_METHODS];
         for (int i = 0; i < in->methods; i++) {
             mean[i] = in->mean[i][cl->q], se[i] = in->se[i][cl->q];

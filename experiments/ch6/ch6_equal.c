@@ -166,6 +166,36 @@ static void fail(const char *msg1, const char *msg2)
     exit(1);
 }
 
+static double mean_luminance(const struct image *im)
+{
+    double m = 0;
+    for (int y = 0; y < im->h; y++)
+        for (int x = 0; x < im->w; x++)
+            m += luminance(img_get(im, x, y));
+    return m / ((double)im->w * im->h);
+}
+
+/* A run's image against the reference (ref NULL: no reference, every image statistic nan). */
+static void image_statistics(struct run *r, const struct image *im, const struct image *ref, double eps, int blk,
+                             double *blocks, int cap)
+{
+    static const enum ch6_q image_q[] = {Q_RELMSE,  Q_RELMSE_SCALED, Q_SPREAD, Q_BLOCK_MEDIAN,
+                                         Q_TRIMMED, Q_BLUR4,         Q_BLUR8,  Q_CORRLEN};
+    for (size_t k = 0; k < sizeof image_q / sizeof *image_q; k++)
+        r->q[image_q[k]] = NAN;
+    if (!ref) return;
+    r->q[Q_RELMSE] = img_relmse(im, ref, eps);
+    r->q[Q_RELMSE_SCALED] = ch6_relmse_scaled(im, ref, eps);
+    int n = ch6_block_relmse(im, ref, blk, eps, blocks, cap);
+    if (n > cap) n = cap;
+    r->q[Q_SPREAD] = ch6_spread(blocks, n);
+    r->q[Q_BLOCK_MEDIAN] = ch6_median(blocks, n);
+    r->q[Q_TRIMMED] = ch6_trimmed_relmse(im, ref, eps, 0.001);
+    r->q[Q_BLUR4] = ch6_blur_share(im, ref, eps, 4);
+    r->q[Q_BLUR8] = ch6_blur_share(im, ref, eps, 8);
+    r->q[Q_CORRLEN] = ch6_corr_length(im, ref);
+}
+
 /* OUT/stats.csv: the statistics that do not depend on the machine's speed (at --spp budgets), one
  * row per method and statistic at the largest budget (runs[method][seed]), for make check-fig6.N
  * (bin/check_stats --key scene,method,statistic --count seeds). A statistic undefined in a run (the
@@ -243,7 +273,9 @@ int main(int argc, char **argv)
          .expect = "WxH with positive integers", .help = "override the camera (also for the reference)"},
         OPT_REFERENCE(refpath, .help = "cached BDPT reference EXR, re-rendered when older than the scene file (default "
                                        "results/reference/NAME-bdpt-WxH-minK-SPP.exr)"),
-        OPT_REFERENCE_SPP(refspp, .help = "BDPT samples per pixel of the reference", .def = "256"),
+        {"--reference-spp", OPT_INT, OPT_DST(refspp), .arg = "N", .lo = 0, .hi = 1 << 24, .def = "256",
+         .help = "BDPT samples per pixel of the reference (0: no reference, only the render CSVs' counts: the "
+                 "non-zero ratios)"},
         OPT_MIN_LENGTH(minlen, .hi = 64, .def = "1",
                        .help =
                            "paths of K segments or more only, reference and runs (1: all; the thesis's chapter 6 uses "
@@ -361,8 +393,8 @@ int main(int argc, char **argv)
                  refspp);
         refpath = defref;
     }
-    probe_ref = older_than(refpath, scene) ? NULL : img_read(refpath, err, sizeof err);
-    if (!probe_ref) {
+    probe_ref = !refspp || older_than(refpath, scene) ? NULL : img_read(refpath, err, sizeof err);
+    if (!probe_ref && refspp) {
         fprintf(stderr, "ch6_equal: rendering the BDPT reference (%d spp) into %s\n", refspp, refpath);
         char prefix[1100];
         snprintf(prefix, sizeof prefix, "%.*s", (int)(strlen(refpath) - 4), refpath);
@@ -383,19 +415,14 @@ int main(int argc, char **argv)
         if (!probe_ref) fail(err, NULL);
     }
     struct image *ref = probe_ref;
-    double mlum = 0;
-    for (int y = 0; y < ref->h; y++)
-        for (int x = 0; x < ref->w; x++)
-            mlum += luminance(img_get(ref, x, y));
-    mlum /= (double)ref->w * ref->h;
-    if (!(mlum > 0)) fail("the reference is black: ", refpath);
-    const double eps = 0.01 * mlum * mlum, expo = 0.5 / mlum;
+    double mlum = ref ? mean_luminance(ref) : NAN, eps = 0.01 * mlum * mlum, expo = 0.5 / mlum;
     char path[4096];
+    if (ref && !(mlum > 0)) fail("the reference is black: ", refpath);
     snprintf(path, sizeof path, "%s/reference.png", out);
-    if (!img_write_png(ref, expo, path, err, sizeof err)) fail(err, NULL);
+    if (ref && !img_write_png(ref, expo, path, err, sizeof err)) fail(err, NULL);
 
     static struct run R[MAX_METHODS][MAX_BUDGETS][MAX_SEEDS];
-    int cap = (ref->w / blk) * (ref->h / blk) + 1;
+    int cap = ref ? (ref->w / blk) * (ref->h / blk) + 1 : 1;
     double *blocks = xmalloc(sizeof(double) * (size_t)cap);
     /* Interleaved: seed 1 of every method and budget, then seed 2, ...: a change in the machine's
      * load during the runs then falls on every method alike, not on the one running at the time. */
@@ -454,18 +481,10 @@ int main(int argc, char **argv)
                 }
                 struct image *im = img_read(path, err, sizeof err);
                 if (!im) fail(err, NULL);
-                if (im->w != ref->w || im->h != ref->h) fail("image and reference sizes differ: ", path);
+                if (ref && (im->w != ref->w || im->h != ref->h)) fail("image and reference sizes differ: ", path);
                 struct run *r = &R[mi][bi][s - 1];
-                r->q[Q_RELMSE] = img_relmse(im, ref, eps);
-                r->q[Q_RELMSE_SCALED] = ch6_relmse_scaled(im, ref, eps);
-                int n = ch6_block_relmse(im, ref, blk, eps, blocks, cap);
-                if (n > cap) n = cap;
-                r->q[Q_SPREAD] = ch6_spread(blocks, n);
-                r->q[Q_BLOCK_MEDIAN] = ch6_median(blocks, n);
-                r->q[Q_TRIMMED] = ch6_trimmed_relmse(im, ref, eps, 0.001);
-                r->q[Q_BLUR4] = ch6_blur_share(im, ref, eps, 4);
-                r->q[Q_BLUR8] = ch6_blur_share(im, ref, eps, 8);
-                r->q[Q_CORRLEN] = ch6_corr_length(im, ref);
+                image_statistics(r, im, ref, eps, blk, blocks, cap);
+                if (!ref) expo = 0.5 / mean_luminance(im); /* no reference: a PNG is exposed by its own mean */
                 if (bi == nb - 1 && s == 1) {
                     snprintf(path, sizeof path, "%.3000s/%.60s.png", out, m->name);
                     if (!img_write_png(im, expo, path, err, sizeof err)) fail(err, NULL);
@@ -493,7 +512,10 @@ int main(int argc, char **argv)
     FILE *f = open_memstream(&buf, &len);
     csv_meta(f, NULL, "ch6_equal: equal-time renders of %s", scene);
     csv_meta_commit(f);
-    csv_meta(f, "reference", "%s (%d spp BDPT)", refpath, refspp);
+    if (ref)
+        csv_meta(f, "reference", "%s (%d spp BDPT)", refpath, refspp);
+    else
+        csv_meta(f, "reference", "none (--reference-spp 0: the image statistics are nan)");
     csv_meta(f, "render args", "%s", extra_s);
     csv_meta(f, "min_length", "%d", minlen);
     csv_meta(f, "relmse eps", "= 0.01 * (reference mean luminance %.6g)^2", mlum);
