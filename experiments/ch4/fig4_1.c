@@ -77,7 +77,7 @@ int main(int argc, char **argv)
          .help = "autocorrelation lags 0..L pixels", .def = "40"},
         OPTS_REFERENCE(refpath, refspp, "PT", "results/reference/wall-pt-WxH-SPP.exr", "64", "1024"),
         {0}};
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_1 [options]\n", .opts = opts, .paper = &fo.paper},
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_1 [options]\n", .opts = opts, .fig = &fo},
                argc, argv);
     int W = res[0], H = res[1];
     if (maxlag >= W || maxlag >= H) opts_fail(prog, "--max-lag %d: must be below the image's width and height", maxlag);

@@ -114,7 +114,7 @@ int main(int argc, char **argv)
                                   "results/reference/wall-pt-NxN-SPP.exr",
                           .def = "32", .paper = "1024"),
         {0}};
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_2 [options]\n", .opts = opts, .paper = &fo.paper},
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_2 [options]\n", .opts = opts, .fig = &fo},
                argc, argv);
     opts_require_image_output(prog);
     char err[1024];

@@ -72,7 +72,7 @@ int main(int argc, char **argv)
         OPT_P_LARGE(p_large),
         OPTS_REFERENCE(refpath, refspp, "BDPT", "results/reference/window-bdpt-WxH-SPP.exr", "1024", "16384"),
         {0}};
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_3 [options]\n", .opts = opts, .paper = &fo.paper},
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_3 [options]\n", .opts = opts, .fig = &fo},
                argc, argv);
     int W = res[0], H = res[1];
     opts_require_image_output(prog);

@@ -3,6 +3,7 @@
  * steps, over --seeds seeds (interleaved: seed 1 of every method, then seed 2, ...; budgets in CPU
  * seconds per thread); relative MSE against a BDPT reference rendered once and cached, the cost of a
  * proposal (CPU time, and rays from a separate one-thread run of fixed length) and its acceptance.
+ * --mutations fixes the proposals per run instead of the time (make check-fig4.6).
  * Writes OUT/fig4.6-runs.csv (one row per run), OUT/fig4.6.csv (mean ± standard error per method),
  * OUT/claims.csv and claims.md (thesis §4.3's claims with their verdicts), OUT/reference.png and
  * OUT/{mmlt-large,mctls,hybrid}.{exr,png} of the first seed; the side-by-side PNG and the table come
@@ -41,8 +42,12 @@ static struct image *reference(const struct scene *sc, const char *path, int spp
     }
     img_destroy(ref);
     fprintf(stderr, "fig4.6: rendering the BDPT reference (%d spp) into %s\n", spp, path);
-    struct render_opts o = {.method = METHOD_BDPT, .spp = spp, .seed = 12345, .threads = threads,
-                            .max_length = sc->max_length, .progress = isatty(2)};
+    struct render_opts o = {.method = METHOD_BDPT,
+                            .spp = spp,
+                            .seed = 12345,
+                            .threads = threads,
+                            .max_length = sc->max_length,
+                            .progress = isatty(2)};
     struct render_stats st;
     ref = render_mc(sc, &o, &st);
     char dir[4096];
@@ -101,17 +106,23 @@ int main(int argc, char **argv)
     const char *refpath = NULL;
     struct opts_figure fo;
     double seconds;
+    long mutations = 0;
     int refspp, hybrid, seeds;
     const struct opt opts[] = {
         OPTS_FIGURE(fo, "scenes/ajar/scene.json", "results/fig4.6"),
         {"--seconds", OPT_DOUBLE, OPT_DST(seconds), .arg = "S", .lo = 0.01, .hi = 1e6,
-         .help = "budget per run, CPU seconds per thread", .def = "4", .paper = "600"},
-        {"--seeds", OPT_INT, OPT_DST(seeds), .arg = "N", .lo = 2, .hi = MAX_SEEDS, .help = "runs per method (seeds S..S+N-1)",
-         .def = "8"},
-        OPTS_REFERENCE(refpath, refspp, "BDPT", "results/reference/ajar-bdpt-<spp>.exr", "256", "16384"),
+         .help = "budget per run, CPU seconds per thread", .def = "4", .paper = "600", .full = "60"},
+        OPT_MUTATIONS(mutations, .help =
+                                     "instead of --seconds, N proposals per run: statistics that do not depend on the "
+                                     "machine, for make check-fig4.6"),
+        {"--seeds", OPT_INT, OPT_DST(seeds), .arg = "N", .lo = 2, .hi = MAX_SEEDS,
+         .help = "runs per method (seeds S..S+N-1)", .def = "8"},
+        OPT_REFERENCE(refpath, .help = "cached BDPT reference EXR (default results/reference/ajar-bdpt-<spp>.exr)"),
+        OPT_REFERENCE_SPP(refspp, .help = "BDPT samples per pixel of the reference", .def = "256", .paper = "16384",
+                          .full = "4096"),
         OPT_HYBRID_LENGTH(hybrid, .help = "hybrid: MCTLS from path length K on, MMLT large steps below", .def = "6"),
         {0}};
-    opts_parse(&(struct opts_spec){.prog = "fig4_6", .usage = "usage: fig4_6 [options]\n", .opts = opts, .paper = &fo.paper},
+    opts_parse(&(struct opts_spec){.prog = "fig4_6", .usage = "usage: fig4_6 [options]\n", .opts = opts, .fig = &fo},
                argc, argv);
     opts_require_image_output("fig4_6");
     char err[1024], defref[256];
@@ -129,9 +140,21 @@ int main(int argc, char **argv)
         return 1;
     }
     static struct run R[METHODS][MAX_SEEDS];
-    struct mlt_opts base = {.method = MLT_MMLT, .p_large = 1, .seconds = seconds, .cpu_time = true,
-                            .seed_paths = fo.paper ? 1000000 : 100000, .threads = fo.threads, .max_length = sc->max_length,
-                            .progress = isatty(2), .hybrid_length = hybrid};
+    char budget[64];
+    if (mutations)
+        snprintf(budget, sizeof budget, "%ld proposals", mutations);
+    else
+        snprintf(budget, sizeof budget, "%g CPU s per thread", seconds);
+    struct mlt_opts base = {.method = MLT_MMLT,
+                            .p_large = 1,
+                            .seconds = mutations ? 0 : seconds,
+                            .cpu_time = !mutations,
+                            .mutations = mutations,
+                            .seed_paths = fo.paper || fo.full ? 1000000 : 100000,
+                            .threads = fo.threads,
+                            .max_length = sc->max_length,
+                            .progress = isatty(2),
+                            .hybrid_length = hybrid};
     pss_opts_default(&base.pss, sc->cam.width, sc->cam.height);
     /* interleaved, so that a change in the machine's load falls on every method alike */
     for (int s = 0; s < seeds; s++)
@@ -139,14 +162,16 @@ int main(int argc, char **argv)
             struct mlt_opts o = base;
             o.large_step = kinds[m];
             o.seed = fo.seed + (uint64_t)s;
-            fprintf(stderr, "fig4.6: %s seed %llu, %g CPU s per thread\n", names[m], (unsigned long long)o.seed, seconds);
+            fprintf(stderr, "fig4.6: %s seed %llu, %s\n", names[m], (unsigned long long)o.seed, budget);
             struct mlt_result r;
-            if (!mlt_render(sc, &o, &r, err, sizeof err) || (s == 0 && !write_pair(r.img, fo.out, names[m], err, sizeof err))) {
+            if (!mlt_render(sc, &o, &r, err, sizeof err) ||
+                (s == 0 && !write_pair(r.img, fo.out, names[m], err, sizeof err))) {
                 fprintf(stderr, "%s\n", err);
                 return 1;
             }
-            R[m][s] = (struct run){r.seconds, img_relmse(r.img, ref, 0.01), 1e6 * r.seconds * fo.threads / (double)r.mutations,
-                                   acceptance(&r.stats), r.mutations};
+            R[m][s] =
+                (struct run){r.seconds, img_relmse(r.img, ref, 0.01),
+                             1e6 * r.seconds * fo.threads / (double)r.mutations, acceptance(&r.stats), r.mutations};
             mlt_result_free(&r);
         }
     double rays[METHODS];
@@ -161,18 +186,19 @@ int main(int argc, char **argv)
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    csv_meta_head(f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps), one row per run",
-                  fo.scene, fo.scale);
+    csv_meta_head(
+        f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps), one row per run",
+        fo.scene, fo.scale);
     csv_meta(f, "threads", "%d", fo.threads);
-    csv_meta(f, "budget", "%g CPU seconds per thread", seconds);
+    csv_meta(f, "budget", "%s", budget);
     csv_meta(f, "reference", "%s (%d spp BDPT)", refpath, refspp);
     csv_meta(f, "hybrid_length", "%d", hybrid);
     csv_meta(f, NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01)");
     fprintf(f, "method,seed,seconds,mutations,relmse,us_per_proposal,acceptance\n");
     for (int m = 0; m < METHODS; m++)
         for (int s = 0; s < seeds; s++)
-            fprintf(f, "%s,%llu,%.3f,%ld,%.6g,%.6g,%.6g\n", names[m], (unsigned long long)(fo.seed + (uint64_t)s), R[m][s].seconds,
-                    R[m][s].mutations, R[m][s].relmse, R[m][s].us_per_proposal, R[m][s].accept);
+            fprintf(f, "%s,%llu,%.3f,%ld,%.6g,%.6g,%.6g\n", names[m], (unsigned long long)(fo.seed + (uint64_t)s),
+                    R[m][s].seconds, R[m][s].mutations, R[m][s].relmse, R[m][s].us_per_proposal, R[m][s].accept);
     fclose(f);
     char path[4096];
     snprintf(path, sizeof path, "%s/fig4.6-runs.csv", fo.out);
@@ -184,20 +210,22 @@ int main(int argc, char **argv)
     for (int m = 0; m < METHODS; m++)
         for (int q = 0; q < 3; q++) {
             double v[MAX_SEEDS];
-            for (int s = 0; s < seeds; s++) v[s] = q == 0 ? R[m][s].relmse : q == 1 ? R[m][s].us_per_proposal : R[m][s].accept;
+            for (int s = 0; s < seeds; s++)
+                v[s] = q == 0 ? R[m][s].relmse : q == 1 ? R[m][s].us_per_proposal : R[m][s].accept;
             mean_se(v, seeds, &mean[m][q], &se[m][q]);
         }
     buf = NULL;
     f = open_memstream(&buf, &len);
     csv_meta_head(f, "fig4.6: mean and standard error over seeds per method", fo.scene, fo.scale);
     csv_meta(f, "seeds", "%d", seeds);
-    csv_meta(f, "budget", "%g CPU seconds per thread, %d threads", seconds, fo.threads);
+    csv_meta(f, "budget", "%s, %d threads", budget, fo.threads);
     csv_meta(f, NULL, "rays_per_proposal: a one-thread run of 20000 proposals less one of none");
-    fprintf(f, "method,seeds,relmse,relmse_se,us_per_proposal,us_per_proposal_se,cost_vs_mmlt,rays_per_proposal,acceptance,"
-               "acceptance_se\n");
+    fprintf(
+        f, "method,seeds,relmse,relmse_se,us_per_proposal,us_per_proposal_se,cost_vs_mmlt,rays_per_proposal,acceptance,"
+           "acceptance_se\n");
     for (int m = 0; m < METHODS; m++)
-        fprintf(f, "%s,%d,%.6g,%.3g,%.6g,%.3g,%.4g,%.4g,%.6g,%.3g\n", names[m], seeds, mean[m][0], se[m][0], mean[m][1], se[m][1],
-                mean[m][1] / mean[0][1], rays[m], mean[m][2], se[m][2]);
+        fprintf(f, "%s,%d,%.6g,%.3g,%.6g,%.3g,%.4g,%.4g,%.6g,%.3g\n", names[m], seeds, mean[m][0], se[m][0], mean[m][1],
+                se[m][1], mean[m][1] / mean[0][1], rays[m], mean[m][2], se[m][2]);
     fclose(f);
     snprintf(path, sizeof path, "%s/fig4.6.csv", fo.out);
     ok = ok && write_text_atomic(path, buf, err, sizeof err);
@@ -207,9 +235,11 @@ int main(int argc, char **argv)
     struct claims cl;
     char command[64], zs[128], md[256];
     snprintf(command, sizeof command, "make fig4.6 SCALE=%s", fo.scale);
-    claims_begin(&cl, fo.scale, command, "Claims of thesis §4.3 on %s at %g CPU s per run, %d seeds", fo.scene, seconds, seeds);
+    claims_begin(&cl, fo.scale, command, "Claims of thesis §4.3 on %s at %s per run, %d seeds", fo.scene, budget,
+                 seeds);
     const bool two[METHODS] = {true, true, false};
-    double z[METHODS], acc[METHODS] = {mean[0][2], mean[1][2], mean[2][2]}, acc_se[METHODS] = {se[0][2], se[1][2], se[2][2]};
+    double z[METHODS], acc[METHODS] = {mean[0][2], mean[1][2], mean[2][2]},
+                       acc_se[METHODS] = {se[0][2], se[1][2], se[2][2]};
     struct verdict v = verdict_extreme(acc, acc_se, two, METHODS, 1, +1, seeds, z);
     snprintf(zs, sizeof zs, "mmlt-large=%.2f", z[0]);
     snprintf(md, sizeof md, "mmlt-large %.4g ± %.2g (z = %.1f)", acc[0], acc_se[0], z[0]);
@@ -220,13 +250,14 @@ int main(int argc, char **argv)
     v = verdict_similar(ratio, ratio_se, 5, 0, 0.25, seeds);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% (z = %.1f)", v.zmin);
-    claims_row(&cl, "thesis §4.3", "an MCTLS step costs about 5x an MMLT large step", "CPU time per proposal, MCTLS / MMLT",
-               "mctls", ratio, ratio_se, zs, md, &v);
+    claims_row(&cl, "thesis §4.3", "an MCTLS step costs about 5x an MMLT large step",
+               "CPU time per proposal, MCTLS / MMLT", "mctls", ratio, ratio_se, zs, md, &v);
     v = verdict_similar(mean[1][0], se[1][0], mean[0][0], se[0][0], 0.25, seeds);
     snprintf(zs, sizeof zs, "mmlt-large=%.2f", v.zmin);
     snprintf(md, sizeof md, "mmlt-large %.4g ± %.2g, within ±25 %% (z = %.1f)", mean[0][0], se[0][0], v.zmin);
-    claims_row(&cl, "thesis §4.3", "at equal time MCTLS and MMLT large steps are similarly noisy", "relMSE", "mctls",
-               mean[1][0], se[1][0], zs, md, &v);
+    if (!mutations) /* an equal number of proposals says nothing about equal time */
+        claims_row(&cl, "thesis §4.3", "at equal time MCTLS and MMLT large steps are similarly noisy", "relMSE",
+                   "mctls", mean[1][0], se[1][0], zs, md, &v);
     char cerr[1024];
     char *claims = claims_finish(&cl, fo.out, cerr, sizeof cerr);
     if (ok && !claims) snprintf(err, sizeof err, "%s", cerr);

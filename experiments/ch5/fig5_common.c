@@ -26,7 +26,7 @@ void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *about)
         {0}};
     char usage[64];
     snprintf(usage, sizeof usage, "usage: %s [options]\n", c->prog);
-    opts_parse(&(struct opts_spec){.prog = c->prog, .usage = usage, .about = about, .opts = opts, .paper = &c->fig.paper},
+    opts_parse(&(struct opts_spec){.prog = c->prog, .usage = usage, .about = about, .opts = opts, .fig = &c->fig},
                argc, argv);
     c->width = res[0], c->height = res[1];
     c->seed_paths = c->fig.paper ? 1000000 : 100000;

@@ -47,10 +47,13 @@ static bool parse_budgets(const char *s, void *dst, char *why, size_t len)
         errno = 0;
         double v = strtod(p, &end);
         if (errno || end == p) return snprintf(why, len, "cannot read a number in '%s'", s), false;
-        if (*end == 'k' || *end == 'K') v *= 1e3, end++;
-        else if (*end == 'M' || *end == 'm') v *= 1e6, end++;
+        if (*end == 'k' || *end == 'K')
+            v *= 1e3, end++;
+        else if (*end == 'M' || *end == 'm')
+            v *= 1e6, end++;
         if (*end && *end != ',') return snprintf(why, len, "unexpected '%c' in '%s'", *end, s), false;
-        if (!(v >= 1024 && v <= 1e12)) return snprintf(why, len, "each budget must be in [1024, 1e12], got '%s'", s), false;
+        if (!(v >= 1024 && v <= 1e12))
+            return snprintf(why, len, "each budget must be in [1024, 1e12], got '%s'", s), false;
         if (n == MAX_BUDGETS) return snprintf(why, len, "at most %d budgets", MAX_BUDGETS), false;
         o->budgets[n++] = (uint64_t)v;
         p = *end ? end + 1 : end;
@@ -62,10 +65,10 @@ static bool parse_budgets(const char *s, void *dst, char *why, size_t len)
 
 static void parse(int argc, char **argv, struct opts *o)
 {
-    bool paper;
+    struct opts_figure fig = {0}; /* only its scale: the paper defaults */
     *o = (struct opts){0};
     const struct opt opts[] = {
-        {"--scale", OPT_CHOICE, OPT_DST(paper), .choices = opts_scales, .str = &o->scale,
+        {"--scale", OPT_CHOICE, OPT_DST(fig.scale_i), .choices = opts_scales, .str = &o->scale,
          .help = "defaults for budgets and seeds", .def = "quick", .env = "SCALE"},
         {"--budgets", OPT_CALL, .dst = o, .call = parse_budgets, .arg = "LIST",
          .help = "comma-separated total samples per algorithm, suffix k or M", .def = "1M,8M", .paper = "16M,128M"},
@@ -73,23 +76,29 @@ static void parse(int argc, char **argv, struct opts *o)
          .help = "independent runs per algorithm and budget", .def = "10", .paper = "8"},
         OPT_SEED(o->seed, .hi = 1L << 40, .help = "base seed", .def = "1"),
         OPT_THREADS(o->threads, .hi = 256, .help = "worker threads", .def = "2"),
-        {"--res", OPT_INT, OPT_DST(o->res), .arg = "N", .lo = 1, .hi = 4096, .help = "image resolution N x N", .def = "128"},
-        {"--ref-spp", OPT_INT, OPT_DST(o->ref_spp), .arg = "N", .lo = 1, .hi = 1 << 24, .help = "reference samples per pixel",
-         .def = "16384", .paper = "65536"},
+        {"--res", OPT_INT, OPT_DST(o->res), .arg = "N", .lo = 1, .hi = 4096, .help = "image resolution N x N",
+         .def = "128"},
+        {"--ref-spp", OPT_INT, OPT_DST(o->ref_spp), .arg = "N", .lo = 1, .hi = 1 << 24,
+         .help = "reference samples per pixel", .def = "16384", .paper = "65536"},
         OPT_P_LARGE(o->p_large),
         {"--swap-every", OPT_INT, OPT_DST(o->swap_every), .arg = "K", .lo = 1, .hi = 1 << 20,
          .help = "CMLT chart swap every K iterations", .def = "4"},
         {"--seed-frac", OPT_DOUBLE, OPT_DST(o->seed_frac), .arg = "F", .lo = 1e-6, .hi = 1,
          .help = "seed-pass samples per chart = F * n", .def = "0.0625"},
         OPT_OUT(o->out, .arg = "DIR", .help = "output directory", .def = "results/table1-cmlt"),
-        {"--commit", OPT_STRING, OPT_DST(o->commit), .arg = "ID", .help = "recorded in the CSV metadata", .def = "unknown"},
+        {"--commit", OPT_STRING, OPT_DST(o->commit), .arg = "ID", .help = "recorded in the CSV metadata",
+         .def = "unknown"},
         {"--bench", OPT_FLAG, OPT_DST(o->bench), .help = "time each algorithm on one thread, print steps/s; no table"},
         {0}};
-    opts_parse(&(struct opts_spec){.prog = "table1_cmlt", .usage = "usage: table1_cmlt [options]\n",
-                                   .about = "Reproduces Table 1 and Figure 3 of the CMLT paper on its two-light toy: RMSE of six MCMC\n"
-                                            "algorithms (PSS-MLT-1/2/AVG/MIX, CMLT-EPSM, CMLT) against a Monte Carlo reference.\n",
-                                   .opts = opts, .paper = &paper},
-               argc, argv);
+    opts_parse(
+        &(struct opts_spec){
+            .prog = "table1_cmlt",
+            .usage = "usage: table1_cmlt [options]\n",
+            .about = "Reproduces Table 1 and Figure 3 of the CMLT paper on its two-light toy: RMSE of six MCMC\n"
+                     "algorithms (PSS-MLT-1/2/AVG/MIX, CMLT-EPSM, CMLT) against a Monte Carlo reference.\n",
+            .opts = opts,
+            .fig = &fig},
+        argc, argv);
 }
 
 /* ---- small output helpers ---------------------------------------------------------------- */
@@ -170,8 +179,8 @@ static void progress_bar(const char *what, _Atomic uint64_t *progress, uint64_t 
         double f = total ? (double)atomic_load(progress) / total : 1;
         if (f > 1) f = 1;
         int w = 30, k = (int)(f * w);
-        fprintf(stderr, "%s%s [%.*s%*s] %5.1f%% %6.1fs%s", tty ? "\r" : "", what, k,
-                "##############################", w - k, "", 100 * f, t, tty ? "" : "\n");
+        fprintf(stderr, "%s%s [%.*s%*s] %5.1f%% %6.1fs%s", tty ? "\r" : "", what, k, "##############################",
+                w - k, "", 100 * f, t, tty ? "" : "\n");
     }
     fprintf(stderr, "%s%s done in %.1fs%*s\n", tty ? "\r" : "", what, now() - t0, 30, "");
 }
@@ -209,8 +218,8 @@ static struct image *get_reference(const struct opts *o, struct cmlt_ref_result 
     if (f) {
         char line[1024] = "";
         double b0, b1, b2, nr;
-        bool ok = fgets(line, sizeof line, f) && !strcmp(line, key) &&
-                  fscanf(f, "%lf %lf %lf %lf", &b0, &b1, &b2, &nr) == 4;
+        bool ok =
+            fgets(line, sizeof line, f) && !strcmp(line, key) && fscanf(f, "%lf %lf %lf %lf", &b0, &b1, &b2, &nr) == 4;
         fclose(f);
         if (ok) {
             struct image *im = img_read(path, err, sizeof err);
@@ -223,8 +232,8 @@ static struct image *get_reference(const struct opts *o, struct cmlt_ref_result 
         }
     }
     struct image *im = img_create(o->res, o->res);
-    struct ref_thread rt = {.w = o->res, .h = o->res, .spp = o->ref_spp, .threads = o->threads,
-                            .seed = 0xC3117ull, .img = im->px};
+    struct ref_thread rt = {
+        .w = o->res, .h = o->res, .spp = o->ref_spp, .threads = o->threads, .seed = 0xC3117ull, .img = im->px};
     atomic_init(&rt.progress, 0);
     atomic_init(&rt.finished, 0);
     int sq = (int)sqrt((double)o->ref_spp);
@@ -274,7 +283,8 @@ struct pool {
 static double rmse(const double *a, const double *b, size_t n)
 {
     double s = 0;
-    for (size_t i = 0; i < n; i++) s += (a[i] - b[i]) * (a[i] - b[i]);
+    for (size_t i = 0; i < n; i++)
+        s += (a[i] - b[i]) * (a[i] - b[i]);
     return sqrt(s / n);
 }
 
@@ -319,24 +329,33 @@ static void run_pool(struct pool *p, const char *what)
 {
     const struct opts *o = p->o;
     uint64_t total = 0;
-    for (int i = 0; i < p->njobs; i++) total += p->jobs[i].n - p->jobs[i].n % (p->jobs[i].algo == CMLT_PSS1 || p->jobs[i].algo == CMLT_PSS2 || p->jobs[i].algo == CMLT_EPSM ? 1 : 2);
+    for (int i = 0; i < p->njobs; i++)
+        total +=
+            p->jobs[i].n -
+            p->jobs[i].n %
+                (p->jobs[i].algo == CMLT_PSS1 || p->jobs[i].algo == CMLT_PSS2 || p->jobs[i].algo == CMLT_EPSM ? 1 : 2);
     atomic_init(&p->next, 0);
     atomic_init(&p->progress, 0);
     atomic_init(&p->finished, 0);
     atomic_init(&p->running, o->threads);
     pthread_t *t = xmalloc(sizeof *t * (size_t)o->threads);
     double t0 = now();
-    for (int i = 0; i < o->threads; i++) ASSERT(pthread_create(&t[i], NULL, worker, p) == 0);
+    for (int i = 0; i < o->threads; i++)
+        ASSERT(pthread_create(&t[i], NULL, worker, p) == 0);
     progress_bar(what, &p->progress, total, &p->finished, t0);
-    for (int i = 0; i < o->threads; i++) pthread_join(t[i], NULL);
+    for (int i = 0; i < o->threads; i++)
+        pthread_join(t[i], NULL);
     free(t);
 }
 
 static const char *fmt_n(uint64_t n, char *buf, size_t len)
 {
-    if (n % 1000000 == 0) snprintf(buf, len, "%lluM", (unsigned long long)(n / 1000000));
-    else if (n % 1000 == 0) snprintf(buf, len, "%lluk", (unsigned long long)(n / 1000));
-    else snprintf(buf, len, "%llu", (unsigned long long)n);
+    if (n % 1000000 == 0)
+        snprintf(buf, len, "%lluM", (unsigned long long)(n / 1000000));
+    else if (n % 1000 == 0)
+        snprintf(buf, len, "%lluk", (unsigned long long)(n / 1000));
+    else
+        snprintf(buf, len, "%llu", (unsigned long long)n);
     return buf;
 }
 
@@ -379,8 +398,8 @@ int main(int argc, char **argv)
     double t_start = now();
     struct cmlt_ref_result rr;
     struct image *ref = get_reference(&o, &rr);
-    fprintf(stderr, "reference: b = %.6g (w1: %.6g, w2: %.6g), own noise RMSE ~ %.3g\n", rr.b[0], rr.b[1],
-            rr.b[2], rr.noise_rmse);
+    fprintf(stderr, "reference: b = %.6g (w1: %.6g, w2: %.6g), own noise RMSE ~ %.3g\n", rr.b[0], rr.b[1], rr.b[2],
+            rr.noise_rmse);
 
     struct pool p = {.o = &o, .ref = ref};
     p.njobs = o.seeds * o.nbudgets * CMLT_NALGO;
@@ -388,11 +407,13 @@ int main(int argc, char **argv)
     int k = 0;
     for (int s = 0; s < o.seeds; s++)
         for (int b = 0; b < o.nbudgets; b++)
-            for (int a = 0; a < CMLT_NALGO; a++) p.jobs[k++] = (struct job){.algo = a, .bidx = b, .seed_idx = s, .n = o.budgets[b]};
+            for (int a = 0; a < CMLT_NALGO; a++)
+                p.jobs[k++] = (struct job){.algo = a, .bidx = b, .seed_idx = s, .n = o.budgets[b]};
     qsort(p.jobs, (size_t)p.njobs, sizeof *p.jobs, cmp_job);
     size_t npx = 3 * (size_t)o.res * o.res;
     p.keep = xmalloc(sizeof(double *) * o.nbudgets * CMLT_NALGO);
-    for (int i = 0; i < o.nbudgets * CMLT_NALGO; i++) p.keep[i] = xmalloc(sizeof(double) * npx);
+    for (int i = 0; i < o.nbudgets * CMLT_NALGO; i++)
+        p.keep[i] = xmalloc(sizeof(double) * npx);
     run_pool(&p, "chains");
     int partial = g_stop != 0;
     double wall = now() - t_start;
@@ -446,15 +467,20 @@ int main(int argc, char **argv)
                     steps > 0 ? acc / steps : 0, swaps > 0 ? swacc / swaps : 0);
         }
     /* Markdown table: ours (mean ± standard error over seeds) next to the paper's Table 1 */
-    tprintf(&md, "RMSE against the reference (mean ± standard error over %d seeds; same total samples n per "
-                 "algorithm), next to the paper's Table 1 (their toy, one run).\n\n| algorithm |", o.seeds);
-    for (int b = 0; b < o.nbudgets; b++) tprintf(&md, " n = %s |", fmt_n(o.budgets[b], nb, sizeof nb));
+    tprintf(&md,
+            "RMSE against the reference (mean ± standard error over %d seeds; same total samples n per "
+            "algorithm), next to the paper's Table 1 (their toy, one run).\n\n| algorithm |",
+            o.seeds);
+    for (int b = 0; b < o.nbudgets; b++)
+        tprintf(&md, " n = %s |", fmt_n(o.budgets[b], nb, sizeof nb));
     tprintf(&md, " paper n = 16M | paper n = 128M |\n| --- |");
-    for (int b = 0; b < o.nbudgets; b++) tprintf(&md, " ---: |");
+    for (int b = 0; b < o.nbudgets; b++)
+        tprintf(&md, " ---: |");
     tprintf(&md, " ---: | ---: |\n");
     for (int a = 0; a < CMLT_NALGO; a++) {
         tprintf(&md, "| %s |", cmlt_algo_names[a]);
-        for (int b = 0; b < o.nbudgets; b++) tprintf(&md, " %.3e ± %.1e |", mean[b][a], se[b][a]);
+        for (int b = 0; b < o.nbudgets; b++)
+            tprintf(&md, " %.3e ± %.1e |", mean[b][a], se[b][a]);
         tprintf(&md, " %.3e | %.3e |\n", paper[0][a], paper[1][a]);
     }
     tprintf(&md, "\nReference: %d spp stratified MC, own noise RMSE ≈ %.2e. Wall time %.1f s on %d threads.%s\n",
@@ -471,8 +497,14 @@ int main(int argc, char **argv)
     char command[64], scale[64];
     snprintf(command, sizeof command, "make table1-cmlt SCALE=%s", o.scale);
     snprintf(scale, sizeof scale, "%s%s", o.scale, partial ? " (interrupted)" : "");
-    struct cmlt_claims_in ci = {.dir = o.out, .scale = scale, .command = command, .seeds = o.seeds,
-                                .nbudgets = o.nbudgets, .budgets = o.budgets, .mean = mean, .se = se};
+    struct cmlt_claims_in ci = {.dir = o.out,
+                                .scale = scale,
+                                .command = command,
+                                .seeds = o.seeds,
+                                .nbudgets = o.nbudgets,
+                                .budgets = o.budgets,
+                                .mean = mean,
+                                .se = se};
     char *claims = cmlt_write_claims(&ci, err, sizeof err);
     if (!claims) {
         fprintf(stderr, "table1_cmlt: %s\n", err);
@@ -485,7 +517,8 @@ int main(int argc, char **argv)
             for (int e = 0; e < 2; e++) {
                 snprintf(path, sizeof path, "%s/%s_%s.%s", o.out, cmlt_algo_names[a],
                          fmt_n(o.budgets[b], nb, sizeof nb), ext[e]);
-                bool ok = e ? img_write_png(&im, 1.0, path, err, sizeof err) : img_write_exr(&im, 1.0, path, err, sizeof err);
+                bool ok =
+                    e ? img_write_png(&im, 1.0, path, err, sizeof err) : img_write_exr(&im, 1.0, path, err, sizeof err);
                 if (!ok) {
                     fprintf(stderr, "table1_cmlt: %s\n", err);
                     return 1;
@@ -499,7 +532,8 @@ int main(int argc, char **argv)
     free(stats.buf);
     free(seeds.buf);
     free(md.buf);
-    for (int i = 0; i < o.nbudgets * CMLT_NALGO; i++) free(p.keep[i]);
+    for (int i = 0; i < o.nbudgets * CMLT_NALGO; i++)
+        free(p.keep[i]);
     free(p.keep);
     free(p.jobs);
     img_destroy(ref);

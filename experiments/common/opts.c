@@ -11,7 +11,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-const char *const opts_scales[] = {"quick", "paper", NULL};
+const char *const opts_scales[] = {"quick", "paper", "full", NULL};
 
 void opts_fail(const char *prog, const char *fmt, ...)
 {
@@ -43,11 +43,20 @@ const struct opt *opts_find(const struct opts_spec *s, const char *name)
 static void store_int(const struct opt *o, long v)
 {
     switch (o->size) {
-    case 1: *(uint8_t *)o->dst = (uint8_t)v; break;
-    case 2: *(int16_t *)o->dst = (int16_t)v; break;
-    case 4: *(int32_t *)o->dst = (int32_t)v; break;
-    case 8: *(int64_t *)o->dst = (int64_t)v; break;
-    default: ASSERT(!"an integer option's destination of 1, 2, 4 or 8 bytes");
+    case 1:
+        *(uint8_t *)o->dst = (uint8_t)v;
+        break;
+    case 2:
+        *(int16_t *)o->dst = (int16_t)v;
+        break;
+    case 4:
+        *(int32_t *)o->dst = (int32_t)v;
+        break;
+    case 8:
+        *(int64_t *)o->dst = (int64_t)v;
+        break;
+    default:
+        ASSERT(!"an integer option's destination of 1, 2, 4 or 8 bytes");
     }
 }
 
@@ -87,9 +96,13 @@ static void set_value(const char *prog, const struct opt *o, const char *v)
         errno = 0;
         unsigned long long x = strtoull(v, &end, 10);
         bool bounded = o->hi > 0;
-        if (errno || end == v || *end || v[0] == '-' || (bounded && (x < (unsigned long long)o->lo || x > (unsigned long long)o->hi))) {
-            if (bounded) snprintf(expect, sizeof expect, "an integer in [%llu, %llu]", (unsigned long long)o->lo, (unsigned long long)o->hi);
-            else snprintf(expect, sizeof expect, "a non-negative integer");
+        if (errno || end == v || *end || v[0] == '-' ||
+            (bounded && (x < (unsigned long long)o->lo || x > (unsigned long long)o->hi))) {
+            if (bounded)
+                snprintf(expect, sizeof expect, "an integer in [%llu, %llu]", (unsigned long long)o->lo,
+                         (unsigned long long)o->hi);
+            else
+                snprintf(expect, sizeof expect, "a non-negative integer");
             opts_fail(prog, "%s: expected %s, got '%s'", name, o->expect ? o->expect : expect, v);
         }
         *(uint64_t *)o->dst = (uint64_t)x;
@@ -105,10 +118,13 @@ static void set_value(const char *prog, const struct opt *o, const char *v)
         *(double *)o->dst = x;
         break;
     }
-    case OPT_STRING: *(const char **)o->dst = v; break;
+    case OPT_STRING:
+        *(const char **)o->dst = v;
+        break;
     case OPT_CHOICE: {
         int i = 0;
-        while (o->choices[i] && strcmp(o->choices[i], v)) i++;
+        while (o->choices[i] && strcmp(o->choices[i], v))
+            i++;
         if (!o->choices[i]) {
             choice_list(o->choices, expect, sizeof expect);
             opts_fail(prog, "%s: expected %s, got '%s'", name, o->expect ? o->expect : expect, v);
@@ -135,7 +151,8 @@ static void set_value(const char *prog, const struct opt *o, const char *v)
         if (!o->call(v, o->dst, why, sizeof why)) opts_fail(prog, "%s: %s", name, why);
         break;
     }
-    default: ASSERT(!"an option that takes a value");
+    default:
+        ASSERT(!"an option that takes a value");
     }
 }
 
@@ -143,23 +160,29 @@ static void set_value(const char *prog, const struct opt *o, const char *v)
  * --scale, at pass 1 those that do. */
 static void set_default(const struct opts_spec *s, const struct opt *o, int pass)
 {
-    if (pass != (o->paper != NULL)) return;
-    if (o->paper) {
-        ASSERT(s->paper);
-        const char *v = *s->paper ? o->paper : o->def;
+    if (pass != (o->paper || o->full)) return;
+    if (o->paper || o->full) {
+        ASSERT(s->fig);
+        const char *v = s->fig->scale_i == 1 && o->paper  ? o->paper
+                        : s->fig->scale_i == 2 && o->full ? o->full
+                                                          : o->def;
         if (v) set_value(s->prog, o, v);
         return;
     }
     const char *env = o->env ? getenv(o->env) : NULL;
-    if (env && *env) set_value(s->prog, o, env);
-    else if (o->def) set_value(s->prog, o, o->def);
-    else if (o->def_int) store_int(o, o->def_int());
+    if (env && *env)
+        set_value(s->prog, o, env);
+    else if (o->def)
+        set_value(s->prog, o, o->def);
+    else if (o->def_int)
+        store_int(o, o->def_int());
 }
 
 void opts_parse(const struct opts_spec *s, int argc, char **argv)
 {
     int n = 0;
-    while (s->opts[n].type != OPT_END) n++;
+    while (s->opts[n].type != OPT_END)
+        n++;
     bool *given = xcalloc((size_t)n + 1, sizeof *given);
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -182,9 +205,19 @@ void opts_parse(const struct opts_spec *s, int argc, char **argv)
         if (i + 1 >= argc) opts_fail(s->prog, "%s needs a value (see --help)", a);
         set_value(s->prog, o, argv[++i]);
     }
-    for (int pass = 0; pass < 2; pass++)
+    for (int pass = 0; pass < 2; pass++) {
         for (int k = 0; k < n; k++)
             if (!given[k] && s->opts[k].name) set_default(s, &s->opts[k], pass);
+        if (pass == 0 && s->fig) { /* --scale is known now; the defaults that depend on it follow */
+            s->fig->paper = s->fig->scale_i == 1;
+            s->fig->full = s->fig->scale_i == 2;
+            bool has_full = false;
+            for (int k = 0; k < n; k++)
+                has_full |= s->opts[k].full != NULL;
+            if (s->fig->full && !has_full)
+                opts_fail(s->prog, "--scale full: this figure has the scales quick and paper only");
+        }
+    }
     free(given);
 }
 
@@ -198,7 +231,8 @@ static void wrap(FILE *f, const char *text, int col)
 {
     bool first = true;
     for (const char *p = text; *p;) {
-        while (*p == ' ') p++;
+        while (*p == ' ')
+            p++;
         if (!*p) break;
         int w = (int)strcspn(p, " ");
         if (col + !first + w > HELP_WIDTH && col > HELP_COL) {
@@ -230,14 +264,22 @@ void opts_help(const struct opts_spec *s, FILE *f)
             arg[0] = 0;
             for (int i = 0; o->choices[i]; i++)
                 snprintf(arg + strlen(arg), sizeof arg - strlen(arg), "%s%s", i ? "|" : "", o->choices[i]);
-        } else snprintf(arg, sizeof arg, "%s", o->arg ? o->arg : "");
+        } else
+            snprintf(arg, sizeof arg, "%s", o->arg ? o->arg : "");
         int col = snprintf(left, sizeof left, "  %s%s%s", o->name, *arg ? " " : "", arg);
         snprintf(text, sizeof text, "%s", o->help ? o->help : "");
         size_t l = strlen(text);
-        if (o->paper && o->def) snprintf(text + l, sizeof text - l, " (quick %s, paper %s)", o->def, o->paper);
-        else if (o->paper) snprintf(text + l, sizeof text - l, " (paper %s)", o->paper);
-        else if (o->env && o->def) snprintf(text + l, sizeof text - l, " (default $%s, else %s)", o->env, o->def);
-        else if (o->def) snprintf(text + l, sizeof text - l, " (default %s)", o->def);
+        if (o->full && o->def)
+            snprintf(text + l, sizeof text - l, " (quick %s, paper %s, full %s)", o->def, o->paper ? o->paper : o->def,
+                     o->full);
+        else if (o->paper && o->def)
+            snprintf(text + l, sizeof text - l, " (quick %s, paper %s)", o->def, o->paper);
+        else if (o->paper)
+            snprintf(text + l, sizeof text - l, " (paper %s)", o->paper);
+        else if (o->env && o->def)
+            snprintf(text + l, sizeof text - l, " (default $%s, else %s)", o->env, o->def);
+        else if (o->def)
+            snprintf(text + l, sizeof text - l, " (default %s)", o->def);
         fputs(left, f);
         if (col <= HELP_COL - 2) {
             fprintf(f, "%*s", HELP_COL - col, "");
@@ -269,14 +311,13 @@ struct scene *opts_figure_scene(const struct opts_figure *f)
 struct scene *opts_accept_parse(struct opts_accept *a, const char *prog, const char *scene, const char *out,
                                 const char *mutations_quick, const char *mutations_paper, int argc, char **argv)
 {
-    const struct opt opts[] = {
-        OPTS_FIGURE(a->fig, scene, out),
-        OPT_MUTATIONS(a->mutations, .help = "mutations per method, over all lengths", .def = mutations_quick,
-                      .paper = mutations_paper),
-        OPT_MAX_LENGTH(a->max_length, .help = "longest path length", .def = "12"),
-        {0}};
+    const struct opt opts[] = {OPTS_FIGURE(a->fig, scene, out),
+                               OPT_MUTATIONS(a->mutations, .help = "mutations per method, over all lengths",
+                                             .def = mutations_quick, .paper = mutations_paper),
+                               OPT_MAX_LENGTH(a->max_length, .help = "longest path length", .def = "12"),
+                               {0}};
     char usage[64];
     snprintf(usage, sizeof usage, "usage: %s [options]\n", prog);
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = usage, .opts = opts, .paper = &a->fig.paper}, argc, argv);
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = usage, .opts = opts, .fig = &a->fig}, argc, argv);
     return opts_figure_scene(&a->fig);
 }

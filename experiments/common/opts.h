@@ -8,7 +8,7 @@
 #ifndef OPTS_H
 #define OPTS_H
 
-#include "base/parallel.h" /* cpu_count: --threads' default */
+#include "base/parallel.h"   /* cpu_count: --threads' default */
 #include "sampler/sampler.h" /* MAX_PATH_LENGTH: --max-length's bound */
 #include <stdbool.h>
 #include <stddef.h>
@@ -16,6 +16,7 @@
 #include <stdio.h>
 
 struct scene;
+struct opts_figure;
 
 enum opt_type {
     OPT_END = 0, /* ends a table */
@@ -34,16 +35,17 @@ enum opt_type {
 struct opt {
     const char *name; /* "--spp" */
     enum opt_type type;
-    void *dst;   /* where the value goes */
-    size_t size; /* sizeof *dst: OPT_FLAG, OPT_INT, OPT_CHOICE */
+    void *dst;        /* where the value goes */
+    size_t size;      /* sizeof *dst: OPT_FLAG, OPT_INT, OPT_CHOICE */
     const char *arg;  /* the value's name in the help ("N"); choices: a|b|c unless given */
     const char *help; /* one line, wrapped by --help */
     /* Defaults, applied after the arguments to every option not given, through the same checks:
      * def as it would be given; env: an environment variable that replaces def when set and not
-     * empty; paper: the default at --scale paper (def is then the quick one; needs spec.paper);
+     * empty; paper, full: the defaults at --scale paper and --scale full (def is then the quick
+     * one; needs spec.fig; a tool none of whose options has a full default refuses --scale full);
      * def_int: an OPT_INT default computed at run time (help states it). No default: dst keeps
      * the value the tool initialised it with. */
-    const char *def, *env, *paper;
+    const char *def, *env, *paper, *full;
     int (*def_int)(void);
     double lo, hi, lo2, hi2;
     const char *const *choices; /* OPT_CHOICE, NULL-terminated */
@@ -68,8 +70,8 @@ struct opts_spec {
     /* Arguments that are not options ("-" included): each to positional (NULL: an error) */
     void (*positional)(const char *prog, const char *arg, void *ctx);
     void *ctx;
-    /* Where --scale puts quick/paper (OPTS_FIGURE): needed by the .paper defaults */
-    const bool *paper;
+    /* Where --scale puts quick/paper/full (OPTS_FIGURE): needed by the .paper and .full defaults */
+    struct opts_figure *fig;
 };
 
 /* Reads argv[1..argc-1] in order: --help or -h prints the help and exits 0 when it is reached
@@ -88,42 +90,89 @@ void opts_require_image_output(const char *prog);
 
 /* ---- shared groups ---------------------------------------------------------------------------- */
 
-/* What every figure tool takes: --scene FILE, --scale quick|paper (default $SCALE, else quick),
+/* What every figure tool takes: --scene FILE, --scale quick|paper|full (default $SCALE, else quick),
  * --seed S (default 1), --threads T (default: all cores), --out DIR. */
 struct opts_figure {
     const char *scene, *scale, *out;
-    bool paper; /* --scale paper */
+    int scale_i;      /* index into opts_scales */
+    bool paper, full; /* --scale paper, --scale full */
     uint64_t seed;
     int threads;
 };
-extern const char *const opts_scales[]; /* quick, paper */
+extern const char *const opts_scales[]; /* quick, paper, full */
 /* The shared options; the tool adds .help, .def, .paper where it has its own (as `...`). */
-#define OPT_SCENE(d, ...) {"--scene", OPT_STRING, OPT_DST(d), .arg = "FILE", __VA_ARGS__}
-#define OPT_SCALE(f)                                                                                              \
-    {"--scale", OPT_CHOICE, OPT_DST((f).paper), .choices = opts_scales, .str = &(f).scale,                        \
-     .help = "budgets and sizes of the run", .def = "quick", .env = "SCALE"}
-#define OPT_SEED(d, ...) {"--seed", OPT_U64, OPT_DST(d), .arg = "S", __VA_ARGS__}
-#define OPT_THREADS(d, ...) {"--threads", OPT_INT, OPT_DST(d), .arg = "T", .lo = 1, __VA_ARGS__}
-#define OPT_OUT(d, ...) {"--out", OPT_STRING, OPT_DST(d), __VA_ARGS__}
-#define OPTS_FIGURE(f, scene_dflt, out_dflt)                                                                      \
-    OPT_SCENE((f).scene, .help = "scene JSON", .def = scene_dflt), OPT_SCALE(f),                                  \
-        OPT_SEED((f).seed, .help = "random seed (the first of several)", .def = "1"),                             \
-        OPT_THREADS((f).threads, .hi = 1024, .help = "worker threads (default: all cores)", .def_int = cpu_count), \
+#define OPT_SCENE(d, ...)                                                                                              \
+    {                                                                                                                  \
+        "--scene", OPT_STRING, OPT_DST(d), .arg = "FILE", __VA_ARGS__                                                  \
+    }
+#define OPT_SCALE(f)                                                                                                   \
+    {                                                                                                                  \
+        "--scale", OPT_CHOICE, OPT_DST((f).scale_i), .choices = opts_scales, .str = &(f).scale,                        \
+                                                     .help = "budgets and sizes of the run", .def = "quick",           \
+                                                     .env = "SCALE"                                                    \
+    }
+#define OPT_SEED(d, ...)                                                                                               \
+    {                                                                                                                  \
+        "--seed", OPT_U64, OPT_DST(d), .arg = "S", __VA_ARGS__                                                         \
+    }
+#define OPT_THREADS(d, ...)                                                                                            \
+    {                                                                                                                  \
+        "--threads", OPT_INT, OPT_DST(d), .arg = "T", .lo = 1, __VA_ARGS__                                             \
+    }
+#define OPT_OUT(d, ...)                                                                                                \
+    {                                                                                                                  \
+        "--out", OPT_STRING, OPT_DST(d), __VA_ARGS__                                                                   \
+    }
+#define OPTS_FIGURE(f, scene_dflt, out_dflt)                                                                           \
+    OPT_SCENE((f).scene, .help = "scene JSON", .def = scene_dflt), OPT_SCALE(f),                                       \
+        OPT_SEED((f).seed, .help = "random seed (the first of several)", .def = "1"),                                  \
+        OPT_THREADS((f).threads, .hi = 1024, .help = "worker threads (default: all cores)", .def_int = cpu_count),     \
         OPT_OUT((f).out, .arg = "DIR", .help = "output folder", .def = out_dflt)
-#define OPT_SEEDS(d, ...) {"--seeds", OPT_INT, OPT_DST(d), .arg = "N", .lo = 2, .hi = 1000, __VA_ARGS__}
-#define OPT_P_LARGE(d) {"--p-large", OPT_DOUBLE, OPT_DST(d), .arg = "P", .lo = 0, .hi = 1, .help = "large-step probability", .def = "0.1"}
-#define OPT_MAX_LENGTH(d, ...) {"--max-length", OPT_INT, OPT_DST(d), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, __VA_ARGS__}
-#define OPT_MIN_LENGTH(d, ...) {"--min-length", OPT_INT, OPT_DST(d), .arg = "K", .lo = 1, __VA_ARGS__}
-#define OPT_RESOLUTION(d, ...) {"--resolution", OPT_WXH, OPT_DST(d), .arg = "WxH", __VA_ARGS__}
-#define OPT_REFERENCE(d, ...) {"--reference", OPT_STRING, OPT_DST(d), .arg = "FILE", __VA_ARGS__}
-#define OPT_REFERENCE_SPP(d, ...) {"--reference-spp", OPT_INT, OPT_DST(d), .arg = "N", .lo = 1, .hi = 1 << 24, __VA_ARGS__}
+#define OPT_SEEDS(d, ...)                                                                                              \
+    {                                                                                                                  \
+        "--seeds", OPT_INT, OPT_DST(d), .arg = "N", .lo = 2, .hi = 1000, __VA_ARGS__                                   \
+    }
+#define OPT_P_LARGE(d)                                                                                                 \
+    {                                                                                                                  \
+        "--p-large", OPT_DOUBLE, OPT_DST(d), .arg = "P", .lo = 0, .hi = 1, .help = "large-step probability",           \
+                                             .def = "0.1"                                                              \
+    }
+#define OPT_MAX_LENGTH(d, ...)                                                                                         \
+    {                                                                                                                  \
+        "--max-length", OPT_INT, OPT_DST(d), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, __VA_ARGS__                   \
+    }
+#define OPT_MIN_LENGTH(d, ...)                                                                                         \
+    {                                                                                                                  \
+        "--min-length", OPT_INT, OPT_DST(d), .arg = "K", .lo = 1, __VA_ARGS__                                          \
+    }
+#define OPT_RESOLUTION(d, ...)                                                                                         \
+    {                                                                                                                  \
+        "--resolution", OPT_WXH, OPT_DST(d), .arg = "WxH", __VA_ARGS__                                                 \
+    }
+#define OPT_REFERENCE(d, ...)                                                                                          \
+    {                                                                                                                  \
+        "--reference", OPT_STRING, OPT_DST(d), .arg = "FILE", __VA_ARGS__                                              \
+    }
+#define OPT_REFERENCE_SPP(d, ...)                                                                                      \
+    {                                                                                                                  \
+        "--reference-spp", OPT_INT, OPT_DST(d), .arg = "N", .lo = 1, .hi = 1 << 24, __VA_ARGS__                        \
+    }
 /* A reference image cached as FILE, rendered with METHOD at N samples per pixel when missing */
-#define OPTS_REFERENCE(path, spp, method, path_pattern, quick, paper_)                                        \
-    OPT_REFERENCE(path, .help = "cached " method " reference EXR (default " path_pattern ")"),                    \
+#define OPTS_REFERENCE(path, spp, method, path_pattern, quick, paper_)                                                 \
+    OPT_REFERENCE(path, .help = "cached " method " reference EXR (default " path_pattern ")"),                         \
         OPT_REFERENCE_SPP(spp, .help = method " samples per pixel of the reference", .def = quick, .paper = paper_)
-#define OPT_MUTATIONS(d, ...) {"--mutations", OPT_INT, OPT_DST(d), .arg = "N", .lo = 1, .hi = 1L << 40, __VA_ARGS__}
-#define OPT_MPP(d, ...) {"--mpp", OPT_DOUBLE, OPT_DST(d), .arg = "N", __VA_ARGS__}
-#define OPT_HYBRID_LENGTH(d, ...) {"--hybrid-length", OPT_INT, OPT_DST(d), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, __VA_ARGS__}
+#define OPT_MUTATIONS(d, ...)                                                                                          \
+    {                                                                                                                  \
+        "--mutations", OPT_INT, OPT_DST(d), .arg = "N", .lo = 1, .hi = 1L << 40, __VA_ARGS__                           \
+    }
+#define OPT_MPP(d, ...)                                                                                                \
+    {                                                                                                                  \
+        "--mpp", OPT_DOUBLE, OPT_DST(d), .arg = "N", __VA_ARGS__                                                       \
+    }
+#define OPT_HYBRID_LENGTH(d, ...)                                                                                      \
+    {                                                                                                                  \
+        "--hybrid-length", OPT_INT, OPT_DST(d), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, __VA_ARGS__                \
+    }
 
 /* The figure's scene (a load error is one line and exit status 2), with its output folder created. */
 struct scene *opts_figure_scene(const struct opts_figure *f);

@@ -4,7 +4,7 @@
  * would fail is rejected: the isotropic noise no longer stretched (fig4.1), resolution-scaled steps
  * at 256² no better than plain ones (fig4.2), and no loss of acceptance with them in the
  * glossy-to-glossy case (fig4.2), constrained discrete choices no longer raising small-step
- * acceptance (fig4.3). */
+ * acceptance (fig4.3); fig4.6 below. */
 #include <criterion/criterion.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -47,4 +47,20 @@ Test(check_ch4, fig4_2_glossy_scaling_without_acceptance_loss_fails)
 Test(check_ch4, fig4_3_cdc_acceptance_like_pssmlt_fails)
 {
     replicate_passes_perturbed_fails("fig4.3", "method,quantity", "pssmlt-cdc,small_accept", 0.752);
+}
+
+/* check-fig4.6 (400 000 proposals per run, 8 seeds): the committed run of the check passes against
+ * the baseline, and the same run with MCTLS's acceptance set to MMLT large steps' (the thesis's
+ * first claim undone) is rejected. */
+Test(check_ch4, fig4_6_mctls_accepted_as_rarely_as_mmlt_fails)
+{
+    const char *base = "results/baselines/fig4.6/fig4.6.csv", *repl = "results/baselines/fig4.6/replicate-seed101.csv";
+    const char *opts = "--key method --mean acceptance --se acceptance_se --count seeds";
+    cr_assert_eq(check_csv_run(opts, base, repl), 0, "fig4.6: two independent runs disagree");
+    char tmp[] = "/tmp/ch4-perturbed-XXXXXX";
+    int fd = mkstemp(tmp);
+    cr_assert(fd >= 0);
+    check_csv_perturbed(repl, tmp, "mctls", 8, 0.0028);
+    cr_assert_eq(check_csv_run(opts, base, tmp), 1, "fig4.6: MCTLS's acceptance moved to MMLT's was not detected");
+    remove(tmp);
 }

@@ -45,7 +45,10 @@ static int run_exe_out(const char *exe, const char *args, char *err, size_t n, c
     return WEXITSTATUS(st);
 }
 
-static int run_exe(const char *exe, const char *args, char *err, size_t n) { return run_exe_out(exe, args, err, n, NULL, 0); }
+static int run_exe(const char *exe, const char *args, char *err, size_t n)
+{
+    return run_exe_out(exe, args, err, n, NULL, 0);
+}
 static int run(const char *args, char *err, size_t n) { return run_exe(BIN_DIR "/render", args, err, n); }
 
 static bool exists(const char *name)
@@ -58,7 +61,8 @@ static bool exists(const char *name)
 static int lines(const char *s)
 {
     int n = 0;
-    for (; *s; s++) n += *s == '\n';
+    for (; *s; s++)
+        n += *s == '\n';
     return n;
 }
 
@@ -106,8 +110,10 @@ Test(cli, outputs_and_bitwise_reproducibility)
     for (int m = 0; m < 2; m++) {
         const char *method = m ? "mmlt" : "bdpt";
         for (int r = 0; r < 2; r++) {
-            snprintf(args, sizeof args, "scenes/cornell-box/scene.json --method %s --spp 2 --resolution 48x32 --threads 2 "
-                     "--seed 9 --seed-paths 2000 --out %s/%s%d", method, dir, method, r);
+            snprintf(args, sizeof args,
+                     "scenes/cornell-box/scene.json --method %s --spp 2 --resolution 48x32 --threads 2 "
+                     "--seed 9 --seed-paths 2000 --out %s/%s%d",
+                     method, dir, method, r);
             cr_assert_eq(run(args, err, sizeof err), 0, "%s", err);
         }
         const char *ext[] = {"exr", "png", "csv"};
@@ -172,8 +178,10 @@ Test(cli, time_budget_and_interrupt_write_outputs)
     make_dir();
     char err[4096], args[1024], path[256], *csv;
     long n;
-    snprintf(args, sizeof args, "scenes/cornell-box/scene.json --method mmlt --spp 100000 --time 0.3 --resolution 64x48 "
-             "--seed-paths 2000 --out %s/t", dir);
+    snprintf(args, sizeof args,
+             "scenes/cornell-box/scene.json --method mmlt --spp 100000 --time 0.3 --resolution 64x48 "
+             "--seed-paths 2000 --out %s/t",
+             dir);
     cr_assert_eq(run(args, err, sizeof err), 0, "%s", err);
     snprintf(path, sizeof path, "%s/t.csv", dir);
     slurp(path, &csv, &n);
@@ -182,15 +190,18 @@ Test(cli, time_budget_and_interrupt_write_outputs)
     cr_assert(muts > 0 && muts < 100000.0 * 64 * 48, "%g mutations", muts);
     free(csv);
     for (int m = 0; m < 2; m++) {
-        snprintf(args, sizeof args, "scenes/cornell-box/scene.json --method %s --spp 100000 --time 0.3 --resolution 64x48 "
-                 "--out %s/p", m ? "bdpt" : "pt", dir);
+        snprintf(args, sizeof args,
+                 "scenes/cornell-box/scene.json --method %s --spp 100000 --time 0.3 --resolution 64x48 "
+                 "--out %s/p",
+                 m ? "bdpt" : "pt", dir);
         char out[1024];
         cr_assert_eq(run_exe_out(BIN_DIR "/render", args, err, sizeof err, out, sizeof out), 0, "%s", err);
         long samples = 0;
         int spp = 0;
         double s = 0;
         const char *colon = strchr(out, ':');
-        cr_assert(colon && sscanf(colon + 1, " %ld samples (%d spp) in %lf s", &samples, &spp, &s) == 3, "summary: %s", out);
+        cr_assert(colon && sscanf(colon + 1, " %ld samples (%d spp) in %lf s", &samples, &spp, &s) == 3, "summary: %s",
+                  out);
         cr_assert(spp >= 2 && spp < 100000 && samples == (long)spp * 64 * 48, "%s", out);
         /* slack for a loaded machine, where the last pass can take longer than the mean */
         cr_assert(s >= 0.1 && s < 0.3 * (1 + 2.0 / spp) + 0.5, "--time 0.3: %s", out);
@@ -237,8 +248,10 @@ Test(cli, options_of_other_methods_warn)
     };
     char err[4096], args[1024];
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
-        snprintf(args, sizeof args, "scenes/cornell-box/scene.json --method %s %s --spp 1 --resolution 16x12 "
-                 "--seed-paths 200 --out %s/w", cases[i][0], cases[i][1], dir);
+        snprintf(args, sizeof args,
+                 "scenes/cornell-box/scene.json --method %s %s --spp 1 --resolution 16x12 "
+                 "--seed-paths 200 --out %s/w",
+                 cases[i][0], cases[i][1], dir);
         cr_assert_eq(run(args, err, sizeof err), 0, "%s", err);
         cr_assert(strstr(err, cases[i][2]), "%s %s: no warning in: %s", cases[i][0], cases[i][1], err);
     }
@@ -268,4 +281,23 @@ Test(cli, scene_without_emitter)
         cr_assert(strstr(err, "no emitter") && !strstr(err, "seed pass"), "%s: wrong message: %s", mcmc[i], err);
         cr_assert(!exists("y.exr") && !exists("y.csv"), "%s: output written", mcmc[i]);
     }
+}
+
+/* --scale full: a figure with full-scale defaults takes them (fig4_6's help lists them), one without
+ * refuses it in one line with exit status 2 before it renders anything. */
+Test(cli, scale_full_is_taken_or_refused)
+{
+    char err[4096], out[8192], cmd[256], errfile[128];
+    make_dir();
+    cr_assert_eq(run_exe_out(BIN_DIR "/fig4_6", "--help", err, sizeof err, out, sizeof out), 0);
+    cr_assert(strstr(out, "(quick 4, paper 600, full 60)") && strstr(out, "(quick 256, paper 16384, full 4096)"), "%s",
+              out);
+    snprintf(errfile, sizeof errfile, "%s/stderr", dir);
+    snprintf(cmd, sizeof cmd, BIN_DIR "/fig4_1 --scale full --out %s/fig4.1 2> %s", dir, errfile);
+    int st = system(cmd);
+    read_text(errfile, err, sizeof err);
+    cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2, "%s", err);
+    cr_assert(!exists("fig4.1"), "fig4_1 --scale full wrote its output folder");
+    cr_assert(strstr(err, "fig4_1: --scale full: this figure has the scales quick and paper only") && lines(err) == 1,
+              "%s", err);
 }
