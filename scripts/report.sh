@@ -49,10 +49,10 @@ table { border-collapse: collapse; font-size: 13px; } td, th { border: 1px solid
 </style></head><body>
 <h1>pss-harness: every figure</h1>
 HEAD
-echo "<p>Generated $(date -u '+%Y-%m-%d %H:%M UTC') from commit $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown), scale $scale. Quick-scale runs on a shared 2-core machine.</p>"
+echo "<p>Generated $(date -u '+%Y-%m-%d %H:%M UTC') from commit $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown), scale $scale (the chapter-6 figures and mmlt-ratio at that scale; every other figure as last run: each ledger row names its own scale), on a shared 2-core machine.</p>"
 # The claims ledger: every row of every claims.csv the figures wrote (their verdicts come from the
 # runs, experiments/common/verdict.c), first.
-ledger=$(ls results/fig*/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv 2>/dev/null || true)
+ledger=$(ls results/fig*/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv results/mmlt-ratio/"$scale"/*/claims.csv 2>/dev/null || true)
 echo "<section id=\"ledger\"><h2>Claims ledger</h2>"
 if [ -z "$ledger" ]; then echo "<p class=\"missing\">No figure with claims has been run yet (make fig4.6, make fig6.2 ...).</p>"
 else
