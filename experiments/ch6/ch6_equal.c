@@ -411,6 +411,8 @@ int main(int argc, char **argv)
         char exr[1300];
         snprintf(exr, sizeof exr, "%s.exr", part);
         if (rename(exr, refpath) != 0) fail("cannot rename the reference into place: ", refpath);
+        snprintf(exr, sizeof exr, "%s.png", part); /* the render's PNG: OUT/reference.png replaces it */
+        unlink(exr);
         probe_ref = img_read(refpath, err, sizeof err);
         if (!probe_ref) fail(err, NULL);
     }
