@@ -13,6 +13,8 @@
  * of proposals with non-zero contribution from the render's statistics CSV.
  * With --spp the budget is a number of mutations per pixel instead (one run per seed and method):
  * statistics that do not depend on the machine, which make check-fig6.N compares with a baseline.
+ * With --reference-spp 0 there is no reference (the image statistics are nan): only the counts of
+ * the render CSVs, for the non-zero ratios.
  * Writes OUT/runs.csv (one row per run), OUT/summary.csv (mean +- standard error over seeds per method
  * and budget), OUT/stats.csv (the same at the largest budget, one row per method and statistic),
  * OUT/NAME.md (the table and the claims), OUT/reference.png and OUT/<method>.png (first seed, budget
