@@ -10,6 +10,7 @@
  * from the Makefile's scripts. */
 #include "base/parallel.h"
 #include "base/util.h"
+#include "ch4/ch4_common.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
@@ -23,46 +24,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-/* DIR/NAME.exr and DIR/NAME.png */
-static bool write_pair(const struct image *im, const char *dir, const char *name, char *err, size_t n)
-{
-    char prefix[4096];
-    snprintf(prefix, sizeof prefix, "%s/%s", dir, name);
-    return img_write_exr_png(im, prefix, err, n);
-}
-
-static struct image *reference(const struct scene *sc, const char *path, int spp, int threads, char *err, size_t n)
-{
-    char msg[1024];
-    struct image *ref = img_read(path, msg, sizeof msg);
-    if (ref && ref->w == sc->cam.width && ref->h == sc->cam.height) {
-        fprintf(stderr, "fig4.6: using cached reference %s\n", path);
-        return ref;
-    }
-    img_destroy(ref);
-    fprintf(stderr, "fig4.6: rendering the BDPT reference (%d spp) into %s\n", spp, path);
-    struct render_opts o = {.method = METHOD_BDPT,
-                            .spp = spp,
-                            .seed = 12345,
-                            .threads = threads,
-                            .max_length = sc->max_length,
-                            .progress = isatty(2)};
-    struct render_stats st;
-    ref = render_mc(sc, &o, &st);
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (slash) {
-        *slash = 0;
-        mkdir(dir, 0777);
-    }
-    if (!img_write_exr(ref, 1, path, err, n)) {
-        img_destroy(ref);
-        return NULL;
-    }
-    return ref;
-}
 
 #define METHODS 3
 #define MAX_SEEDS 64
@@ -134,8 +95,8 @@ int main(int argc, char **argv)
         return 2;
     }
     mkdir(fo.out, 0777);
-    struct image *ref = reference(sc, refpath, refspp, fo.threads, err, sizeof err);
-    if (!ref || !write_pair(ref, fo.out, "reference", err, sizeof err)) {
+    struct image *ref = ch4_reference(sc, METHOD_BDPT, refspp, refpath, fo.threads, "fig4_6", err, sizeof err);
+    if (!ref || !ch4_write_pair(ref, fo.out, "reference", err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         return 1;
     }
@@ -165,7 +126,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "fig4.6: %s seed %llu, %s\n", names[m], (unsigned long long)o.seed, budget);
             struct mlt_result r;
             if (!mlt_render(sc, &o, &r, err, sizeof err) ||
-                (s == 0 && !write_pair(r.img, fo.out, names[m], err, sizeof err))) {
+                (s == 0 && !ch4_write_pair(r.img, fo.out, names[m], err, sizeof err))) {
                 fprintf(stderr, "%s\n", err);
                 return 1;
             }

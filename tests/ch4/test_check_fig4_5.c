@@ -10,20 +10,14 @@
 #include <string.h>
 #include <sys/wait.h>
 
-#ifndef BIN_DIR
-#define BIN_DIR "bin"
-#endif
+#include "support/check_csv.h"
+
 #define BASE "results/baselines/fig4.5/fig4.5.csv"
 #define REPL "results/baselines/fig4.5/replicate-seed2.csv"
 
 static int check(const char *current)
 {
-    char cmd[1024];
-    snprintf(cmd, sizeof cmd, BIN_DIR "/check_stats --key method,length --mean mean_accept --se stderr %s %s > /dev/null 2>&1",
-             BASE, current);
-    int st = system(cmd);
-    cr_assert(WIFEXITED(st), "check_stats did not run");
-    return WEXITSTATUS(st);
+    return check_csv_run("--key method,length --mean mean_accept --se stderr", BASE, current);
 }
 
 /* Writes REPL with mean_accept of the row `key` (method,length) multiplied by `factor`. */
@@ -66,12 +60,7 @@ Test(check_fig4_5, replicate_passes_perturbed_fails)
 
 static int check_ratios(const char *current)
 {
-    char cmd[1024];
-    snprintf(cmd, sizeof cmd, BIN_DIR "/check_stats --key ratio,length --mean value --se se %s %s > /dev/null 2>&1",
-             RBASE, current);
-    int st = system(cmd);
-    cr_assert(WIFEXITED(st), "check_stats did not run");
-    return WEXITSTATUS(st);
+    return check_csv_run("--key ratio,length --mean value --se se", RBASE, current);
 }
 
 Test(check_fig4_5, ratios_replicate_passes_light_share_moved_fails)
@@ -80,24 +69,7 @@ Test(check_fig4_5, ratios_replicate_passes_light_share_moved_fails)
     char tmp[] = "/tmp/fig45r-perturbed-XXXXXX";
     int fd = mkstemp(tmp);
     cr_assert(fd >= 0);
-    FILE *in = fopen(RREPL, "r"), *f = fopen(tmp, "w");
-    cr_assert(in && f);
-    char line[1024];
-    const char *key = "light:mctls/mmlt-large,12,";
-    int hit = 0;
-    while (fgets(line, sizeof line, in)) {
-        if (strncmp(line, key, strlen(key))) {
-            fputs(line, f);
-            continue;
-        }
-        double v, se;
-        cr_assert(sscanf(line + strlen(key), "%lf,%lf", &v, &se) == 2);
-        fprintf(f, "%s%.6g,%.3g\n", key, 3.3, se);
-        hit++;
-    }
-    fclose(in);
-    fclose(f);
-    cr_assert_eq(hit, 1, "row %s not found", key);
+    check_csv_perturbed(RREPL, tmp, "light:mctls/mmlt-large,12", 2, 3.3);
     cr_assert_eq(check_ratios(tmp), 1, "the light share moved to the acceptance ratio was not detected");
     remove(tmp);
 }
