@@ -2,11 +2,14 @@
 # Markdown table of results/fig4.5/fig4.5.csv: per length, both methods' mean acceptance with its
 # batch-means standard error, and the MCTLS / MMLT ratio; then the ratios of the other runs
 # (fixed numbers of drawn trials, the thesis's k + 2 count) and, from RATIOS (fig4.5-ratios.csv), the
-# mean number of techniques that carry light for a pair of subpaths that has any.
-# usage: fig4.5-table.sh CSV [RATIOS] > TABLE.md
+# mean number of techniques that carry light for a pair of subpaths that has any; then, from TRIALS
+# (fig4.5-trials.csv), both acceptances predicted from independent pairs of subpaths and the factors
+# of their ratio.
+# usage: fig4.5-table.sh CSV [RATIOS [TRIALS]] > TABLE.md
 set -euo pipefail
 awk -F, '
-/^#/ || $1 == "method" || $1 == "ratio" { next }
+/^#/ || $1 == "method" || $1 == "ratio" || $1 == "length" { next }
+ARGC > 3 && FILENAME == ARGV[3] { tv[$1 + 0, $2] = $3; ts[$1 + 0, $2] = $4; tr = 1; next }
 FILENAME != ARGV[1] { if ($1 == "contributing-techniques") { ct[$2 + 0] = $3; cts[$2 + 0] = $4 }; next }
 { key = $2 + 0; m[$1, key] = $4; s[$1, key] = $5; if (key > K) K = key }
 END {
@@ -32,5 +35,18 @@ END {
         l = (k in ct) ? sprintf("%.2f", (k + 1) / ct[k]) : "–"
         g = (k in ct) ? sprintf("%.2f", m["mctls", k] / a * ct[k] / (k + 1)) : "–"
         printf "| %d | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %s | %s |\n", k, m["mctls-tries1", k] / a, m["mctls-tries2", k] / a, m["mctls-tries4", k] / a, m["mctls", k] / a, m["mctls", k] / t, c, l, g
+    }
+    if (!tr) exit
+    print ""
+    print "Predicted from independent pairs of subpaths (both large steps are independence samplers: acceptance = E[min(W1, W2)] / E[W] over the proposal; jackknife errors). The ratio MCTLS / MMLT = (proposals with light) x (acceptance given light); the last column is the second factor with MCTLS'"'"'s target the mean over the techniques with light instead of their sum:"
+    print ""
+    print "| length | MMLT large steps | MCTLS | MCTLS / MMLT | proposals with light, MCTLS / MMLT | acceptance given light, MCTLS / MMLT | techniques with light | their coefficient of variation | acceptance given light, target = mean over the techniques |"
+    print "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+    for (k = 2; k <= K; k++) {
+        if (!((k, "accept_mmlt") in tv)) continue
+        printf "| %d | %.5f ± %.5f | %.5f ± %.5f", k, tv[k, "accept_mmlt"], ts[k, "accept_mmlt"], tv[k, "accept_mctls"], ts[k, "accept_mctls"]
+        n = split("accept_ratio light_ratio given_light_ratio techniques_with_light techniques_cv given_light_ratio_mean", q, " ")
+        for (i = 1; i <= n; i++) printf " | %.3f ± %.3f", tv[k, q[i]], ts[k, q[i]]
+        printf " |\n"
     }
 }' "$@"

@@ -15,9 +15,7 @@ bool use_mctls(const struct mlt_opts *o, int k)
 
 double mctls_accept(double ysum, double xsum) { return xsum > 0 ? fmin(1.0, ysum / xsum) : 1.0; }
 
-/* The trials (Eq. 4.7's terms): the targets of all k + 1 techniques of the subpaths the sampler's
- * numbers give, traced to full length; pi[t] and sp[t] for t = 1..k+1. Returns their sum. */
-static double all_techniques(const struct path_ctx *pc, struct sampler *s, struct scratch *w, int k, double *pi,
+double mctls_trials(const struct path_ctx *pc, struct sampler *s, struct scratch *w, int k, double *pi,
                              struct splat_list *sp)
 {
     int nz = walk_camera(pc, s, w->cam, k + 1);
@@ -73,13 +71,13 @@ static double drawn_trials(const struct path_ctx *pc, struct chain *c, struct sc
 {
     int k = c->k, tech[MCTLS_MAX_TRIES];
     double wt[MCTLS_MAX_TRIES];
-    all_techniques(pc, &c->pss.base, w, k, b->xpi, b->xsp);
+    mctls_trials(pc, &c->pss.base, w, k, b->xpi, b->xsp);
     b->xpi[0] = 0;
     *xsum = b->xpi[c->tech];
     for (int i = 1; i < n; i++)
         *xsum += b->xpi[draw_technique(k, t0, r)];
     pss_begin(&c->pss, true);
-    all_techniques(pc, &c->pss.base, w, k, b->pi, b->sp);
+    mctls_trials(pc, &c->pss.base, w, k, b->pi, b->sp);
     b->pi[0] = 0;
     double ysum = 0;
     for (int i = 0; i < n; i++) {
@@ -101,11 +99,11 @@ double mctls_step(const struct path_ctx *pc, const struct mlt_opts *o, struct ch
         c->xsum_valid = false;
     } else {
         if (!c->xsum_valid) {
-            c->xsum = all_techniques(pc, &c->pss.base, w, k, b->xpi, b->xsp);
+            c->xsum = mctls_trials(pc, &c->pss.base, w, k, b->xpi, b->xsp);
             c->xsum_valid = true;
         }
         pss_begin(&c->pss, true);
-        ysum = all_techniques(pc, &c->pss.base, w, k, b->pi, b->sp);
+        ysum = mctls_trials(pc, &c->pss.base, w, k, b->pi, b->sp);
         j = ysum > 0 ? pick_weighted(b->pi + 1, k + 1, rng_uniform(r)) + 1 : 0;
     }
     double a = mctls_accept(ysum, c->xsum);

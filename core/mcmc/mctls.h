@@ -24,6 +24,12 @@ struct mctls_buf {
 /* Whether the large steps of length k are MCTLS's under these options. */
 bool use_mctls(const struct mlt_opts *o, int k);
 
+/* The trials (Eq. 4.7's terms): the targets of all k + 1 techniques of the subpaths the sampler's
+ * numbers give, traced to full length; pi[t] and sp[t] for t = 1..k+1 (w counts the connections).
+ * Returns their sum. */
+double mctls_trials(const struct path_ctx *pc, struct sampler *s, struct scratch *w, int k, double *pi,
+                    struct splat_list *sp);
+
 /* Eq. 4.7's acceptance probability from the sums of the proposal's and the current trials' targets. */
 double mctls_accept(double ysum, double xsum);
 

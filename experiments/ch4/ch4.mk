@@ -56,12 +56,13 @@ define fig4.5_POST
 $(call GNUPLOT,scripts/fig4.5.gp,results/fig4.5/fig4.5.csv,results/fig4.5/fig4.5)
 $(call GNUPLOT,scripts/fig4.5-ratio.gp,results/fig4.5/fig4.5-ratios.csv,results/fig4.5/fig4.5-ratio)
 endef
-fig4.5_TABLE := bash scripts/fig4.5-table.sh results/fig4.5/fig4.5.csv results/fig4.5/fig4.5-ratios.csv
+fig4.5_TABLE := bash scripts/fig4.5-table.sh results/fig4.5/fig4.5.csv results/fig4.5/fig4.5-ratios.csv results/fig4.5/fig4.5-trials.csv
 $(eval $(call FIGURE,fig4.5,fig4_5))
 # Its own seed; every (run, length) acceptance of the six runs: z-test with batch-means errors, Sidak
 # alpha = 0.01; then, the same way, every (ratio, length) row of fig4.5-ratios.csv, which holds the
-# claims' shares of proposals with light (binomial errors) that fig4.5.csv does not. Written out
-# rather than through CHECK for that second comparison.
+# claims' shares of proposals with light (binomial errors) that fig4.5.csv does not, and every
+# (length, statistic) row of fig4.5-trials.csv (the prediction from independent trials and its
+# factors, jackknife errors). Written out rather than through CHECK for those comparisons.
 CHECK_fig4.5 := --key method,length --mean mean_accept --se stderr --alpha 0.01
 .PHONY: check-fig4.5
 check-fig4.5: deps $(BIN)/fig4_5 $(CHECK_STATS)
@@ -69,6 +70,8 @@ check-fig4.5: deps $(BIN)/fig4_5 $(CHECK_STATS)
 	$(CHECK_STATS) $(CHECK_fig4.5) --out results/check-fig4.5/check.md results/baselines/fig4.5/fig4.5.csv results/check-fig4.5/fig4.5.csv
 	$(CHECK_STATS) --key ratio,length --mean value --se se --alpha 0.01 --out results/check-fig4.5/check-ratios.md \
 	  results/baselines/fig4.5/fig4.5-ratios.csv results/check-fig4.5/fig4.5-ratios.csv
+	$(CHECK_STATS) --key length,statistic --mean value --se se --alpha 0.01 --out results/check-fig4.5/check-trials.md \
+	  results/baselines/fig4.5/fig4.5-trials.csv results/check-fig4.5/fig4.5-trials.csv
 CHECK_TARGETS += check-fig4.5
 
 # Thesis Figure 4.6: equal-time renders, MMLT large steps vs MCTLS vs the hybrid, relMSE vs BDPT.

@@ -10,10 +10,14 @@
  * ratio,length,value,se (each run's acceptance over MMLT large steps', MCTLS's over the
  * thesis-count MMLT large steps', and "contributing-techniques": the mean number of techniques with
  * a contribution among subpath pairs that have one, from the two runs' shares of such proposals;
- * "light:mctls/mmlt-large": the ratio of those shares), and OUT/claims.csv and claims.md: the thesis's statements on
- * the figure (§4.3) with their verdicts. */
+ * "light:mctls/mmlt-large": the ratio of those shares), OUT/fig4.5-trials.csv:
+ * length,statistic,value,se, both acceptances predicted from independent pairs of subpaths and
+ * split into their factors (fig4_5_trials.h; 4x the chains' proposals per length, jackknife
+ * errors), and OUT/claims.csv and claims.md: the thesis's statements on the figure (§4.3) with
+ * their verdicts, and two checks of the chains against the prediction. */
 #include "base/parallel.h"
 #include "base/util.h"
+#include "ch4/fig4_5_trials.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
@@ -70,7 +74,8 @@ static void light_ratio(const struct accept_table *t, int k, double *r, double *
 
 /* Thesis §4.3 on Figure 4.5. The errors are one run's batch-means errors, so "seeds_needed" counts
  * runs of this budget. */
-static char *claims(const struct accept_table *t, const char *out, const char *scale, char *err, size_t errlen)
+static char *claims(const struct accept_table *t, const struct trials_table *tr, const char *out, const char *scale,
+                    char *err, size_t errlen)
 {
     struct claims cl;
     char command[64], zs[256], md[512];
@@ -155,6 +160,28 @@ static char *claims(const struct accept_table *t, const char *out, const char *s
     snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
     claims_row(&cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
                "mctls", r, rse, zs, md, &v);
+    /* the chains against their prediction from independent trials (both are independence
+     * samplers): the acceptance averaged over lengths 2..K within ±10 % */
+    const struct {
+        int run;
+        enum trial_stat stat;
+    } pred[2] = {{V_MMLT, TS_ACCEPT_MMLT}, {V_MCTLS, TS_ACCEPT_MCTLS}};
+    for (int p = 0; p < 2; p++) {
+        double mc = 0, sc = 0, mp = 0, sp = 0;
+        for (int k = 2; k <= t->K; k++) {
+            mc += t->mean[pred[p].run][k] / (t->K - 1), sc += pow(t->se[pred[p].run][k] / (t->K - 1), 2);
+            mp += tr->value[pred[p].stat][k] / (t->K - 1), sp += pow(tr->se[pred[p].stat][k] / (t->K - 1), 2);
+        }
+        v = verdict_similar(mc, sqrt(sc), mp, sqrt(sp), 0.10, 1);
+        snprintf(zs, sizeof zs, "predicted10%%=%.2f", v.zmin);
+        snprintf(md, sizeof md, "predicted from independent trials %.4g ± %.2g, within ±10 %% (z = %.1f)", mp, sqrt(sp),
+                 v.zmin);
+        snprintf(stat, sizeof stat, "acceptance, mean over lengths 2-%d", t->K);
+        claims_row(&cl, "harness check",
+                   p == 0 ? "MMLT large steps accept as an independence sampler of their target predicts"
+                          : "MCTLS accepts as an independence sampler of Eq. 4.7's target predicts",
+                   stat, variants[pred[p].run].name, mc, sqrt(sc), zs, md, &v);
+    }
     return claims_finish(&cl, out, err, errlen);
 }
 
@@ -256,7 +283,28 @@ int main(int argc, char **argv)
     snprintf(path, sizeof path, "%s/fig4.5-ratios.csv", out);
     ok = ok && write_text_atomic(path, buf, err, sizeof err);
     free(buf);
-    char *md = ok ? claims(&tab, out, a.fig.scale, err, sizeof err) : NULL;
+    /* the prediction from independent trials, four times the chains' proposals per length */
+    struct trials_table *tr = xmalloc(sizeof *tr);
+    fprintf(stderr, "fig4.5: %ld independent pairs of subpaths per length\n", 4 * (mutations / K));
+    if (ok && !fig45_trials(sc, K, 4 * (mutations / K), seed, threads, isatty(2), tr)) {
+        snprintf(err, sizeof err, "fig4_5: %ld mutations over %d lengths leave too few trials", mutations, K);
+        ok = false;
+    }
+    if (ok) {
+        f = open_memstream(&buf, &len);
+        csv_meta_head(f, "fig4.5: acceptance per length predicted from independent pairs of subpaths (jackknife errors)",
+                      a.fig.scene, a.fig.scale);
+        csv_meta(f, "seed", "%llu", (unsigned long long)seed);
+        csv_meta(f, "pairs_per_length", "%ld", 4 * (mutations / K));
+        fprintf(f, "length,statistic,value,se\n");
+        fig45_trials_csv(f, tr);
+        fclose(f);
+        snprintf(path, sizeof path, "%s/fig4.5-trials.csv", out);
+        ok = write_text_atomic(path, buf, err, sizeof err);
+        free(buf);
+    }
+    char *md = ok ? claims(&tab, tr, out, a.fig.scale, err, sizeof err) : NULL;
+    free(tr);
     ok = ok && md;
     if (md) fputs(md, stderr);
     free(md);

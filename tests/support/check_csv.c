@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #ifndef BIN_DIR
 #define BIN_DIR "bin"
@@ -53,4 +54,18 @@ void check_csv_perturbed(const char *in_path, const char *out, const char *row, 
     fclose(in);
     fclose(f);
     cr_assert_eq(hit, 1, "row %s not found once in %s", row, in_path);
+}
+
+void check_csv_replicate_and_broken(const char *opts, const char *base, const char *repl, const char *row, int field,
+                                    double value)
+{
+    cr_assert_eq(check_csv_run(opts, base, repl), 0, "%s and %s, two independent runs, disagree", base, repl);
+    char tmp[] = "/tmp/check-perturbed-XXXXXX";
+    int fd = mkstemp(tmp);
+    cr_assert(fd >= 0);
+    close(fd);
+    check_csv_perturbed(repl, tmp, row, field, value);
+    int st = check_csv_run(opts, base, tmp);
+    remove(tmp);
+    cr_assert_eq(st, 1, "%s: row %s with field %d moved to %g was not detected", repl, row, field, value);
 }

@@ -8,5 +8,9 @@ int check_csv_run(const char *opts, const char *base, const char *current);
 /* Copies in_path to out with field `field` (0-based; negative: from the end, -1 the last) of the
  * one row that starts with `row` followed by a comma set to `value`. */
 void check_csv_perturbed(const char *in_path, const char *out, const char *row, int field, double value);
+/* Every check's own test: REPL (an independent run) passes against BASE, and REPL with that row's
+ * field set to `value` (a deliberately broken run) fails. */
+void check_csv_replicate_and_broken(const char *opts, const char *base, const char *repl, const char *row, int field,
+                                    double value);
 
 #endif
