@@ -30,4 +30,13 @@ double *error_field(const struct image *img, const struct image *ref);
 /* That scale, s = mean lum ref / mean lum img (1 when img is black). */
 double mean_lum_scale(const struct image *img, const struct image *ref);
 
+/* The share of the relative error that survives a k x k box blur (the splotch statistic of
+ * Figs. 5.6 and 6.2-6.7). The relative error per pixel and channel is (s a - ref) /
+ * sqrt(ref^2 + eps), with a first scaled by s to ref's mean luminance, so that the normalisation's
+ * one number (which survives every blur) is left out; the blur is the mean over non-overlapping
+ * k x k blocks (partial blocks dropped). Returns
+ * mean(block mean^2) / mean(error^2): 1 / k^2 in expectation for white noise, near 1 for error that
+ * is constant over regions much larger than k. */
+double error_blur_share(const struct image *a, const struct image *ref, double eps, int k);
+
 #endif

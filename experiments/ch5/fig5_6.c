@@ -54,30 +54,6 @@ static double corr_length_px(const struct image *img, const struct image *ref)
     return 0.5 * ((isnan(lx) ? 1 : lx) + (isnan(ly) ? 1 : ly));
 }
 
-/* The share of the relative error's energy that survives averaging over k x k blocks: 1/k^2 for
- * white noise, towards 1 when the error comes in blobs of k pixels or more (splotches). The error
- * is relMSE's, (s I - R) / sqrt(R^2 + 0.01) per channel, after scaling I to R's mean (s), so that
- * the chain's one normalisation error does not count as a blob covering the whole image. */
-static double blur_share(const struct image *img, const struct image *ref, int k)
-{
-    double s = mean_lum_scale(img, ref), all = 0, blurred = 0;
-    for (int by = 0; by < img->h / k; by++)
-        for (int bx = 0; bx < img->w / k; bx++)
-            for (int ch = 0; ch < 3; ch++) {
-                double m = 0;
-                for (int y = by * k; y < (by + 1) * k; y++)
-                    for (int x = bx * k; x < (bx + 1) * k; x++) {
-                        size_t i = 3 * ((size_t)y * img->w + x) + (size_t)ch;
-                        double r = ref->px[i], e = (s * img->px[i] - r) / sqrt(r * r + 0.01);
-                        m += e;
-                        all += e * e;
-                    }
-                m /= (double)k * k;
-                blurred += m * m * k * k; /* a block's squared mean stands for its k^2 pixels */
-            }
-    return all > 0 ? blurred / all : NAN;
-}
-
 /* Thesis §5.3 on Fig. 5.6: controlled small steps are not better (their relMSE is the larger) and
  * their noise is streaky and splotchy (the longer error correlation length, the larger share of the
  * error in 8 x 8 blobs). */
@@ -135,7 +111,7 @@ int main(int argc, char **argv)
             fig5_run(sc, &c, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, c.fig.seed + (uint64_t)i, false, &r);
             x[i] = img_relmse(r.img, ref, 0.01);
             x[c.seeds + i] = corr_length_px(r.img, ref);
-            x[2 * c.seeds + i] = blur_share(r.img, ref, 8);
+            x[2 * c.seeds + i] = error_blur_share(r.img, ref, 0.01, 8);
             acc += cell_mean(&r.stats.total[PROPOSAL_SMALL]) / c.seeds;
             rate += r.mutations / r.seconds / c.seeds;
             if (i == 0) {

@@ -176,6 +176,22 @@ hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.cs
 	$(call TO_FILE,$(HYB_OUT)/hybrid-study.md,bash scripts/ch6-hybrid.sh $(filter %summary.csv,$^))
 	@cat $(HYB_OUT)/hybrid-study.md
 
+# make check-hybrid-study: the five configurations on ajar at 128x72 (all path lengths) at a fixed
+# 16 mutations per pixel instead of a time budget, seeds 101-108 against the baseline's 1-8 and the
+# cached quick reference; every statistic of stats.csv per configuration (Welch t over the seeds,
+# Sidak alpha = 0.01 over the rows). `make hybrid-baseline` rewrites the baseline.
+HYB_CHECK_OPTS := --spp 16 --seeds 8 --reference-spp 256 --resolution 128x72 --render-args "--p-large 0.1"
+.PHONY: check-hybrid-study hybrid-baseline
+check-hybrid-study: deps $(BIN)/ch6_equal $(BIN)/render $(CHECK_STATS)
+	$(BIN)/ch6_equal --scene scenes/ajar/scene.json --out results/check-hybrid-study --first-seed 101 --methods '$(HYB_METHODS)' $(HYB_CHECK_OPTS) >/dev/null
+	$(CHECK_STATS) --key scene,method,statistic --count seeds --alpha 0.01 --out results/check-hybrid-study/check.md \
+	  results/baselines/hybrid-study/stats.csv results/check-hybrid-study/stats.csv
+CHECK_TARGETS += check-hybrid-study
+hybrid-baseline: deps $(BIN)/ch6_equal $(BIN)/render
+	$(BIN)/ch6_equal --scene scenes/ajar/scene.json --out results/hybrid-baseline --first-seed 1 --methods '$(HYB_METHODS)' $(HYB_CHECK_OPTS) >/dev/null
+	mkdir -p results/baselines/hybrid-study
+	mv results/hybrid-baseline/stats.csv results/baselines/hybrid-study/stats.csv
+
 # ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----
 .PHONY: report
 report:

@@ -193,8 +193,8 @@ static void image_statistics(struct run *r, const struct image *im, const struct
     r->q[Q_SPREAD] = ch6_spread(blocks, n);
     r->q[Q_BLOCK_MEDIAN] = ch6_median(blocks, n);
     r->q[Q_TRIMMED] = ch6_trimmed_relmse(im, ref, eps, 0.001);
-    r->q[Q_BLUR4] = ch6_blur_share(im, ref, eps, 4);
-    r->q[Q_BLUR8] = ch6_blur_share(im, ref, eps, 8);
+    r->q[Q_BLUR4] = error_blur_share(im, ref, eps, 4);
+    r->q[Q_BLUR8] = error_blur_share(im, ref, eps, 8);
     r->q[Q_CORRLEN] = ch6_corr_length(im, ref);
 }
 

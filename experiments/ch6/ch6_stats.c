@@ -92,28 +92,6 @@ double ch6_relmse_scaled(const struct image *a, const struct image *ref, double 
     return n ? sum / (double)n : NAN;
 }
 
-double ch6_blur_share(const struct image *a, const struct image *ref, double eps, int k)
-{
-    double s = mean_lum_scale(a, ref), all = 0, blurred = 0;
-    int bw = a->w / k, bh = a->h / k;
-    for (int by = 0; by < bh; by++)
-        for (int bx = 0; bx < bw; bx++)
-            for (int c = 0; c < 3; c++) {
-                double m = 0;
-                for (int y = by * k; y < (by + 1) * k; y++)
-                    for (int x = bx * k; x < (bx + 1) * k; x++) {
-                        size_t i = 3 * ((size_t)y * a->w + x) + (size_t)c;
-                        double r = ref->px[i], e = (s * a->px[i] - r) / sqrt(r * r + eps);
-                        m += e;
-                        all += e * e;
-                    }
-                m /= (double)k * k;
-                blurred += m * m;
-            }
-    /* per pixel: the blocks' squared means stand for k^2 pixels each */
-    return all > 0 ? blurred * k * k / all : NAN;
-}
-
 double ch6_corr_length(const struct image *a, const struct image *ref)
 {
     int maxlag = 32;

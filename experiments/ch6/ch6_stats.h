@@ -8,6 +8,7 @@
 
 #include "common/verdict.h"
 #include "io/image.h"
+#include "stats/noise_corr.h" /* error_blur_share, the splotch statistic beside these */
 
 /* relMSE of a against ref over blk x blk blocks (partial blocks at the right and bottom edges are
  * dropped); writes up to cap values to out and returns the number of blocks. eps as img_relmse. */
@@ -23,16 +24,9 @@ double ch6_median(double *v, int n);
 /* relMSE of a against ref with the largest `drop` fraction of per-pixel errors (the sum over the
  * three channels) left out: the error without its fireflies. */
 double ch6_trimmed_relmse(const struct image *a, const struct image *ref, double eps, double drop);
-/* relMSE of a scaled to ref's mean luminance (as ch6_blur_share scales it) against ref: the error
+/* relMSE of a scaled to ref's mean luminance (as stats/noise_corr.h's error_blur_share scales it) against ref: the error
  * without the normalisation's part, which scales the whole image by one number. */
 double ch6_relmse_scaled(const struct image *a, const struct image *ref, double eps);
-/* The share of the relative error that survives a k x k box blur. The relative error per pixel and
- * channel is (s a - ref) / sqrt(ref^2 + eps), with a first scaled by s to ref's mean luminance, so
- * that the normalisation's one number (which survives every blur) is left out; the blur is the
- * mean over non-overlapping k x k blocks (partial blocks dropped). Returns
- * mean(block mean^2) / mean(error^2): 1 / k^2 in expectation for white noise, near 1 for error that
- * is constant over regions much larger than k. */
-double ch6_blur_share(const struct image *a, const struct image *ref, double eps, int k);
 /* The error's correlation length in pixels: stats/noise_corr.h's corr_length_lag1 of the luminance
  * error field (after the same scaling), averaged over the x and y profiles; 1 for white noise,
  * about sqrt(1 + 4 s^2) for noise blurred by a Gaussian of standard deviation s; nan when the

@@ -109,8 +109,8 @@ Test(ch6_stats, fireflies_and_splotches_told_apart)
     double spread_f = ch6_spread(blocks, n), mf = ch6_median(blocks, n);
     n = ch6_block_relmse(sp, ref, 16, eps, blocks, 64);
     double spread_s = ch6_spread(blocks, n), msp = ch6_median(blocks, n);
-    double b4f = ch6_blur_share(ff, ref, eps, 4), b8f = ch6_blur_share(ff, ref, eps, 8);
-    double b4s = ch6_blur_share(sp, ref, eps, 4), b8s = ch6_blur_share(sp, ref, eps, 8);
+    double b4f = error_blur_share(ff, ref, eps, 4), b8f = error_blur_share(ff, ref, eps, 8);
+    double b4s = error_blur_share(sp, ref, eps, 4), b8s = error_blur_share(sp, ref, eps, 8);
     double lf = ch6_corr_length(ff, ref), ls = ch6_corr_length(sp, ref);
     cr_log_info(
         "fireflies: relMSE %.4g trimmed %.4g block median %.4g spread %.3g blur4 %.4f blur8 %.4f corr length %.2f", rf,
@@ -145,7 +145,7 @@ Test(ch6_stats, normalisation_offset_is_not_a_splotch)
             double g = v.x > 5 ? 1 : v.x;
             img_add(off, x, y, (rgb){1.05 * g, 1.05 * g, 1.05 * g});
         }
-    double b8 = ch6_blur_share(off, ref, 0.01, 8), l = ch6_corr_length(off, ref);
+    double b8 = error_blur_share(off, ref, 0.01, 8), l = ch6_corr_length(off, ref);
     cr_expect(b8 < 1.5 / 64, "the offset survives the blur: %g", b8);
     cr_expect(isnan(l) || l < 1.5, "the offset correlates: %g", l);
     /* relMSE: the noise's 0.05^2 / 1.01 plus the offset's 0.05^2 / 1.01; scaled, the noise's alone
