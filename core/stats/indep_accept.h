@@ -1,10 +1,10 @@
 /* The mean acceptance of an independence Metropolis-Hastings chain, predicted from independent
  * draws of its proposal. A chain whose proposal y ~ q ignores the state, with target w q (x ~ w q
  * at stationarity), accepts with E[min(1, w(y) / w(x))] = E[min(W1, W2)] / E[W] for W1, W2
- * independent draws of w under q (exchange the pair where w(y) > w(x)). Every large step of MMLT
- * and MCTLS is such a proposal (thesis §4.3), so the acceptance curves of Fig. 4.5 follow from the
- * distribution of the trials' targets alone: which makes the prediction a check of the chains, and
- * lets the weight be swapped for another to see what sets the curves.
+ * independent draws of w under q (as w(x) min(1, w(y) / w(x)) = min(w(x), w(y))). Every large
+ * step of MMLT and MCTLS is such a proposal (thesis §4.3), so the acceptance curves of Fig. 4.5
+ * follow from the distribution of the trials' targets alone: which makes the prediction a check of
+ * the chains, and lets the weight be swapped for another to see what sets the curves.
  *
  * Draws come in clusters (for MMLT's large step, the k + 1 techniques of one pair of subpaths):
  * every cluster has the same number of draws, the positive ones listed with their cluster; pairs of
