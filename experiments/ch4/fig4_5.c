@@ -72,6 +72,16 @@ static void light_ratio(const struct accept_table *t, int k, double *r, double *
     *se = *r * sqrt((1 - p0) / (p0 * t->attempts[V_MMLT][k]) + (1 - p1) / (p1 * t->attempts[V_MCTLS][k]));
 }
 
+/* The mean of per-length values over lengths 2..K (equal mutations per length) and its standard
+ * error from the per-length ones. */
+static void mean_over_lengths(const double *mean, const double *se, int K, double *m, double *m_se)
+{
+    double v = 0;
+    *m = 0;
+    for (int k = 2; k <= K; k++) *m += mean[k] / (K - 1), v += pow(se[k] / (K - 1), 2);
+    *m_se = sqrt(v);
+}
+
 /* Thesis §4.3 on Figure 4.5. The errors are one run's batch-means errors, so "seeds_needed" counts
  * runs of this budget. */
 static char *claims(const struct accept_table *t, const struct trials_table *tr, const char *out, const char *scale,
@@ -116,17 +126,15 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
                t->mean[0][t->K], t->se[0][t->K], zs, md, &v);
     /* one drawn trial is an MMLT large step (a check of the drawn trials): the acceptance averaged
      * over lengths 2..K (equal mutations per length) within ±5 % */
-    double m1 = 0, s1 = 0, m0 = 0, s0 = 0;
-    for (int k = 2; k <= t->K; k++) {
-        m1 += t->mean[V_TRIES1][k] / (t->K - 1), s1 += pow(t->se[V_TRIES1][k] / (t->K - 1), 2);
-        m0 += t->mean[V_MMLT][k] / (t->K - 1), s0 += pow(t->se[V_MMLT][k] / (t->K - 1), 2);
-    }
-    v = verdict_similar(m1, sqrt(s1), m0, sqrt(s0), 0.05, 1);
+    double m1, s1, m0, s0;
+    mean_over_lengths(t->mean[V_TRIES1], t->se[V_TRIES1], t->K, &m1, &s1);
+    mean_over_lengths(t->mean[V_MMLT], t->se[V_MMLT], t->K, &m0, &s0);
+    v = verdict_similar(m1, s1, m0, s0, 0.05, 1);
     snprintf(zs, sizeof zs, "mmlt-large5%%=%.2f", v.zmin);
-    snprintf(md, sizeof md, "MMLT large steps %.4g ± %.2g within ±5 %% (z = %.1f)", m0, sqrt(s0), v.zmin);
+    snprintf(md, sizeof md, "MMLT large steps %.4g ± %.2g within ±5 %% (z = %.1f)", m0, s0, v.zmin);
     snprintf(stat, sizeof stat, "large-step acceptance, mean over lengths 2-%d", t->K);
-    claims_row(&cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1,
-               sqrt(s1), zs, md, &v);
+    claims_row(&cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1, s1,
+               zs, md, &v);
     /* the thesis's count: its MMLT large steps draw among k + 2 techniques, t = 0 always failing */
     ratio_of(t, V_MCTLS, V_TRIES1_T0, t->K, &r, &rse);
     v = verdict_similar(r, rse, 5, 0, 0.25, 1);
@@ -167,20 +175,18 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
         enum trial_stat stat;
     } pred[2] = {{V_MMLT, TS_ACCEPT_MMLT}, {V_MCTLS, TS_ACCEPT_MCTLS}};
     for (int p = 0; p < 2; p++) {
-        double mc = 0, sc = 0, mp = 0, sp = 0;
-        for (int k = 2; k <= t->K; k++) {
-            mc += t->mean[pred[p].run][k] / (t->K - 1), sc += pow(t->se[pred[p].run][k] / (t->K - 1), 2);
-            mp += tr->value[pred[p].stat][k] / (t->K - 1), sp += pow(tr->se[pred[p].stat][k] / (t->K - 1), 2);
-        }
-        v = verdict_similar(mc, sqrt(sc), mp, sqrt(sp), 0.10, 1);
+        double mc, sc, mp, sp;
+        mean_over_lengths(t->mean[pred[p].run], t->se[pred[p].run], t->K, &mc, &sc);
+        mean_over_lengths(tr->value[pred[p].stat], tr->se[pred[p].stat], t->K, &mp, &sp);
+        v = verdict_similar(mc, sc, mp, sp, 0.10, 1);
         snprintf(zs, sizeof zs, "predicted10%%=%.2f", v.zmin);
-        snprintf(md, sizeof md, "predicted from independent trials %.4g ± %.2g, within ±10 %% (z = %.1f)", mp, sqrt(sp),
+        snprintf(md, sizeof md, "predicted from independent trials %.4g ± %.2g, within ±10 %% (z = %.1f)", mp, sp,
                  v.zmin);
         snprintf(stat, sizeof stat, "acceptance, mean over lengths 2-%d", t->K);
         claims_row(&cl, "harness check",
                    p == 0 ? "MMLT large steps accept as an independence sampler of their target predicts"
                           : "MCTLS accepts as an independence sampler of Eq. 4.7's target predicts",
-                   stat, variants[pred[p].run].name, mc, sqrt(sc), zs, md, &v);
+                   stat, variants[pred[p].run].name, mc, sc, zs, md, &v);
     }
     return claims_finish(&cl, out, err, errlen);
 }
@@ -285,8 +291,9 @@ int main(int argc, char **argv)
     free(buf);
     /* the prediction from independent trials, four times the chains' proposals per length */
     struct trials_table *tr = xmalloc(sizeof *tr);
-    fprintf(stderr, "fig4.5: %ld independent pairs of subpaths per length\n", 4 * (mutations / K));
-    if (ok && !fig45_trials(sc, K, 4 * (mutations / K), seed, threads, isatty(2), tr)) {
+    long trial_pairs = 4 * (mutations / K);
+    fprintf(stderr, "fig4.5: %ld independent pairs of subpaths per length\n", trial_pairs);
+    if (ok && !fig45_trials(sc, K, trial_pairs, seed, threads, isatty(2), tr)) {
         snprintf(err, sizeof err, "fig4_5: %ld mutations over %d lengths leave too few trials", mutations, K);
         ok = false;
     }
@@ -295,7 +302,7 @@ int main(int argc, char **argv)
         csv_meta_head(f, "fig4.5: acceptance per length predicted from independent pairs of subpaths (jackknife errors)",
                       a.fig.scene, a.fig.scale);
         csv_meta(f, "seed", "%llu", (unsigned long long)seed);
-        csv_meta(f, "pairs_per_length", "%ld", 4 * (mutations / K));
+        csv_meta(f, "pairs_per_length", "%ld", trial_pairs);
         fprintf(f, "length,statistic,value,se\n");
         fig45_trials_csv(f, tr);
         fclose(f);

@@ -93,17 +93,21 @@ $(eval $(call CH6_FIG,fig6.7,ajar,full))
 # the seed pass's error) per method: Welch t over the seeds, Sidak alpha = 0.01 over the rows. The
 # baselines are `make ch6-baselines`.
 CH6_CHECK_OPTS := --spp 16 --seeds 8 --min-length 3 --reference-spp 256 --render-args "--p-large 0.1"
-CH6_CHECK_ajar := --resolution 256x144
+CH6_CHECK_OPTS_fig6.2 := $(CH6_CHECK_OPTS)
+CH6_CHECK_OPTS_fig6.3 := $(CH6_CHECK_OPTS)
+CH6_CHECK_OPTS_fig6.4 := $(CH6_CHECK_OPTS) --resolution 256x144
+# $(call CH6_CHECK,TARGET,SCENE): check-TARGET and ch6-baseline-TARGET, bin/ch6_equal with the
+# options CH6_CHECK_OPTS_TARGET (the hybrid study below uses it too)
 define CH6_CHECK
 .PHONY: check-$(1)
 check-$(1): deps $$(BIN)/ch6_equal $$(BIN)/render $$(CHECK_STATS)
-	$$(BIN)/ch6_equal --scene scenes/$(2)/scene.json --out results/check-$(1) --first-seed 101 $$(CH6_CHECK_OPTS) $$(CH6_CHECK_$(2)) >/dev/null
+	$$(BIN)/ch6_equal --scene scenes/$(2)/scene.json --out results/check-$(1) --first-seed 101 $$(CH6_CHECK_OPTS_$(1)) >/dev/null
 	$$(CHECK_STATS) --key scene,method,statistic --count seeds --alpha 0.01 --out results/check-$(1)/check.md \
 	  results/baselines/$(1)/stats.csv results/check-$(1)/stats.csv
 CHECK_TARGETS += check-$(1)
 .PHONY: ch6-baseline-$(1)
 ch6-baseline-$(1): deps $$(BIN)/ch6_equal $$(BIN)/render
-	$$(BIN)/ch6_equal --scene scenes/$(2)/scene.json --out results/ch6-baseline/$(1) --first-seed 1 $$(CH6_CHECK_OPTS) $$(CH6_CHECK_$(2)) >/dev/null
+	$$(BIN)/ch6_equal --scene scenes/$(2)/scene.json --out results/ch6-baseline/$(1) --first-seed 1 $$(CH6_CHECK_OPTS_$(1)) >/dev/null
 	mkdir -p results/baselines/$(1)
 	mv results/ch6-baseline/$(1)/stats.csv results/baselines/$(1)/stats.csv
 endef
@@ -179,18 +183,11 @@ hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.cs
 # make check-hybrid-study: the five configurations on ajar at 128x72 (all path lengths) at a fixed
 # 16 mutations per pixel instead of a time budget, seeds 101-108 against the baseline's 1-8 and the
 # cached quick reference; every statistic of stats.csv per configuration (Welch t over the seeds,
-# Sidak alpha = 0.01 over the rows). `make hybrid-baseline` rewrites the baseline.
-HYB_CHECK_OPTS := --spp 16 --seeds 8 --reference-spp 256 --resolution 128x72 --render-args "--p-large 0.1"
-.PHONY: check-hybrid-study hybrid-baseline
-check-hybrid-study: deps $(BIN)/ch6_equal $(BIN)/render $(CHECK_STATS)
-	$(BIN)/ch6_equal --scene scenes/ajar/scene.json --out results/check-hybrid-study --first-seed 101 --methods '$(HYB_METHODS)' $(HYB_CHECK_OPTS) >/dev/null
-	$(CHECK_STATS) --key scene,method,statistic --count seeds --alpha 0.01 --out results/check-hybrid-study/check.md \
-	  results/baselines/hybrid-study/stats.csv results/check-hybrid-study/stats.csv
-CHECK_TARGETS += check-hybrid-study
-hybrid-baseline: deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/ajar/scene.json --out results/hybrid-baseline --first-seed 1 --methods '$(HYB_METHODS)' $(HYB_CHECK_OPTS) >/dev/null
-	mkdir -p results/baselines/hybrid-study
-	mv results/hybrid-baseline/stats.csv results/baselines/hybrid-study/stats.csv
+# Sidak alpha = 0.01 over the rows). `make ch6-baseline-hybrid-study` rewrites the baseline.
+CH6_CHECK_OPTS_hybrid-study := --methods '$(HYB_METHODS)' --spp 16 --seeds 8 --reference-spp 256 --resolution 128x72 \
+  --render-args "--p-large 0.1"
+$(eval $(call CH6_CHECK,hybrid-study,ajar))
+ch6-baselines: ch6-baseline-hybrid-study
 
 # ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----
 .PHONY: report
