@@ -140,6 +140,39 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
     return true;
 }
 
+/* The reverse move's check: from the new state, the truncated subpath v[0..n_new-1] re-extended
+ * toward the vertices it lost, v[n_new..n-1] (the extended subpath now holds them, in its own
+ * order, as gained[0..]), must retrace them, as extend would. Asked on the state's own vertices:
+ * the new state keeps the truncated subpath bit for bit, and the lost vertices equal the gained ones
+ * within the retrace tolerance (extend checked that). So each block is inverted at the lost vertex
+ * before it, and the walk's step with those numbers must reach the next (walk_step_reaches), which
+ * writes no vertex and, where the step points at the vertex within float noise, casts no ray
+ * (README "PITP", "Failed inversions keep detailed balance"). An emitter subpath regrown from at
+ * most one vertex (it re-inverts its whole block 0) and a camera subpath that ended at infinity go
+ * through extend, on a copy. */
+static bool reverse_ok(const struct path_ctx *pc, int st, const struct vertex *v, int n_new, int n,
+                       const struct vertex *gained, struct pitp_scratch *w, struct block_sampler *b)
+{
+    int d = n - n_new;
+    bool surfaces = true;
+    for (int m = n_new; m < n; m++) surfaces = surfaces && v[m].kind == VK_SURFACE;
+    if ((st == STREAM_EMITTER && n_new <= 1) || !surfaces) {
+        for (int i = 0; i < n_new; i++) w->rev[i] = v[i];
+        for (int m = 0; m < d; m++) w->tgt[m] = &gained[d - 1 - m];
+        struct block_rec rec[MAX_SUBPATH_VERTS];
+        int nrec;
+        return extend(pc, st, w->rev, n_new, w->tgt, d, b, rec, &nrec, w->tol);
+    }
+    for (int m = n_new; m < n; m++) {
+        blk_reset(b);
+        b->bad = false;
+        if (!invert_step(pc, st, v, m, &v[m], &b->base) || !walk_step_reaches(pc, &b->base, v, m, st, &v[m], w->tol) ||
+            b->bad)
+            return false;
+    }
+    return true;
+}
+
 /* Marks fresh the numbers a subpath of stream st stops using when it shrinks from n to n_new
  * vertices. A camera subpath of n vertices reads blocks 0..n-2 and, with a single vertex, a thin
  * lens's point at the start of block 0; an emitter subpath blocks 0..n-2 and, with a single
@@ -237,7 +270,7 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
     b.base = (struct sampler){&blk_ops, 0, 0, 0};
     b.r = &p->r;
     struct block_rec rec[MAX_SUBPATH_VERTS];
-    int nrec, nrev;
+    int nrec;
 
     /* Eq. 5.18: r = f_j / f_i, 1 unless the path refracts between the two connections; decided
      * first, on the path in i's form, so that a rejection costs no ray */
@@ -253,14 +286,8 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p,
     double before_pdf_rev = afresh ? 0 : grow[ng - 2].pdf_rev;
     for (int i = 0; afresh && i < ng; i++) w->save[i] = grow[i];
     bool ok = extend(pc, gs, grow, ng, w->tgt, d, &b, rec, &nrec, w->tol);
-    if (ok) {
-        /* reverse: from (j, v) the move back to i must succeed as well, or the pair is not symmetric */
-        int rlo = ns_new >= 2 ? ns_new - 2 : 0;
-        for (int i = rlo; i < ns_new; i++) w->rev[i] = shrink[i];
-        for (int m = 0; m < d; m++) w->tgt[m] = &grow[ng + d - 1 - m]; /* rev is written, grow only read */
-        struct block_rec rrec[MAX_SUBPATH_VERTS];
-        ok = extend(pc, ss, w->rev, ns_new, w->tgt, d, &b, rrec, &nrev, w->tol);
-    }
+    /* reverse: from (j, v) the move back to i must succeed as well, or the pair is not symmetric */
+    if (ok) ok = reverse_ok(pc, ss, shrink, ns_new, ns, grow + ng, w, &b);
     if (ok && may_change) {
         /* the new state's target: the same path, but (k + 1) w_j C_j need not equal the old one */
         const struct vertex *ye = to_emitter ? grow : shrink, *yc = to_emitter ? shrink : grow;

@@ -28,7 +28,8 @@ enum vertex_kind { VK_CAMERA, VK_EMITTER, VK_SURFACE, VK_ENV };
 
 struct vertex {
     /* Small fields first and doubles after, so that no padding creeps in: every walk initialises
-     * and MMLT/PITP copy whole subpaths of these, and their size shows in instruction counts. */
+     * and MMLT/PITP copy whole subpaths of these, and their size shows in instruction counts. A
+     * new field must also be set in vertex_start (below) and surface_from_hit. */
     enum vertex_kind kind;
     bool front;         /* reached from the front (emitting) side of the geometry */
     bool flipped;       /* two-sided shading flipped the frame */
@@ -45,6 +46,26 @@ struct vertex {
     double px, py;      /* camera vertex: raster position of the primary ray */
 };
 
+/* Starts a vertex that is no ray hit (a camera or emitter vertex): every field but p, ng and sh,
+ * which the caller sets, is zero, but for its kind, primitive, triangle and front = true. Field by
+ * field, in place: a compound literal assigned through a pointer is built in a temporary and
+ * copied (GCC cannot rule out that its fields read the target), and memset of the whole vertex
+ * is a loop; either cost about 170 instructions per walk's first vertex (MMLT: 2 per mutation). */
+static inline void vertex_start(struct vertex *v, enum vertex_kind kind, int prim, int tri)
+{
+    v->kind = kind;
+    v->front = true;
+    v->flipped = v->delta = false;
+    v->prim = prim;
+    v->tri = tri;
+    v->b1 = v->b2 = 0;
+    v->bc.b = NULL;
+    v->bc.albedo = v3s(0);
+    v->bc.roughness = 0;
+    v->bc.uv[0] = v->bc.uv[1] = 0;
+    v->wi = v->beta = v3s(0);
+    v->pdf_fwd = v->pdf_rev = v->px = v->py = 0;
+}
 struct path_ctx {
     const struct scene *sc;
     int max_length;     /* segments */
@@ -73,6 +94,12 @@ int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, 
 int walk_extend_to(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int stream,
                    const struct vertex *to);
 
+/* Whether walk_extend_to(pc, s, v, n, stream, to) would reach the surface vertex `to` within tol
+ * (same primitive, point within tol), without writing any vertex and, where the step's direction
+ * points at `to` within float noise, without a ray (`to` as for walk_extend_to). n >= 2, or n = 1
+ * for the camera stream (its block 0 from the lens point v[0]). PITP's reverse check. */
+bool walk_step_reaches(const struct path_ctx *pc, struct sampler *s, const struct vertex *v, int n, int stream,
+                       const struct vertex *to, double tol);
 /* The emitter vertex y_0 from the current block (light choice, then position or environment
  * direction and origin). */
 bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y);

@@ -1,4 +1,5 @@
 /* Random walks, thesis Alg. 1: every number comes from the sampler, in fixed per-vertex blocks. */
+#include "base/util.h"
 #include "camera/camera.h"
 #include "emitter/emitter.h"
 #include "path/path.h"
@@ -12,24 +13,49 @@ bool walk_hit(const struct scene *sc, const struct vertex *prev, vec3 d, struct 
     return true;
 }
 
-/* The vertex the ray from prev along unit d reaches when it is known in advance: `to`, a surface
- * vertex of the path being re-walked whose segment from prev is unoccluded (an edge or the
- * connection of the current path), and d points at it within float noise. Then the hit is `to`'s
- * own point and the ray is not cast (PITP's retrace, core/mcmc/README.md "Ray-free retrace").
- * The bound, 1e-9 of the coordinates' magnitude off the line, is far below the 1e-7 a float ray
- * resolves, so the ray, had it been cast, could only have hit `to` or a surface within float
- * noise of it. Very short segments, which the ray's self-intersection offset may skip, and
- * directions a float ray would resolve differently are left to the ray. */
+/* Whether the ray from p along unit d is known to reach `to` without being cast: `to` is a surface
+ * vertex of the path being re-walked whose segment from p is unoccluded (an edge or the connection
+ * of the current path), and d points at it within float noise (PITP's retrace, core/mcmc/README.md
+ * "Ray-free retrace"). The bound, 1e-9 of the coordinates' magnitude off the line, is far below
+ * the 1e-7 a float ray resolves, so the ray, had it been cast, could only have hit `to` or a
+ * surface within float noise of it. Very short segments, which the ray's self-intersection offset
+ * may skip, and directions a float ray would resolve differently are left to the ray. *t: the
+ * distance along d. */
+static bool on_known_segment(vec3 p, vec3 d, const struct vertex *to, double *t)
+{
+    if (!to || to->kind != VK_SURFACE) return false;
+    vec3 e = vsub(to->p, p);
+    *t = vdot(e, d);
+    if (!(*t > 4 * ray_eps(p))) return false;
+    return vlen2(vsub(e, vscale(d, *t))) <= sqr(1e-9 * coord_scale(to->p));
+}
+
+/* The vertex the ray from prev along d reaches when on_known_segment says it is `to`: `to`'s own
+ * hit point, set up as a hit of this ray. */
 static bool known_hit(const struct scene *sc, const struct vertex *prev, vec3 d, const struct vertex *to,
                       struct vertex *out)
 {
-    if (!to || to->kind != VK_SURFACE) return false;
-    vec3 e = vsub(to->p, prev->p);
-    double t = vdot(e, d);
-    if (!(t > 4 * ray_eps(prev->p))) return false;
-    if (vlen2(vsub(e, vscale(d, t))) > sqr(1e-9 * coord_scale(to->p))) return false;
+    double t;
+    if (!on_known_segment(prev->p, d, to, &t)) return false;
     struct hit h = {.t = t, .prim = to->prim, .tri = to->tri, .b1 = to->b1, .b2 = to->b2};
     surface_from_hit(sc, prev->p, d, &h, out);
+    return true;
+}
+
+/* The direction the BSDF sample of the current block sends a walk in from `cur` (a surface with a
+ * BSDF, reached along -cur->wi; wi: that direction in its shading frame), and the throughput the
+ * next vertex receives. False ends the walk: no sample, a direction on which the shading and the
+ * geometric normal disagree (it would leak light), or no throughput left. Writes no vertex. */
+static inline bool scatter_dir(struct sampler *s, const struct vertex *cur, vec3 wi, enum transport mode,
+                               struct bsdf_sample *bs, vec3 *wo, rgb *beta)
+{
+    if (!bsdf_sample(&cur->bc, wi, s, mode, bs)) return false;
+    *wo = frame_to_world(&cur->sh, bs->wo);
+    if ((vdot(*wo, cur->ng) > 0) != (bs->wo.z > 0)) return false;
+    rgb b = vmul(cur->beta, bs->weight);
+    if (mode == TRANSPORT_IMPORTANCE) b = vscale(b, adjoint_shading_factor(cur, cur->wi, *wo));
+    if (vzero(b) || !vfinite(b)) return false;
+    *beta = b;
     return true;
 }
 
@@ -44,20 +70,47 @@ static inline bool scatter_at(struct sampler *s, struct vertex *v, int n, enum t
     sampler_begin(s, stream, n - 1);
     vec3 wi = frame_to_local(&cur->sh, cur->wi);
     struct bsdf_sample bs;
-    if (!bsdf_sample(&cur->bc, wi, s, mode, &bs)) return false;
-    vec3 wo = frame_to_world(&cur->sh, bs.wo);
-    /* A shading normal may disagree with the geometry: such directions would leak light. */
-    if ((vdot(wo, cur->ng) > 0) != (bs.wo.z > 0)) return false;
-    rgb b = vmul(cur->beta, bs.weight);
-    if (mode == TRANSPORT_IMPORTANCE) b = vscale(b, adjoint_shading_factor(cur, cur->wi, wo));
-    if (vzero(b) || !vfinite(b)) return false;
+    if (!scatter_dir(s, cur, wi, mode, &bs, d, beta)) return false;
     cur->delta = bs.delta;
     double dist2 = vlen2(vsub(cur->p, prev->p));
     prev->pdf_rev = bs.delta ? 0 : edge_pdf(bsdf_pdf(&cur->bc, bs.wo, wi), cur, prev, vneg(cur->wi), dist2);
-    *d = wo;
     *pdf_sa = bs.delta ? 0 : bs.pdf;
-    *beta = b;
     return true;
+}
+
+/* Whether a step from p along d reaches the surface vertex `to` within tol: without a ray where
+ * on_known_segment says so, else by the walk's own ray (same primitive, point within tol). */
+static bool step_reaches(const struct scene *sc, const struct vertex *from, vec3 d, const struct vertex *to,
+                         double tol)
+{
+    double t;
+    if (on_known_segment(from->p, d, to, &t)) return true;
+    struct vertex hit;
+    return walk_hit(sc, from, d, &hit) && hit.prim == to->prim && vlen(vsub(hit.p, to->p)) <= tol;
+}
+
+bool walk_step_reaches(const struct path_ctx *pc, struct sampler *s, const struct vertex *v, int n, int stream,
+                       const struct vertex *to, double tol)
+{
+    ASSERT(n >= 2 || (n == 1 && stream == STREAM_CAMERA));
+    vec3 d;
+    if (n == 1) {
+        /* the camera's block 0: the lens point (v[0]'s, within rounding), then the image position */
+        const struct camera *cam = &pc->sc->cam;
+        double pdf, px, py;
+        sampler_begin(s, STREAM_CAMERA, 0);
+        vec3 lens = camera_sample_lens(cam, s, &pdf);
+        d = camera_sample_dir(cam, lens, s, &px, &py, &pdf);
+        return step_reaches(pc->sc, &v[0], d, to, tol);
+    }
+    const struct vertex *cur = &v[n - 1];
+    if (!cur->bc.b) return false;
+    struct bsdf_sample bs;
+    rgb beta;
+    sampler_begin(s, stream, n - 1);
+    enum transport mode = stream == STREAM_CAMERA ? TRANSPORT_RADIANCE : TRANSPORT_IMPORTANCE;
+    return scatter_dir(s, cur, frame_to_local(&cur->sh, cur->wi), mode, &bs, &d, &beta) &&
+           step_reaches(pc->sc, cur, d, to, tol);
 }
 
 /* Extends a subpath whose last vertex v[n-1] emits direction d with solid-angle density pdf_sa
@@ -135,8 +188,12 @@ static int camera_walk(const struct path_ctx *pc, struct sampler *s, struct vert
     /* The pinhole's vertex is written in place, its lens point not passed around: every walk
      * starts here (camera_sample_lens and camera_sample_dir, spelt out). */
     bool thin_lens = cam->lens_radius > 0;
-    *z = (struct vertex){.kind = VK_CAMERA, .p = cam->pos, .ng = cam->basis.n, .sh = cam->basis,
-                         .front = true, .prim = -1, .tri = -1, .beta = v3s(1), .pdf_fwd = 1};
+    vertex_start(z, VK_CAMERA, -1, -1);
+    z->p = cam->pos;
+    z->ng = cam->basis.n;
+    z->sh = cam->basis;
+    z->beta = v3s(1);
+    z->pdf_fwd = 1;
     if (thin_lens) z->p = camera_sample_disc(cam, s, &z->pdf_fwd);
     /* A lone camera vertex (light tracing's t = 1) gets its raster position from the connection:
      * drawing a direction would cost two numbers (and, under MCMC, two mutations) for nothing. */
@@ -152,8 +209,11 @@ static bool sample_area_emitter(const struct scene *sc, int prim, double pick, s
 {
     struct emitter_pos pos;
     if (!emitter_sample_pos(sc, prim, s, &pos) || !(pos.pdf > 0)) return false;
-    *y = (struct vertex){.kind = VK_EMITTER, .p = pos.p, .ng = pos.n, .sh = frame_from_normal(pos.n),
-                         .front = true, .prim = prim, .tri = pos.tri, .pdf_fwd = pick * pos.pdf};
+    vertex_start(y, VK_EMITTER, prim, pos.tri);
+    y->p = pos.p;
+    y->ng = pos.n;
+    y->sh = frame_from_normal(pos.n);
+    y->pdf_fwd = pick * pos.pdf;
     y->beta = v3s(1.0 / y->pdf_fwd);
     return true;
 }
@@ -172,8 +232,11 @@ bool sample_env_emitter(const struct scene *sc, double pick, struct sampler *s, 
     double pdf, pdf_disc;
     if (!env_sample_dir(sc, s, &d, &pdf) || !(pdf > 0)) return false;
     vec3 origin = env_sample_origin(sc, d, s, &pdf_disc);
-    *y = (struct vertex){.kind = VK_ENV, .p = origin, .ng = vneg(d), .sh = frame_from_normal(vneg(d)), .front = true,
-                         .prim = sc->env_prim, .tri = -1, .wi = vneg(d), .pdf_fwd = pick * pdf};
+    vertex_start(y, VK_ENV, sc->env_prim, -1);
+    y->p = origin;
+    y->ng = y->wi = vneg(d);
+    y->sh = frame_from_normal(y->ng);
+    y->pdf_fwd = pick * pdf;
     y->beta = v3s(1.0 / y->pdf_fwd);
     return true;
 }
