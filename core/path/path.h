@@ -66,6 +66,7 @@ static inline void vertex_start(struct vertex *v, enum vertex_kind kind, int pri
     v->wi = v->beta = v3s(0);
     v->pdf_fwd = v->pdf_rev = v->px = v->py = 0;
 }
+
 struct path_ctx {
     const struct scene *sc;
     int max_length;     /* segments */
@@ -100,6 +101,7 @@ int walk_extend_to(const struct path_ctx *pc, struct sampler *s, struct vertex *
  * for the camera stream (its block 0 from the lens point v[0]). PITP's reverse check. */
 bool walk_step_reaches(const struct path_ctx *pc, struct sampler *s, const struct vertex *v, int n, int stream,
                        const struct vertex *to, double tol);
+
 /* The emitter vertex y_0 from the current block (light choice, then position or environment
  * direction and origin). */
 bool sample_emitter_vertex(const struct scene *sc, struct sampler *s, struct vertex *y);
