@@ -327,7 +327,7 @@ help:
 	@echo "make hybrid-study  thesis §4.3/§7.1: MMLT large steps vs MCTLS vs hybrid at equal time, with small steps"
 	@echo "make ch6-assets  regenerate the living-room and staircase sky and wood texture"
 	@echo "make report     results/report/index.html: every figure made so far beside its claim, checked in Chromium"
-	@echo "make check      regression-check every statistic against results/baselines/ (check-fig4.1 ... check-fig6.4, check-table1-cmlt, check-hybrid-study)"
+	@echo "make check      regression-check every statistic against results/baselines/ (check-fig4.1 ... check-fig6.4, check-table1-cmlt, check-mmlt-ratio, check-hybrid-study)"
 	@echo "make bench      throughput figures (with MPI=1 also 1 vs 2 ranks; make bench-mpi: that alone)"
 	@echo "make fig4.5, fig4.6, fig5.5, fig5.6, fig6.1, table1-cmlt   thesis figures (check-<target> against the baselines)"
 	@echo "SCALE=quick|paper selects experiment sizes (default quick)"

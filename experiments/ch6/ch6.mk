@@ -154,6 +154,15 @@ $(RATIO_OUT)/summary.csv: scenes/ajar/scene.json | deps $(BIN)/ch6_equal $(BIN)/
 	$(BIN)/ch6_equal --scene scenes/ajar/scene.json --name ajar-direct --out $(RATIO_OUT) --min-length 2 --reference-spp 0 \
 	  $(RATIO_OPTS) --scale $(SCALE) --source 'MMLT paper §5' --command 'make mmlt-ratio SCALE=$(SCALE)' >/dev/null
 
+# make check-mmlt-ratio: the paper's setting (ajar, paths of length >= 2, no reference) at a fixed
+# 16 mutations per pixel at 256x144, seeds 101-108 against the baseline's 1-8: the non-zero
+# fractions (per proposal, per connection, large steps) and the seed pass's error per method
+# (Welch t over the seeds, Sidak alpha = 0.01 over the 12 rows); `make ch6-baseline-mmlt-ratio`.
+CH6_CHECK_OPTS_mmlt-ratio := --spp 16 --seeds 8 --min-length 2 --reference-spp 0 --resolution 256x144 \
+  --render-args "--p-large 0.1"
+$(eval $(call CH6_CHECK,mmlt-ratio,ajar))
+ch6-baselines: ch6-baseline-mmlt-ratio
+
 .PHONY: mmlt-ratio
 mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary.csv $(CH6_OUT)/ajar/summary.csv $(RATIO_OUT)/summary.csv $(TECH_OUT)/tech.md
 	@mkdir -p results/mmlt-ratio
