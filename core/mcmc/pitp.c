@@ -157,7 +157,8 @@ static bool reverse_ok(const struct path_ctx *pc, int st, const struct vertex *v
     bool surfaces = true;
     for (int m = n_new; m < n; m++) surfaces = surfaces && v[m].kind == VK_SURFACE;
     if ((st == STREAM_EMITTER && n_new <= 1) || !surfaces) {
-        for (int i = 0; i < n_new; i++) w->rev[i] = v[i];
+        /* extend reads and writes only the last two vertices of the subpath it extends */
+        for (int i = n_new >= 2 ? n_new - 2 : 0; i < n_new; i++) w->rev[i] = v[i];
         for (int m = 0; m < d; m++) w->tgt[m] = &gained[d - 1 - m];
         struct block_rec rec[MAX_SUBPATH_VERTS];
         int nrec;
