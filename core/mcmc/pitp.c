@@ -65,16 +65,6 @@ struct block_rec {
     double u[SAMPLER_BLOCK];
 };
 
-/* The same vertex within the retrace tolerance: same primitive, and the same position (for a
- * vertex at infinity, the same direction). A camera hit on an emitter and the emitter vertex of
- * the same point count as the same vertex. */
-static bool same_vertex(const struct vertex *a, const struct vertex *b, double tol)
-{
-    if (a->prim != b->prim) return false;
-    if (a->kind == VK_ENV || b->kind == VK_ENV) return a->kind == b->kind && vlen(vsub(a->ng, b->ng)) <= 1e-4;
-    return vlen(vsub(a->p, b->p)) <= tol;
-}
-
 /* The end vertex of a camera subpath that reached an emitter, as the first vertex of an emitter
  * subpath: its emitting-side normal; at infinity the same direction, with a point on the ray that
  * the inversion projects onto the origin disc. */
@@ -120,11 +110,11 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
             ok = (y1 ? invert_step(pc, STREAM_EMITTER, &y0, 1, y1, &b->base)
                      : invert_emitter(pc, &y0, 1, 0, &b->base)) &&
                  walk_extend_to(pc, &b->base, v, len - 1, STREAM_EMITTER, y1) == len && !b->bad &&
-                 same_vertex(&v[0], &y0, tol) && (!y1 || same_vertex(&v[1], y1, tol));
+                 vertex_same(&v[0], &y0, tol) && (!y1 || vertex_same(&v[1], y1, tol));
         } else {
             /* the walk's step must reach the vertex its numbers were inverted toward */
             ok = invert_step(pc, st, v, n, tgt[c], &b->base) &&
-                 walk_extend_to(pc, &b->base, v, n, st, tgt[c]) == n + 1 && !b->bad && same_vertex(&v[n], tgt[c], tol);
+                 walk_extend_to(pc, &b->base, v, n, st, tgt[c]) == n + 1 && !b->bad && vertex_same(&v[n], tgt[c], tol);
             take = 1;
             len = n + 1;
         }

@@ -141,6 +141,15 @@ void sphere_uv(const struct prim *pr, vec3 n, double uv[2]);
  * stays in solid angle; from the environment, pdf is the origin disc's area density. */
 double edge_pdf(double pdf, const struct vertex *from, const struct vertex *to, vec3 d, double dist2);
 static inline vec3 env_dir(const struct vertex *v) { return vneg(v->ng); }
+/* The same vertex within tol: same primitive and position (at infinity, the same direction). What
+ * every check that a walk's step reached a given vertex compares; a camera hit on an emitter and
+ * the emitter vertex of the same point count as the same vertex. */
+static inline bool vertex_same(const struct vertex *a, const struct vertex *b, double tol)
+{
+    if (a->prim != b->prim) return false;
+    if (a->kind == VK_ENV || b->kind == VK_ENV) return a->kind == b->kind && vlen(vsub(a->ng, b->ng)) <= 1e-4;
+    return vlen(vsub(a->p, b->p)) <= tol;
+}
 /* Unit direction from a to b and the squared distance (1 when either end is at infinity). */
 vec3 edge_dir(const struct vertex *a, const struct vertex *b, double *dist2);
 

@@ -79,14 +79,14 @@ static inline bool scatter_at(struct sampler *s, struct vertex *v, int n, enum t
 }
 
 /* Whether a step from p along d reaches the surface vertex `to` within tol: without a ray where
- * on_known_segment says so, else by the walk's own ray (same primitive, point within tol). */
+ * on_known_segment says so, else by the walk's own ray (vertex_same). */
 static bool step_reaches(const struct scene *sc, const struct vertex *from, vec3 d, const struct vertex *to,
                          double tol)
 {
     double t;
     if (on_known_segment(from->p, d, to, &t)) return true;
     struct vertex hit;
-    return walk_hit(sc, from, d, &hit) && hit.prim == to->prim && vlen(vsub(hit.p, to->p)) <= tol;
+    return walk_hit(sc, from, d, &hit) && vertex_same(&hit, to, tol);
 }
 
 bool walk_step_reaches(const struct path_ctx *pc, struct sampler *s, const struct vertex *v, int n, int stream,

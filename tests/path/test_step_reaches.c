@@ -18,7 +18,7 @@ static bool reached_by_step(const struct path_ctx *pc, struct sampler *s, const 
 {
     static struct vertex c[MAX_SUBPATH_VERTS];
     memcpy(c, v, (size_t)n * sizeof c[0]);
-    return walk_extend_to(pc, s, c, n, st, to) == n + 1 && c[n].prim == to->prim && vlen(vsub(c[n].p, to->p)) <= tol;
+    return walk_extend_to(pc, s, c, n, st, to) == n + 1 && vertex_same(&c[n], to, tol);
 }
 
 static void check_scene(const char *path)
