@@ -2,6 +2,7 @@
  * 1 <= s + t - 1 <= max_length; t = 1 contributions land at the connection's raster position. */
 #include "mc/integrator.h"
 #include "path/connect.h"
+#include <string.h>
 
 void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct splat_list *out)
 {
@@ -13,6 +14,7 @@ void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w
     rgb sum = v3s(0);
     struct connection c;
     out->n = 0;
+    if (w->tech_k) memset(w->tech_on, 0, sizeof w->tech_on);
     for (int t = 1; t <= nz; t++)
         for (int s_ = 0; s_ <= ny; s_++) {
             int k = s_ + t - 1;
@@ -27,6 +29,10 @@ void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w
                 continue;
             }
             w->conn_nonzero += luminance(v) > 0;
+            if (k == w->tech_k) {
+                w->tech_on[t] = true;
+                w->tech[t] = (struct splat){c.px, c.py, v};
+            }
             if (t == 1) splat_push(out, c.px, c.py, v);
             else sum = vadd(sum, v);
         }

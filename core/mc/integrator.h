@@ -16,6 +16,11 @@ struct scratch {
     /* connections evaluated and those with a contribution, since the caller last took them (the
      * MMLT paper's §5 non-zero ratio per connection; mcmc/chain_loop.c moves them to the stats) */
     long conn_tried, conn_nonzero;
+    /* > 0: bdpt_splats also keeps the sample's length-tech_k contributions per technique t (the
+     * raster position and MIS-weighted colour; tech_on[t] when there is one) for mc/bdpt_tech.h */
+    int tech_k;
+    bool tech_on[MAX_SPLATS];
+    struct splat tech[MAX_SPLATS];
 };
 
 void pt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w, struct image *img);

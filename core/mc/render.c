@@ -57,6 +57,7 @@ struct job {
     const struct scene *sc;
     const struct render_opts *o;
     struct image **img;
+    struct bdpt_tech **tech; /* per thread, with o->tech_k */
     struct nonfinite *nf; /* per thread */
     long *samples;
     struct progress prog;
@@ -145,6 +146,7 @@ static void worker(int tid, void *p)
     if (bad) atomic_store(&j->resume_bad, true);
     long done = j->samples[tid];
     w->nf = j->nf[tid];
+    w->tech_k = j->tech ? o->tech_k : 0;
     if (o->seconds <= 0) progress_add(&j->prog, (at.y - j->g0 - tid) / j->stride);
     do {
         /* Ctrl-C is honoured within a pixel (every 4096 samples), not only between rows: a row of
@@ -164,6 +166,7 @@ static void worker(int tid, void *p)
                     }
                     if (o->method == METHOD_PT) pt_sample(&pc, &s.base, w, img);
                     else bdpt_sample(&pc, &s.base, w, img);
+                    if (j->tech) bdpt_tech_add(j->tech[tid], w);
                     done++;
                 }
                 at.x++;
@@ -218,6 +221,16 @@ static bool next_pass(void *p)
     return true;
 }
 
+struct tech_merge {
+    struct bdpt_tech *out, **per_thread;
+};
+
+static void add_tech(void *ctx, int thread)
+{
+    struct tech_merge *m = ctx;
+    bdpt_tech_accumulate(m->out, m->per_thread[thread]);
+}
+
 struct image *render_mc(const struct scene *sc, const struct render_opts *o, struct render_stats *st)
 {
     int W = sc->cam.width, H = sc->cam.height, T = o->threads < 1 ? 1 : o->threads;
@@ -230,6 +243,11 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     for (int i = 0; i < T; i++) {
         j.img[i] = img_create(W, H);
         j.img[i]->tent = sc->cam.filter == FILTER_TENT;
+    }
+    if (o->tech_k > 0) {
+        ASSERT(o->method == METHOD_BDPT && o->tech_k <= o->max_length);
+        j.tech = xcalloc((size_t)T, sizeof *j.tech);
+        for (int i = 0; i < T; i++) j.tech[i] = bdpt_tech_create(o->tech_k, W, H, sc->cam.filter == FILTER_TENT);
     }
     double t0 = budget_seconds(o->cpu_time, T), elapsed0 = 0;
     if (o->ckpt && o->ckpt->resume) {
@@ -274,7 +292,20 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     }
     free(j.resume);
     struct image *out = img_create(W, H);
-    merge_thread_results(&(struct thread_results){.threads = T, .img = j.img, .scale = 1.0 / spp}, out);
+    struct thread_results tr = {.threads = T, .img = j.img, .scale = 1.0 / spp};
+    struct tech_merge tm = {NULL, j.tech};
+    st->tech = NULL;
+    if (j.tech) {
+        st->tech = bdpt_tech_create(o->tech_k, W, H, sc->cam.filter == FILTER_TENT);
+        tr.extra[tr.nextra++] = (struct dist_buf){st->tech->sum, bdpt_tech_bytes(st->tech)};
+        tr.add = add_tech;
+        tm.out = st->tech;
+        tr.ctx = &tm;
+    }
+    merge_thread_results(&tr, out);
+    if (j.tech)
+        for (int i = 0; i < T; i++) bdpt_tech_free(j.tech[i]);
+    free(j.tech);
     /* over the job's threads: integers, exact in any order */
     struct {
         long samples, interrupted, resume_bad;

@@ -13,6 +13,7 @@
 
 #include "io/checkpoint.h"
 #include "io/image.h"
+#include "mc/bdpt_tech.h"
 #include "path/splat.h"
 #include "scene/scene.h"
 #include <stdint.h>
@@ -31,6 +32,7 @@ struct render_opts {
     bool progress;
     int only_s, only_t; /* BDPT: one technique, unweighted (only_t > 0) */
     bool sobol;         /* scrambled (0,2)-sequences instead of independent numbers (sampler/sobol02.h) */
+    int tech_k;         /* BDPT: > 0, per-technique images of this path length (render_stats.tech) */
     /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a spp budget
      * a resumed run ends bit-identical to an uninterrupted one; with a time budget it continues
      * the passes with what the budget had left. */
@@ -45,6 +47,7 @@ struct render_stats {
     struct nonfinite nonfinite_len; /* the same by path length (path/splat.h) */
     bool partial; /* interrupted: rows not reached (in the last pass, under a time budget) lack samples */
     bool resume_failed; /* the checkpoint's state did not fit this run: nothing was rendered */
+    struct bdpt_tech *tech; /* with tech_k: the job's per-technique sums (mc/bdpt_tech.h; caller frees) */
 };
 
 /* Returns the image in final units (average radiance per pixel). */

@@ -71,7 +71,7 @@ static void warn_unused(const struct opts_spec *spec, const char *method, int ar
                            : !strcmp(method, "pssmlt") && (tag & MMLT_ONLY) ? "mmlt and pitp"
                            : multiplexed && (tag & PSSMLT_ONLY)                     ? "pssmlt"
                                                                                     : NULL;
-        if (only && !mcmc && !strcmp(o, "--technique-images")) only = "pssmlt and mmlt"; /* not pitp */
+        if (!strcmp(o, "--technique-images") && !strcmp(method, "pt")) only = "bdpt, pssmlt and mmlt"; /* not pitp */
         if (only) fprintf(stderr, "render: warning: %s has no effect with --method %s (it applies to %s)\n", o, method, only);
     }
 }
@@ -159,10 +159,11 @@ static void parse(int argc, char **argv, struct args *a)
                  "latter two use the Gaussian kernel"},
         {"--angle-stats", OPT_FLAG, OPT_DST(m->angle_stats), .tag = MCMC | MMLT_ONLY,
          .help = "mmlt, pitp: angle change of every small step, PREFIX.angle.exr and .angle.csv"},
-        {"--technique-images", OPT_INT, OPT_DST(m->technique_k), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, .tag = MCMC,
-         .help = "pssmlt, mmlt (MMLT large steps): per-technique images of path length K (MMLT paper 5): "
-                 "PREFIX.tech-tT.exr/.png contribution, PREFIX.count-tT.exr/.png chain samples in technique T, "
-                 "PREFIX.tech.csv shares; pssmlt runs slower with it"},
+        {"--technique-images", OPT_INT, OPT_DST(m->technique_k), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH,
+         .help = "bdpt, pssmlt, mmlt (MMLT large steps): per-technique images of path length K (MMLT paper 5): "
+                 "PREFIX.tech-tT.exr/.png contribution of technique T; pssmlt/mmlt: PREFIX.count-tT.exr/.png chain "
+                 "samples in it, PREFIX.tech.csv shares; bdpt: PREFIX.tech.csv each technique's variance "
+                 "(the error it carries); pssmlt runs slower with it"},
         {0}};
     const struct opts_spec spec = {.prog = prog, .usage = "usage: render SCENE.json [options]\n", .opts = opts,
                                  .tail = help_tail(),
@@ -223,18 +224,36 @@ static bool write_angle(const struct args *a, const struct mlt_result *r, char *
     return ok;
 }
 
-/* The per-technique images and PREFIX.tech.csv (core/tech_image.h). */
-static bool write_tech(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
+/* The header of PREFIX.tech.csv: the run's metadata lines, then `# NAME COUNT` (mutations or spp)
+ * and `# seconds`. Caller frees. */
+static char *tech_head(const struct args *a, const char *name, long count, double seconds)
 {
     char extra[64], *head = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&head, &len);
     snprintf(extra, sizeof extra, " --technique-images %d", a->mlt.technique_k);
     meta_head(f, a, extra);
-    csv_meta(f, "mutations", "%ld", r->mutations);
-    csv_meta(f, "seconds", "%.3f", r->seconds);
+    csv_meta(f, name, "%ld", count);
+    csv_meta(f, "seconds", "%.3f", seconds);
     fclose(f);
+    return head;
+}
+
+/* The per-technique images and PREFIX.tech.csv of pssmlt and mmlt (core/tech_image.h). */
+static bool write_tech(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
+{
+    char *head = tech_head(a, "mutations", r->mutations, r->seconds);
     bool ok = tech_acc_write(r->tech, a->out, head, err, errlen);
+    free(head);
+    return ok;
+}
+
+/* BDPT's (core/mc/bdpt_tech.h). */
+static bool write_bdpt_tech(const struct args *a, const struct render_stats *st, const struct image *img, char *err,
+                            size_t errlen)
+{
+    char *head = tech_head(a, "spp", st->spp, st->seconds);
+    bool ok = bdpt_tech_write(st->tech, st->spp, img, a->out, head, err, errlen);
     free(head);
     return ok;
 }
@@ -426,6 +445,18 @@ int main(int argc, char **argv)
     if (!strcmp(a.method, "pt") || !strcmp(a.method, "bdpt")) {
         method_parse(a.method, &a.mc.method);
         struct render_stats st;
+        if (a.mlt.technique_k && strcmp(a.method, "pt")) {
+            if (a.mlt.technique_k > a.mc.max_length || a.mlt.technique_k < a.mc.min_length)
+                opts_fail("render", "--technique-images %d: needs a length within --min-length %d..--max-length %d",
+                          a.mlt.technique_k, a.mc.min_length, a.mc.max_length);
+            if (a.resume) opts_fail("render", "--technique-images: bdpt's per-technique sums are not checkpointed; render again without --resume");
+            if (dist_size() > 1) {
+                if (dist_root()) fprintf(stderr, "render: technique images are not merged across MPI ranks: make them without mpirun\n");
+                scene_free(sc);
+                return 2;
+            }
+            a.mc.tech_k = a.mlt.technique_k;
+        }
         struct image *img = render_mc(sc, &a.mc, &st);
         if (st.resume_failed) {
             fprintf(stderr, "render: --resume %s: the checkpoint's state does not fit this run\n", a.resume);
@@ -442,6 +473,8 @@ int main(int argc, char **argv)
                    st.seconds, st.samples / st.seconds,
                    threads_note(a.mc.threads), st.nonfinite, nonfinite_note(&st.nonfinite_len));
         if (ok && !ctl.err[0] && dist_root()) warn_nonfinite(st.nonfinite, &st.nonfinite_len);
+        if (ok && !ctl.err[0] && dist_root() && st.tech) ok = write_bdpt_tech(&a, &st, img, err, sizeof err);
+        bdpt_tech_free(st.tech);
         img_destroy(img);
     } else {
         a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : !strcmp(a.method, "pitp") ? MLT_PITP : MLT_PSSMLT;

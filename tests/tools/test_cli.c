@@ -78,6 +78,7 @@ Test(cli, bad_inputs_exit_2_with_one_line_and_no_output)
         {"scenes/cornell-box/scene.json --method foo", "--method"},
         {"scenes/cornell-box/scene.json --resolution 10", "--resolution"},
         {"scenes/cornell-box/scene.json --bogus", "--bogus"},
+        {"scenes/cornell-box/scene.json --method bdpt --technique-images 9", "--technique-images 9"},
     };
     char err[4096], args[1024];
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
@@ -245,6 +246,7 @@ Test(cli, options_of_other_methods_warn)
         {"bdpt", "--rap", "--rap has no effect with --method bdpt"},
         {"pssmlt", "--large-step mctls", "--large-step has no effect with --method pssmlt"},
         {"mmlt", "--max-heuristic", "--max-heuristic has no effect with --method mmlt"},
+        {"pt", "--technique-images 2", "--technique-images has no effect with --method pt"},
     };
     char err[4096], args[1024];
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
