@@ -30,14 +30,14 @@ size_t bdpt_tech_bytes(const struct bdpt_tech *a);
 void bdpt_tech_add(struct bdpt_tech *a, const struct scratch *w);
 void bdpt_tech_accumulate(struct bdpt_tech *dst, const struct bdpt_tech *src);
 
-/* Per technique over n samples per pixel, against the whole image `full` (final units): the mean
- * luminance of its image; rel_var, the mean over pixels and channels of the variance of its pixel
- * estimate over (full^2 + 0.01), the unit of relMSE (image.h's img_relmse); and top1, the share of
- * rel_var in the technique's worst 1 % of pixels. */
 /* The variance of a pixel's estimate sum / n from one technique: unbiased from the sum and the
  * sum of squares of the N samples that could land there, N = n for t >= 2 (the pixel's own
  * samples), N = n x pixels for t = 1 (every sample's light-tracing splat can land anywhere). */
 double bdpt_tech_var(double sum, double sq, long n, double N);
+/* Per technique over n samples per pixel, against the whole image `full` (final units): the mean
+ * luminance of its image; rel_var, the mean over pixels and channels of the variance of its pixel
+ * estimate over (full^2 + 0.01), the unit of relMSE (image.h's img_relmse); and top1, the share of
+ * rel_var in the technique's worst 1 % of pixels. */
 struct bdpt_tech_row {
     int s, t;
     double mean, rel_var, top1;
