@@ -52,6 +52,10 @@ struct mlt_opts {
     double seconds;        /* equal-time budget */
     bool cpu_time;         /* seconds are CPU seconds per thread (budget_seconds, parallel.h) */
     long seed_paths;
+    /* MMLT/PITP: b_k from BDPT samples, one per seed path and length (all k + 1 techniques, the MMLT
+     * paper's §4 "Initialization"), instead of from the seed pool's one-technique targets; the pool
+     * still starts the chains. Both are unbiased (seed_pass.c). */
+    bool seed_bdpt;
     uint64_t seed;
     int threads;
     int max_length;

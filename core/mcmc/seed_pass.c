@@ -12,11 +12,15 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* BDPT's seed samples (seed_bdpt) draw from streams above every pool stream i * nk + kk. */
+#define BDPT_SEED_STREAM (1ULL << 61)
+
 struct seed_job {
     const struct scene *sc;
     const struct mlt_opts *o;
     int nk;            /* chains per thread: 1 (PSSMLT) or K (MMLT) */
     double *f;         /* seed_paths * nk targets, index i * nk + (k - 1) */
+    double *bk;        /* o->seed_bdpt: the BDPT samples' luminance per length, same index; else NULL */
     int g0, stride;    /* this rank's first global thread; the job's threads (base/dist.h) */
     struct progress prog;
 };
@@ -36,6 +40,20 @@ static void seed_worker(int tid, void *p)
             sampler_independent_init(&s, j->o->seed, seed_stream(i, j->nk, kk));
             j->f[i * j->nk + kk] = eval_state(j->o->method, &pc, &s.base, w, kk + 1, x, &l, &tech, &complete);
         }
+        /* One BDPT sample per length, restricted to it, on streams no pool sample uses: the lengths'
+         * estimates are independent of each other (one sample for all lengths would correlate them:
+         * on ajar a path through the slit counts at every length, and b's error grew 1.4x so) and
+         * of the pool. */
+        for (int kk = 0; j->bk && kk < j->nk; kk++) {
+            struct path_ctx pk = pc;
+            pk.min_length = pk.max_length = kk + 1;
+            if (kk + 1 < pc.min_length) continue;
+            sampler_independent_init(&s, j->o->seed, BDPT_SEED_STREAM | seed_stream(i, j->nk, kk));
+            w->by_length = true;
+            bdpt_splats(&pk, &s.base, w, &l);
+            w->by_length = false;
+            j->bk[i * j->nk + kk] = w->lum_k[kk + 1];
+        }
         if ((i / j->stride) % 1024 == 0) progress_add(&j->prog, 1024);
     }
     free(x);
@@ -44,38 +62,53 @@ static void seed_worker(int tid, void *p)
 
 /* The seed pass's targets, index i * nk + kk. It is dealt over the job's threads; each target is
  * computed by one rank and the others hold 0, so the sum gives every rank the whole pass, exactly. */
-static double *seed_targets(const struct run_job *rj)
+static double *seed_targets(const struct run_job *rj, double **bk)
 {
     const struct mlt_opts *o = rj->o;
-    struct seed_job sj = {rj->sc, o, rj->nk, xcalloc((size_t)o->seed_paths * rj->nk, sizeof(double)), rj->g0, rj->stride, {0}};
+    size_t n = (size_t)o->seed_paths * rj->nk;
+    struct seed_job sj = {rj->sc, o, rj->nk, xcalloc(n, sizeof(double)), NULL, rj->g0, rj->stride, {0}};
+    if (o->seed_bdpt && rj->nk > 1) sj.bk = xcalloc(n, sizeof(double));
     progress_init(&sj.prog, "seed pass", o->seed_paths / dist_size(), o->progress);
     parallel_run(o->threads, seed_worker, &sj);
-    dist_sum_doubles(sj.f, (size_t)o->seed_paths * rj->nk);
+    dist_sum_doubles(sj.f, n);
+    if (sj.bk) dist_sum_doubles(sj.bk, n);
     progress_finish(&sj.prog);
+    *bk = sj.bk;
     return sj.f;
+}
+
+/* Mean over the seed paths of v[i * nk + kk], and the variance of that mean. */
+static void mean_and_var(const double *v, int nk, int kk, long n, double *mean, double *var_mean)
+{
+    double acc = 0, sq = 0;
+    for (long i = 0; i < n; i++) {
+        acc += v[i * nk + kk];
+        sq += v[i * nk + kk] * v[i * nk + kk];
+    }
+    *mean = acc / (double)n;
+    *var_mean = n > 1 ? fmax(0, sq / (double)n - *mean * *mean) / (double)(n - 1) : 0;
 }
 
 bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errlen)
 {
     const struct mlt_opts *o = rj->o;
     double t0 = now_seconds();
-    double *f = seed_targets(rj);
-    double total = 0, var_total = 0, n = (double)o->seed_paths;
+    double *bk, *f = seed_targets(rj, &bk);
+    double total = 0, var_total = 0;
     int live = 0;
     for (int kk = 0; kk < rj->nk; kk++) {
-        double *cdf = xmalloc((size_t)o->seed_paths * sizeof(double)), acc = 0, sq = 0;
-        for (long i = 0; i < o->seed_paths; i++) {
-            double v = f[i * rj->nk + kk];
-            cdf[i] = acc += v;
-            sq += v * v;
-        }
-        double mean = acc / n, var_mean = n > 1 ? fmax(0, sq / n - mean * mean) / (n - 1) : 0;
+        double *cdf = xmalloc((size_t)o->seed_paths * sizeof(double)), acc = 0;
+        for (long i = 0; i < o->seed_paths; i++) cdf[i] = acc += f[i * rj->nk + kk];
+        /* a length whose pool found nothing has no chain to start: it is left out under either
+         * estimate of b_k (a bias only where the seed pass is too small to see the length) */
+        double mean = 0, var_mean = 0;
+        if (acc > 0) mean_and_var(bk ? bk : f, rj->nk, kk, o->seed_paths, &mean, &var_mean);
         r->b_k[kk + 1] = mean;
-        /* the lengths' seed paths are independent streams, so their variances add up in b */
         r->b_k_rse[kk + 1] = mean > 0 ? sqrt(var_mean) / mean : 0;
+        /* the lengths' seed paths are independent streams, so their variances add up in b */
         var_total += var_mean;
         total += r->b_k[kk + 1];
-        if (acc > 0) {
+        if (acc > 0 && mean > 0) {
             rj->cdf[kk] = cdf;
             live++;
         } else {
@@ -83,6 +116,7 @@ bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errle
         }
     }
     free(f);
+    free(bk);
     /* Length k is chosen with probability P(k) (b_k / b, or uniform over the lengths with b_k > 0)
      * and its splats weigh b_k / P(k), so every length is estimated without bias either way. */
     for (int kk = 0; kk < rj->nk; kk++) {

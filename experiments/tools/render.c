@@ -146,6 +146,9 @@ static void parse(int argc, char **argv, struct args *a)
          .help = "constrained discrete choices: small steps keep discrete numbers"},
         {"--seed-paths", OPT_INT, OPT_DST(m->seed_paths), .arg = "N", .lo = 1, .hi = 1L << 40, .def = "100000",
          .tag = MCMC, .help = "samples of the normalisation seed pass"},
+        {"--seed-bdpt", OPT_FLAG, OPT_DST(m->seed_bdpt), .tag = MCMC | MMLT_ONLY,
+         .help = "mmlt, pitp: estimate b_k from one BDPT sample per seed path (every technique; MMLT paper 4) "
+                 "instead of the seed pool's one-technique targets: the same b, a smaller normalisation error"},
         {"--large-step", OPT_CHOICE, OPT_DST(m->large_step), .choices = large_steps, .tag = MCMC | MMLT_ONLY,
          .help = "mmlt's large step (default mmlt; mctls: thesis 4.3)"},
         OPT_HYBRID_LENGTH(m->hybrid_length, .help = "hybrid: MCTLS from path length K on, MMLT large steps below",
@@ -270,6 +273,7 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     if (dist_size() > 1) csv_meta(f, "ranks", "%d", dist_size()); /* threads are per rank */
     csv_meta(f, "large_step", "%s", large_steps[m->large_step]);
     csv_meta(f, "hybrid_length", "%d", m->hybrid_length);
+    csv_meta(f, "seed_estimator", "%s", m->seed_bdpt && m->method != MLT_PSSMLT ? "bdpt" : "pool");
     csv_meta(f, "uniform_lengths", "%d", m->uniform_lengths);
     csv_meta(f, "mis", "%s", m->max_heuristic ? "maximum" : "balance");
     csv_meta(f, "small_step", "%s", small_steps[m->small_step]);
@@ -332,10 +336,10 @@ static void options_text(const struct args *a, const struct scene *sc, char *buf
         const struct mlt_opts *m = &a->mlt;
         snprintf(buf + len, n - (size_t)len,
                  " p_large=%g kernel=%d sigma=%g rap=%d rap_resolution=%d cdc=%d seed_paths=%ld large_step=%d "
-                 "hybrid_length=%d uniform_lengths=%d max_heuristic=%d small_step=%d angle_stats=%d technique_k=%d",
+                 "hybrid_length=%d uniform_lengths=%d max_heuristic=%d small_step=%d angle_stats=%d technique_k=%d%s",
                  m->p_large, m->pss.kernel, m->pss.sigma, m->pss.rap, m->pss.rap_resolution, m->pss.cdc, m->seed_paths,
                  m->large_step, m->hybrid_length, m->uniform_lengths, m->max_heuristic, m->small_step, m->angle_stats,
-                 m->technique_k);
+                 m->technique_k, m->seed_bdpt ? " seed_bdpt=1" : ""); /* only when set: older checkpoints resume */
     }
 }
 

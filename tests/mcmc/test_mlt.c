@@ -442,7 +442,9 @@ Test(mlt, cpu_time_budget_does_the_same_work_under_load, .timeout = 120)
  * interval of s / sigma for 19 degrees of freedom, [0.60, 1.43] (sqrt(chi2_19 quantiles / 19); α =
  * 0.01 per method). Per length too for MMLT: the mean squared ratio over the lengths with b_k > 0
  * against chi2 of 8 x 19 degrees of freedom. Reporting half the error fails every check (ratios 1.73
- * and 2.11, per length 4.5). */
+ * and 2.11, per length 4.5). The same for MMLT with b_k from BDPT samples (--seed-bdpt: its lengths
+ * share samples, so the total's error is taken sample by sample), whose mean b must also agree with
+ * the pool's: Welch z over the 20 seeds of each, |z| < 2.58 (α = 0.01). */
 Test(stat_mlt, seed_pass_standard_error_predicts_the_spread_of_b)
 {
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
@@ -450,12 +452,15 @@ Test(stat_mlt, seed_pass_standard_error_predicts_the_spread_of_b)
     const int seeds = 20;
     double lo = sqrt(gsl_cdf_chisq_Pinv(0.005, seeds - 1) / (seeds - 1)),
            hi = sqrt(gsl_cdf_chisq_Pinv(0.995, seeds - 1) / (seeds - 1));
-    for (int m = 0; m < 2; m++) {
+    static const char *names[] = {"pssmlt", "mmlt", "mmlt --seed-bdpt"};
+    double means[3], sds[3];
+    for (int m = 0; m < 3; m++) {
         double b[20], bk[20][MAX_PATH_LENGTH + 1], rse = 0, rse_k[MAX_PATH_LENGTH + 1] = {0};
         for (int s = 0; s < seeds; s++) {
             struct mlt_opts o;
             opts(&o, sc, m ? MLT_MMLT : MLT_PSSMLT, 256);
             o.seed_paths = 3000;
+            o.seed_bdpt = m == 2;
             o.seed = 100 + (uint64_t)s;
             struct mlt_result r;
             char err[256];
@@ -469,9 +474,10 @@ Test(stat_mlt, seed_pass_standard_error_predicts_the_spread_of_b)
         for (int s = 0; s < seeds; s++) mean += b[s] / seeds;
         for (int s = 0; s < seeds; s++) var += (b[s] - mean) * (b[s] - mean) / (seeds - 1);
         double ratio = sqrt(var) / rse;
-        cr_log_info("%s: sd of b over %d seeds / reported s.e. = %.3f (99 %% interval %.2f-%.2f)", m ? "mmlt" : "pssmlt", seeds,
-                    ratio, lo, hi);
-        cr_expect(ratio > lo && ratio < hi, "%s: sd of b / reported s.e. = %.3f", m ? "mmlt" : "pssmlt", ratio);
+        means[m] = mean;
+        sds[m] = sqrt(var);
+        cr_log_info("%s: sd of b over %d seeds / reported s.e. = %.3f (99 %% interval %.2f-%.2f)", names[m], seeds, ratio, lo, hi);
+        cr_expect(ratio > lo && ratio < hi, "%s: sd of b / reported s.e. = %.3f", names[m], ratio);
         if (!m) continue;
         /* per length: the squared ratios' mean over the lengths, 8 x 19 degrees of freedom */
         double sum2 = 0;
@@ -486,8 +492,12 @@ Test(stat_mlt, seed_pass_standard_error_predicts_the_spread_of_b)
         }
         int dof = nk * (seeds - 1);
         double q = sum2 / nk, qlo = gsl_cdf_chisq_Pinv(0.005, dof) / dof, qhi = gsl_cdf_chisq_Pinv(0.995, dof) / dof;
-        cr_log_info("mmlt per length: mean squared ratio %.3f over %d lengths (99 %% interval %.2f-%.2f)", q, nk, qlo, qhi);
-        cr_expect(nk > 4 && q > qlo && q < qhi, "mmlt per length: mean squared ratio %.3f over %d lengths", q, nk);
+        cr_log_info("%s per length: mean squared ratio %.3f over %d lengths (99 %% interval %.2f-%.2f)", names[m], q, nk, qlo,
+                    qhi);
+        cr_expect(nk > 4 && q > qlo && q < qhi, "%s per length: mean squared ratio %.3f over %d lengths", names[m], q, nk);
     }
+    double z = (means[2] - means[1]) / sqrt((sds[1] * sds[1] + sds[2] * sds[2]) / seeds);
+    cr_log_info("b: pool %.5g, bdpt %.5g, z = %.2f", means[1], means[2], z);
+    cr_expect(fabs(z) < 2.576, "b from BDPT samples %.5g against the pool's %.5g: z = %.2f", means[2], means[1], z);
     scene_free(sc);
 }

@@ -247,6 +247,7 @@ Test(cli, options_of_other_methods_warn)
         {"pssmlt", "--large-step mctls", "--large-step has no effect with --method pssmlt"},
         {"mmlt", "--max-heuristic", "--max-heuristic has no effect with --method mmlt"},
         {"pt", "--technique-images 2", "--technique-images has no effect with --method pt"},
+        {"pssmlt", "--seed-bdpt", "--seed-bdpt has no effect with --method pssmlt"},
     };
     char err[4096], args[1024];
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
