@@ -451,8 +451,8 @@ int main(int argc, char **argv)
         struct render_stats st;
         if (a.mlt.technique_k && strcmp(a.method, "pt")) {
             if (a.mlt.technique_k > a.mc.max_length || a.mlt.technique_k < a.mc.min_length)
-                opts_fail("render", "--technique-images %d: needs a length within --min-length %d..--max-length %d",
-                          a.mlt.technique_k, a.mc.min_length, a.mc.max_length);
+                opts_fail("render", "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length)",
+                          a.mlt.technique_k, a.mc.min_length > 1 ? a.mc.min_length : 1, a.mc.max_length);
             if (a.resume) opts_fail("render", "--technique-images: bdpt's per-technique sums are not checkpointed; render again without --resume");
             if (dist_size() > 1) {
                 if (dist_root()) fprintf(stderr, "render: technique images are not merged across MPI ranks: make them without mpirun\n");
@@ -487,9 +487,9 @@ int main(int argc, char **argv)
         if (a.mlt.technique_k && (a.mlt.technique_k > a.mlt.max_length || a.mlt.technique_k < a.mlt.min_length ||
                                   a.mlt.large_step != LARGE_MMLT))
             opts_fail("render",
-                     "--technique-images %d: needs a length within --min-length %d..--max-length %d and MMLT "
+                     "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length) and MMLT "
                      "large steps",
-                     a.mlt.technique_k, a.mlt.min_length, a.mlt.max_length);
+                     a.mlt.technique_k, a.mlt.min_length > 1 ? a.mlt.min_length : 1, a.mlt.max_length);
         a.mlt.mutations = (long)a.mc.spp * sc->cam.width * sc->cam.height;
         a.mlt.pss = cli_pss;
         a.mlt.pss.width = camera_film_width(&sc->cam);
