@@ -15,7 +15,6 @@ void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w
     struct connection c;
     out->n = 0;
     if (w->tech_k) memset(w->tech_on, 0, sizeof w->tech_on);
-    if (w->by_length) memset(w->lum_k, 0, sizeof w->lum_k);
     for (int t = 1; t <= nz; t++)
         for (int s_ = 0; s_ <= ny; s_++) {
             int k = s_ + t - 1;
@@ -29,9 +28,7 @@ void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w
                 w->nf.len[k]++;
                 continue;
             }
-            double lum = luminance(v);
-            w->conn_nonzero += lum > 0;
-            if (w->by_length) w->lum_k[k] += lum;
+            w->conn_nonzero += luminance(v) > 0;
             if (k == w->tech_k) {
                 w->tech_on[t] = true;
                 w->tech[t] = (struct splat){c.px, c.py, v};

@@ -19,9 +19,6 @@ struct scratch {
     /* > 0: bdpt_splats also keeps the sample's length-tech_k contributions per technique t (the
      * raster position and MIS-weighted colour; tech_on[t] when there is one) for mc/bdpt_tech.h */
     int tech_k;
-    /* by_length: bdpt_splats also sums each sample's luminance per path length into lum_k */
-    bool by_length;
-    double lum_k[MAX_PATH_LENGTH + 1];
     bool tech_on[MAX_SPLATS];
     struct splat tech[MAX_SPLATS];
 };

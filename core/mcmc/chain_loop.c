@@ -28,7 +28,6 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
     wk->w = xmalloc(sizeof *wk->w);
     wk->w->nf = (struct nonfinite){{0}};
     wk->w->tech_k = 0; /* the MCMC methods split states by technique themselves (tech_split.h) */
-    wk->w->by_length = false;
     wk->ch = xcalloc((size_t)j->nk, sizeof *wk->ch);
     wk->mb = xmalloc(sizeof *wk->mb);
     wk->st = &j->stats[tid];

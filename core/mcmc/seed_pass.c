@@ -49,10 +49,13 @@ static void seed_worker(int tid, void *p)
             pk.min_length = pk.max_length = kk + 1;
             if (kk + 1 < pc.min_length) continue;
             sampler_independent_init(&s, j->o->seed, BDPT_SEED_STREAM | seed_stream(i, j->nk, kk));
-            w->by_length = true;
+            w->tech_k = kk + 1; /* the length's techniques, split as for bdpt --technique-images */
             bdpt_splats(&pk, &s.base, w, &l);
-            w->by_length = false;
-            j->bk[i * j->nk + kk] = w->lum_k[kk + 1];
+            w->tech_k = 0;
+            double v = 0;
+            for (int t = 1; t <= kk + 2; t++)
+                if (w->tech_on[t]) v += luminance(w->tech[t].c);
+            j->bk[i * j->nk + kk] = v;
         }
         if ((i / j->stride) % 1024 == 0) progress_add(&j->prog, 1024);
     }
