@@ -9,6 +9,10 @@
 #include <string.h>
 #include <sys/wait.h>
 
+#ifndef BIN_DIR
+#define BIN_DIR "bin"
+#endif
+
 static char tmpdir[256];
 static void mk_tmp(void) { tmpdir_make(tmpdir, sizeof tmpdir, "texture-loader-test"); }
 static void rm_tmp(void) { tmpdir_remove(tmpdir); }
@@ -83,7 +87,7 @@ Test(texture_loader, render_exits_with_status_2, .init = mk_tmp, .fini = rm_tmp)
     char path[512], cmd[2048], log[600];
     write_scene(bad[0].bsdf, NULL, path, sizeof path);
     snprintf(log, sizeof log, "%s/err.txt", tmpdir);
-    snprintf(cmd, sizeof cmd, "bin/render %s --spp 1 --quiet --out %s/x 2> %s", path, tmpdir, log);
+    snprintf(cmd, sizeof cmd, BIN_DIR "/render %s --spp 1 --quiet --out %s/x 2> %s", path, tmpdir, log);
     int st = system(cmd);
     cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2, "status %d", st);
     FILE *f = fopen(log, "rb");
