@@ -23,7 +23,7 @@ static uint64_t hash_texture(uint64_t h, const struct texture *t)
     return HA(t->rgb, 3 * (size_t)t->w * t->h);
 }
 
-static uint64_t hash_bsdf(uint64_t h, const struct bsdf *b)
+static uint64_t hash_bsdf(uint64_t h, const struct bsdf *all, const struct bsdf *b)
 {
     H(b->type);
     h = hash64(h, b->name, sizeof b->name);
@@ -39,7 +39,12 @@ static uint64_t hash_bsdf(uint64_t h, const struct bsdf *b)
     H(b->dist);
     H(b->roughness);
     H(b->thickness);
-    /* nested BSDFs */
+    /* nested BSDFs: which slots they nest (hashed only where present, as the textures) */
+    for (int i = 0; i < 2; i++)
+        if (b->child[i]) {
+            long slot = (long)(b->child[i] - all);
+            h = hash64(hash64(h, "c", 1), &slot, sizeof slot);
+        }
     H(b->alpha);
     H(b->ratio);
     h = hash_texture(h, b->ratio_tex);
@@ -68,6 +73,7 @@ static uint64_t hash_prim(uint64_t h, const struct prim *p)
     H(p->center);
     H(p->radius);
     H(p->sphere_axis);
+    if (p->cube_tangents) h = hash64(h, "t", 1); /* bump tangents from the cube's axes */
     h = hash_texture(h, p->env_tex);
     H(p->env_is_cap);
     H(p->cap_dir);
@@ -91,7 +97,7 @@ uint64_t ckpt_scene_hash(const struct scene *sc)
     }
     H(sc->two_sided_shading);
     H(sc->nbsdfs);
-    for (int i = 0; i < sc->nbsdfs; i++) h = hash_bsdf(h, &sc->bsdfs[i]);
+    for (int i = 0; i < sc->nbsdfs; i++) h = hash_bsdf(h, sc->bsdfs, &sc->bsdfs[i]);
     H(sc->nprims);
     for (int i = 0; i < sc->nprims; i++) h = hash_prim(h, &sc->prims[i]);
     return h;

@@ -9,10 +9,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#ifndef BIN_DIR
-#define BIN_DIR "bin"
+#ifndef CHECK_STATS_BIN
+#define CHECK_STATS_BIN "bin/check_stats"
 #endif
-#define CHECK_STATS_BIN BIN_DIR "/check_stats"
 #ifndef CMLT_BASELINE
 #define CMLT_BASELINE "results/baselines/table1-cmlt/stats-quick.csv"
 #endif
