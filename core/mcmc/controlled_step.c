@@ -47,20 +47,26 @@ static void bio_put(struct sampler *s, enum dim_kind kind, double u)
 static double bio_fresh(struct sampler *s) { return rng_uniform(((struct block_io *)s)->r); }
 static const struct sampler_ops bio_ops = {bio_next, bio_put, bio_fresh};
 
-/* A delta-only BSDF reaches w only by chance: the direction inverted is that of its lobe on w's side
- * of the surface (the lowest and the highest discrete number select its first and last lobe). */
+/* A delta-only BSDF reaches w only by chance: the direction inverted is that of its lobe nearest w
+ * on w's side of the surface. Its lobes are found by sampling with extreme numbers, low or high in
+ * each of the first three dimensions, which choose the lobe at each level of nesting: a
+ * transparency over a dielectric has two lobes on the far side (straight through and refracted),
+ * and all-low or all-high numbers reach only one of them. */
 static bool delta_lobe_dir(const struct bsdf_ctx *bc, vec3 wi, vec3 w, vec3 *out)
 {
-    double probe[2][SAMPLER_BLOCK] = {{0.0}, {0x1.fffffffffffffp-1}};
-    for (int j = 0; j < 2; j++) {
-        struct block_io in = {{&bio_ops, 0, 0, 0}, probe[j], 1, NULL};
+    int k = bc->b->dims < 3 ? bc->b->dims : 3;
+    double best = -2;
+    for (int m = 0; m < 1 << k; m++) {
+        double probe[SAMPLER_BLOCK];
+        for (int d = 0; d < SAMPLER_BLOCK; d++) probe[d] = (m >> (d < k ? d : k - 1)) & 1 ? 0x1.fffffffffffffp-1 : 0.0;
+        struct block_io in = {{&bio_ops, 0, 0, 0}, probe, 1, NULL};
         struct bsdf_sample bs;
-        if (bsdf_sample(bc, wi, &in.base, TRANSPORT_RADIANCE, &bs) && (bs.wo.z > 0) == (w.z > 0)) {
+        if (bsdf_sample(bc, wi, &in.base, TRANSPORT_RADIANCE, &bs) && (bs.wo.z > 0) == (w.z > 0) && vdot(bs.wo, w) > best) {
+            best = vdot(bs.wo, w);
             *out = bs.wo;
-            return true;
         }
     }
-    return false;
+    return best > -2;
 }
 
 /* The numbers (*n of them) with which vertex v, entered along v->wi, scatters toward world
