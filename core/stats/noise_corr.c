@@ -102,3 +102,17 @@ double error_blur_share(const struct image *a, const struct image *ref, double e
     /* per pixel: the blocks' squared means stand for k^2 pixels each */
     return all > 0 ? blurred * k * k / all : NAN;
 }
+
+double error_corr_length(const struct image *img, const struct image *ref)
+{
+    int maxlag = 32;
+    if (maxlag >= img->w) maxlag = img->w - 1;
+    if (maxlag >= img->h) maxlag = img->h - 1;
+    if (maxlag < 2) return NAN;
+    double *e = error_field(img, ref), rx[33], ry[33];
+    bool ok = corr_profiles(e, img->w, img->h, maxlag, rx, ry);
+    free(e);
+    if (!ok) return NAN;
+    double lx = corr_length_lag1(rx, maxlag + 1), ly = corr_length_lag1(ry, maxlag + 1);
+    return 0.5 * ((isnan(lx) ? 1 : lx) + (isnan(ly) ? 1 : ly));
+}

@@ -27,6 +27,13 @@ double corr_length_lag1(const double *rho, int n);
  * the chain's normalisation (one number for the whole image, which would correlate every pair of
  * pixels); w*h values, caller frees. */
 double *error_field(const struct image *img, const struct image *ref);
+/* How far the error of a render spreads (the splotchiness of Figs. 5.6 and 6.2-6.7): corr_length_lag1
+ * of the error field's x and y profiles (lags up to 32), averaged; 1 for white noise, about
+ * sqrt(1 + 4 s^2) for noise blurred by a Gaussian of standard deviation s. An axis whose lag-1
+ * correlation is not positive has no correlated part and counts as 1, the floor of the measure (a
+ * render dominated by isolated fireflies gives that). NAN only when the error is constant (an
+ * error-free render) or the image is under 3 pixels on a side. */
+double error_corr_length(const struct image *img, const struct image *ref);
 /* That scale, s = mean lum ref / mean lum img (1 when img is black). */
 double mean_lum_scale(const struct image *img, const struct image *ref);
 

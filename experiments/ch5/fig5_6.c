@@ -36,24 +36,6 @@ static struct image *reference(const struct scene *sc, const struct fig5_cfg *c,
     return ref;
 }
 
-/* How far the error of a render spreads: the lag (pixels) where the luminance error's
- * autocorrelation, normalised at lag 1, falls below 1/e (noise_corr.h), mean of the horizontal and
- * vertical lengths, lags up to 32; the statistic chapter 6 calls splotchiness. An axis whose lag-1
- * correlation is not positive has no correlated part: its length is 1, the floor of the measure
- * (a render dominated by isolated fireflies gives that). NAN only for an error-free render. */
-static double corr_length_px(const struct image *img, const struct image *ref)
-{
-    int maxlag = 32;
-    if (maxlag >= img->w) maxlag = img->w - 1;
-    if (maxlag >= img->h) maxlag = img->h - 1;
-    double *e = error_field(img, ref), rx[33], ry[33];
-    bool ok = maxlag >= 2 && corr_profiles(e, img->w, img->h, maxlag, rx, ry);
-    free(e);
-    if (!ok) return NAN;
-    double lx = corr_length_lag1(rx, maxlag + 1), ly = corr_length_lag1(ry, maxlag + 1);
-    return 0.5 * ((isnan(lx) ? 1 : lx) + (isnan(ly) ? 1 : ly));
-}
-
 /* Thesis §5.3 on Fig. 5.6: controlled small steps are not better (their relMSE is the larger) and
  * their noise is streaky and splotchy (the longer error correlation length, the larger share of the
  * error in 8 x 8 blobs). */
@@ -110,7 +92,7 @@ int main(int argc, char **argv)
             struct mlt_result r;
             fig5_run(sc, &c, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, c.fig.seed + (uint64_t)i, false, &r);
             x[i] = img_relmse(r.img, ref, 0.01);
-            x[c.seeds + i] = corr_length_px(r.img, ref);
+            x[c.seeds + i] = error_corr_length(r.img, ref);
             x[2 * c.seeds + i] = error_blur_share(r.img, ref, 0.01, 8);
             acc += cell_mean(&r.stats.total[PROPOSAL_SMALL]) / c.seeds;
             rate += r.mutations / r.seconds / c.seeds;

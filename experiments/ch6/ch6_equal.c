@@ -195,7 +195,7 @@ static void image_statistics(struct run *r, const struct image *im, const struct
     r->q[Q_TRIMMED] = ch6_trimmed_relmse(im, ref, eps, 0.001);
     r->q[Q_BLUR4] = error_blur_share(im, ref, eps, 4);
     r->q[Q_BLUR8] = error_blur_share(im, ref, eps, 8);
-    r->q[Q_CORRLEN] = ch6_corr_length(im, ref);
+    r->q[Q_CORRLEN] = error_corr_length(im, ref);
 }
 
 /* OUT/stats.csv: the statistics that do not depend on the machine's speed (at --spp budgets), one

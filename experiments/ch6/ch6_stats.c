@@ -92,16 +92,3 @@ double ch6_relmse_scaled(const struct image *a, const struct image *ref, double 
     return n ? sum / (double)n : NAN;
 }
 
-double ch6_corr_length(const struct image *a, const struct image *ref)
-{
-    int maxlag = 32;
-    if (maxlag >= a->w) maxlag = a->w - 1;
-    if (maxlag >= a->h) maxlag = a->h - 1;
-    if (maxlag < 2) return NAN;
-    double *e = error_field(a, ref), rx[33], ry[33];
-    bool ok = corr_profiles(e, a->w, a->h, maxlag, rx, ry);
-    free(e);
-    if (!ok) return NAN;
-    double lx = corr_length_lag1(rx, maxlag + 1), ly = corr_length_lag1(ry, maxlag + 1);
-    return isnan(lx) || isnan(ly) ? NAN : 0.5 * (lx + ly);
-}

@@ -27,10 +27,5 @@ double ch6_trimmed_relmse(const struct image *a, const struct image *ref, double
 /* relMSE of a scaled to ref's mean luminance (as stats/noise_corr.h's error_blur_share scales it) against ref: the error
  * without the normalisation's part, which scales the whole image by one number. */
 double ch6_relmse_scaled(const struct image *a, const struct image *ref, double eps);
-/* The error's correlation length in pixels: stats/noise_corr.h's corr_length_lag1 of the luminance
- * error field (after the same scaling), averaged over the x and y profiles; 1 for white noise,
- * about sqrt(1 + 4 s^2) for noise blurred by a Gaussian of standard deviation s; nan when the
- * error has no correlated part. */
-double ch6_corr_length(const struct image *a, const struct image *ref);
 
 #endif

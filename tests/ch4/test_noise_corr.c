@@ -118,3 +118,24 @@ Test(noise_corr, length_interpolates_between_lags)
     double neg[3] = {1, -0.1, 0};
     cr_assert(isnan(corr_length_lag1(neg, 3)));
 }
+
+/* error_corr_length, the splotch statistic of Figs. 5.6 and 6.2-6.7 (one definition for both
+ * chapters): error alternating in sign from column to column (lag-1 correlation -1 along x: no
+ * correlated part, so that axis counts as 1, not NAN) and varying slowly along y (a long length).
+ * The mean is then finite, 0.5 (1 + the y length); an error-free render gives NAN. */
+Test(noise_corr, an_axis_without_correlation_counts_as_one)
+{
+    const int w = 128, h = 128;
+    struct image *ref = img_create(w, h), *im = img_create(w, h);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            double e = (x & 1 ? -0.1 : 0.1) * (1 + 0.5 * sin(2 * M_PI * y / 64.0));
+            img_add(ref, x, y, (rgb){1, 1, 1});
+            img_add(im, x, y, (rgb){1 + e, 1 + e, 1 + e});
+        }
+    double l = error_corr_length(im, ref);
+    cr_expect(!isnan(l) && l > 3 && l <= 0.5 * (1 + 33), "length %g", l);
+    cr_expect(isnan(error_corr_length(ref, ref)), "an error-free render has a length");
+    img_destroy(im);
+    img_destroy(ref);
+}
