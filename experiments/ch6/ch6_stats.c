@@ -91,4 +91,3 @@ double ch6_relmse_scaled(const struct image *a, const struct image *ref, double 
     }
     return n ? sum / (double)n : NAN;
 }
-
