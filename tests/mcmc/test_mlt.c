@@ -442,9 +442,9 @@ Test(mlt, cpu_time_budget_does_the_same_work_under_load, .timeout = 120)
  * interval of s / sigma for 19 degrees of freedom, [0.60, 1.43] (sqrt(chi2_19 quantiles / 19); α =
  * 0.01 per method). Per length too for MMLT: the mean squared ratio over the lengths with b_k > 0
  * against chi2 of 8 x 19 degrees of freedom. Reporting half the error fails every check (ratios 1.73
- * and 2.11, per length 4.5). The same for MMLT with b_k from BDPT samples (--seed-bdpt: its lengths
- * share samples, so the total's error is taken sample by sample), whose mean b must also agree with
- * the pool's: Welch z over the 20 seeds of each, |z| < 2.58 (α = 0.01). */
+ * and 2.11, per length 4.5). The same for MMLT with b_k from BDPT samples (--seed-bdpt: one sample per
+ * seed path and length, on streams of their own, so the lengths' errors add as the pool's do), whose
+ * mean b must also agree with the pool's: Welch z over the 20 seeds of each, |z| < 2.58 (α = 0.01). */
 Test(stat_mlt, seed_pass_standard_error_predicts_the_spread_of_b)
 {
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
