@@ -46,12 +46,12 @@
 #   bench                wall-clock throughput (samples/s, rays/s, peak memory): nothing in it reproduces.
 #   table1_cmlt --bench  the same: steps per second only.
 #   fig4_6               its three renders are budgeted by wall time (--seconds; no count option), so
-#                        mmlt-large/mctls/hybrid.{exr,png} and the seconds, mutations and relmse
-#                        columns of fig4.6.csv are removed; recorded: its BDPT reference (sample
+#                        mmlt-large/mctls/hybrid.{exr,png}, fig4.6-runs.csv, claims.{csv,md} and
+#                        the seconds, mutations and relmse columns of fig4.6.csv are removed; recorded: its BDPT reference (sample
 #                        budgeted: reference.{exr,png}, results/reference/ajar-bdpt-4.exr), the
 #                        method column and the metadata of fig4.6.csv, the exit status.
-#   ch6_equal            budgets every render by wall time (--time) and has no count option; it is
-#                        run through --render with a wrapper that drops --time, and --render-args
+#   ch6_equal            budgets every render by CPU or wall time (--cpu-time, --time); it is
+#                        run through --render with a wrapper that drops both, and --render-args
 #                        gives the runs --spp 2, so every run (and the tool's statistics) is count
 #                        budgeted; only the timing columns above are removed. (The budgets, 0.5 and
 #                        1 "s", are then labels of identical runs.)
@@ -140,21 +140,23 @@ fig4_6_run() {
   # fig4_6 creates results/reference/ but not results/ (in a checkout results/ exists): as there
   mkdir -p results
   "$BIN/fig4_6" --scale quick --seconds 0.05 --reference-spp 4 --seed 1 --threads 2 --out out || rc=$?
-  rm -f out/mmlt-large.* out/mctls.* out/hybrid.*
+  # every file made from the wall-time renders: their images, the per-run table and the claims on them
+  rm -f out/mmlt-large.* out/mctls.* out/hybrid.* out/fig4.6-runs.csv out/claims.csv out/claims.md
   if [ -f out/fig4.6.csv ]; then
     awk -F, '/^#/ { print; next } { print $1 }' out/fig4.6.csv >out/fig4.6.csv.tmp && mv out/fig4.6.csv.tmp out/fig4.6.csv
   fi
   return $rc
 }
 
-# ch6_equal through a renderer that drops --time (the runs get --spp from --render-args).
+# ch6_equal through a renderer that drops --time and --cpu-time (ch6_equal's default budget; the runs get
+# --spp from --render-args).
 ch6_equal_run() {
   mkdir -p wrap
   cat >wrap/render <<EOF
 #!/usr/bin/env bash
 args=()
 while [ \$# -gt 0 ]; do
-  if [ "\$1" = --time ]; then shift 2; continue; fi
+  if [ "\$1" = --time ] || [ "\$1" = --cpu-time ]; then shift 2; continue; fi
   args+=("\$1"); shift
 done
 exec "$BIN/render" "\${args[@]}"
