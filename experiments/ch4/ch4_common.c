@@ -74,18 +74,6 @@ bool ch4_write_pair(const struct image *im, const char *dir, const char *name, c
     return img_write_exr_png(im, prefix, err, errlen);
 }
 
-void ch4_mean_se(const double *x, int n, double *mean, double *se)
-{
-    double m = 0, v = 0;
-    for (int i = 0; i < n; i++)
-        m += x[i];
-    m /= n;
-    for (int i = 0; i < n; i++)
-        v += (x[i] - m) * (x[i] - m);
-    *mean = m;
-    *se = n > 1 ? sqrt(v / (n - 1) / n) : NAN;
-}
-
 bool ch4_write_error_png(const double *e, int w, int h, double *range, const char *path, char *err, size_t errlen)
 {
     size_t n = (size_t)w * h;
@@ -126,6 +114,31 @@ double ch4_pixel_noise_var(const struct image *ref)
     return n ? s / n / 2 : 0;
 }
 
+bool ch4_write_texts(const char *prog, const char *dir, int n, const char *const *names, char **texts, char *err,
+                     size_t errlen)
+{
+    bool ok = true;
+    char path[4096];
+    for (int i = 0; i < n; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+        ok = ok && write_text_atomic(path, texts[i], err, errlen);
+        free(texts[i]);
+    }
+    if (!ok) return false;
+    fprintf(stderr, "%s: wrote", prog);
+    for (int i = 0; i < n; i++)
+        fprintf(stderr, "%s %s/%s", i ? "," : "", dir, names[i]);
+    fputc('\n', stderr);
+    return true;
+}
+
+bool ch4_show_claims(char *md)
+{
+    if (md) fputs(md, stderr);
+    free(md);
+    return md != NULL;
+}
+
 void ch4_meta_runs(FILE *f, uint64_t seed, int seeds, int threads)
 {
     csv_meta(f, "seeds", "%llu..%llu", (unsigned long long)seed, (unsigned long long)(seed + seeds - 1));
@@ -138,7 +151,7 @@ void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim,
     double mean[CH4_MAX_METHODS] = {0}, se[CH4_MAX_METHODS] = {0}, z[CH4_MAX_METHODS];
     if (n > CH4_MAX_METHODS) n = CH4_MAX_METHODS;
     for (int i = 0; i < n; i++)
-        ch4_mean_se(x + i * seeds, seeds, &mean[i], &se[i]);
+        mean_se(x + i * seeds, seeds, &mean[i], &se[i]);
     struct verdict v = verdict_extreme(mean, se, have, n, m, sign, seeds, z);
     char zs[512] = "", md[1024] = "";
     for (int i = 0; i < n; i++) {

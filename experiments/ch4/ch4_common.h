@@ -1,5 +1,6 @@
 /* What the chapter-4 figure tools (fig4_1, fig4_2, fig4_3) share: a Monte Carlo reference rendered
- * once and cached as EXR, a false-colour-free error image, mean and standard error over seeds. */
+ * once and cached as EXR, a false-colour-free error image, claims rows over seeds (mean and standard
+ * error: verdict.h's mean_se). */
 #ifndef CH4_COMMON_H
 #define CH4_COMMON_H
 
@@ -22,8 +23,6 @@ bool ch4_write_pair(const struct image *im, const char *dir, const char *name, c
 /* A grey PNG of an error field: 0.5 + e / (2 range), clamped (range = 3 standard deviations unless
  * given > 0); returns the range used. */
 bool ch4_write_error_png(const double *e, int w, int h, double *range, const char *path, char *err, size_t errlen);
-/* Mean and standard error of the mean of x[0..n-1] (se NAN when n < 2). */
-void ch4_mean_se(const double *x, int n, double *mean, double *se);
 /* Variance of a reference's pixel noise (luminance), from neighbouring-pixel differences:
  * mean((R(x+1,y) - R(x,y))^2) / 2, which the smooth image itself barely raises. */
 double ch4_pixel_noise_var(const struct image *ref);
@@ -35,6 +34,13 @@ double ch4_pixel_noise_var(const struct image *ref);
  * the verdict is verdict_extreme's over the seeds, the row lists every other method's mean and z. */
 void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim, const char *stat,
                        const char *const *names, const double *x, int n, const bool *have, int m, int sign, int seeds);
+/* Writes texts[i] to DIR/names[i] atomically, then frees the texts; on success says which files on
+ * stderr ("PROG: wrote ..."). False with a message at the first failure. */
+bool ch4_write_texts(const char *prog, const char *dir, int n, const char *const *names, char **texts, char *err,
+                     size_t errlen);
+/* A tool's claims table (claims_finish's Markdown) to stderr, freed; false when it is NULL (the
+ * message is then in the tool's err). */
+bool ch4_show_claims(char *md);
 /* mkdir -p for one or two levels; false with a message on failure. */
 bool ch4_mkdir(const char *dir, char *err, size_t errlen);
 
