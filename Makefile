@@ -280,7 +280,7 @@ endef
 # go to check.md. Further comparisons: each name N of CHECK_TARGET_ALSO compares the CSV
 # CHECK_TARGET_N_CSV (default TARGET.csv) with the options CHECK_TARGET_N into check-N.md; then all
 # comparisons run and any failure fails the check at the end; without CHECK_TARGET, check.md is
-# the others' verdicts, in the order of their names. Set the variables before the call.
+# the others' verdicts in alphabetical order of their names. Set the variables before the call.
 define CHECK
 .PHONY: check-$(1)
 check-$(1): deps $$(BIN)/$(2) $$(CHECK_STATS)
