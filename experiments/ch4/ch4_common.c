@@ -3,68 +3,57 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "common/csv_meta.h"
-#include <errno.h>
+#include "common/refcache.h"
+#include "scene/scene_hash.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
-bool ch4_mkdir(const char *dir, char *err, size_t errlen)
-{
-    char buf[4096];
-    snprintf(buf, sizeof buf, "%s", dir);
-    for (char *p = buf + 1; *p; p++) {
-        if (*p != '/') continue;
-        *p = 0;
-        mkdir(buf, 0777);
-        *p = '/';
-    }
-    if (mkdir(buf, 0777) && errno != EEXIST) {
-        snprintf(err, errlen, "%s: %s", dir, strerror(errno));
-        return false;
-    }
-    return true;
-}
+/* What ch4_reference's render needs (refcache_render_fn's ctx). */
+struct ref_job {
+    const struct scene *sc;
+    enum method method;
+    int spp, threads;
+    const char *prog;
+};
 
-struct image *ch4_reference(const struct scene *sc, enum method method, int spp, const char *path, int threads,
-                            const char *prog, char *err, size_t errlen)
+/* refcache_render_fn: the reference at a fixed seed, written to path atomically. */
+static struct image *render_reference(void *ctx, const char *path, char *err, size_t errlen)
 {
-    char msg[1024];
-    if (access(path, R_OK) == 0) {
-        struct image *ref = img_read(path, msg, sizeof msg);
-        if (ref && ref->w == sc->cam.width && ref->h == sc->cam.height) {
-            fprintf(stderr, "%s: using cached reference %s\n", prog, path);
-            return ref;
-        }
-        img_destroy(ref);
-    }
-    fprintf(stderr, "%s: rendering the %s reference (%d spp, %dx%d) into %s\n", prog, method_name(method), spp,
-            sc->cam.width, sc->cam.height, path);
-    struct render_opts o = {.method = method,
-                            .spp = spp,
+    const struct ref_job *j = ctx;
+    fprintf(stderr, "%s: rendering the %s reference (%d spp, %dx%d) into %s\n", j->prog, method_name(j->method),
+            j->spp, j->sc->cam.width, j->sc->cam.height, path);
+    struct render_opts o = {.method = j->method,
+                            .spp = j->spp,
                             .seed = 12345,
-                            .threads = threads,
-                            .max_length = sc->max_length,
+                            .threads = j->threads,
+                            .max_length = j->sc->max_length,
                             .progress = isatty(2)};
     struct render_stats st;
-    struct image *ref = render_mc(sc, &o, &st);
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (slash) {
-        *slash = 0;
-        if (!ch4_mkdir(dir, err, errlen)) {
-            img_destroy(ref);
-            return NULL;
-        }
-    }
+    struct image *ref = render_mc(j->sc, &o, &st);
     if (!img_write_exr(ref, 1, path, err, errlen)) {
         img_destroy(ref);
         return NULL;
     }
     return ref;
+}
+
+struct image *ch4_reference(const struct scene *sc, enum method method, int spp, const char *path, int threads,
+                            const char *prog, char *err, size_t errlen)
+{
+    char settings[256];
+    snprintf(settings, sizeof settings, "%s spp=%d seed=12345 max_length=%d resolution=%dx%d", method_name(method),
+             spp, sc->max_length, sc->cam.width, sc->cam.height);
+    struct refcache rc = {.path = path, .scene_hash = ckpt_scene_hash(sc), .settings = settings};
+    struct image *ref = refcache_load(&rc);
+    if (ref) {
+        fprintf(stderr, "%s: using cached reference %s\n", prog, path);
+        return ref;
+    }
+    struct ref_job j = {sc, method, spp, threads, prog};
+    return refcache_get(&rc, render_reference, &j, err, errlen);
 }
 
 bool ch4_write_pair(const struct image *im, const char *dir, const char *name, char *err, size_t errlen)

@@ -14,8 +14,9 @@
 /* The metadata lines "# seeds S..S+N-1" and "# threads T" (csv_meta.h). */
 void ch4_meta_runs(FILE *f, uint64_t seed, int seeds, int threads);
 
-/* Reads `path` when it holds an image of the scene camera's size; otherwise renders the scene
- * with `method` at `spp` (fixed seed 12345), writes it to `path` (atomically) and returns it. */
+/* The scene rendered with `method` at `spp` (fixed seed 12345), cached as `path` by
+ * common/refcache.h's rule: reused while the key beside it (the scene's content hash, the method,
+ * samples, seed, longest path and size) is the current one, else rendered again. */
 struct image *ch4_reference(const struct scene *sc, enum method method, int spp, const char *path, int threads,
                             const char *prog, char *err, size_t errlen);
 /* DIR/NAME.exr and DIR/NAME.png. */
@@ -41,7 +42,4 @@ bool ch4_write_texts(const char *prog, const char *dir, int n, const char *const
 /* A tool's claims table (claims_finish's Markdown) to stderr, freed; false when it is NULL (the
  * message is then in the tool's err). */
 bool ch4_show_claims(char *md);
-/* mkdir -p for one or two levels; false with a message on failure. */
-bool ch4_mkdir(const char *dir, char *err, size_t errlen);
-
 #endif

@@ -14,6 +14,7 @@
 #include "ch4/wall_noise.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "path/scene_ready.h"
 #include "stats/noise_corr.h"
@@ -219,9 +220,8 @@ int main(int argc, char **argv)
     char err[1024];
     t.sc = opts_figure_scene(&t.fo);
     camera_resize(&t.sc->cam, t.res[0], t.res[1]);
-    bool ok = ch4_mkdir(t.fo.out, err, sizeof err);
-    if (ok) t.ref = ch4_reference(t.sc, METHOD_PT, t.refspp, t.refpath, t.fo.threads, prog, err, sizeof err);
-    ok = ok && t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err);
+    t.ref = ch4_reference(t.sc, METHOD_PT, t.refspp, t.refpath, t.fo.threads, prog, err, sizeof err);
+    bool ok = t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err);
     if (ok) t.ref_var = ch4_pixel_noise_var(t.ref);
     ok = ok && run(&t, err, sizeof err) && write_tables(&t, err, sizeof err);
     ok = ok &&
@@ -231,9 +231,6 @@ int main(int argc, char **argv)
     free(t.evar), free(t.rx), free(t.ry);
     img_destroy(t.ref);
     scene_free(t.sc);
-    if (!ok) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
+    if (!ok) die(DIE_RUNTIME, prog, "%s", err);
     return 0;
 }

@@ -19,6 +19,7 @@
 #include "ch4/wall_noise.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "path/scene_ready.h"
 #include <math.h>
@@ -267,16 +268,13 @@ int main(int argc, char **argv)
     parse(&t, argc, argv);
     char err[1024];
     struct scene *sc = opts_figure_scene(&t.fo);
-    bool ok = ch4_mkdir(t.fo.out, err, sizeof err) && run_wall(&t, sc, err, sizeof err);
+    bool ok = run_wall(&t, sc, err, sizeof err);
     scene_free(sc);
     ok = ok && run_glossy(&t, err, sizeof err) && write_tables(&t, err, sizeof err);
     ok = ok && ch4_show_claims(claims(t.q, t.gacc, t.seeds, t.fo.out, t.fo.scale, err, sizeof err));
     free(t.gacc);
     for (int i = 0; i < NQ; i++)
         free(t.q[i]);
-    if (!ok) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
+    if (!ok) die(DIE_RUNTIME, prog, "%s", err);
     return 0;
 }

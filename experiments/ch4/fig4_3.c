@@ -14,6 +14,7 @@
 #include "ch4/ch4_common.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
@@ -202,9 +203,8 @@ int main(int argc, char **argv)
     snprintf(t.defref, sizeof t.defref, "results/reference/window-bdpt-%dx%d-%d.exr", t.sc->cam.width,
              t.sc->cam.height, t.refspp);
     if (!t.refpath) t.refpath = t.defref;
-    bool ok = ch4_mkdir(t.fo.out, err, sizeof err);
-    if (ok) t.ref = ch4_reference(t.sc, METHOD_BDPT, t.refspp, t.refpath, t.fo.threads, prog, err, sizeof err);
-    ok = ok && t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err);
+    t.ref = ch4_reference(t.sc, METHOD_BDPT, t.refspp, t.refpath, t.fo.threads, prog, err, sizeof err);
+    bool ok = t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err);
     size_t n = (size_t)NMETH * t.seeds;
     t.rel = xcalloc(n, sizeof *t.rel), t.acc = xcalloc(n, sizeof *t.acc), t.sec = xcalloc(n, sizeof *t.sec);
     for (int m = 0; m < NMETH && ok; m++)
@@ -218,9 +218,6 @@ int main(int argc, char **argv)
     free(t.rel), free(t.acc), free(t.sec);
     img_destroy(t.ref);
     scene_free(t.sc);
-    if (!ok) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
+    if (!ok) die(DIE_RUNTIME, prog, "%s", err);
     return 0;
 }

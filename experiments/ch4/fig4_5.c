@@ -21,6 +21,7 @@
 #include "ch4/fig4_5_trials.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
@@ -303,7 +304,7 @@ static bool run_trials(const struct opts_accept *a, const struct scene *sc, stru
     long trial_pairs = 4 * (a->mutations / K);
     fprintf(stderr, "fig4.5: %ld independent pairs of subpaths per length\n", trial_pairs);
     if (!fig45_trials(sc, K, trial_pairs, a->fig.seed, a->fig.threads, isatty(2), tr)) {
-        snprintf(err, errlen, "fig4_5: %ld mutations over %d lengths leave too few trials", a->mutations, K);
+        snprintf(err, errlen, "%ld mutations over %d lengths leave too few trials", a->mutations, K);
         return false;
     }
     char *buf = NULL;
@@ -332,9 +333,6 @@ int main(int argc, char **argv)
     ok = ok && ch4_show_claims(claims(&tab, tr, a.fig.out, a.fig.scale, err, sizeof err));
     free(tr);
     scene_free(sc);
-    if (!ok) {
-        fprintf(stderr, "%s\n", err);
-        return 1;
-    }
+    if (!ok) die(DIE_RUNTIME, "fig4_5", "%s", err);
     return 0;
 }

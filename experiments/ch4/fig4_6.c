@@ -13,6 +13,7 @@
 #include "ch4/ch4_common.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
@@ -244,14 +245,13 @@ int main(int argc, char **argv)
     parse(&t, argc, argv);
     char err[1024];
     t.sc = opts_figure_scene(&t.fo);
-    bool ok = ch4_mkdir(t.fo.out, err, sizeof err);
-    if (ok) t.ref = ch4_reference(t.sc, METHOD_BDPT, t.refspp, t.refpath, t.fo.threads, "fig4_6", err, sizeof err);
-    ok = ok && t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err) && run(&t, err, sizeof err);
+    t.ref = ch4_reference(t.sc, METHOD_BDPT, t.refspp, t.refpath, t.fo.threads, "fig4_6", err, sizeof err);
+    bool ok = t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err) && run(&t, err, sizeof err);
     if (ok) analyse(&t);
     ok = ok && write_tables(&t, err, sizeof err);
     ok = ok && ch4_show_claims(claims(&t, err, sizeof err));
     img_destroy(t.ref);
     scene_free(t.sc);
-    if (!ok) fprintf(stderr, "%s\n", err);
-    return ok ? 0 : 1;
+    if (!ok) die(DIE_RUNTIME, "fig4_6", "%s", err);
+    return 0;
 }

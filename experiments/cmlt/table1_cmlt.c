@@ -13,6 +13,7 @@
 #include "cmlt/cmlt_scene.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
+#include "common/outdir.h"
 #include "io/image.h"
 #include <errno.h>
 #include <math.h>
@@ -133,22 +134,6 @@ static void write_text(const char *path, struct text *t)
         fprintf(stderr, "table1_cmlt: %s\n", err);
         exit(1);
     }
-}
-
-static void mkdirs(const char *dir)
-{
-    char *p = xstrdup(dir);
-    for (char *s = p + 1; *s; s++)
-        if (*s == '/') {
-            *s = 0;
-            mkdir(p, 0777);
-            *s = '/';
-        }
-    if (mkdir(p, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "table1_cmlt: cannot create %s: %s\n", p, strerror(errno));
-        exit(1);
-    }
-    free(p);
 }
 
 static double now(void)
@@ -543,7 +528,7 @@ int main(int argc, char **argv)
         return 0;
     }
     signal(SIGINT, on_sigint);
-    mkdirs(o.out);
+    outdir_require("table1_cmlt", o.out);
     opts_require_image_output("table1_cmlt");
     double t_start = now();
     struct cmlt_ref_result rr;
