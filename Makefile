@@ -258,29 +258,46 @@ TO_FILE = bash scripts/to-file.sh make $(1) $(2)
 # that a failure removes (scripts/plot.sh).
 GNUPLOT = bash scripts/plot.sh $(1) $(2) $(3)
 
-# $(call FIGURE,TARGET,TOOL): `make TARGET` runs bin/TOOL into results/TARGET/ (the tools write
-# every file atomically), then the lines of TARGET_POST (plots, montages), then the Markdown
-# table that the command TARGET_TABLE prints, into results/TARGET/TARGET.md.
+# $(call FIGURE,TARGET,TOOL[,ARGS]): `make TARGET` runs bin/TOOL (with the options ARGS) into
+# results/TARGET/ (the tools write every file atomically; the scale comes from SCALE, which the
+# tools read), then the lines of TARGET_POST (plots, montages), then, when TARGET_TABLE is set, the
+# Markdown table that command prints, into results/TARGET/TARGET.md. Set the variables before the call.
 define FIGURE
 .PHONY: $(1)
 $(1): deps $$(BIN)/$(2)
-	$$(BIN)/$(2) --out results/$(1)
+	$$(BIN)/$(2) --out results/$(1)$(if $(3), $(3))
 	$$($(1)_POST)
+ifneq ($($(1)_TABLE),)
 	$$(call TO_FILE,results/$(1)/$(1).md,$$($(1)_TABLE))
 	@cat results/$(1)/$(1).md
+endif
 endef
 
-# $(call CHECK,TARGET,TOOL,SEED): `make check-TARGET` reruns the quick experiment with its own seed
-# and tests every statistic of its CSV results/check-TARGET/TARGET.csv against the baseline
-# results/baselines/TARGET/TARGET.csv with bin/check_stats and the options CHECK_TARGET (key,
-# mean, standard error, count and alpha: check_stats --help); the verdicts go to check.md.
+# $(call CHECK,TARGET,TOOL,SEED[,ARGS]): `make check-TARGET` reruns the quick experiment with its own
+# seed (and the tool options ARGS) into results/check-TARGET/ and tests every statistic of its CSV
+# TARGET.csv against the baseline results/baselines/TARGET/TARGET.csv with bin/check_stats and the
+# options CHECK_TARGET (key, mean, standard error, count and alpha: check_stats --help); the verdicts
+# go to check.md. Further comparisons: each name N of CHECK_TARGET_ALSO compares the CSV
+# CHECK_TARGET_N_CSV (default TARGET.csv) with the options CHECK_TARGET_N into check-N.md; then all
+# comparisons run and any failure fails the check at the end; without CHECK_TARGET, check.md is
+# the others' verdicts in alphabetical order of their names. Set the variables before the call.
 define CHECK
 .PHONY: check-$(1)
 check-$(1): deps $$(BIN)/$(2) $$(CHECK_STATS)
-	$$(BIN)/$(2) --scale quick --seed $(3) --out results/check-$(1)
-	$$(CHECK_STATS) $$(CHECK_$(1)) --out results/check-$(1)/check.md results/baselines/$(1)/$(1).csv results/check-$(1)/$(1).csv
+	$$(BIN)/$(2) --scale quick --seed $(3) --out results/check-$(1)$(if $(4), $(4))
+ifeq ($(CHECK_$(1)_ALSO),)
+	$$(call CHECK_CMP,$(1),$$(CHECK_$(1)),check.md,$(1).csv)
+else
+	status=0; $$(strip $$(call CHECK_CMPS,$(1))) exit $$$$status
+endif
 CHECK_TARGETS += check-$(1)
 endef
+# $(call CHECK_CMP,TARGET,OPTIONS,VERDICTS,CSV): one comparison of CHECK.
+CHECK_CMP = $(CHECK_STATS) $(2) --out results/check-$(1)/$(3) results/baselines/$(1)/$(4) results/check-$(1)/$(4)
+# Every comparison of TARGET for one shell line, each followed by `|| status=1;`.
+CHECK_CMPS = $(if $(CHECK_$(1)),$(call CHECK_CMP,$(1),$(CHECK_$(1)),check.md,$(1).csv) || status=1;) \
+  $(foreach n,$(CHECK_$(1)_ALSO),$(call CHECK_CMP,$(1),$(CHECK_$(1)_$(n)),check-$(n).md,$(or $(CHECK_$(1)_$(n)_CSV),$(1).csv)) || status=1;) \
+  $(if $(CHECK_$(1)),,cat $(foreach n,$(sort $(CHECK_$(1)_ALSO)),results/check-$(1)/check-$(n).md) > results/check-$(1)/check.md;)
 
 # Experiments in subfolders add their figure, check and bench rules here.
 -include experiments/*/*.mk

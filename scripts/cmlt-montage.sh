@@ -6,7 +6,7 @@
 set -euo pipefail
 dir=${1:?usage: cmlt-montage.sh DIR}
 [ -f "$dir/table1.csv" ] || { echo "cmlt-montage: $dir/table1.csv not found" >&2; exit 2; }
-n=$(awk -F, '!/^#/ && NR>1 && $2+0 > m {m = $2+0} END {print m}' "$dir/table1.csv")
+n=$(awk -F, "$(cat "$(dirname "$0")/csv-col.awk")"'!/^#/ && get("n") + 0 > m { m = get("n") + 0 } END { print m }' "$dir/table1.csv")
 if (( n % 1000000 == 0 )); then label="$((n / 1000000))M"; elif (( n % 1000 == 0 )); then label="$((n / 1000))k"; else label=$n; fi
 font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 tile() { # image, caption -> a 256x256 tile with the caption on it, as oiiotool arguments

@@ -3,12 +3,13 @@
 # lengths of the error, their ratio, the lag-1 autocorrelations, relMSE and small-step acceptance,
 # each mean ± standard error over seeds; then the thesis's claim. usage: fig4.1-table.sh CSV > MD
 set -euo pipefail
-awk -F, '
+cols=$(cat "$(dirname "$0")/csv-col.awk")
+awk -F, "$cols"'
 /^# resolution/ { res = $0; sub(/^# resolution /, "", res) }
 /^# mutations_per_pixel/ { mpp = $0; sub(/^# mutations_per_pixel /, "", mpp) }
 /^# p_large/ { pl = $0; sub(/^# p_large /, "", pl) }
-/^#/ || $1 == "variant" { next }
-{ m[$1, $2] = $4; s[$1, $2] = $5; n = $3 }
+/^#/ { next }
+{ v = get("variant"); q = get("quantity"); m[v, q] = get("mean"); s[v, q] = get("se"); n = get("seeds") }
 function f(v, q, d) { return sprintf("%." d "f ± %." d "f", m[v, q], s[v, q]) }
 END {
     printf "PSSMLT on `scenes/wall` at %s, %s mutations per pixel, p_large = %s, %d seeds (mean ± standard error).\n\n", res, mpp, pl, n

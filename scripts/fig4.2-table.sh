@@ -4,12 +4,13 @@
 # acceptance (mean ± standard error over seeds); the glossy-to-glossy scene's small-step acceptance
 # per resolution without and with --rap-resolution; then the thesis's claim. usage: fig4.2-table.sh CSV
 set -euo pipefail
-awk -F, '
+cols=$(cat "$(dirname "$0")/csv-col.awk")
+awk -F, "$cols"'
 /^# mutations_per_pixel/ { mpp = $0; sub(/^# mutations_per_pixel /, "", mpp) }
 /^# p_large/ { pl = $0; sub(/^# p_large /, "", pl) }
 /^# glossy/ { gl = $0; sub(/^# glossy /, "", gl) }
-/^#/ || $1 == "config" { next }
-{ m[$1, $3] = $5; s[$1, $3] = $6; r[$1] = $2; n = $4 }
+/^#/ { next }
+{ c = get("config"); q = get("quantity"); m[c, q] = get("mean"); s[c, q] = get("se"); r[c] = get("resolution"); n = get("seeds") }
 function f(c, q, d) { return sprintf("%." d "f ± %." d "f", m[c, q], s[c, q]) }
 END {
     printf "PSSMLT on `scenes/wall`, square images, %s mutations per pixel, p_large = %s, %d seeds (mean ± standard error).\n\n", mpp, pl, n

@@ -3,15 +3,16 @@
 # acceptance per method (mean ± standard error over seeds), the mean wall-clock seconds per run from
 # the runs CSV, then the thesis's claim. usage: fig4.3-table.sh CSV RUNS.csv > TABLE.md
 set -euo pipefail
-awk -F, '
+cols=$(cat "$(dirname "$0")/csv-col.awk")
+awk -F, "$cols"'
 FNR == 1 { file++ }
-file == 2 { if ($1 !~ /^#/ && $1 != "method") { sec[$1] += $5; nsec[$1]++ } next }
+file == 2 { if (!/^#/) { sec[get("method")] += get("seconds"); nsec[get("method")]++ } next }
 /^# resolution/ { res = $0; sub(/^# resolution /, "", res) }
 /^# spp/ { spp = $0; sub(/^# spp /, "", spp) }
 /^# p_large/ { pl = $0; sub(/^# p_large /, "", pl) }
 /^# reference/ { ref = $0; sub(/^# reference /, "", ref) }
-/^#/ || $1 == "method" { next }
-{ m[$1, $2] = $4; s[$1, $2] = $5; n = $3 }
+/^#/ { next }
+{ v = get("method"); q = get("quantity"); m[v, q] = get("mean"); s[v, q] = get("se"); n = get("seeds") }
 END {
     printf "`scenes/window` at %s, %s samples (mutations) per pixel, PSSMLT p_large = %s, %d seeds (mean ± standard error); reference %s.\n\n", res, spp, pl, n, ref
     print "| method | relMSE | relMSE / PSSMLT | small-step acceptance | seconds per run |"

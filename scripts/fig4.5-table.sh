@@ -7,11 +7,12 @@
 # of their ratio.
 # usage: fig4.5-table.sh CSV [RATIOS [TRIALS]] > TABLE.md
 set -euo pipefail
-awk -F, '
-/^#/ || $1 == "method" || $1 == "ratio" || $1 == "length" { next }
-ARGC > 3 && FILENAME == ARGV[3] { tv[$1 + 0, $2] = $3; ts[$1 + 0, $2] = $4; tr = 1; next }
-FILENAME != ARGV[1] { if ($1 == "contributing-techniques") { ct[$2 + 0] = $3; cts[$2 + 0] = $4 }; next }
-{ key = $2 + 0; m[$1, key] = $4; s[$1, key] = $5; if (key > K) K = key }
+cols=$(cat "$(dirname "$0")/csv-col.awk")
+awk -F, "$cols"'
+/^#/ { next }
+ARGC > 3 && FILENAME == ARGV[3] { len = get("length") + 0; st = get("statistic"); tv[len, st] = get("value"); ts[len, st] = get("se"); tr = 1; next }
+FILENAME != ARGV[1] { if (get("ratio") == "contributing-techniques") { len = get("length") + 0; ct[len] = get("value"); cts[len] = get("se") }; next }
+{ key = get("length") + 0; meth = get("method"); m[meth, key] = get("mean_accept"); s[meth, key] = get("stderr"); if (key > K) K = key }
 END {
     print "| length | MMLT large steps | MCTLS | MCTLS / MMLT |"
     print "| ---: | ---: | ---: | ---: |"

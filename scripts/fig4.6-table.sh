@@ -2,9 +2,11 @@
 # Markdown table of results/fig4.6/fig4.6.csv (mean ± standard error over seeds per method).
 # usage: fig4.6-table.sh CSV > TABLE.md
 set -euo pipefail
-awk -F, '
-/^#/ || $1 == "method" { next }
-{ n++; for (i = 1; i <= NF; i++) c[n, i] = $i }
+cols=$(cat "$(dirname "$0")/csv-col.awk")
+awk -F, "$cols"'
+/^#/ { next }
+{ n++; for (i = 1; i <= q; i++) c[n, i] = get(name[i]) }
+BEGIN { q = split("method seeds relmse relmse_se us_per_proposal us_per_proposal_se cost_vs_mmlt rays_per_proposal acceptance acceptance_se", name, " ") }
 END {
     print "| method (equal CPU time) | seeds | relMSE | CPU µs per proposal | cost vs MMLT large steps | rays per proposal | acceptance |"
     print "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"

@@ -3,11 +3,12 @@
 # results/fig5.6/fig5.6.csv (kind,relmse,stderr,seeds,accept_small,mutations_per_second,corrlen,corrlen_se,
 # blur8,blur8_se). usage: fig5-table.sh CSV > TABLE.md
 set -euo pipefail
-awk -F, '
+cols=$(cat "$(dirname "$0")/csv-col.awk")
+awk -F, "$cols"'
 /^#/ { next }
-$1 == "kind" { fig = ($2 == "region") ? 5 : 6; next }
-fig == 5 { m[$1, $2] = $3; s[$1, $2] = $4; n = $5 }
-fig == 6 { printf "%s| %s | %.5f ± %.5f | %.2f ± %.2f | %.3f ± %.3f | %.3f | %.0f |\n", (rows++ ? "" : "| small step | relMSE (± s.e. over " $4 " seeds) | error correlation length (px) | error share in 8×8 blobs | small-step acceptance | mutations/s |\n| --- | ---: | ---: | ---: | ---: | ---: |\n"), $1, $2, $3, $7, $8, $9, $10, $5, $6 }
+{ fig = ("region" in col) ? 5 : 6 }
+fig == 5 { kind = get("kind"); region = get("region"); m[kind, region] = get("mean"); s[kind, region] = get("stderr"); n = get("seeds") }
+fig == 6 { printf "%s| %s | %.5f ± %.5f | %.2f ± %.2f | %.3f ± %.3f | %.3f | %.0f |\n", (rows++ ? "" : "| small step | relMSE (± s.e. over " get("seeds") " seeds) | error correlation length (px) | error share in 8×8 blobs | small-step acceptance | mutations/s |\n| --- | ---: | ---: | ---: | ---: | ---: |\n"), get("kind"), get("relmse"), get("stderr"), get("corrlen"), get("corrlen_se"), get("blur8"), get("blur8_se"), get("accept_small"), get("mutations_per_second") }
 END {
     if (fig != 5) exit
     print "| small step | mean Δψ (rad), all pixels | within 2 px of an edge | elsewhere | edge / elsewhere |"

@@ -3,9 +3,10 @@
 # standard error) of small steps that keep and that change the technique, MMLT and PITP, and the
 # ratio changes / keeps for each. usage: fig6.1-table.sh CSV > TABLE.md
 set -euo pipefail
-awk -F, '
-/^#/ || $1 == "method" { next }
-{ key = $2 + 0; m[$1, key, $3] = $5; s[$1, key, $3] = $6; if (key > K) K = key }
+cols=$(cat "$(dirname "$0")/csv-col.awk")
+awk -F, "$cols"'
+/^#/ { next }
+{ key = get("length") + 0; v = get("method"); t = get("technique_changed"); m[v, key, t] = get("mean_accept"); s[v, key, t] = get("stderr"); if (key > K) K = key }
 function cell(meth, k, c) { return ((meth, k, c) in m) ? sprintf("%.4f ± %.4f", m[meth, k, c], s[meth, k, c]) : "–" }
 function ratio(meth, k) { return (((meth, k, "yes") in m) && ((meth, k, "no") in m) && m[meth, k, "no"] > 0) ? sprintf("%.2f", m[meth, k, "yes"] / m[meth, k, "no"]) : "–" }
 END {

@@ -62,17 +62,14 @@ $(eval $(call FIGURE,fig4.5,fig4_5))
 # alpha = 0.01; then, the same way, every (ratio, length) row of fig4.5-ratios.csv, which holds the
 # claims' shares of proposals with light (binomial errors) that fig4.5.csv does not, and every
 # (length, statistic) row of fig4.5-trials.csv (the prediction from independent trials and its
-# factors, jackknife errors). Written out rather than through CHECK for those comparisons.
+# factors, jackknife errors).
 CHECK_fig4.5 := --key method,length --mean mean_accept --se stderr --alpha 0.01
-.PHONY: check-fig4.5
-check-fig4.5: deps $(BIN)/fig4_5 $(CHECK_STATS)
-	$(BIN)/fig4_5 --scale quick --seed 2 --out results/check-fig4.5
-	$(CHECK_STATS) $(CHECK_fig4.5) --out results/check-fig4.5/check.md results/baselines/fig4.5/fig4.5.csv results/check-fig4.5/fig4.5.csv
-	$(CHECK_STATS) --key ratio,length --mean value --se se --alpha 0.01 --out results/check-fig4.5/check-ratios.md \
-	  results/baselines/fig4.5/fig4.5-ratios.csv results/check-fig4.5/fig4.5-ratios.csv
-	$(CHECK_STATS) --key length,statistic --mean value --se se --alpha 0.01 --out results/check-fig4.5/check-trials.md \
-	  results/baselines/fig4.5/fig4.5-trials.csv results/check-fig4.5/fig4.5-trials.csv
-CHECK_TARGETS += check-fig4.5
+CHECK_fig4.5_ALSO := ratios trials
+CHECK_fig4.5_ratios := --key ratio,length --mean value --se se --alpha 0.01
+CHECK_fig4.5_ratios_CSV := fig4.5-ratios.csv
+CHECK_fig4.5_trials := --key length,statistic --mean value --se se --alpha 0.01
+CHECK_fig4.5_trials_CSV := fig4.5-trials.csv
+$(eval $(call CHECK,fig4.5,fig4_5,2))
 
 # Thesis Figure 4.6: equal-time renders, MMLT large steps vs MCTLS vs the hybrid, relMSE vs BDPT.
 define fig4.6_POST
@@ -86,12 +83,7 @@ $(eval $(call FIGURE,fig4.6,fig4_6))
 # At a fixed 400 000 proposals per run instead of a time budget (nothing depends on the machine),
 # 8 seeds (101-108; the baseline's 1-8): relMSE and the large steps' mean acceptance per method,
 # Welch t over the seeds, Sidak alpha = 0.01 over the three methods of each.
-FIG46_CHECK := --scale quick --mutations 400000 --seeds 8
-.PHONY: check-fig4.6
-check-fig4.6: deps $(BIN)/fig4_6 $(CHECK_STATS)
-	$(BIN)/fig4_6 $(FIG46_CHECK) --seed 101 --out results/check-fig4.6 2>/dev/null
-	$(CHECK_STATS) --key method --mean relmse --se relmse_se --count seeds --alpha 0.01 --out results/check-fig4.6/check.md \
-	  results/baselines/fig4.6/fig4.6.csv results/check-fig4.6/fig4.6.csv
-	$(CHECK_STATS) --key method --mean acceptance --se acceptance_se --count seeds --alpha 0.01 \
-	  --out results/check-fig4.6/check-acceptance.md results/baselines/fig4.6/fig4.6.csv results/check-fig4.6/fig4.6.csv
-CHECK_TARGETS += check-fig4.6
+CHECK_fig4.6 := --key method --mean relmse --se relmse_se --count seeds --alpha 0.01
+CHECK_fig4.6_ALSO := acceptance
+CHECK_fig4.6_acceptance := --key method --mean acceptance --se acceptance_se --count seeds --alpha 0.01
+$(eval $(call CHECK,fig4.6,fig4_6,101,--mutations 400000 --seeds 8 2>/dev/null))

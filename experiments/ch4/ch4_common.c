@@ -3,63 +3,36 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "common/csv_meta.h"
-#include <errno.h>
+#include "common/refcache.h"
+#include "scene/scene_hash.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
-bool ch4_mkdir(const char *dir, char *err, size_t errlen)
-{
-    char buf[4096];
-    snprintf(buf, sizeof buf, "%s", dir);
-    for (char *p = buf + 1; *p; p++) {
-        if (*p != '/') continue;
-        *p = 0;
-        mkdir(buf, 0777);
-        *p = '/';
-    }
-    if (mkdir(buf, 0777) && errno != EEXIST) {
-        snprintf(err, errlen, "%s: %s", dir, strerror(errno));
-        return false;
-    }
-    return true;
-}
+/* What ch4_reference's render needs (refcache_render_fn's ctx). */
+struct ref_job {
+    const struct scene *sc;
+    enum method method;
+    int spp, threads;
+    const char *prog;
+};
 
-struct image *ch4_reference(const struct scene *sc, enum method method, int spp, const char *path, int threads,
-                            const char *prog, char *err, size_t errlen)
+/* refcache_render_fn: the reference at a fixed seed, written to path atomically. */
+static struct image *render_reference(void *ctx, const char *path, char *err, size_t errlen)
 {
-    char msg[1024];
-    if (access(path, R_OK) == 0) {
-        struct image *ref = img_read(path, msg, sizeof msg);
-        if (ref && ref->w == sc->cam.width && ref->h == sc->cam.height) {
-            fprintf(stderr, "%s: using cached reference %s\n", prog, path);
-            return ref;
-        }
-        img_destroy(ref);
-    }
-    fprintf(stderr, "%s: rendering the %s reference (%d spp, %dx%d) into %s\n", prog, method_name(method), spp,
-            sc->cam.width, sc->cam.height, path);
-    struct render_opts o = {.method = method,
-                            .spp = spp,
+    const struct ref_job *j = ctx;
+    fprintf(stderr, "%s: rendering the %s reference (%d spp, %dx%d) into %s\n", j->prog, method_name(j->method),
+            j->spp, j->sc->cam.width, j->sc->cam.height, path);
+    struct render_opts o = {.method = j->method,
+                            .spp = j->spp,
                             .seed = 12345,
-                            .threads = threads,
-                            .max_length = sc->max_length,
+                            .threads = j->threads,
+                            .max_length = j->sc->max_length,
                             .progress = isatty(2)};
     struct render_stats st;
-    struct image *ref = render_mc(sc, &o, &st);
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (slash) {
-        *slash = 0;
-        if (!ch4_mkdir(dir, err, errlen)) {
-            img_destroy(ref);
-            return NULL;
-        }
-    }
+    struct image *ref = render_mc(j->sc, &o, &st);
     if (!img_write_exr(ref, 1, path, err, errlen)) {
         img_destroy(ref);
         return NULL;
@@ -67,23 +40,27 @@ struct image *ch4_reference(const struct scene *sc, enum method method, int spp,
     return ref;
 }
 
+struct image *ch4_reference(const struct scene *sc, enum method method, int spp, const char *path, int threads,
+                            const char *prog, char *err, size_t errlen)
+{
+    char settings[256];
+    snprintf(settings, sizeof settings, "%s spp=%d seed=12345 max_length=%d resolution=%dx%d", method_name(method),
+             spp, sc->max_length, sc->cam.width, sc->cam.height);
+    struct refcache rc = {.path = path, .scene_hash = ckpt_scene_hash(sc), .settings = settings};
+    struct image *ref = refcache_load(&rc);
+    if (ref) {
+        fprintf(stderr, "%s: using cached reference %s\n", prog, path);
+        return ref;
+    }
+    struct ref_job j = {sc, method, spp, threads, prog};
+    return refcache_get(&rc, render_reference, &j, err, errlen);
+}
+
 bool ch4_write_pair(const struct image *im, const char *dir, const char *name, char *err, size_t errlen)
 {
     char prefix[4096];
     snprintf(prefix, sizeof prefix, "%s/%s", dir, name);
     return img_write_exr_png(im, prefix, err, errlen);
-}
-
-void ch4_mean_se(const double *x, int n, double *mean, double *se)
-{
-    double m = 0, v = 0;
-    for (int i = 0; i < n; i++)
-        m += x[i];
-    m /= n;
-    for (int i = 0; i < n; i++)
-        v += (x[i] - m) * (x[i] - m);
-    *mean = m;
-    *se = n > 1 ? sqrt(v / (n - 1) / n) : NAN;
 }
 
 bool ch4_write_error_png(const double *e, int w, int h, double *range, const char *path, char *err, size_t errlen)
@@ -126,6 +103,31 @@ double ch4_pixel_noise_var(const struct image *ref)
     return n ? s / n / 2 : 0;
 }
 
+bool ch4_write_texts(const char *prog, const char *dir, int n, const char *const *names, char **texts, char *err,
+                     size_t errlen)
+{
+    bool ok = true;
+    char path[4096];
+    for (int i = 0; i < n; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+        ok = ok && write_text_atomic(path, texts[i], err, errlen);
+        free(texts[i]);
+    }
+    if (!ok) return false;
+    fprintf(stderr, "%s: wrote", prog);
+    for (int i = 0; i < n; i++)
+        fprintf(stderr, "%s %s/%s", i ? "," : "", dir, names[i]);
+    fputc('\n', stderr);
+    return true;
+}
+
+bool ch4_show_claims(char *md)
+{
+    if (md) fputs(md, stderr);
+    free(md);
+    return md != NULL;
+}
+
 void ch4_meta_runs(FILE *f, uint64_t seed, int seeds, int threads)
 {
     csv_meta(f, "seeds", "%llu..%llu", (unsigned long long)seed, (unsigned long long)(seed + seeds - 1));
@@ -138,7 +140,7 @@ void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim,
     double mean[CH4_MAX_METHODS] = {0}, se[CH4_MAX_METHODS] = {0}, z[CH4_MAX_METHODS];
     if (n > CH4_MAX_METHODS) n = CH4_MAX_METHODS;
     for (int i = 0; i < n; i++)
-        ch4_mean_se(x + i * seeds, seeds, &mean[i], &se[i]);
+        mean_se(x + i * seeds, seeds, &mean[i], &se[i]);
     struct verdict v = verdict_extreme(mean, se, have, n, m, sign, seeds, z);
     char zs[512] = "", md[1024] = "";
     for (int i = 0; i < n; i++) {

@@ -1,5 +1,6 @@
 /* What the chapter-4 figure tools (fig4_1, fig4_2, fig4_3) share: a Monte Carlo reference rendered
- * once and cached as EXR, a false-colour-free error image, mean and standard error over seeds. */
+ * once and cached as EXR, a false-colour-free error image, claims rows over seeds (mean and standard
+ * error: verdict.h's mean_se). */
 #ifndef CH4_COMMON_H
 #define CH4_COMMON_H
 
@@ -13,8 +14,9 @@
 /* The metadata lines "# seeds S..S+N-1" and "# threads T" (csv_meta.h). */
 void ch4_meta_runs(FILE *f, uint64_t seed, int seeds, int threads);
 
-/* Reads `path` when it holds an image of the scene camera's size; otherwise renders the scene
- * with `method` at `spp` (fixed seed 12345), writes it to `path` (atomically) and returns it. */
+/* The scene rendered with `method` at `spp` (fixed seed 12345), cached as `path` by
+ * common/refcache.h's rule: reused while the key beside it (the scene's content hash, the method,
+ * samples, seed, longest path and size) is the current one, else rendered again. */
 struct image *ch4_reference(const struct scene *sc, enum method method, int spp, const char *path, int threads,
                             const char *prog, char *err, size_t errlen);
 /* DIR/NAME.exr and DIR/NAME.png. */
@@ -22,8 +24,6 @@ bool ch4_write_pair(const struct image *im, const char *dir, const char *name, c
 /* A grey PNG of an error field: 0.5 + e / (2 range), clamped (range = 3 standard deviations unless
  * given > 0); returns the range used. */
 bool ch4_write_error_png(const double *e, int w, int h, double *range, const char *path, char *err, size_t errlen);
-/* Mean and standard error of the mean of x[0..n-1] (se NAN when n < 2). */
-void ch4_mean_se(const double *x, int n, double *mean, double *se);
 /* Variance of a reference's pixel noise (luminance), from neighbouring-pixel differences:
  * mean((R(x+1,y) - R(x,y))^2) / 2, which the smooth image itself barely raises. */
 double ch4_pixel_noise_var(const struct image *ref);
@@ -35,7 +35,11 @@ double ch4_pixel_noise_var(const struct image *ref);
  * the verdict is verdict_extreme's over the seeds, the row lists every other method's mean and z. */
 void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim, const char *stat,
                        const char *const *names, const double *x, int n, const bool *have, int m, int sign, int seeds);
-/* mkdir -p for one or two levels; false with a message on failure. */
-bool ch4_mkdir(const char *dir, char *err, size_t errlen);
-
+/* Writes texts[i] to DIR/names[i] atomically, then frees the texts; on success says which files on
+ * stderr ("PROG: wrote ..."). False with a message at the first failure. */
+bool ch4_write_texts(const char *prog, const char *dir, int n, const char *const *names, char **texts, char *err,
+                     size_t errlen);
+/* A tool's claims table (claims_finish's Markdown) to stderr, freed; false when it is NULL (the
+ * message is then in the tool's err). */
+bool ch4_show_claims(char *md);
 #endif

@@ -14,6 +14,7 @@
 #include "ch4/wall_noise.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "path/scene_ready.h"
 #include "stats/noise_corr.h"
@@ -23,6 +24,25 @@
 #include <string.h>
 
 #define NVAR 2
+
+static const char *prog = "fig4_1";
+static const char *const names[NVAR] = {"iso", "rap"};
+/* per run: the quantities of the summary (then the error variance, apart) */
+enum { Q_LX, Q_LY, Q_RATIO, Q_RHO1X, Q_RHO1Y, Q_RELMSE, Q_ACCEPT, NQ };
+static const char *const qn[NQ] = {"l_x", "l_y", "ratio", "rho1_x", "rho1_y", "relmse", "small_accept"};
+
+/* The tool's settings, scene and reference, and every run's measurements (run k = v * seeds + s). */
+struct fig41 {
+    struct opts_figure fo;
+    const char *refpath;
+    char defref[256];
+    int res[2], seeds, refspp, maxlag;
+    double mpp, p_large;
+    struct scene *sc;
+    struct image *ref;
+    double ref_var;
+    double *q[NQ], *evar, *rx, *ry; /* rx, ry: maxlag + 1 lags per run */
+};
 
 /* Thesis §4.1 on Figure 4.1, from l_x / l_y of each run (ratio[v * seeds + s]). "About the aspect
  * ratio" is read as within ±25 % (the ledger's margin for "about", as in fig4.5) and shown at ±10 %
@@ -36,7 +56,7 @@ static char *claims(const double *ratio, int seeds, double aspect, const char *o
     claims_begin(&cl, scale, command, "Claims of thesis §4.1 on Fig. 4.1, %d seeds, aspect ratio %.3g", seeds, aspect);
     double m[NVAR], se[NVAR];
     for (int v = 0; v < NVAR; v++)
-        ch4_mean_se(ratio + v * seeds, seeds, &m[v], &se[v]);
+        mean_se(ratio + v * seeds, seeds, &m[v], &se[v]);
     const char *src = "thesis §4.1, Fig. 4.1";
     /* stretched: the isotropic kernel's ratio above 1 (a constant, se 0) */
     double two[2] = {m[0], 1}, two_se[2] = {se[0], 0}, z[2];
@@ -61,108 +81,77 @@ static char *claims(const double *ratio, int seeds, double aspect, const char *o
     return claims_finish(&cl, out, err, errlen);
 }
 
-int main(int argc, char **argv)
+static void parse(struct fig41 *t, int argc, char **argv)
 {
-    const char *prog = "fig4_1", *refpath = NULL;
-    struct opts_figure fo;
-    int res[2], seeds, refspp, maxlag;
-    double mpp, p_large;
     const struct opt opts[] = {
-        OPTS_FIGURE(fo, "scenes/wall/scene.json", "results/fig4.1"),
-        OPT_RESOLUTION(res, .lo = 8, .hi = 1 << 14, .help = "image size", .def = "320x180", .paper = "640x360"),
-        OPT_MPP(mpp, .lo = 0.01, .hi = 1e6, .help = "PSSMLT mutations per pixel", .def = "8", .paper = "64"),
-        OPT_SEEDS(seeds, .help = "runs per variant, seeds S..S+N-1", .def = "16", .paper = "16"),
-        OPT_P_LARGE(p_large),
-        {"--max-lag", OPT_INT, OPT_DST(maxlag), .arg = "L", .lo = 2, .hi = 4096,
+        OPTS_FIGURE(t->fo, "scenes/wall/scene.json", "results/fig4.1"),
+        OPT_RESOLUTION(t->res, .lo = 8, .hi = 1 << 14, .help = "image size", .def = "320x180", .paper = "640x360"),
+        OPT_MPP(t->mpp, .lo = 0.01, .hi = 1e6, .help = "PSSMLT mutations per pixel", .def = "8", .paper = "64"),
+        OPT_SEEDS(t->seeds, .help = "runs per variant, seeds S..S+N-1", .def = "16", .paper = "16"),
+        OPT_P_LARGE(t->p_large),
+        {"--max-lag", OPT_INT, OPT_DST(t->maxlag), .arg = "L", .lo = 2, .hi = 4096,
          .help = "autocorrelation lags 0..L pixels", .def = "40"},
-        OPTS_REFERENCE(refpath, refspp, "PT", "results/reference/wall-pt-WxH-SPP.exr", "64", "1024"),
+        OPTS_REFERENCE(t->refpath, t->refspp, "PT", "results/reference/wall-pt-WxH-SPP.exr", "64", "1024"),
         {0}};
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_1 [options]\n", .opts = opts, .fig = &fo},
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_1 [options]\n", .opts = opts, .fig = &t->fo},
                argc, argv);
-    int W = res[0], H = res[1];
-    if (maxlag >= W || maxlag >= H) opts_fail(prog, "--max-lag %d: must be below the image's width and height", maxlag);
+    if (t->maxlag >= t->res[0] || t->maxlag >= t->res[1])
+        opts_fail(prog, "--max-lag %d: must be below the image's width and height", t->maxlag);
     opts_require_image_output(prog);
-    char err[1024], defref[256];
-    snprintf(defref, sizeof defref, "results/reference/wall-pt-%dx%d-%d.exr", W, H, refspp);
-    if (!refpath) refpath = defref;
-    struct scene *sc = scene_load(fo.scene, err, sizeof err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err);
-        return 2;
-    }
-    camera_resize(&sc->cam, W, H);
-    if (!ch4_mkdir(fo.out, err, sizeof err)) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
-    struct image *ref = ch4_reference(sc, METHOD_PT, refspp, refpath, fo.threads, prog, err, sizeof err);
-    if (!ref || !ch4_write_pair(ref, fo.out, "reference", err, sizeof err)) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
-    double ref_var = ch4_pixel_noise_var(ref);
+    snprintf(t->defref, sizeof t->defref, "results/reference/wall-pt-%dx%d-%d.exr", t->res[0], t->res[1], t->refspp);
+    if (!t->refpath) t->refpath = t->defref;
+}
 
-    const char *names[NVAR] = {"iso", "rap"};
-    struct wall_cfg cfg = {
-        .p_large = p_large, .mpp = mpp, .seed_paths = fo.paper ? 1000000 : 100000, .threads = fo.threads, .maxlag = maxlag};
-    int L = maxlag + 1;
-    /* per run: the quantities of the summary, then the error variance */
-    enum { Q_LX, Q_LY, Q_RATIO, Q_RHO1X, Q_RHO1Y, Q_RELMSE, Q_ACCEPT, NQ };
-    const char *qn[NQ] = {"l_x", "l_y", "ratio", "rho1_x", "rho1_y", "relmse", "small_accept"};
-    double *q[NQ];
+/* Both variants over the seeds; the first seed's render and error image of each. */
+static bool run(struct fig41 *t, char *err, size_t errlen)
+{
+    const struct opts_figure *fo = &t->fo;
+    int L = t->maxlag + 1, seeds = t->seeds;
+    struct wall_cfg cfg = {.p_large = t->p_large,
+                           .mpp = t->mpp,
+                           .seed_paths = fo->paper ? 1000000 : 100000,
+                           .threads = fo->threads,
+                           .maxlag = t->maxlag};
     for (int i = 0; i < NQ; i++)
-        q[i] = xcalloc((size_t)NVAR * seeds, sizeof(double));
-    double *evar = xcalloc((size_t)NVAR * seeds, sizeof *evar);
-    double *rx = xcalloc((size_t)NVAR * seeds * L, sizeof *rx), *ry = xcalloc((size_t)NVAR * seeds * L, sizeof *ry);
+        t->q[i] = xcalloc((size_t)NVAR * seeds, sizeof(double));
+    t->evar = xcalloc((size_t)NVAR * seeds, sizeof *t->evar);
+    t->rx = xcalloc((size_t)NVAR * seeds * L, sizeof *t->rx), t->ry = xcalloc((size_t)NVAR * seeds * L, sizeof *t->ry);
     double range = 0;
     for (int v = 0; v < NVAR; v++) {
         cfg.rap = v == 1;
         for (int s = 0; s < seeds; s++) {
-            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[v], (unsigned long long)(fo.seed + s), s + 1,
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[v], (unsigned long long)(fo->seed + s), s + 1,
                     seeds);
             struct wall_meas m;
-            struct image *img = wall_run(sc, &cfg, fo.seed + s, ref, &m, err, sizeof err);
-            if (!img) {
-                fprintf(stderr, "%s: %s\n", prog, err);
-                return 1;
-            }
+            struct image *img = wall_run(t->sc, &cfg, fo->seed + s, t->ref, &m, err, errlen);
+            if (!img) return false;
             int k = v * seeds + s;
+            double *const *q = t->q;
             q[Q_LX][k] = m.lx, q[Q_LY][k] = m.ly, q[Q_RATIO][k] = m.lx / m.ly, q[Q_RHO1X][k] = m.rho1_x;
             q[Q_RHO1Y][k] = m.rho1_y, q[Q_RELMSE][k] = m.relmse, q[Q_ACCEPT][k] = m.accept;
-            evar[k] = m.err_var;
-            memcpy(rx + (size_t)k * L, m.rho_x, L * sizeof(double));
-            memcpy(ry + (size_t)k * L, m.rho_y, L * sizeof(double));
+            t->evar[k] = m.err_var;
+            memcpy(t->rx + (size_t)k * L, m.rho_x, L * sizeof(double));
+            memcpy(t->ry + (size_t)k * L, m.rho_y, L * sizeof(double));
+            bool ok = true;
             if (s == 0) {
                 char path[4096];
-                snprintf(path, sizeof path, "%s/error-%s.png", fo.out, names[v]);
-                if (!ch4_write_pair(img, fo.out, names[v], err, sizeof err) ||
-                    !ch4_write_error_png(m.err, W, H, &range, path, err, sizeof err)) {
-                    fprintf(stderr, "%s: %s\n", prog, err);
-                    return 1;
-                }
+                snprintf(path, sizeof path, "%s/error-%s.png", fo->out, names[v]);
+                ok = ch4_write_pair(img, fo->out, names[v], err, errlen) &&
+                     ch4_write_error_png(m.err, t->res[0], t->res[1], &range, path, err, errlen);
             }
             wall_meas_free(&m);
             img_destroy(img);
+            if (!ok) return false;
         }
     }
+    return true;
+}
 
-    /* per-run rows, summary, profiles */
-    char *rb = NULL, *sb = NULL, *pb = NULL;
-    size_t rl = 0, sl = 0, pl = 0;
-    FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl), *fp = open_memstream(&pb, &pl);
-    FILE *all[3] = {fr, fs, fp};
-    for (int i = 0; i < 3; i++) {
-        csv_meta_head(all[i], "fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)",
-                      fo.scene, fo.scale);
-        csv_meta(all[i], "resolution", "%dx%d", W, H);
-        csv_meta(all[i], "mutations_per_pixel", "%g", mpp);
-        csv_meta(all[i], "p_large", "%g", p_large);
-        csv_meta(all[i], "kernel", "kelemen s1 1/1024 s2 1/64");
-        ch4_meta_runs(all[i], fo.seed, seeds, fo.threads);
-        csv_meta(all[i], "reference", "%s (PT %d spp); its pixel-noise variance %.4g", refpath, refspp, ref_var);
-        csv_meta(all[i], NULL, "error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
-                               " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)");
-    }
+/* The rows of the three tables: per run (fr), mean and se per quantity (fs), autocorrelation
+ * profiles (fp). */
+static void write_rows(const struct fig41 *t, FILE *fr, FILE *fs, FILE *fp)
+{
+    int L = t->maxlag + 1, seeds = t->seeds;
     fprintf(fr, "variant,seed");
     for (int i = 0; i < NQ; i++)
         fprintf(fr, ",%s", qn[i]);
@@ -173,48 +162,75 @@ int main(int argc, char **argv)
     for (int v = 0; v < NVAR; v++) {
         for (int s = 0; s < seeds; s++) {
             int k = v * seeds + s;
-            fprintf(fr, "%s,%llu", names[v], (unsigned long long)(fo.seed + s));
+            fprintf(fr, "%s,%llu", names[v], (unsigned long long)(t->fo.seed + s));
             for (int i = 0; i < NQ; i++)
-                fprintf(fr, ",%.6g", q[i][k]);
-            fprintf(fr, ",%.6g\n", evar[k]);
+                fprintf(fr, ",%.6g", t->q[i][k]);
+            fprintf(fr, ",%.6g\n", t->evar[k]);
         }
         for (int i = 0; i < NQ; i++) {
             double mean, se;
-            ch4_mean_se(q[i] + v * seeds, seeds, &mean, &se);
+            mean_se(t->q[i] + v * seeds, seeds, &mean, &se);
             fprintf(fs, "%s,%s,%d,%.6g,%.6g\n", names[v], qn[i], seeds, mean, se);
         }
         for (int d = 0; d < L; d++) {
             double mx, sx, my, sy;
             for (int s = 0; s < seeds; s++)
-                tmp[s] = rx[(size_t)(v * seeds + s) * L + d];
-            ch4_mean_se(tmp, seeds, &mx, &sx);
+                tmp[s] = t->rx[(size_t)(v * seeds + s) * L + d];
+            mean_se(tmp, seeds, &mx, &sx);
             for (int s = 0; s < seeds; s++)
-                tmp[s] = ry[(size_t)(v * seeds + s) * L + d];
-            ch4_mean_se(tmp, seeds, &my, &sy);
+                tmp[s] = t->ry[(size_t)(v * seeds + s) * L + d];
+            mean_se(tmp, seeds, &my, &sy);
             fprintf(fp, "%s,%d,%.6g,%.6g,%.6g,%.6g\n", names[v], d, mx, sx, my, sy);
         }
     }
-    fclose(fr), fclose(fs), fclose(fp);
-    char p1[4096], p2[4096], p3[4096];
-    snprintf(p1, sizeof p1, "%s/fig4.1-runs.csv", fo.out);
-    snprintf(p2, sizeof p2, "%s/fig4.1.csv", fo.out);
-    snprintf(p3, sizeof p3, "%s/fig4.1-profiles.csv", fo.out);
-    bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err) &&
-              write_text_atomic(p3, pb, err, sizeof err);
-    char *md = ok ? claims(q[Q_RATIO], seeds, (double)W / H, fo.out, fo.scale, err, sizeof err) : NULL;
-    ok = ok && md;
-    if (md) fputs(md, stderr);
-    free(md);
-    free(rb), free(sb), free(pb), free(tmp);
-    for (int i = 0; i < NQ; i++)
-        free(q[i]);
-    free(evar), free(rx), free(ry);
-    img_destroy(ref);
-    scene_free(sc);
-    if (!ok) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
+    free(tmp);
+}
+
+/* OUT/fig4.1-runs.csv, fig4.1.csv and fig4.1-profiles.csv, with the same metadata. */
+static bool write_tables(const struct fig41 *t, char *err, size_t errlen)
+{
+    const struct opts_figure *fo = &t->fo;
+    char *rb = NULL, *sb = NULL, *pb = NULL;
+    size_t rl = 0, sl = 0, pl = 0;
+    FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl), *fp = open_memstream(&pb, &pl);
+    FILE *all[3] = {fr, fs, fp};
+    for (int i = 0; i < 3; i++) {
+        csv_meta_head(all[i], "fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)",
+                      fo->scene, fo->scale);
+        csv_meta(all[i], "resolution", "%dx%d", t->res[0], t->res[1]);
+        csv_meta(all[i], "mutations_per_pixel", "%g", t->mpp);
+        csv_meta(all[i], "p_large", "%g", t->p_large);
+        csv_meta(all[i], "kernel", "kelemen s1 1/1024 s2 1/64");
+        ch4_meta_runs(all[i], fo->seed, t->seeds, fo->threads);
+        csv_meta(all[i], "reference", "%s (PT %d spp); its pixel-noise variance %.4g", t->refpath, t->refspp,
+                 t->ref_var);
+        csv_meta(all[i], NULL, "error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
+                               " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)");
     }
-    fprintf(stderr, "%s: wrote %s, %s, %s\n", prog, p2, p1, p3);
+    write_rows(t, fr, fs, fp);
+    fclose(fr), fclose(fs), fclose(fp);
+    const char *names[3] = {"fig4.1-runs.csv", "fig4.1.csv", "fig4.1-profiles.csv"};
+    return ch4_write_texts(prog, fo->out, 3, names, (char *[]){rb, sb, pb}, err, errlen);
+}
+
+int main(int argc, char **argv)
+{
+    struct fig41 t = {0};
+    parse(&t, argc, argv);
+    char err[1024];
+    t.sc = opts_figure_scene(&t.fo);
+    camera_resize(&t.sc->cam, t.res[0], t.res[1]);
+    t.ref = ch4_reference(t.sc, METHOD_PT, t.refspp, t.refpath, t.fo.threads, prog, err, sizeof err);
+    bool ok = t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err);
+    if (ok) t.ref_var = ch4_pixel_noise_var(t.ref);
+    ok = ok && run(&t, err, sizeof err) && write_tables(&t, err, sizeof err);
+    ok = ok &&
+         ch4_show_claims(claims(t.q[Q_RATIO], t.seeds, (double)t.res[0] / t.res[1], t.fo.out, t.fo.scale, err, sizeof err));
+    for (int i = 0; i < NQ; i++)
+        free(t.q[i]);
+    free(t.evar), free(t.rx), free(t.ry);
+    img_destroy(t.ref);
+    scene_free(t.sc);
+    if (!ok) die(DIE_RUNTIME, prog, "%s", err);
     return 0;
 }

@@ -14,6 +14,7 @@
 #include "ch4/ch4_common.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
@@ -24,6 +25,22 @@
 #include <unistd.h>
 
 #define NMETH 3
+
+static const char *prog = "fig4_3";
+static const char *const names[NMETH] = {"bdpt", "pssmlt", "pssmlt-cdc"};
+
+/* The tool's settings, scene and reference, and every run's numbers (method m, seed s at
+ * m * seeds + s). */
+struct fig43 {
+    struct opts_figure fo;
+    const char *refpath;
+    char defref[256];
+    int res[2], spp, seeds, refspp;
+    double p_large;
+    struct scene *sc;
+    struct image *ref;
+    double *rel, *acc, *sec;
+};
 
 static bool write_stats(const struct mlt_stats *st, const char *method, const char *dir, char *err, size_t n)
 {
@@ -39,7 +56,7 @@ static bool write_stats(const struct mlt_stats *st, const char *method, const ch
 }
 
 /* Thesis §4.2 on Figure 4.3, at equal samples per pixel. */
-static char *claims(const char *const *names, const double *rel, const double *acc, int seeds, const char *out,
+static char *claims(const double *rel, const double *acc, int seeds, const char *out,
                     const char *scale, char *err, size_t errlen)
 {
     struct claims cl;
@@ -57,151 +74,150 @@ static char *claims(const char *const *names, const double *rel, const double *a
     return claims_finish(&cl, out, err, errlen);
 }
 
-int main(int argc, char **argv)
+static void parse(struct fig43 *t, int argc, char **argv)
 {
-    const char *prog = "fig4_3", *refpath = NULL;
-    struct opts_figure fo;
-    int res[2] = {-1, -1}, spp, seeds, refspp;
-    double p_large;
+    t->res[0] = t->res[1] = -1;
     const struct opt opts[] = {
-        OPTS_FIGURE(fo, "scenes/window/scene.json", "results/fig4.3"),
-        OPT_RESOLUTION(res, .lo = 1, .hi = 1 << 14, .help = "image size; quick: the scene's", .paper = "256x144"),
-        {"--spp", OPT_INT, OPT_DST(spp), .arg = "N", .lo = 1, .hi = 1 << 20,
+        OPTS_FIGURE(t->fo, "scenes/window/scene.json", "results/fig4.3"),
+        OPT_RESOLUTION(t->res, .lo = 1, .hi = 1 << 14, .help = "image size; quick: the scene's", .paper = "256x144"),
+        {"--spp", OPT_INT, OPT_DST(t->spp), .arg = "N", .lo = 1, .hi = 1 << 20,
          .help = "samples (mutations) per pixel of every method", .def = "64"},
-        OPT_SEEDS(seeds, .help = "runs per method, seeds S..S+N-1", .def = "24", .paper = "16"),
-        OPT_P_LARGE(p_large),
-        OPTS_REFERENCE(refpath, refspp, "BDPT", "results/reference/window-bdpt-WxH-SPP.exr", "1024", "16384"),
+        OPT_SEEDS(t->seeds, .help = "runs per method, seeds S..S+N-1", .def = "24", .paper = "16"),
+        OPT_P_LARGE(t->p_large),
+        OPTS_REFERENCE(t->refpath, t->refspp, "BDPT", "results/reference/window-bdpt-WxH-SPP.exr", "1024", "16384"),
         {0}};
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_3 [options]\n", .opts = opts, .fig = &fo},
+    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_3 [options]\n", .opts = opts, .fig = &t->fo},
                argc, argv);
-    int W = res[0], H = res[1];
     opts_require_image_output(prog);
-    char err[1024];
-    struct scene *sc = scene_load(fo.scene, err, sizeof err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err);
-        return 2;
+}
+
+/* One run of method m; the first seed's image (and MCMC statistics) into OUT. */
+static bool run_one(struct fig43 *t, int m, int s, char *err, size_t errlen)
+{
+    const struct opts_figure *fo = &t->fo;
+    const struct scene *sc = t->sc;
+    int k = m * t->seeds + s, W = sc->cam.width, H = sc->cam.height;
+    struct image *img;
+    t->acc[k] = NAN;
+    if (m == 0) {
+        struct render_opts o = {.method = METHOD_BDPT,
+                                .spp = t->spp,
+                                .seed = fo->seed + s,
+                                .threads = fo->threads,
+                                .max_length = sc->max_length,
+                                .progress = isatty(2)};
+        struct render_stats st;
+        img = render_mc(sc, &o, &st);
+        t->sec[k] = st.seconds;
+    } else {
+        struct mlt_opts o = {.method = MLT_PSSMLT,
+                             .p_large = t->p_large,
+                             .mutations = (long)t->spp * W * H,
+                             .seed_paths = fo->paper ? 1000000 : 100000,
+                             .seed = fo->seed + s,
+                             .threads = fo->threads,
+                             .max_length = sc->max_length,
+                             .progress = isatty(2)};
+        pss_opts_default(&o.pss, W, H);
+        o.pss.cdc = m == 2;
+        struct mlt_result r;
+        if (!mlt_render(sc, &o, &r, err, errlen)) return false;
+        t->acc[k] = cell_mean(&r.stats.total[PROPOSAL_SMALL]);
+        t->sec[k] = r.seconds + r.seed_seconds;
+        bool ok = s != 0 || write_stats(&r.stats, names[m], fo->out, err, errlen);
+        img = r.img;
+        r.img = NULL;
+        mlt_result_free(&r);
+        if (!ok) {
+            img_destroy(img);
+            return false;
+        }
     }
-    if (W > 0) camera_resize(&sc->cam, W, H);
-    W = sc->cam.width, H = sc->cam.height;
-    char defref[256];
-    snprintf(defref, sizeof defref, "results/reference/window-bdpt-%dx%d-%d.exr", W, H, refspp);
-    if (!refpath) refpath = defref;
-    if (!ch4_mkdir(fo.out, err, sizeof err)) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
-    struct image *ref = ch4_reference(sc, METHOD_BDPT, refspp, refpath, fo.threads, prog, err, sizeof err);
-    if (!ref || !ch4_write_pair(ref, fo.out, "reference", err, sizeof err)) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
-    const char *names[NMETH] = {"bdpt", "pssmlt", "pssmlt-cdc"};
-    double *rel = xcalloc((size_t)NMETH * seeds, sizeof *rel), *acc = xcalloc((size_t)NMETH * seeds, sizeof *acc);
-    double *sec = xcalloc((size_t)NMETH * seeds, sizeof *sec);
-    for (int m = 0; m < NMETH; m++)
+    t->rel[k] = img_relmse(img, t->ref, 0.01);
+    bool ok = s != 0 || ch4_write_pair(img, fo->out, names[m], err, errlen);
+    img_destroy(img);
+    return ok;
+}
+
+/* The rows of OUT/fig4.3-runs.csv (fr) and OUT/fig4.3.csv (fs). */
+static void write_rows(const struct fig43 *t, FILE *fr, FILE *fs)
+{
+    int seeds = t->seeds, spp = t->spp, refspp = t->refspp;
+    fprintf(fr, "method,seed,relmse,small_accept,seconds\n");
+    fprintf(fs, "method,quantity,seeds,mean,se\n");
+    for (int m = 0; m < NMETH; m++) {
         for (int s = 0; s < seeds; s++) {
             int k = m * seeds + s;
-            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[m], (unsigned long long)(fo.seed + s), s + 1,
-                    seeds);
-            struct image *img;
-            acc[k] = NAN;
-            if (m == 0) {
-                struct render_opts o = {.method = METHOD_BDPT,
-                                        .spp = spp,
-                                        .seed = fo.seed + s,
-                                        .threads = fo.threads,
-                                        .max_length = sc->max_length,
-                                        .progress = isatty(2)};
-                struct render_stats st;
-                img = render_mc(sc, &o, &st);
-                sec[k] = st.seconds;
-            } else {
-                struct mlt_opts o = {.method = MLT_PSSMLT,
-                                     .p_large = p_large,
-                                     .mutations = (long)spp * W * H,
-                                     .seed_paths = fo.paper ? 1000000 : 100000,
-                                     .seed = fo.seed + s,
-                                     .threads = fo.threads,
-                                     .max_length = sc->max_length,
-                                     .progress = isatty(2)};
-                pss_opts_default(&o.pss, W, H);
-                o.pss.cdc = m == 2;
-                struct mlt_result r;
-                if (!mlt_render(sc, &o, &r, err, sizeof err)) {
-                    fprintf(stderr, "%s: %s\n", prog, err);
-                    return 1;
-                }
-                acc[k] = cell_mean(&r.stats.total[PROPOSAL_SMALL]);
-                sec[k] = r.seconds + r.seed_seconds;
-                if (s == 0 && !write_stats(&r.stats, names[m], fo.out, err, sizeof err)) {
-                    fprintf(stderr, "%s: %s\n", prog, err);
-                    return 1;
-                }
-                img = r.img;
-                r.img = NULL;
-                mlt_result_free(&r);
-            }
-            rel[k] = img_relmse(img, ref, 0.01);
-            if (s == 0 && !ch4_write_pair(img, fo.out, names[m], err, sizeof err)) {
-                fprintf(stderr, "%s: %s\n", prog, err);
-                return 1;
-            }
-            img_destroy(img);
+            fprintf(fr, "%s,%llu,%.6g,%.6g,%.3f\n", names[m], (unsigned long long)(t->fo.seed + s), t->rel[k],
+                    t->acc[k], t->sec[k]);
         }
+        double mean, se;
+        mean_se(t->rel + m * seeds, seeds, &mean, &se);
+        fprintf(fs, "%s,relmse,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
+        if (m > 0) {
+            mean_se(t->acc + m * seeds, seeds, &mean, &se);
+            fprintf(fs, "%s,small_accept,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
+        }
+        if (m == 0) {
+            /* relMSE(BDPT, R) = V (1/spp + 1/refspp) for BDPT's per-sample variance term V: the
+             * reference's own share V / refspp is part of every method's relMSE */
+            mean_se(t->rel, seeds, &mean, &se);
+            fprintf(fs, "reference,relmse_own,%d,%.6g,%.6g\n", seeds, mean * spp / (spp + refspp),
+                    se * spp / (spp + refspp));
+        }
+    }
+}
+
+/* OUT/fig4.3-runs.csv and OUT/fig4.3.csv, with the same metadata. */
+static bool write_tables(const struct fig43 *t, char *err, size_t errlen)
+{
+    const struct opts_figure *fo = &t->fo;
     char *rb = NULL, *sb = NULL;
     size_t rl = 0, sl = 0;
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
     FILE *all[2] = {fr, fs};
     for (int i = 0; i < 2; i++) {
         csv_meta_head(all[i], "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
-                      fo.scene, fo.scale);
-        csv_meta(all[i], "resolution", "%dx%d", W, H);
-        csv_meta(all[i], "spp", "%d", spp);
-        csv_meta(all[i], "p_large", "%g", p_large);
-        ch4_meta_runs(all[i], fo.seed, seeds, fo.threads);
-        csv_meta(all[i], "reference", "%s (BDPT %d spp)", refpath, refspp);
+                      fo->scene, fo->scale);
+        csv_meta(all[i], "resolution", "%dx%d", t->sc->cam.width, t->sc->cam.height);
+        csv_meta(all[i], "spp", "%d", t->spp);
+        csv_meta(all[i], "p_large", "%g", t->p_large);
+        ch4_meta_runs(all[i], fo->seed, t->seeds, fo->threads);
+        csv_meta(all[i], "reference", "%s (BDPT %d spp)", t->refpath, t->refspp);
         csv_meta(all[i], NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
                                "min(1, a) of small steps");
     }
-    fprintf(fr, "method,seed,relmse,small_accept,seconds\n");
-    fprintf(fs, "method,quantity,seeds,mean,se\n");
-    for (int m = 0; m < NMETH; m++) {
-        for (int s = 0; s < seeds; s++) {
-            int k = m * seeds + s;
-            fprintf(fr, "%s,%llu,%.6g,%.6g,%.3f\n", names[m], (unsigned long long)(fo.seed + s), rel[k], acc[k], sec[k]);
-        }
-        double mean, se;
-        ch4_mean_se(rel + m * seeds, seeds, &mean, &se);
-        fprintf(fs, "%s,relmse,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
-        if (m > 0) {
-            ch4_mean_se(acc + m * seeds, seeds, &mean, &se);
-            fprintf(fs, "%s,small_accept,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
-        }
-        if (m == 0) {
-            /* relMSE(BDPT, R) = V (1/spp + 1/refspp) for BDPT's per-sample variance term V: the
-             * reference's own share V / refspp is part of every method's relMSE */
-            ch4_mean_se(rel, seeds, &mean, &se);
-            fprintf(fs, "reference,relmse_own,%d,%.6g,%.6g\n", seeds, mean * spp / (spp + refspp),
-                    se * spp / (spp + refspp));
-        }
-    }
+    write_rows(t, fr, fs);
     fclose(fr), fclose(fs);
-    char p1[4096], p2[4096];
-    snprintf(p1, sizeof p1, "%s/fig4.3-runs.csv", fo.out);
-    snprintf(p2, sizeof p2, "%s/fig4.3.csv", fo.out);
-    bool ok = write_text_atomic(p1, rb, err, sizeof err) && write_text_atomic(p2, sb, err, sizeof err);
-    char *md = ok ? claims(names, rel, acc, seeds, fo.out, fo.scale, err, sizeof err) : NULL;
-    ok = ok && md;
-    if (md) fputs(md, stderr);
-    free(md);
-    free(rb), free(sb), free(rel), free(acc), free(sec);
-    img_destroy(ref);
-    scene_free(sc);
-    if (!ok) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
-    fprintf(stderr, "%s: wrote %s, %s\n", prog, p2, p1);
+    const char *names[2] = {"fig4.3-runs.csv", "fig4.3.csv"};
+    return ch4_write_texts(prog, fo->out, 2, names, (char *[]){rb, sb}, err, errlen);
+}
+
+int main(int argc, char **argv)
+{
+    struct fig43 t = {0};
+    parse(&t, argc, argv);
+    char err[1024];
+    t.sc = opts_figure_scene(&t.fo);
+    if (t.res[0] > 0) camera_resize(&t.sc->cam, t.res[0], t.res[1]);
+    snprintf(t.defref, sizeof t.defref, "results/reference/window-bdpt-%dx%d-%d.exr", t.sc->cam.width,
+             t.sc->cam.height, t.refspp);
+    if (!t.refpath) t.refpath = t.defref;
+    t.ref = ch4_reference(t.sc, METHOD_BDPT, t.refspp, t.refpath, t.fo.threads, prog, err, sizeof err);
+    bool ok = t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err);
+    size_t n = (size_t)NMETH * t.seeds;
+    t.rel = xcalloc(n, sizeof *t.rel), t.acc = xcalloc(n, sizeof *t.acc), t.sec = xcalloc(n, sizeof *t.sec);
+    for (int m = 0; m < NMETH && ok; m++)
+        for (int s = 0; s < t.seeds && ok; s++) {
+            fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, names[m], (unsigned long long)(t.fo.seed + s),
+                    s + 1, t.seeds);
+            ok = run_one(&t, m, s, err, sizeof err);
+        }
+    ok = ok && write_tables(&t, err, sizeof err);
+    ok = ok && ch4_show_claims(claims(t.rel, t.acc, t.seeds, t.fo.out, t.fo.scale, err, sizeof err));
+    free(t.rel), free(t.acc), free(t.sec);
+    img_destroy(t.ref);
+    scene_free(t.sc);
+    if (!ok) die(DIE_RUNTIME, prog, "%s", err);
     return 0;
 }

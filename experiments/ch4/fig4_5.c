@@ -17,9 +17,11 @@
  * their verdicts, and two checks of the chains against the prediction. */
 #include "base/parallel.h"
 #include "base/util.h"
+#include "ch4/ch4_common.h"
 #include "ch4/fig4_5_trials.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
@@ -80,6 +82,31 @@ static void mean_over_lengths(const double *mean, const double *se, int K, doubl
     *m = 0;
     for (int k = 2; k <= K; k++) *m += mean[k] / (K - 1), v += pow(se[k] / (K - 1), 2);
     *m_se = sqrt(v);
+}
+
+/* The chains against their prediction from independent trials (both are independence samplers):
+ * the acceptance averaged over lengths 2..K within ±10 %. */
+static void claims_predicted(struct claims *cl, const struct accept_table *t, const struct trials_table *tr)
+{
+    char zs[256], md[512], stat[96];
+    const struct {
+        int run;
+        enum trial_stat stat;
+    } pred[2] = {{V_MMLT, TS_ACCEPT_MMLT}, {V_MCTLS, TS_ACCEPT_MCTLS}};
+    for (int p = 0; p < 2; p++) {
+        double mc, sc, mp, sp;
+        mean_over_lengths(t->mean[pred[p].run], t->se[pred[p].run], t->K, &mc, &sc);
+        mean_over_lengths(tr->value[pred[p].stat], tr->se[pred[p].stat], t->K, &mp, &sp);
+        struct verdict v = verdict_similar(mc, sc, mp, sp, 0.10, 1);
+        snprintf(zs, sizeof zs, "predicted10%%=%.2f", v.zmin);
+        snprintf(md, sizeof md, "predicted from independent trials %.4g ± %.2g, within ±10 %% (z = %.1f)", mp, sp,
+                 v.zmin);
+        snprintf(stat, sizeof stat, "acceptance, mean over lengths 2-%d", t->K);
+        claims_row(cl, "harness check",
+                   p == 0 ? "MMLT large steps accept as an independence sampler of their target predicts"
+                          : "MCTLS accepts as an independence sampler of Eq. 4.7's target predicts",
+                   stat, variants[pred[p].run].name, mc, sc, zs, md, &v);
+    }
 }
 
 /* Thesis §4.3 on Figure 4.5. The errors are one run's batch-means errors, so "seeds_needed" counts
@@ -168,61 +195,35 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
     claims_row(&cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
                "mctls", r, rse, zs, md, &v);
-    /* the chains against their prediction from independent trials (both are independence
-     * samplers): the acceptance averaged over lengths 2..K within ±10 % */
-    const struct {
-        int run;
-        enum trial_stat stat;
-    } pred[2] = {{V_MMLT, TS_ACCEPT_MMLT}, {V_MCTLS, TS_ACCEPT_MCTLS}};
-    for (int p = 0; p < 2; p++) {
-        double mc, sc, mp, sp;
-        mean_over_lengths(t->mean[pred[p].run], t->se[pred[p].run], t->K, &mc, &sc);
-        mean_over_lengths(tr->value[pred[p].stat], tr->se[pred[p].stat], t->K, &mp, &sp);
-        v = verdict_similar(mc, sc, mp, sp, 0.10, 1);
-        snprintf(zs, sizeof zs, "predicted10%%=%.2f", v.zmin);
-        snprintf(md, sizeof md, "predicted from independent trials %.4g ± %.2g, within ±10 %% (z = %.1f)", mp, sp,
-                 v.zmin);
-        snprintf(stat, sizeof stat, "acceptance, mean over lengths 2-%d", t->K);
-        claims_row(&cl, "harness check",
-                   p == 0 ? "MMLT large steps accept as an independence sampler of their target predicts"
-                          : "MCTLS accepts as an independence sampler of Eq. 4.7's target predicts",
-                   stat, variants[pred[p].run].name, mc, sc, zs, md, &v);
-    }
+    claims_predicted(&cl, t, tr);
     return claims_finish(&cl, out, err, errlen);
 }
 
-int main(int argc, char **argv)
+/* Every variant's chain over all lengths: OUT/fig4.5.csv, and its acceptances into tab. */
+static bool run_variants(const struct opts_accept *a, const struct scene *sc, struct accept_table *tab, char *err,
+                         size_t errlen)
 {
-    struct opts_accept a;
-    struct scene *sc = opts_accept_parse(&a, "fig4_5", "scenes/ajar/scene.json", "results/fig4.5", "3000000", "100000000",
-                                         argc, argv);
-    const char *out = a.fig.out;
-    bool paper = a.fig.paper;
-    long mutations = a.mutations;
-    int K = a.max_length, threads = a.fig.threads;
-    uint64_t seed = a.fig.seed;
-    char err[1024];
+    int K = a->max_length;
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets", a.fig.scene,
-                  a.fig.scale);
+    csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets", a->fig.scene,
+                  a->fig.scale);
     csv_meta(f, NULL,
              "mctls-triesN: MCTLS with N trials drawn uniformly among the k + 1 techniques (Eq. 4.5; N = 1 is "
              "an MMLT large step); -t0: among k + 2, t = 0 a try that always fails (the thesis's count)");
-    csv_meta(f, "seed", "%llu", (unsigned long long)seed);
-    csv_meta(f, "threads", "%d", threads);
-    csv_meta(f, "mutations_per_method", "%ld", mutations);
+    csv_meta(f, "seed", "%llu", (unsigned long long)a->fig.seed);
+    csv_meta(f, "threads", "%d", a->fig.threads);
+    csv_meta(f, "mutations_per_method", "%ld", a->mutations);
     fprintf(f, "method,length,attempts,mean_accept,stderr,accepted_fraction,seconds\n");
-    struct accept_table tab = {.K = K};
     for (int m = 0; m < NV; m++) {
         const struct variant *va = &variants[m];
         struct mlt_opts o = {.method = MLT_MMLT,
                              .p_large = 1,
-                             .mutations = mutations,
-                             .seed_paths = paper ? 1000000 : 100000,
-                             .seed = seed,
-                             .threads = threads,
+                             .mutations = a->mutations,
+                             .seed_paths = a->fig.paper ? 1000000 : 100000,
+                             .seed = a->fig.seed,
+                             .threads = a->fig.threads,
                              .max_length = K,
                              .progress = isatty(2),
                              .large_step = va->step,
@@ -231,11 +232,12 @@ int main(int argc, char **argv)
                              .uniform_lengths = true,
                              .time_proposals = true};
         pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
-        fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", va->name, mutations, K);
+        fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", va->name, a->mutations, K);
         struct mlt_result r;
-        if (!mlt_render(sc, &o, &r, err, sizeof err)) {
-            fprintf(stderr, "%s\n", err);
-            return 1;
+        if (!mlt_render(sc, &o, &r, err, errlen)) {
+            fclose(f);
+            free(buf);
+            return false;
         }
         enum proposal_kind kind = va->step == LARGE_MMLT ? PROPOSAL_LARGE : PROPOSAL_MCTLS;
         for (int k = 1; k <= K; k++) {
@@ -244,28 +246,32 @@ int main(int argc, char **argv)
             if (!c->attempts) continue;
             fprintf(f, "%s,%d,%ld,%.9g,%.9g,%.9g,%.4f\n", va->name, k, c->attempts, cell_mean(c), cell_stderr(c),
                     (double)c->accepted / c->attempts, c->seconds);
-            tab.mean[m][k] = cell_mean(c), tab.se[m][k] = cell_stderr(c);
-            tab.nonzero[m][k] = (double)c->nonzero / c->attempts, tab.attempts[m][k] = c->attempts;
+            tab->mean[m][k] = cell_mean(c), tab->se[m][k] = cell_stderr(c);
+            tab->nonzero[m][k] = (double)c->nonzero / c->attempts, tab->attempts[m][k] = c->attempts;
         }
         mlt_result_free(&r);
     }
     fclose(f);
-    char path[4096];
-    snprintf(path, sizeof path, "%s/fig4.5.csv", out);
-    bool ok = write_text_atomic(path, buf, err, sizeof err);
-    free(buf);
-    /* the ratios whose shape the figure is about, with first-order standard errors */
-    f = open_memstream(&buf, &len);
+    return ch4_write_texts("fig4_5", a->fig.out, 1, (const char *[]){"fig4.5.csv"}, &buf, err, errlen);
+}
+
+/* OUT/fig4.5-ratios.csv: the ratios whose shape the figure is about, with first-order standard errors. */
+static bool write_ratios(const struct opts_accept *a, const struct accept_table *tab, char *err, size_t errlen)
+{
+    int K = a->max_length;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
     csv_meta_head(f, "fig4.5: acceptance ratios per length (first-order standard errors from the batch-means errors)",
-                  a.fig.scene, a.fig.scale);
+                  a->fig.scene, a->fig.scale);
     fprintf(f, "ratio,length,value,se\n");
     const int pairs[][2] = {
         {V_MCTLS, V_MMLT}, {V_MCTLS, V_TRIES1_T0}, {V_TRIES1, V_MMLT}, {V_TRIES2, V_MMLT}, {V_TRIES4, V_MMLT}};
     for (size_t p = 0; p < sizeof pairs / sizeof *pairs; p++)
         for (int k = 1; k <= K; k++) {
-            if (!(tab.mean[pairs[p][0]][k] > 0 && tab.mean[pairs[p][1]][k] > 0)) continue;
+            if (!(tab->mean[pairs[p][0]][k] > 0 && tab->mean[pairs[p][1]][k] > 0)) continue;
             double r, rse;
-            ratio_of(&tab, pairs[p][0], pairs[p][1], k, &r, &rse);
+            ratio_of(tab, pairs[p][0], pairs[p][1], k, &r, &rse);
             fprintf(f, "%s/%s,%d,%.6g,%.3g\n", variants[pairs[p][0]].name, variants[pairs[p][1]].name, k, r, rse);
         }
     /* How many techniques carry light for a pair of subpaths that has any: a large step's proposal
@@ -273,53 +279,60 @@ int main(int argc, char **argv)
      * contribution with probability E[n] / (k + 1) and MCTLS's trials with P(n > 0), so
      * E[n | n > 0] = (k + 1) P_mmlt / P_mctls. */
     for (int k = 1; k <= K; k++) {
-        double p0 = tab.nonzero[V_MMLT][k], p1 = tab.nonzero[V_MCTLS][k];
+        double p0 = tab->nonzero[V_MMLT][k], p1 = tab->nonzero[V_MCTLS][k];
         if (!(p0 > 0 && p1 > 0)) continue;
         double v = (k + 1) * p0 / p1;
-        double rse = sqrt((1 - p0) / (p0 * tab.attempts[V_MMLT][k]) + (1 - p1) / (p1 * tab.attempts[V_MCTLS][k]));
+        double rse = sqrt((1 - p0) / (p0 * tab->attempts[V_MMLT][k]) + (1 - p1) / (p1 * tab->attempts[V_MCTLS][k]));
         fprintf(f, "contributing-techniques,%d,%.6g,%.3g\n", k, v, v * rse);
     }
     for (int k = 1; k <= K; k++) {
-        if (!(tab.nonzero[V_MMLT][k] > 0 && tab.nonzero[V_MCTLS][k] > 0)) continue;
+        if (!(tab->nonzero[V_MMLT][k] > 0 && tab->nonzero[V_MCTLS][k] > 0)) continue;
         double r, rse;
-        light_ratio(&tab, k, &r, &rse);
+        light_ratio(tab, k, &r, &rse);
         fprintf(f, "light:mctls/mmlt-large,%d,%.6g,%.3g\n", k, r, rse);
     }
     fclose(f);
-    snprintf(path, sizeof path, "%s/fig4.5-ratios.csv", out);
-    ok = ok && write_text_atomic(path, buf, err, sizeof err);
-    free(buf);
-    /* the prediction from independent trials, four times the chains' proposals per length */
-    struct trials_table *tr = xmalloc(sizeof *tr);
-    long trial_pairs = 4 * (mutations / K);
+    return ch4_write_texts("fig4_5", a->fig.out, 1, (const char *[]){"fig4.5-ratios.csv"}, &buf, err, errlen);
+}
+
+/* The prediction from independent trials, four times the chains' proposals per length:
+ * OUT/fig4.5-trials.csv. */
+static bool run_trials(const struct opts_accept *a, const struct scene *sc, struct trials_table *tr, char *err,
+                       size_t errlen)
+{
+    int K = a->max_length;
+    long trial_pairs = 4 * (a->mutations / K);
     fprintf(stderr, "fig4.5: %ld independent pairs of subpaths per length\n", trial_pairs);
-    if (ok && !fig45_trials(sc, K, trial_pairs, seed, threads, isatty(2), tr)) {
-        snprintf(err, sizeof err, "fig4_5: %ld mutations over %d lengths leave too few trials", mutations, K);
-        ok = false;
+    if (!fig45_trials(sc, K, trial_pairs, a->fig.seed, a->fig.threads, isatty(2), tr)) {
+        snprintf(err, errlen, "%ld mutations over %d lengths leave too few trials", a->mutations, K);
+        return false;
     }
-    if (ok) {
-        f = open_memstream(&buf, &len);
-        csv_meta_head(f, "fig4.5: acceptance per length predicted from independent pairs of subpaths (jackknife errors)",
-                      a.fig.scene, a.fig.scale);
-        csv_meta(f, "seed", "%llu", (unsigned long long)seed);
-        csv_meta(f, "pairs_per_length", "%ld", trial_pairs);
-        fprintf(f, "length,statistic,value,se\n");
-        fig45_trials_csv(f, tr);
-        fclose(f);
-        snprintf(path, sizeof path, "%s/fig4.5-trials.csv", out);
-        ok = write_text_atomic(path, buf, err, sizeof err);
-        free(buf);
-    }
-    char *md = ok ? claims(&tab, tr, out, a.fig.scale, err, sizeof err) : NULL;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    csv_meta_head(f, "fig4.5: acceptance per length predicted from independent pairs of subpaths (jackknife errors)",
+                  a->fig.scene, a->fig.scale);
+    csv_meta(f, "seed", "%llu", (unsigned long long)a->fig.seed);
+    csv_meta(f, "pairs_per_length", "%ld", trial_pairs);
+    fprintf(f, "length,statistic,value,se\n");
+    fig45_trials_csv(f, tr);
+    fclose(f);
+    return ch4_write_texts("fig4_5", a->fig.out, 1, (const char *[]){"fig4.5-trials.csv"}, &buf, err, errlen);
+}
+
+int main(int argc, char **argv)
+{
+    struct opts_accept a;
+    struct scene *sc = opts_accept_parse(&a, "fig4_5", "scenes/ajar/scene.json", "results/fig4.5", "3000000", "100000000",
+                                         argc, argv);
+    char err[1024];
+    struct accept_table tab = {.K = a.max_length};
+    struct trials_table *tr = xmalloc(sizeof *tr);
+    bool ok = run_variants(&a, sc, &tab, err, sizeof err) && write_ratios(&a, &tab, err, sizeof err) &&
+              run_trials(&a, sc, tr, err, sizeof err);
+    ok = ok && ch4_show_claims(claims(&tab, tr, a.fig.out, a.fig.scale, err, sizeof err));
     free(tr);
-    ok = ok && md;
-    if (md) fputs(md, stderr);
-    free(md);
     scene_free(sc);
-    if (!ok) {
-        fprintf(stderr, "%s\n", err);
-        return 1;
-    }
-    fprintf(stderr, "fig4.5: wrote %s\n", path);
+    if (!ok) die(DIE_RUNTIME, "fig4_5", "%s", err);
     return 0;
 }

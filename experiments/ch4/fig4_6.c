@@ -13,6 +13,7 @@
 #include "ch4/ch4_common.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
@@ -22,7 +23,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #define METHODS 3
@@ -62,171 +62,196 @@ static double rays_per_proposal(const struct scene *sc, struct mlt_opts o, long 
     return (rays[1] - rays[0]) / (double)n;
 }
 
-int main(int argc, char **argv)
-{
-    const char *refpath = NULL;
+/* The tool's settings, its scene and reference, and every run's numbers. */
+struct fig46 {
     struct opts_figure fo;
+    const char *refpath;
+    char defref[256], budget[64];
     double seconds;
-    long mutations = 0;
+    long mutations;
     int refspp, hybrid, seeds;
+    struct scene *sc;
+    struct image *ref;
+    struct mlt_opts base;
+    struct run R[METHODS][MAX_SEEDS];
+    double rays[METHODS];
+    double mean[METHODS][3], se[METHODS][3]; /* relMSE, CPU time per proposal, acceptance */
+};
+
+static void parse(struct fig46 *t, int argc, char **argv)
+{
     const struct opt opts[] = {
-        OPTS_FIGURE(fo, "scenes/ajar/scene.json", "results/fig4.6"),
-        {"--seconds", OPT_DOUBLE, OPT_DST(seconds), .arg = "S", .lo = 0.01, .hi = 1e6,
+        OPTS_FIGURE(t->fo, "scenes/ajar/scene.json", "results/fig4.6"),
+        {"--seconds", OPT_DOUBLE, OPT_DST(t->seconds), .arg = "S", .lo = 0.01, .hi = 1e6,
          .help = "budget per run, CPU seconds per thread", .def = "4", .paper = "600", .full = "60"},
-        OPT_MUTATIONS(mutations, .help =
-                                     "instead of --seconds, N proposals per run: statistics that do not depend on the "
-                                     "machine, for make check-fig4.6"),
-        {"--seeds", OPT_INT, OPT_DST(seeds), .arg = "N", .lo = 2, .hi = MAX_SEEDS,
+        OPT_MUTATIONS(t->mutations, .help =
+                                        "instead of --seconds, N proposals per run: statistics that do not depend on "
+                                        "the machine, for make check-fig4.6"),
+        {"--seeds", OPT_INT, OPT_DST(t->seeds), .arg = "N", .lo = 2, .hi = MAX_SEEDS,
          .help = "runs per method (seeds S..S+N-1)", .def = "8"},
-        OPT_REFERENCE(refpath, .help = "cached BDPT reference EXR (default results/reference/ajar-bdpt-<spp>.exr)"),
-        OPT_REFERENCE_SPP(refspp, .help = "BDPT samples per pixel of the reference", .def = "256", .paper = "16384",
+        OPT_REFERENCE(t->refpath, .help = "cached BDPT reference EXR (default results/reference/ajar-bdpt-<spp>.exr)"),
+        OPT_REFERENCE_SPP(t->refspp, .help = "BDPT samples per pixel of the reference", .def = "256", .paper = "16384",
                           .full = "4096"),
-        OPT_HYBRID_LENGTH(hybrid, .help = "hybrid: MCTLS from path length K on, MMLT large steps below", .def = "6"),
+        OPT_HYBRID_LENGTH(t->hybrid, .help = "hybrid: MCTLS from path length K on, MMLT large steps below", .def = "6"),
         {0}};
-    opts_parse(&(struct opts_spec){.prog = "fig4_6", .usage = "usage: fig4_6 [options]\n", .opts = opts, .fig = &fo},
+    opts_parse(&(struct opts_spec){.prog = "fig4_6", .usage = "usage: fig4_6 [options]\n", .opts = opts, .fig = &t->fo},
                argc, argv);
     opts_require_image_output("fig4_6");
-    char err[1024], defref[256];
-    snprintf(defref, sizeof defref, "results/reference/ajar-bdpt-%d.exr", refspp);
-    if (!refpath) refpath = defref;
-    struct scene *sc = scene_load(fo.scene, err, sizeof err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err);
-        return 2;
-    }
-    mkdir(fo.out, 0777);
-    struct image *ref = ch4_reference(sc, METHOD_BDPT, refspp, refpath, fo.threads, "fig4_6", err, sizeof err);
-    if (!ref || !ch4_write_pair(ref, fo.out, "reference", err, sizeof err)) {
-        fprintf(stderr, "%s\n", err);
-        return 1;
-    }
-    static struct run R[METHODS][MAX_SEEDS];
-    char budget[64];
-    if (mutations)
-        snprintf(budget, sizeof budget, "%ld proposals", mutations);
+    snprintf(t->defref, sizeof t->defref, "results/reference/ajar-bdpt-%d.exr", t->refspp);
+    if (!t->refpath) t->refpath = t->defref;
+    if (t->mutations)
+        snprintf(t->budget, sizeof t->budget, "%ld proposals", t->mutations);
     else
-        snprintf(budget, sizeof budget, "%g CPU s per thread", seconds);
-    struct mlt_opts base = {.method = MLT_MMLT,
-                            .p_large = 1,
-                            .seconds = mutations ? 0 : seconds,
-                            .cpu_time = !mutations,
-                            .mutations = mutations,
-                            .seed_paths = fo.paper || fo.full ? 1000000 : 100000,
-                            .threads = fo.threads,
-                            .max_length = sc->max_length,
-                            .progress = isatty(2),
-                            .hybrid_length = hybrid};
-    pss_opts_default(&base.pss, sc->cam.width, sc->cam.height);
-    /* interleaved, so that a change in the machine's load falls on every method alike */
-    for (int s = 0; s < seeds; s++)
+        snprintf(t->budget, sizeof t->budget, "%g CPU s per thread", t->seconds);
+}
+
+/* Every method over the seeds, interleaved so that a change in the machine's load falls on every
+ * method alike; the first seed's images beside the reference; then the rays per proposal. */
+static bool run(struct fig46 *t, char *err, size_t errlen)
+{
+    const struct opts_figure *fo = &t->fo;
+    t->base = (struct mlt_opts){.method = MLT_MMLT,
+                                .p_large = 1,
+                                .seconds = t->mutations ? 0 : t->seconds,
+                                .cpu_time = !t->mutations,
+                                .mutations = t->mutations,
+                                .seed_paths = fo->paper || fo->full ? 1000000 : 100000,
+                                .threads = fo->threads,
+                                .max_length = t->sc->max_length,
+                                .progress = isatty(2),
+                                .hybrid_length = t->hybrid};
+    pss_opts_default(&t->base.pss, t->sc->cam.width, t->sc->cam.height);
+    for (int s = 0; s < t->seeds; s++)
         for (int m = 0; m < METHODS; m++) {
-            struct mlt_opts o = base;
+            struct mlt_opts o = t->base;
             o.large_step = kinds[m];
-            o.seed = fo.seed + (uint64_t)s;
-            fprintf(stderr, "fig4.6: %s seed %llu, %s\n", names[m], (unsigned long long)o.seed, budget);
+            o.seed = fo->seed + (uint64_t)s;
+            fprintf(stderr, "fig4.6: %s seed %llu, %s\n", names[m], (unsigned long long)o.seed, t->budget);
             struct mlt_result r;
-            if (!mlt_render(sc, &o, &r, err, sizeof err) ||
-                (s == 0 && !ch4_write_pair(r.img, fo.out, names[m], err, sizeof err))) {
-                fprintf(stderr, "%s\n", err);
-                return 1;
-            }
-            R[m][s] =
-                (struct run){r.seconds, img_relmse(r.img, ref, 0.01),
-                             1e6 * r.seconds * fo.threads / (double)r.mutations, acceptance(&r.stats), r.mutations};
+            if (!mlt_render(t->sc, &o, &r, err, errlen) ||
+                (s == 0 && !ch4_write_pair(r.img, fo->out, names[m], err, errlen)))
+                return false;
+            t->R[m][s] = (struct run){r.seconds, img_relmse(r.img, t->ref, 0.01),
+                                      1e6 * r.seconds * fo->threads / (double)r.mutations, acceptance(&r.stats),
+                                      r.mutations};
             mlt_result_free(&r);
         }
-    double rays[METHODS];
     for (int m = 0; m < METHODS; m++) {
-        struct mlt_opts o = base;
+        struct mlt_opts o = t->base;
         o.large_step = kinds[m];
-        o.seed = fo.seed;
+        o.seed = fo->seed;
         o.seed_paths = 20000;
-        rays[m] = rays_per_proposal(sc, o, 20000);
+        t->rays[m] = rays_per_proposal(t->sc, o, 20000);
     }
+    return true;
+}
 
+/* Per method: relMSE, CPU time per proposal, acceptance (mean, se over seeds). */
+static void analyse(struct fig46 *t)
+{
+    for (int m = 0; m < METHODS; m++)
+        for (int q = 0; q < 3; q++) {
+            double v[MAX_SEEDS];
+            for (int s = 0; s < t->seeds; s++)
+                v[s] = q == 0 ? t->R[m][s].relmse : q == 1 ? t->R[m][s].us_per_proposal : t->R[m][s].accept;
+            mean_se(v, t->seeds, &t->mean[m][q], &t->se[m][q]);
+        }
+}
+
+/* OUT/fig4.6-runs.csv and OUT/fig4.6.csv. */
+static bool write_tables(const struct fig46 *t, char *err, size_t errlen)
+{
+    const struct opts_figure *fo = &t->fo;
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
     csv_meta_head(
         f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps), one row per run",
-        fo.scene, fo.scale);
-    csv_meta(f, "threads", "%d", fo.threads);
-    csv_meta(f, "budget", "%s", budget);
-    csv_meta(f, "reference", "%s (%d spp BDPT)", refpath, refspp);
-    csv_meta(f, "hybrid_length", "%d", hybrid);
+        fo->scene, fo->scale);
+    csv_meta(f, "threads", "%d", fo->threads);
+    csv_meta(f, "budget", "%s", t->budget);
+    csv_meta(f, "reference", "%s (%d spp BDPT)", t->refpath, t->refspp);
+    csv_meta(f, "hybrid_length", "%d", t->hybrid);
     csv_meta(f, NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01)");
     fprintf(f, "method,seed,seconds,mutations,relmse,us_per_proposal,acceptance\n");
     for (int m = 0; m < METHODS; m++)
-        for (int s = 0; s < seeds; s++)
-            fprintf(f, "%s,%llu,%.3f,%ld,%.6g,%.6g,%.6g\n", names[m], (unsigned long long)(fo.seed + (uint64_t)s),
-                    R[m][s].seconds, R[m][s].mutations, R[m][s].relmse, R[m][s].us_per_proposal, R[m][s].accept);
+        for (int s = 0; s < t->seeds; s++) {
+            const struct run *r = &t->R[m][s];
+            fprintf(f, "%s,%llu,%.3f,%ld,%.6g,%.6g,%.6g\n", names[m], (unsigned long long)(fo->seed + (uint64_t)s),
+                    r->seconds, r->mutations, r->relmse, r->us_per_proposal, r->accept);
+        }
     fclose(f);
     char path[4096];
-    snprintf(path, sizeof path, "%s/fig4.6-runs.csv", fo.out);
-    bool ok = write_text_atomic(path, buf, err, sizeof err);
+    snprintf(path, sizeof path, "%s/fig4.6-runs.csv", fo->out);
+    bool ok = write_text_atomic(path, buf, err, errlen);
     free(buf);
 
-    /* per method: relMSE, CPU time per proposal, acceptance (mean, se over seeds) */
-    double mean[METHODS][3], se[METHODS][3];
-    for (int m = 0; m < METHODS; m++)
-        for (int q = 0; q < 3; q++) {
-            double v[MAX_SEEDS];
-            for (int s = 0; s < seeds; s++)
-                v[s] = q == 0 ? R[m][s].relmse : q == 1 ? R[m][s].us_per_proposal : R[m][s].accept;
-            mean_se(v, seeds, &mean[m][q], &se[m][q]);
-        }
     buf = NULL;
     f = open_memstream(&buf, &len);
-    csv_meta_head(f, "fig4.6: mean and standard error over seeds per method", fo.scene, fo.scale);
-    csv_meta(f, "seeds", "%d", seeds);
-    csv_meta(f, "budget", "%s, %d threads", budget, fo.threads);
+    csv_meta_head(f, "fig4.6: mean and standard error over seeds per method", fo->scene, fo->scale);
+    csv_meta(f, "seeds", "%d", t->seeds);
+    csv_meta(f, "budget", "%s, %d threads", t->budget, fo->threads);
     csv_meta(f, NULL, "rays_per_proposal: a one-thread run of 20000 proposals less one of none");
     fprintf(
         f, "method,seeds,relmse,relmse_se,us_per_proposal,us_per_proposal_se,cost_vs_mmlt,rays_per_proposal,acceptance,"
            "acceptance_se\n");
     for (int m = 0; m < METHODS; m++)
-        fprintf(f, "%s,%d,%.6g,%.3g,%.6g,%.3g,%.4g,%.4g,%.6g,%.3g\n", names[m], seeds, mean[m][0], se[m][0], mean[m][1],
-                se[m][1], mean[m][1] / mean[0][1], rays[m], mean[m][2], se[m][2]);
+        fprintf(f, "%s,%d,%.6g,%.3g,%.6g,%.3g,%.4g,%.4g,%.6g,%.3g\n", names[m], t->seeds, t->mean[m][0], t->se[m][0],
+                t->mean[m][1], t->se[m][1], t->mean[m][1] / t->mean[0][1], t->rays[m], t->mean[m][2], t->se[m][2]);
     fclose(f);
-    snprintf(path, sizeof path, "%s/fig4.6.csv", fo.out);
-    ok = ok && write_text_atomic(path, buf, err, sizeof err);
+    snprintf(path, sizeof path, "%s/fig4.6.csv", fo->out);
+    ok = ok && write_text_atomic(path, buf, err, errlen);
     free(buf);
+    return ok;
+}
 
-    /* thesis §4.3: MCTLS is accepted more often, costs about 5x per step, and the two cancel */
+/* Thesis §4.3: MCTLS is accepted more often, costs about 5x per step, and the two cancel. */
+static char *claims(const struct fig46 *t, char *err, size_t errlen)
+{
+    const struct opts_figure *fo = &t->fo;
+    const double(*mean)[3] = t->mean, (*se)[3] = t->se;
     struct claims cl;
     char command[64], zs[128], md[256];
-    snprintf(command, sizeof command, "make fig4.6 SCALE=%s", fo.scale);
-    claims_begin(&cl, fo.scale, command, "Claims of thesis §4.3 on %s at %s per run, %d seeds", fo.scene, budget,
-                 seeds);
+    snprintf(command, sizeof command, "make fig4.6 SCALE=%s", fo->scale);
+    claims_begin(&cl, fo->scale, command, "Claims of thesis §4.3 on %s at %s per run, %d seeds", fo->scene,
+                 t->budget, t->seeds);
     const bool two[METHODS] = {true, true, false};
     double z[METHODS], acc[METHODS] = {mean[0][2], mean[1][2], mean[2][2]},
                        acc_se[METHODS] = {se[0][2], se[1][2], se[2][2]};
-    struct verdict v = verdict_extreme(acc, acc_se, two, METHODS, 1, +1, seeds, z);
+    struct verdict v = verdict_extreme(acc, acc_se, two, METHODS, 1, +1, t->seeds, z);
     snprintf(zs, sizeof zs, "mmlt-large=%.2f", z[0]);
     snprintf(md, sizeof md, "mmlt-large %.4g ± %.2g (z = %.1f)", acc[0], acc_se[0], z[0]);
     claims_row(&cl, "thesis §4.3", "MCTLS is accepted more often than MMLT large steps", "mean acceptance probability",
                "mctls", acc[1], acc_se[1], zs, md, &v);
     double ratio = mean[1][1] / mean[0][1],
            ratio_se = ratio * sqrt(pow(se[1][1] / mean[1][1], 2) + pow(se[0][1] / mean[0][1], 2));
-    v = verdict_similar(ratio, ratio_se, 5, 0, 0.25, seeds);
+    v = verdict_similar(ratio, ratio_se, 5, 0, 0.25, t->seeds);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% (z = %.1f)", v.zmin);
     claims_row(&cl, "thesis §4.3", "an MCTLS step costs about 5x an MMLT large step",
                "CPU time per proposal, MCTLS / MMLT", "mctls", ratio, ratio_se, zs, md, &v);
-    v = verdict_similar(mean[1][0], se[1][0], mean[0][0], se[0][0], 0.25, seeds);
+    v = verdict_similar(mean[1][0], se[1][0], mean[0][0], se[0][0], 0.25, t->seeds);
     snprintf(zs, sizeof zs, "mmlt-large=%.2f", v.zmin);
     snprintf(md, sizeof md, "mmlt-large %.4g ± %.2g, within ±25 %% (z = %.1f)", mean[0][0], se[0][0], v.zmin);
-    if (!mutations) /* an equal number of proposals says nothing about equal time */
+    if (!t->mutations) /* an equal number of proposals says nothing about equal time */
         claims_row(&cl, "thesis §4.3", "at equal time MCTLS and MMLT large steps are similarly noisy", "relMSE",
                    "mctls", mean[1][0], se[1][0], zs, md, &v);
-    char cerr[1024];
-    char *claims = claims_finish(&cl, fo.out, cerr, sizeof cerr);
-    if (ok && !claims) snprintf(err, sizeof err, "%s", cerr);
-    ok = ok && claims;
-    if (ok) fputs(claims, stderr);
-    free(claims);
-    img_destroy(ref);
-    scene_free(sc);
-    if (!ok) fprintf(stderr, "%s\n", err);
-    return ok ? 0 : 1;
+    return claims_finish(&cl, fo->out, err, errlen);
+}
+
+int main(int argc, char **argv)
+{
+    static struct fig46 t;
+    parse(&t, argc, argv);
+    char err[1024];
+    t.sc = opts_figure_scene(&t.fo);
+    t.ref = ch4_reference(t.sc, METHOD_BDPT, t.refspp, t.refpath, t.fo.threads, "fig4_6", err, sizeof err);
+    bool ok = t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err) && run(&t, err, sizeof err);
+    if (ok) analyse(&t);
+    ok = ok && write_tables(&t, err, sizeof err);
+    ok = ok && ch4_show_claims(claims(&t, err, sizeof err));
+    img_destroy(t.ref);
+    scene_free(t.sc);
+    if (!ok) die(DIE_RUNTIME, "fig4_6", "%s", err);
+    return 0;
 }

@@ -18,12 +18,8 @@ $(eval $(call FIGURE,fig5.6,fig5_6))
 # Other seeds; the three ledger statistics per kind (relMSE, error correlation length, share in 8x8
 # blobs): Welch t over seeds, Sidak alpha = 0.01 over all six rows (1 - 0.99^(1/3) per statistic,
 # each check_stats call Sidak-corrects over its two rows).
-.PHONY: check-fig5.6
-check-fig5.6: deps $(BIN)/fig5_6 $(CHECK_STATS)
-	$(BIN)/fig5_6 --scale quick --seed 101 --out results/check-fig5.6
-	status=0; for q in relmse:stderr corrlen:corrlen_se blur8:blur8_se; do \
-	  $(CHECK_STATS) --key kind --mean $${q%:*} --se $${q#*:} --count seeds --alpha 0.003345 \
-	    --out results/check-fig5.6/check-$${q%:*}.md results/baselines/fig5.6/fig5.6.csv results/check-fig5.6/fig5.6.csv \
-	    || status=1; \
-	done; cat results/check-fig5.6/check-*.md > results/check-fig5.6/check.md; exit $$status
-CHECK_TARGETS += check-fig5.6
+CHECK_fig5.6_ALSO := relmse corrlen blur8
+CHECK_fig5.6_relmse := --key kind --mean relmse --se stderr --count seeds --alpha 0.003345
+CHECK_fig5.6_corrlen := --key kind --mean corrlen --se corrlen_se --count seeds --alpha 0.003345
+CHECK_fig5.6_blur8 := --key kind --mean blur8 --se blur8_se --count seeds --alpha 0.003345
+$(eval $(call CHECK,fig5.6,fig5_6,101))

@@ -57,90 +57,124 @@ static void write_claims(const struct fig5_cfg *c, const double *ratio_mean, con
     claims_finish_print(&cl, c->fig.out);
 }
 
+/* What the runs measure: per (kind, region, seed) the mean angle change (reg), per (kind, seed)
+ * the mean per path length, per kind the small steps per path length. */
+struct meas {
+    double *reg;
+    double (*len_mean)[MAX_PATH_LENGTH + 1];
+    long len_steps[NK][MAX_PATH_LENGTH + 1];
+};
+
+/* OUT/edges.png: the edge mask, white on black. */
+static void write_edges(const struct fig5_cfg *c, const bool *mask)
+{
+    char err[1024], path[4096];
+    int W = c->width, H = c->height;
+    struct image *mi = img_create(W, H);
+    for (int i = 0; i < W * H; i++)
+        if (mask[i]) img_add(mi, i % W, i / W, v3s(1));
+    snprintf(path, sizeof path, "%s/edges.png", c->fig.out);
+    if (!fig5_write_linear_png(mi, 1, path, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        exit(1);
+    }
+    img_destroy(mi);
+}
+
+/* One small-step kind over the seeds: its region means into m, its mean angle image (averaged
+ * over the seeds) to OUT/KIND.angle.exr and .png. */
+static void run_kind(const struct fig5_cfg *c, struct scene *sc, const bool *mask, int kind, struct meas *m)
+{
+    int W = c->width, H = c->height;
+    char err[1024], path[4096];
+    struct image *avg = img_create(W, H);
+    for (int s = 0; s < c->seeds; s++) {
+        struct mlt_result r;
+        fig5_run(sc, c, (enum small_step)kind, c->fig.seed + (uint64_t)s, true, &r);
+        struct image *a = angle_acc_image(r.angle);
+        img_accumulate(avg, a, 1.0 / c->seeds);
+        double sum[3] = {0}, n[3] = {0};
+        for (int i = 0; i < W * H; i++) {
+            if (!(r.angle->count[i] > 0)) continue;
+            double v = a->px[3 * i];
+            sum[R_ALL] += v, n[R_ALL]++;
+            sum[mask[i] ? R_EDGE : R_ELSE] += v, n[mask[i] ? R_EDGE : R_ELSE]++;
+        }
+        double *x = m->reg + ((size_t)kind * REGIONS) * c->seeds;
+        for (int g = 0; g < 3; g++) x[g * c->seeds + s] = sum[g] / n[g];
+        x[R_RATIO * c->seeds + s] = x[R_EDGE * c->seeds + s] / x[R_ELSE * c->seeds + s];
+        for (int k = 1; k <= MAX_PATH_LENGTH; k++) {
+            m->len_mean[kind * c->seeds + s][k] = r.angle->len[k].attempts ? cell_mean(&r.angle->len[k]) : NAN;
+            m->len_steps[kind][k] += r.angle->len[k].attempts;
+        }
+        img_destroy(a);
+        mlt_result_free(&r);
+    }
+    snprintf(path, sizeof path, "%s/%s.angle.exr", c->fig.out, fig5_kind_name[kind]);
+    bool ok = img_write_exr(avg, 1.0, path, err, sizeof err);
+    snprintf(path, sizeof path, "%s/%s.angle.png", c->fig.out, fig5_kind_name[kind]);
+    if (!ok || !fig5_write_linear_png(avg, 0.5, path, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        exit(1);
+    }
+    img_destroy(avg);
+}
+
+/* OUT/fig5.5.csv (per kind and region) and OUT/fig5.5-lengths.csv (per kind and path length);
+ * the edge / elsewhere ratio per kind into ratio_mean, ratio_se. */
+static void write_tables(const struct fig5_cfg *c, const struct meas *m, double *ratio_mean, double *ratio_se)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    fig5_meta_head(f, c, "fig5.5: mean angle change per pixel, MMLT vs controlled small steps, Gaussian sigma 1/64");
+    csv_meta(f, "p_large", "%g", c->p_large);
+    fig5_meta_runs(f, c);
+    fprintf(f, "kind,region,mean,stderr,seeds\n");
+    for (int kind = 0; kind < NK; kind++)
+        for (int g = 0; g < REGIONS; g++) {
+            double mean, se;
+            mean_se(m->reg + ((size_t)kind * REGIONS + g) * c->seeds, c->seeds, &mean, &se);
+            fprintf(f, "%s,%s,%.9g,%.9g,%d\n", fig5_kind_name[kind], region_name[g], mean, se, c->seeds);
+            if (g == R_RATIO) ratio_mean[kind] = mean, ratio_se[kind] = se;
+        }
+    fclose(f);
+    fig5_write_text(c, "fig5.5.csv", buf);
+    free(buf);
+    f = open_memstream(&buf, &len);
+    fprintf(f, "kind,length,steps,mean_dpsi,stderr\n");
+    for (int kind = 0; kind < NK; kind++)
+        for (int k = 2; k <= c->max_length; k++) {
+            double x[1000], mean, se;
+            int n = 0;
+            for (int s = 0; s < c->seeds; s++)
+                if (!isnan(m->len_mean[kind * c->seeds + s][k])) x[n++] = m->len_mean[kind * c->seeds + s][k];
+            if (n < 2) continue;
+            mean_se(x, n, &mean, &se);
+            fprintf(f, "%s,%d,%ld,%.9g,%.9g\n", fig5_kind_name[kind], k, m->len_steps[kind][k], mean, se);
+        }
+    fclose(f);
+    fig5_write_text(c, "fig5.5-lengths.csv", buf);
+    free(buf);
+}
+
 int main(int argc, char **argv)
 {
     struct fig5_cfg c = {.prog = "fig5_5", .fig.out = "results/fig5.5", .p_large = 0.1};
     fig5_parse(argc, argv, &c, NULL);
     struct scene *sc = fig5_scene(&c);
-    int W = c.width, H = c.height;
     bool *mask = edge_mask(sc, 2);
-    char err[1024], path[4096];
-    struct image *mi = img_create(W, H);
-    for (int i = 0; i < W * H; i++)
-        if (mask[i]) img_add(mi, i % W, i / W, v3s(1));
-    snprintf(path, sizeof path, "%s/edges.png", c.fig.out);
-    if (!fig5_write_linear_png(mi, 1, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
-    img_destroy(mi);
-
-    double *reg = xcalloc((size_t)NK * REGIONS * c.seeds, sizeof *reg);
-    double (*len_mean)[MAX_PATH_LENGTH + 1] = xcalloc((size_t)NK * c.seeds, sizeof *len_mean);
-    long len_steps[NK][MAX_PATH_LENGTH + 1] = {{0}};
-    for (int kind = 0; kind < NK; kind++) {
-        struct image *avg = img_create(W, H);
-        for (int s = 0; s < c.seeds; s++) {
-            struct mlt_result r;
-            fig5_run(sc, &c, (enum small_step)kind, c.fig.seed + (uint64_t)s, true, &r);
-            struct image *a = angle_acc_image(r.angle);
-            img_accumulate(avg, a, 1.0 / c.seeds);
-            double sum[3] = {0}, n[3] = {0};
-            for (int i = 0; i < W * H; i++) {
-                if (!(r.angle->count[i] > 0)) continue;
-                double v = a->px[3 * i];
-                sum[R_ALL] += v, n[R_ALL]++;
-                sum[mask[i] ? R_EDGE : R_ELSE] += v, n[mask[i] ? R_EDGE : R_ELSE]++;
-            }
-            double *x = reg + ((size_t)kind * REGIONS) * c.seeds;
-            for (int g = 0; g < 3; g++) x[g * c.seeds + s] = sum[g] / n[g];
-            x[R_RATIO * c.seeds + s] = x[R_EDGE * c.seeds + s] / x[R_ELSE * c.seeds + s];
-            for (int k = 1; k <= MAX_PATH_LENGTH; k++) {
-                len_mean[kind * c.seeds + s][k] = r.angle->len[k].attempts ? cell_mean(&r.angle->len[k]) : NAN;
-                len_steps[kind][k] += r.angle->len[k].attempts;
-            }
-            img_destroy(a);
-            mlt_result_free(&r);
-        }
-        snprintf(path, sizeof path, "%s/%s.angle.exr", c.fig.out, fig5_kind_name[kind]);
-        bool ok = img_write_exr(avg, 1.0, path, err, sizeof err);
-        snprintf(path, sizeof path, "%s/%s.angle.png", c.fig.out, fig5_kind_name[kind]);
-        if (!ok || !fig5_write_linear_png(avg, 0.5, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
-        img_destroy(avg);
-    }
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    fig5_meta_head(f, &c, "fig5.5: mean angle change per pixel, MMLT vs controlled small steps, Gaussian sigma 1/64");
-    csv_meta(f, "p_large", "%g", c.p_large);
-    fig5_meta_runs(f, &c);
-    fprintf(f, "kind,region,mean,stderr,seeds\n");
+    write_edges(&c, mask);
+    static struct meas m;
+    m.reg = xcalloc((size_t)NK * REGIONS * c.seeds, sizeof *m.reg);
+    m.len_mean = xcalloc((size_t)NK * c.seeds, sizeof *m.len_mean);
+    for (int kind = 0; kind < NK; kind++)
+        run_kind(&c, sc, mask, kind, &m);
     double ratio_mean[NK], ratio_se[NK];
-    for (int kind = 0; kind < NK; kind++)
-        for (int g = 0; g < REGIONS; g++) {
-            double m, se;
-            mean_se(reg + ((size_t)kind * REGIONS + g) * c.seeds, c.seeds, &m, &se);
-            fprintf(f, "%s,%s,%.9g,%.9g,%d\n", fig5_kind_name[kind], region_name[g], m, se, c.seeds);
-            if (g == R_RATIO) ratio_mean[kind] = m, ratio_se[kind] = se;
-        }
-    fclose(f);
-    fig5_write_text(&c, "fig5.5.csv", buf);
-    free(buf);
-    f = open_memstream(&buf, &len);
-    fprintf(f, "kind,length,steps,mean_dpsi,stderr\n");
-    for (int kind = 0; kind < NK; kind++)
-        for (int k = 2; k <= c.max_length; k++) {
-            double x[1000], m, se;
-            int n = 0;
-            for (int s = 0; s < c.seeds; s++)
-                if (!isnan(len_mean[kind * c.seeds + s][k])) x[n++] = len_mean[kind * c.seeds + s][k];
-            if (n < 2) continue;
-            mean_se(x, n, &m, &se);
-            fprintf(f, "%s,%d,%ld,%.9g,%.9g\n", fig5_kind_name[kind], k, len_steps[kind][k], m, se);
-        }
-    fclose(f);
-    fig5_write_text(&c, "fig5.5-lengths.csv", buf);
-    free(buf);
+    write_tables(&c, &m, ratio_mean, ratio_se);
     write_claims(&c, ratio_mean, ratio_se);
-    free(reg);
-    free(len_mean);
+    free(m.reg);
+    free(m.len_mean);
     free(mask);
     scene_free(sc);
     return 0;

@@ -10,29 +10,50 @@
 #include "ch5/fig5_common.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
+#include "common/refcache.h"
 #include "mc/render.h"
 #include "path/scene_ready.h"
+#include "scene/scene_hash.h"
 #include "stats/noise_corr.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
-/* The BDPT reference, rendered once per size and kept under results/reference/. */
+/* What the reference's render needs (refcache_render_fn's ctx). */
+struct ref_job {
+    const struct scene *sc;
+    const struct fig5_cfg *c;
+    int spp;
+};
+
+/* refcache_render_fn: the BDPT reference at seed 777, written to path. */
+static struct image *render_reference(void *ctx, const char *path, char *err, size_t errlen)
+{
+    const struct ref_job *j = ctx;
+    fprintf(stderr, "fig5_6: rendering the BDPT reference (%d spp) into %s\n", j->spp, path);
+    struct render_opts o = {
+        .method = METHOD_BDPT, .spp = j->spp, .seed = 777, .threads = j->c->fig.threads, .max_length = j->c->max_length};
+    struct render_stats st;
+    struct image *ref = render_mc(j->sc, &o, &st);
+    if (!img_write_exr(ref, 1.0, path, err, errlen)) {
+        img_destroy(ref);
+        return NULL;
+    }
+    return ref;
+}
+
+/* The BDPT reference, rendered once per size and kept under results/reference/ by
+ * common/refcache.h's rule (keyed by the scene's content and the render's settings). */
 static struct image *reference(const struct scene *sc, const struct fig5_cfg *c, int spp)
 {
-    char path[4096], err[1024];
-    mkdir("results", 0777);
-    mkdir("results/reference", 0777);
+    char path[4096], err[4200], settings[256];
     snprintf(path, sizeof path, "results/reference/jewelry-bdpt-%d-%dx%d.exr", spp, c->width, c->height);
-    struct image *ref = img_read(path, err, sizeof err);
-    if (ref && ref->w == c->width && ref->h == c->height) return ref;
-    img_destroy(ref);
-    fprintf(stderr, "fig5_6: rendering the BDPT reference (%d spp) into %s\n", spp, path);
-    struct render_opts o = {.method = METHOD_BDPT, .spp = spp, .seed = 777, .threads = c->fig.threads, .max_length = c->max_length};
-    struct render_stats st;
-    ref = render_mc(sc, &o, &st);
-    if (!img_write_exr(ref, 1.0, path, err, sizeof err)) fprintf(stderr, "%s\n", err);
+    snprintf(settings, sizeof settings, "bdpt spp=%d seed=777 max_length=%d resolution=%dx%d", spp, c->max_length,
+             c->width, c->height);
+    struct refcache rc = {.path = path, .scene_hash = ckpt_scene_hash(sc), .settings = settings};
+    struct image *ref = refcache_get(&rc, render_reference, &(struct ref_job){sc, c, spp}, err, sizeof err);
+    if (!ref) die(DIE_RUNTIME, "fig5_6", "%s", err);
     return ref;
 }
 

@@ -13,6 +13,7 @@
 #include "cmlt/cmlt_scene.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
+#include "common/outdir.h"
 #include "io/image.h"
 #include <errno.h>
 #include <math.h>
@@ -133,22 +134,6 @@ static void write_text(const char *path, struct text *t)
         fprintf(stderr, "table1_cmlt: %s\n", err);
         exit(1);
     }
-}
-
-static void mkdirs(const char *dir)
-{
-    char *p = xstrdup(dir);
-    for (char *s = p + 1; *s; s++)
-        if (*s == '/') {
-            *s = 0;
-            mkdir(p, 0777);
-            *s = '/';
-        }
-    if (mkdir(p, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "table1_cmlt: cannot create %s: %s\n", p, strerror(errno));
-        exit(1);
-    }
-    free(p);
 }
 
 static double now(void)
@@ -384,6 +369,156 @@ static void bench(const struct opts *o)
     free(img);
 }
 
+/* The jobs of every (seed, budget, algorithm), largest budgets first, and room for the first
+ * seed's images. */
+static void make_pool(struct pool *p)
+{
+    const struct opts *o = p->o;
+    p->njobs = o->seeds * o->nbudgets * CMLT_NALGO;
+    p->jobs = xcalloc((size_t)p->njobs, sizeof *p->jobs);
+    int k = 0;
+    for (int s = 0; s < o->seeds; s++)
+        for (int b = 0; b < o->nbudgets; b++)
+            for (int a = 0; a < CMLT_NALGO; a++)
+                p->jobs[k++] = (struct job){.algo = a, .bidx = b, .seed_idx = s, .n = o->budgets[b]};
+    qsort(p->jobs, (size_t)p->njobs, sizeof *p->jobs, cmp_job);
+    size_t npx = 3 * (size_t)o->res * o->res;
+    p->keep = xmalloc(sizeof(double *) * o->nbudgets * CMLT_NALGO);
+    for (int i = 0; i < o->nbudgets * CMLT_NALGO; i++)
+        p->keep[i] = xmalloc(sizeof(double) * npx);
+}
+
+static void free_pool(struct pool *p)
+{
+    for (int i = 0; i < p->o->nbudgets * CMLT_NALGO; i++)
+        free(p->keep[i]);
+    free(p->keep);
+    free(p->jobs);
+}
+
+/* What the run's tables share: the RMSE mean and standard error per (budget, algorithm). */
+struct summary {
+    double mean[MAX_BUDGETS][CMLT_NALGO], se[MAX_BUDGETS][CMLT_NALGO];
+    double wall;
+    int partial;
+};
+
+/* The rows of one (algorithm, budget): every seed's into `seeds`, the mean into `csv` and `stats`. */
+static void analyse_cell(const struct pool *p, int a, int b, struct summary *sm, struct text *csv, struct text *stats,
+                         struct text *seeds)
+{
+    const struct opts *o = p->o;
+    double s1 = 0, s2 = 0, steps = 0, secs = 0, acc = 0, swaps = 0, swacc = 0;
+    int m = 0;
+    for (int j = 0; j < p->njobs; j++) {
+        const struct job *J = &p->jobs[j];
+        if (J->algo != a || J->bidx != b) continue;
+        s1 += J->rmse;
+        s2 += J->rmse * J->rmse;
+        steps += J->st.steps;
+        secs += J->st.seconds;
+        acc += J->st.acc_sum;
+        swaps += J->st.swaps;
+        swacc += J->st.swap_acc_sum;
+        m++;
+    }
+    for (int s = 0; s < o->seeds; s++)
+        for (int j = 0; j < p->njobs; j++) {
+            const struct job *J = &p->jobs[j];
+            if (J->algo != a || J->bidx != b || J->seed_idx != s) continue;
+            tprintf(seeds, "%s,%llu,%d,%.6e,%.6g,%.6g,%.6g,%.4f,%.4f,%.2f\n", cmlt_algo_names[a],
+                    (unsigned long long)J->n, s, J->rmse, J->st.b[0], J->st.b[1], J->st.b[2],
+                    J->st.steps ? J->st.acc_sum / J->st.steps : 0, J->st.swaps ? J->st.swap_acc_sum / J->st.swaps : 0,
+                    J->st.seconds);
+        }
+    sm->mean[b][a] = s1 / m;
+    sm->se[b][a] = m > 1 ? sqrt(fmax(0.0, (s2 - s1 * s1 / m) / (m - 1)) / m) : 0;
+    tprintf(csv, "%s,%llu,%.6e\n", cmlt_algo_names[a], (unsigned long long)o->budgets[b], sm->mean[b][a]);
+    tprintf(stats, "%s,%llu,%d,%.6e,%.6e,%.4g,%.4f,%.4f\n", cmlt_algo_names[a], (unsigned long long)o->budgets[b], m,
+            sm->mean[b][a], sm->se[b][a], secs > 0 ? steps / secs : 0, steps > 0 ? acc / steps : 0,
+            swaps > 0 ? swacc / swaps : 0);
+}
+
+/* table1.md: ours (mean ± standard error over seeds) next to the paper's Table 1. */
+static void write_markdown(const struct opts *o, const struct summary *sm, double noise_rmse, struct text *md)
+{
+    static const double paper[2][CMLT_NALGO] = {{8.287e-2, 4.073e-2, 4.106e-2, 3.663e-2, 3.924e-2, 3.502e-2},
+                                                {3.212e-2, 1.488e-2, 1.587e-2, 1.405e-2, 1.467e-2, 1.374e-2}};
+    char nb[32];
+    tprintf(md,
+            "RMSE against the reference (mean ± standard error over %d seeds; same total samples n per "
+            "algorithm), next to the paper's Table 1 (their toy, one run).\n\n| algorithm |",
+            o->seeds);
+    for (int b = 0; b < o->nbudgets; b++)
+        tprintf(md, " n = %s |", fmt_n(o->budgets[b], nb, sizeof nb));
+    tprintf(md, " paper n = 16M | paper n = 128M |\n| --- |");
+    for (int b = 0; b < o->nbudgets; b++)
+        tprintf(md, " ---: |");
+    tprintf(md, " ---: | ---: |\n");
+    for (int a = 0; a < CMLT_NALGO; a++) {
+        tprintf(md, "| %s |", cmlt_algo_names[a]);
+        for (int b = 0; b < o->nbudgets; b++)
+            tprintf(md, " %.3e ± %.1e |", sm->mean[b][a], sm->se[b][a]);
+        tprintf(md, " %.3e | %.3e |\n", paper[0][a], paper[1][a]);
+    }
+    tprintf(md, "\nReference: %d spp stratified MC, own noise RMSE ≈ %.2e. Wall time %.1f s on %d threads.%s\n",
+            o->ref_spp, noise_rmse, sm->wall, o->threads, sm->partial ? " **PARTIAL: interrupted.**" : "");
+}
+
+/* table1.csv, table1_stats.csv, table1_seeds.csv and table1.md (returned in md; exits 1 when a
+ * write fails). */
+static void write_tables(const struct pool *p, struct summary *sm, double noise_rmse, struct text *md)
+{
+    const struct opts *o = p->o;
+    struct text csv = {0}, stats = {0}, seeds = {0};
+    char meta[512];
+    FILE *mf = fmemopen(meta, sizeof meta, "w");
+    csv_meta(mf, "table1_cmlt",
+             "commit=%s seed=%llu scale=%s seeds=%d threads=%d res=%d ref_spp=%d p_large=%g swap_every=%d seed_frac=%g "
+             "seconds=%.1f%s",
+             o->commit, (unsigned long long)o->seed, o->scale, o->seeds, o->threads, o->res, o->ref_spp, o->p_large,
+             o->swap_every, o->seed_frac, sm->wall, sm->partial ? " PARTIAL (interrupted)" : "");
+    fclose(mf);
+    tprintf(&csv, "%salgorithm,n,rmse\n", meta);
+    tprintf(&stats, "%salgorithm,n,seeds,rmse_mean,rmse_se,steps_per_s,acceptance,swap_acceptance\n", meta);
+    tprintf(&seeds, "%salgorithm,n,seed,rmse,b,b1,b2,acceptance,swap_acceptance,seconds\n", meta);
+    for (int a = 0; a < CMLT_NALGO; a++)
+        for (int b = 0; b < o->nbudgets; b++)
+            analyse_cell(p, a, b, sm, &csv, &stats, &seeds);
+    write_markdown(o, sm, noise_rmse, md);
+    char path[1024];
+    snprintf(path, sizeof path, "%s/table1_seeds.csv", o->out);
+    write_text(path, &seeds);
+    snprintf(path, sizeof path, "%s/table1_stats.csv", o->out);
+    write_text(path, &stats);
+    snprintf(path, sizeof path, "%s/table1.md", o->out);
+    write_text(path, md);
+    snprintf(path, sizeof path, "%s/table1.csv", o->out);
+    write_text(path, &csv);
+    free(csv.buf);
+    free(stats.buf);
+    free(seeds.buf);
+}
+
+/* <algo>_<n>.exr and .png of the first seed. */
+static bool write_images(const struct pool *p, char *err, size_t errlen)
+{
+    const struct opts *o = p->o;
+    char path[1024], nb[32];
+    for (int b = 0; b < o->nbudgets; b++)
+        for (int a = 0; a < CMLT_NALGO; a++) {
+            struct image im = {.w = o->res, .h = o->res, .px = p->keep[b * CMLT_NALGO + a]};
+            const char *ext[2] = {"exr", "png"};
+            for (int e = 0; e < 2; e++) {
+                snprintf(path, sizeof path, "%s/%s_%s.%s", o->out, cmlt_algo_names[a],
+                         fmt_n(o->budgets[b], nb, sizeof nb), ext[e]);
+                bool ok = e ? img_write_png(&im, 1.0, path, err, errlen) : img_write_exr(&im, 1.0, path, err, errlen);
+                if (!ok) return false;
+            }
+        }
+    return true;
+}
+
 int main(int argc, char **argv)
 {
     struct opts o;
@@ -393,149 +528,41 @@ int main(int argc, char **argv)
         return 0;
     }
     signal(SIGINT, on_sigint);
-    mkdirs(o.out);
+    outdir_require("table1_cmlt", o.out);
     opts_require_image_output("table1_cmlt");
     double t_start = now();
     struct cmlt_ref_result rr;
     struct image *ref = get_reference(&o, &rr);
     fprintf(stderr, "reference: b = %.6g (w1: %.6g, w2: %.6g), own noise RMSE ~ %.3g\n", rr.b[0], rr.b[1], rr.b[2],
             rr.noise_rmse);
-
     struct pool p = {.o = &o, .ref = ref};
-    p.njobs = o.seeds * o.nbudgets * CMLT_NALGO;
-    p.jobs = xcalloc((size_t)p.njobs, sizeof *p.jobs);
-    int k = 0;
-    for (int s = 0; s < o.seeds; s++)
-        for (int b = 0; b < o.nbudgets; b++)
-            for (int a = 0; a < CMLT_NALGO; a++)
-                p.jobs[k++] = (struct job){.algo = a, .bidx = b, .seed_idx = s, .n = o.budgets[b]};
-    qsort(p.jobs, (size_t)p.njobs, sizeof *p.jobs, cmp_job);
-    size_t npx = 3 * (size_t)o.res * o.res;
-    p.keep = xmalloc(sizeof(double *) * o.nbudgets * CMLT_NALGO);
-    for (int i = 0; i < o.nbudgets * CMLT_NALGO; i++)
-        p.keep[i] = xmalloc(sizeof(double) * npx);
+    make_pool(&p);
     run_pool(&p, "chains");
-    int partial = g_stop != 0;
-    double wall = now() - t_start;
+    struct summary sm = {.partial = g_stop != 0, .wall = now() - t_start};
+    struct text md = {0};
+    write_tables(&p, &sm, rr.noise_rmse, &md);
 
-    /* statistics per (algorithm, budget) */
-    struct text csv = {0}, stats = {0}, seeds = {0}, md = {0};
-    char meta[512], nb[32];
-    FILE *mf = fmemopen(meta, sizeof meta, "w");
-    csv_meta(mf, "table1_cmlt",
-             "commit=%s seed=%llu scale=%s seeds=%d threads=%d res=%d ref_spp=%d p_large=%g swap_every=%d seed_frac=%g "
-             "seconds=%.1f%s",
-             o.commit, (unsigned long long)o.seed, o.scale, o.seeds, o.threads, o.res, o.ref_spp, o.p_large,
-             o.swap_every, o.seed_frac, wall, partial ? " PARTIAL (interrupted)" : "");
-    fclose(mf);
-    tprintf(&csv, "%salgorithm,n,rmse\n", meta);
-    tprintf(&stats, "%salgorithm,n,seeds,rmse_mean,rmse_se,steps_per_s,acceptance,swap_acceptance\n", meta);
-    tprintf(&seeds, "%salgorithm,n,seed,rmse,b,b1,b2,acceptance,swap_acceptance,seconds\n", meta);
-    static const double paper[2][CMLT_NALGO] = {{8.287e-2, 4.073e-2, 4.106e-2, 3.663e-2, 3.924e-2, 3.502e-2},
-                                                {3.212e-2, 1.488e-2, 1.587e-2, 1.405e-2, 1.467e-2, 1.374e-2}};
-    double mean[MAX_BUDGETS][CMLT_NALGO], se[MAX_BUDGETS][CMLT_NALGO];
-    for (int a = 0; a < CMLT_NALGO; a++)
-        for (int b = 0; b < o.nbudgets; b++) {
-            double s1 = 0, s2 = 0, steps = 0, secs = 0, acc = 0, swaps = 0, swacc = 0;
-            int m = 0;
-            for (int j = 0; j < p.njobs; j++) {
-                const struct job *J = &p.jobs[j];
-                if (J->algo != a || J->bidx != b) continue;
-                s1 += J->rmse;
-                s2 += J->rmse * J->rmse;
-                steps += J->st.steps;
-                secs += J->st.seconds;
-                acc += J->st.acc_sum;
-                swaps += J->st.swaps;
-                swacc += J->st.swap_acc_sum;
-                m++;
-            }
-            for (int s = 0; s < o.seeds; s++)
-                for (int j = 0; j < p.njobs; j++) {
-                    const struct job *J = &p.jobs[j];
-                    if (J->algo != a || J->bidx != b || J->seed_idx != s) continue;
-                    tprintf(&seeds, "%s,%llu,%d,%.6e,%.6g,%.6g,%.6g,%.4f,%.4f,%.2f\n", cmlt_algo_names[a],
-                            (unsigned long long)J->n, s, J->rmse, J->st.b[0], J->st.b[1], J->st.b[2],
-                            J->st.steps ? J->st.acc_sum / J->st.steps : 0,
-                            J->st.swaps ? J->st.swap_acc_sum / J->st.swaps : 0, J->st.seconds);
-                }
-            mean[b][a] = s1 / m;
-            se[b][a] = m > 1 ? sqrt(fmax(0.0, (s2 - s1 * s1 / m) / (m - 1)) / m) : 0;
-            tprintf(&csv, "%s,%llu,%.6e\n", cmlt_algo_names[a], (unsigned long long)o.budgets[b], mean[b][a]);
-            tprintf(&stats, "%s,%llu,%d,%.6e,%.6e,%.4g,%.4f,%.4f\n", cmlt_algo_names[a],
-                    (unsigned long long)o.budgets[b], m, mean[b][a], se[b][a], secs > 0 ? steps / secs : 0,
-                    steps > 0 ? acc / steps : 0, swaps > 0 ? swacc / swaps : 0);
-        }
-    /* Markdown table: ours (mean ± standard error over seeds) next to the paper's Table 1 */
-    tprintf(&md,
-            "RMSE against the reference (mean ± standard error over %d seeds; same total samples n per "
-            "algorithm), next to the paper's Table 1 (their toy, one run).\n\n| algorithm |",
-            o.seeds);
-    for (int b = 0; b < o.nbudgets; b++)
-        tprintf(&md, " n = %s |", fmt_n(o.budgets[b], nb, sizeof nb));
-    tprintf(&md, " paper n = 16M | paper n = 128M |\n| --- |");
-    for (int b = 0; b < o.nbudgets; b++)
-        tprintf(&md, " ---: |");
-    tprintf(&md, " ---: | ---: |\n");
-    for (int a = 0; a < CMLT_NALGO; a++) {
-        tprintf(&md, "| %s |", cmlt_algo_names[a]);
-        for (int b = 0; b < o.nbudgets; b++)
-            tprintf(&md, " %.3e ± %.1e |", mean[b][a], se[b][a]);
-        tprintf(&md, " %.3e | %.3e |\n", paper[0][a], paper[1][a]);
-    }
-    tprintf(&md, "\nReference: %d spp stratified MC, own noise RMSE ≈ %.2e. Wall time %.1f s on %d threads.%s\n",
-            o.ref_spp, rr.noise_rmse, wall, o.threads, partial ? " **PARTIAL: interrupted.**" : "");
-    char path[1024], err[512];
-    snprintf(path, sizeof path, "%s/table1_seeds.csv", o.out);
-    write_text(path, &seeds);
-    snprintf(path, sizeof path, "%s/table1_stats.csv", o.out);
-    write_text(path, &stats);
-    snprintf(path, sizeof path, "%s/table1.md", o.out);
-    write_text(path, &md);
-    snprintf(path, sizeof path, "%s/table1.csv", o.out);
-    write_text(path, &csv);
-    char command[64], scale[64];
+    char command[64], scale[64], err[512];
     snprintf(command, sizeof command, "make table1-cmlt SCALE=%s", o.scale);
-    snprintf(scale, sizeof scale, "%s%s", o.scale, partial ? " (interrupted)" : "");
+    snprintf(scale, sizeof scale, "%s%s", o.scale, sm.partial ? " (interrupted)" : "");
     struct cmlt_claims_in ci = {.dir = o.out,
                                 .scale = scale,
                                 .command = command,
                                 .seeds = o.seeds,
                                 .nbudgets = o.nbudgets,
                                 .budgets = o.budgets,
-                                .mean = mean,
-                                .se = se};
+                                .mean = sm.mean,
+                                .se = sm.se};
     char *claims = cmlt_write_claims(&ci, err, sizeof err);
-    if (!claims) {
+    if (!claims || !write_images(&p, err, sizeof err)) {
         fprintf(stderr, "table1_cmlt: %s\n", err);
         return 1;
     }
-    for (int b = 0; b < o.nbudgets; b++)
-        for (int a = 0; a < CMLT_NALGO; a++) {
-            struct image im = {.w = o.res, .h = o.res, .px = p.keep[b * CMLT_NALGO + a]};
-            const char *ext[2] = {"exr", "png"};
-            for (int e = 0; e < 2; e++) {
-                snprintf(path, sizeof path, "%s/%s_%s.%s", o.out, cmlt_algo_names[a],
-                         fmt_n(o.budgets[b], nb, sizeof nb), ext[e]);
-                bool ok =
-                    e ? img_write_png(&im, 1.0, path, err, sizeof err) : img_write_exr(&im, 1.0, path, err, sizeof err);
-                if (!ok) {
-                    fprintf(stderr, "table1_cmlt: %s\n", err);
-                    return 1;
-                }
-            }
-        }
     fputs(md.buf, stderr);
     fputs(claims, stderr);
     free(claims);
-    free(csv.buf);
-    free(stats.buf);
-    free(seeds.buf);
     free(md.buf);
-    for (int i = 0; i < o.nbudgets * CMLT_NALGO; i++)
-        free(p.keep[i]);
-    free(p.keep);
-    free(p.jobs);
+    free_pool(&p);
     img_destroy(ref);
-    return partial ? 130 : 0;
+    return sm.partial ? 130 : 0;
 }

@@ -1,5 +1,7 @@
 /* The option table parser and its --help (opts.h). */
 #include "common/opts.h"
+#include "common/die.h"
+#include "common/outdir.h"
 #include "base/util.h"
 #include "io/oiio.h"
 #include "path/scene_ready.h"
@@ -9,7 +11,6 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 const char *const opts_scales[] = {"quick", "paper", "full", NULL};
 
@@ -17,19 +18,13 @@ void opts_fail(const char *prog, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    fprintf(stderr, "%s: ", prog);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    va_end(ap);
-    exit(2);
+    vdie(DIE_USAGE, prog, fmt, ap);
 }
 
 void opts_require_image_output(const char *prog)
 {
     char err[1024];
-    if (oiio_module_present(err, sizeof err)) return;
-    fprintf(stderr, "%s: %s\n", prog, err);
-    exit(1);
+    if (!oiio_module_present(err, sizeof err)) die(DIE_RUNTIME, prog, "%s", err);
 }
 
 const struct opt *opts_find(const struct opts_spec *s, const char *name)
@@ -209,6 +204,7 @@ void opts_parse(const struct opts_spec *s, int argc, char **argv)
         for (int k = 0; k < n; k++)
             if (!given[k] && s->opts[k].name) set_default(s, &s->opts[k], pass);
         if (pass == 0 && s->fig) { /* --scale is known now; the defaults that depend on it follow */
+            s->fig->prog = s->prog;
             s->fig->paper = s->fig->scale_i == 1;
             s->fig->full = s->fig->scale_i == 2;
             bool has_full = false;
@@ -304,7 +300,7 @@ struct scene *opts_figure_scene(const struct opts_figure *f)
         fprintf(stderr, "%s\n", err);
         exit(2);
     }
-    mkdir(f->out, 0777);
+    outdir_require(f->prog, f->out);
     return sc;
 }
 

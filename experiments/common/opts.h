@@ -93,6 +93,7 @@ void opts_require_image_output(const char *prog);
 /* What every figure tool takes: --scene FILE, --scale quick|paper|full (default $SCALE, else quick),
  * --seed S (default 1), --threads T (default: all cores), --out DIR. */
 struct opts_figure {
+    const char *prog; /* set by opts_parse: the error lines' name */
     const char *scene, *scale, *out;
     int scale_i;      /* index into opts_scales */
     bool paper, full; /* --scale paper, --scale full */
@@ -174,7 +175,8 @@ extern const char *const opts_scales[]; /* quick, paper, full */
         "--hybrid-length", OPT_INT, OPT_DST(d), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, __VA_ARGS__                \
     }
 
-/* The figure's scene (a load error is one line and exit status 2), with its output folder created. */
+/* The figure's scene (a load error is one line and exit status 2), with its output folder created
+ * (mkdir -p; a folder that cannot be made: "PROG: cannot create DIR: why" and exit status 2). */
 struct scene *opts_figure_scene(const struct opts_figure *f);
 
 /* The acceptance figures (fig4_5, fig6_1): OPTS_FIGURE, --mutations N per method over all lengths

@@ -1,0 +1,67 @@
+/* bin/ch6_equal's parts (ch6_equal.c is the orchestration): the settings and measurements of one
+ * invocation, shared by the method list (ch6_methods.c), the reference (ch6_reference.c), the runs
+ * (ch6_runs.c) and the writers (ch6_write.c, ch6_report.c). */
+#ifndef CH6_EQUAL_H
+#define CH6_EQUAL_H
+
+#include "ch6/ch6_claims.h"
+#include <stdbool.h>
+
+#define CH6_MAX_METHODS 16
+#define CH6_MAX_BUDGETS 16
+#define CH6_MAX_SEEDS 64
+#define CH6_MAX_ARGS 64
+
+struct image;
+
+struct ch6_method {
+    char name[64];
+    char *argv[CH6_MAX_ARGS]; /* bin/render's method options */
+    int argc;
+    bool available; /* bin/render accepts them */
+};
+
+/* One run's measurements: its seconds and the per-run quantities (ch6_claims.h) */
+struct ch6_run {
+    double seconds, q[Q_COUNT];
+};
+
+struct ch6_equal {
+    /* the command line */
+    const char *prog, *scene, *out, *name, *refpath, *res, *source, *command, *scale;
+    char render[4096], extra_s[1024];
+    int seeds, refspp, blk, threads, minlen, spp, first_seed;
+    double T, ckpt_every;
+    bool reuse, wall;
+    /* derived */
+    char *extra_argv[CH6_MAX_ARGS], extra_buf[1024];
+    int extra_c;
+    struct ch6_method ms[CH6_MAX_METHODS];
+    int nm, nb;
+    double budgets[CH6_MAX_BUDGETS];
+    char runsdir[4096], defref[1024], thr[16], minlen_s[16];
+    char *methods_buf; /* the --methods text, cut in place into ms[].argv */
+    /* the reference: mean luminance, relMSE epsilon, PNG exposure (nan without a reference) */
+    struct image *ref;
+    double mlum, eps, expo;
+    double *blocks; /* the per-block relMSE scratch, cap values */
+    int cap;
+    /* R[method][budget][seed]; sum[method][q]: mean and se over seeds at the largest budget */
+    struct ch6_run (*R)[CH6_MAX_BUDGETS][CH6_MAX_SEEDS];
+    double sum[CH6_MAX_METHODS][Q_COUNT][2];
+};
+
+/* ch6_methods.c: the --methods list parsed into e->ms and probed (bin/render M --help), the
+ * --render-args split. */
+void ch6_methods_parse(struct ch6_equal *e, const char *methods);
+/* ch6_reference.c: the cached BDPT reference (common/refcache.h) into e->ref (NULL with
+ * --reference-spp 0), its statistics, and OUT/reference.png. */
+void ch6_reference(struct ch6_equal *e);
+/* ch6_runs.c: every run, interleaved (common/runner.h), into e->R. */
+void ch6_runs(struct ch6_equal *e);
+/* ch6_write.c: OUT/runs.csv, OUT/summary.csv (filling e->sum) and OUT/stats.csv. */
+void ch6_write_tables(struct ch6_equal *e);
+/* ch6_report.c: OUT/NAME.md (also on stdout) and the claims. */
+void ch6_report(const struct ch6_equal *e);
+
+#endif

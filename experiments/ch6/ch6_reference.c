@@ -1,0 +1,64 @@
+/* bin/ch6_equal's BDPT reference (ch6_equal.h): cached by common/refcache.h's rule, keyed by the
+ * scene file's content and the settings that change its pixels (samples per pixel, seed, shortest
+ * length, resolution), rendered by bin/render like the runs. */
+#include "ch6/ch6_equal.h"
+#include "common/die.h"
+#include "common/image_mean.h"
+#include "common/proc.h"
+#include "common/refcache.h"
+#include "io/image.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#define REF_SEED "12345"
+
+/* refcache_render_fn: bin/render --method bdpt into path. Rendered under another name and renamed
+ * when complete: an interrupted render writes a partial image, which must never pass for the
+ * cached reference. */
+static struct image *render_reference(void *ctx, const char *path, char *err, size_t errlen)
+{
+    struct ch6_equal *e = ctx;
+    char part[1200], spp_s[32], exr[1300];
+    fprintf(stderr, "%s: rendering the BDPT reference (%d spp) into %s\n", e->prog, e->refspp, path);
+    snprintf(part, sizeof part, "%.*s.rendering", (int)(strlen(path) - 4), path);
+    snprintf(spp_s, sizeof spp_s, "%d", e->refspp);
+    char *rv[24] = {e->render,   (char *)e->scene, "--method", "bdpt",         "--spp",     spp_s,   "--seed", REF_SEED,
+                    "--threads", e->thr,           "--quiet",  "--min-length", e->minlen_s, "--out", part};
+    int c = 15;
+    if (e->res) rv[c++] = "--resolution", rv[c++] = (char *)e->res;
+    if (proc_render_resumable(e->prog, rv, c, part, e->ckpt_every, NULL) != 0)
+        die(DIE_RUNTIME, e->prog, "the reference render failed: %s", path);
+    snprintf(exr, sizeof exr, "%s.exr", part);
+    if (rename(exr, path) != 0) die(DIE_RUNTIME, e->prog, "cannot rename the reference into place: %s", path);
+    snprintf(exr, sizeof exr, "%s.png", part); /* the render's PNG: OUT/reference.png replaces it */
+    unlink(exr);
+    return img_read(path, err, errlen);
+}
+
+void ch6_reference(struct ch6_equal *e)
+{
+    char err[4200], settings[256], path[4096];
+    e->ref = NULL;
+    if (e->refspp) {
+        if (!e->refpath) {
+            snprintf(e->defref, sizeof e->defref, "results/reference/%s-bdpt-%s-min%d-%d.exr", e->name,
+                     e->res ? e->res : "native", e->minlen, e->refspp);
+            e->refpath = e->defref;
+        }
+        snprintf(settings, sizeof settings, "bdpt spp=%d seed=%s min_length=%d resolution=%s", e->refspp, REF_SEED,
+                 e->minlen, e->res ? e->res : "native");
+        struct refcache rc = {.path = e->refpath, .settings = settings};
+        rc.scene_hash = refcache_file_hash(e->scene, err, sizeof err);
+        if (!rc.scene_hash) die(DIE_USAGE, e->prog, "%s", err);
+        e->ref = refcache_get(&rc, render_reference, e, err, sizeof err);
+        if (!e->ref) die(DIE_RUNTIME, e->prog, "%s", err);
+    }
+    e->mlum = e->ref ? img_mean_luminance(e->ref) : NAN;
+    e->eps = 0.01 * e->mlum * e->mlum;
+    e->expo = 0.5 / e->mlum;
+    if (e->ref && !(e->mlum > 0)) die(DIE_RUNTIME, e->prog, "the reference is black: %s", e->refpath);
+    snprintf(path, sizeof path, "%s/reference.png", e->out);
+    if (e->ref && !img_write_png(e->ref, e->expo, path, err, sizeof err)) die(DIE_RUNTIME, e->prog, "%s", err);
+}
