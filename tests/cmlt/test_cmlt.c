@@ -313,7 +313,8 @@ static void make_reference(void *buf, void *ctx)
 ParameterizedTestParameters(stat_cmlt, all_algorithms_converge)
 {
     static int algo[CMLT_NALGO];
-    for (int a = 0; a < CMLT_NALGO; a++) algo[a] = a;
+    for (int a = 0; a < CMLT_NALGO; a++)
+        algo[a] = a;
     return cr_make_param_array(int, algo, CMLT_NALGO);
 }
 ParameterizedTest(int *param, stat_cmlt, all_algorithms_converge, .timeout = 600)
@@ -322,7 +323,8 @@ ParameterizedTest(int *param, stat_cmlt, all_algorithms_converge, .timeout = 600
     const int a = *param;
     size_t npx = 3 * (size_t)W * W;
     double *ref = malloc(sizeof(double) * npx), *img = malloc(sizeof(double) * npx);
-    disk_cached(ref, sizeof(double) * npx, NULL, "cmlt_reference 32x32 spp 16384 seed 99 threads 2", make_reference, &W);
+    disk_cached(ref, sizeof(double) * npx, NULL, "cmlt_reference 32x32 spp 16384 seed 99 threads 2", make_reference,
+                &W);
     double ref_sum = 0;
     for (size_t i = 0; i < npx; i++) ref_sum += ref[i];
     double e[2];
@@ -342,9 +344,11 @@ ParameterizedTest(int *param, stat_cmlt, all_algorithms_converge, .timeout = 600
         }
         e[b] = sqrt(s / npx);
         if (b == 1)
-            cr_assert(fabs(sum / ref_sum - 1) < 0.10, "%s: image total off by %.3g", cmlt_algo_names[a], sum / ref_sum - 1);
+            cr_assert(fabs(sum / ref_sum - 1) < 0.10, "%s: image total off by %.3g", cmlt_algo_names[a],
+                      sum / ref_sum - 1);
     }
-    cr_log_info("%s: RMSE %.4g -> %.4g (ratio %.2f, n^-1/2 predicts 2.83)", cmlt_algo_names[a], e[0], e[1], e[0] / e[1]);
+    cr_log_info("%s: RMSE %.4g -> %.4g (ratio %.2f, n^-1/2 predicts 2.83)", cmlt_algo_names[a], e[0], e[1],
+                e[0] / e[1]);
     cr_assert(e[1] < e[0] / 2 && e[1] > e[0] / 6, "%s: RMSE %.4g at 250k, %.4g at 2M: not ~n^-1/2", cmlt_algo_names[a],
               e[0], e[1]);
     free(ref);

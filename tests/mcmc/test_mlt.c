@@ -63,26 +63,27 @@ static const struct cornell_cfg {
     enum large_step large;
     double p_large;
     bool uniform, maxh;
-} cornell_cfg[] = {{"pssmlt", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-                   {"pssmlt --max-heuristic", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, true},
-                   {"mmlt", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-                   {"pssmlt --rap", MLT_PSSMLT, true, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-                   {"pssmlt --cdc", MLT_PSSMLT, false, true, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-                   {"mmlt --rap --cdc --kernel gaussian", MLT_MMLT, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false},
-                   {"mmlt --large-step mctls --p-large 0.5", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MCTLS, 0.5, false,
-                    false},
-                   {"mmlt --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_MMLT, false, false, KERNEL_KELEMEN,
-                    LARGE_HYBRID, 0.3, true, false},
-                   {"pitp", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-                   {"pitp --rap --cdc --kernel gaussian", MLT_PITP, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false},
-                   {"pitp --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_PITP, false, false, KERNEL_KELEMEN,
-                    LARGE_HYBRID, 0.3, true, false}};
+} cornell_cfg[] = {
+    {"pssmlt", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"pssmlt --max-heuristic", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, true},
+    {"mmlt", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"pssmlt --rap", MLT_PSSMLT, true, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"pssmlt --cdc", MLT_PSSMLT, false, true, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"mmlt --rap --cdc --kernel gaussian", MLT_MMLT, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false},
+    {"mmlt --large-step mctls --p-large 0.5", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MCTLS, 0.5, false, false},
+    {"mmlt --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_MMLT, false, false, KERNEL_KELEMEN,
+     LARGE_HYBRID, 0.3, true, false},
+    {"pitp", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"pitp --rap --cdc --kernel gaussian", MLT_PITP, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false},
+    {"pitp --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_PITP, false, false, KERNEL_KELEMEN,
+     LARGE_HYBRID, 0.3, true, false}};
 #define CORNELL_CFGS ((int)(sizeof cornell_cfg / sizeof *cornell_cfg))
 
 ParameterizedTestParameters(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
 {
     static int idx[CORNELL_CFGS];
-    for (int i = 0; i < CORNELL_CFGS; i++) idx[i] = i;
+    for (int i = 0; i < CORNELL_CFGS; i++)
+        idx[i] = i;
     return cr_make_param_array(int, idx, CORNELL_CFGS);
 }
 
@@ -109,8 +110,8 @@ ParameterizedTest(int *param, stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
     stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * (uint64_t)i, 8);
     double pm, worst;
     int f = stack_compare(&a, &ref, CORNELL_CFGS, &pm, &worst);
-    fprintf(stderr, "cornell %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", cf->name, a.mean, a.mean_se,
-            ref.mean, ref.mean_se, pm, worst);
+    fprintf(stderr, "cornell %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", cf->name, a.mean,
+            a.mean_se, ref.mean, ref.mean_se, pm, worst);
     cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", cf->name, a.mean,
                  a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     scene_free(sc);
@@ -308,8 +309,8 @@ static void method_agrees(struct scene *sc, const struct budget *b, uint64_t see
     int f = stack_compare(&a, &ref, 4, &pm, &worst);
     fprintf(stderr, "%s agreement %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", method_names[mm],
             sc->file, a.mean, a.mean_se, ref.mean, ref.mean_se, pm, worst);
-    cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", method_names[mm], a.mean,
-                 a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", method_names[mm],
+                 a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
 }
 
 /* One test per method of method_agrees: the parameter m. */
