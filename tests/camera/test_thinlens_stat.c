@@ -2,6 +2,7 @@
  * techniques that meet the lens from either side agree (path tracing reaches it by camera rays,
  * light tracing by connections to a lens point, t = 1). */
 #include <criterion/criterion.h>
+#include <criterion/parameterized.h>
 #include <stdio.h>
 
 #include "camera/camera.h"
@@ -10,6 +11,7 @@
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include "support/agree.h"
+#include "support/disk_cache.h"
 #include "support/scenes.h"
 
 #define SCENE "tests/data/tungsten/camera-thinlens.json"
@@ -126,25 +128,35 @@ static struct image *chain_render(void *p, uint64_t seed)
  * first two of camera block 0; PITP grows and shrinks camera subpaths through t = 1): PSSMLT, MMLT,
  * PITP and MMLT with controlled small steps, 8 runs each, against BDPT (8 runs of 32 spp), 16 x 16
  * blocks and the image mean, alpha = 0.01 Sidak over the blocks, the mean and the 4 methods. */
-Test(stat_thinlens, markov_chain_methods_agree_with_bdpt, .timeout = 600)
+static const struct {
+    const char *name;
+    enum mlt_method m;
+    enum small_step step;
+} chain_cfg[] = {{"pssmlt", MLT_PSSMLT, SMALL_STEP_PSS},
+                 {"mmlt", MLT_MMLT, SMALL_STEP_PSS},
+                 {"pitp", MLT_PITP, SMALL_STEP_PSS},
+                 {"mmlt controlled", MLT_MMLT, SMALL_STEP_CONTROLLED}};
+
+/* One method per test, so that --jobs spreads them; the BDPT reference is rendered once
+ * (support/disk_cache.h). */
+ParameterizedTestParameters(stat_thinlens, markov_chain_methods_agree_with_bdpt)
+{
+    static int idx[] = {0, 1, 2, 3};
+    return cr_make_param_array(int, idx, 4);
+}
+ParameterizedTest(int *param, stat_thinlens, markov_chain_methods_agree_with_bdpt, .timeout = 600)
 {
     struct scene *sc = test_scene(SCENE);
     struct stack ref, a;
     struct run b = {sc, {.method = METHOD_BDPT, .spp = 32, .threads = 2, .max_length = 4}};
-    stack_runs(&ref, render_run, &b, 8, 700, 16);
-    const struct chain_run cfg[] = {{sc, MLT_PSSMLT, SMALL_STEP_PSS}, {sc, MLT_MMLT, SMALL_STEP_PSS},
-                                    {sc, MLT_PITP, SMALL_STEP_PSS}, {sc, MLT_MMLT, SMALL_STEP_CONTROLLED}};
-    const char *names[] = {"pssmlt", "mmlt", "pitp", "mmlt controlled"};
-    int total = 0;
-    for (int i = 0; i < 4; i++) {
-        struct chain_run c = cfg[i];
-        stack_runs(&a, chain_render, &c, 8, 800 + 20 * (uint64_t)i, 16);
-        double pm, worst;
-        int f = stack_compare(&a, &ref, 4, &pm, &worst);
-        fprintf(stderr, "thinlens %s: %g +- %g vs BDPT %g +- %g: %d failing (mean p %.3g, worst block p %.3g)\n", names[i],
-                a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
-        total += f;
-    }
-    cr_assert_eq(total, 0, "%d comparisons fail", total);
+    stack_runs_cached(&ref, render_run, &b, 8, 700, 16, sc, "bdpt spp 32 threads 2 max_length 4");
+    const int i = *param;
+    struct chain_run c = {sc, chain_cfg[i].m, chain_cfg[i].step};
+    stack_runs(&a, chain_render, &c, 8, 800 + 20 * (uint64_t)i, 16);
+    double pm, worst;
+    int f = stack_compare(&a, &ref, 4, &pm, &worst);
+    fprintf(stderr, "thinlens %s: %g +- %g vs BDPT %g +- %g: %d failing (mean p %.3g, worst block p %.3g)\n",
+            chain_cfg[i].name, a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    cr_assert_eq(f, 0, "%s: %d comparisons fail", chain_cfg[i].name, f);
     scene_free(sc);
 }

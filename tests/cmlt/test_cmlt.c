@@ -2,6 +2,7 @@
  * (Eq. 25) and of ephemeral primary-space perturbations (Eq. 28) by exact enumeration on a tiny
  * discrete problem, and convergence of all six algorithms to the reference. */
 #include <criterion/criterion.h>
+#include <criterion/parameterized.h>
 #include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdlib.h>
@@ -11,6 +12,7 @@
 #include "cmlt/cmlt_mcmc.h"
 #include "cmlt/cmlt_reference.h"
 #include "cmlt/cmlt_scene.h"
+#include "support/disk_cache.h"
 
 static bool same_path(const struct cmlt_path *a, const struct cmlt_path *b, double tol)
 {
@@ -299,41 +301,56 @@ Test(stat_cmlt, chart_density_chisq)
  * the hole (most of the image since A1 = 0.11) in rare excursions: 10 % is 3.2 of its sd, the
  * two-sided Sidak bound for alpha = 0.01 over the six algorithms being 3.0. Reference: 16384 spp per
  * pixel, its own noise far below the chains' error at 32 x 32. */
-Test(stat_cmlt, all_algorithms_converge, .timeout = 600)
+static void make_reference(void *buf, void *ctx)
 {
-    const int W = 32;
+    const int *w = ctx;
+    struct cmlt_ref_result rr;
+    cmlt_reference(*w, *w, 16384, 99, 2, buf, &rr, NULL);
+}
+
+/* One algorithm per test, so that --jobs spreads them; the reference is rendered once
+ * (support/disk_cache.h). */
+ParameterizedTestParameters(stat_cmlt, all_algorithms_converge)
+{
+    static int algo[CMLT_NALGO];
+    for (int a = 0; a < CMLT_NALGO; a++)
+        algo[a] = a;
+    return cr_make_param_array(int, algo, CMLT_NALGO);
+}
+ParameterizedTest(int *param, stat_cmlt, all_algorithms_converge, .timeout = 600)
+{
+    int W = 32;
+    const int a = *param;
     size_t npx = 3 * (size_t)W * W;
     double *ref = malloc(sizeof(double) * npx), *img = malloc(sizeof(double) * npx);
-    struct cmlt_ref_result rr;
-    cmlt_reference(W, W, 16384, 99, 2, ref, &rr, NULL);
+    disk_cached(ref, sizeof(double) * npx, NULL, "cmlt_reference 32x32 spp 16384 seed 99 threads 2", make_reference,
+                &W);
     double ref_sum = 0;
     for (size_t i = 0; i < npx; i++) ref_sum += ref[i];
-    for (int a = 0; a < CMLT_NALGO; a++) {
-        double e[2];
-        const uint64_t ns[2] = {250000, 2000000};
-        for (int b = 0; b < 2; b++) {
-            struct cmlt_config c;
-            cmlt_config_default(&c);
-            c.w = c.h = W;
-            c.n = ns[b];
-            c.n_seed = ns[b] / 16;
-            struct cmlt_stats st;
-            cmlt_run((enum cmlt_algo)a, &c, 1234, (uint64_t)(a * 2 + b), img, &st, NULL, NULL);
-            double s = 0, sum = 0;
-            for (size_t i = 0; i < npx; i++) {
-                s += (img[i] - ref[i]) * (img[i] - ref[i]);
-                sum += img[i];
-            }
-            e[b] = sqrt(s / npx);
-            if (b == 1)
-                cr_assert(fabs(sum / ref_sum - 1) < 0.10, "%s: image total off by %.3g", cmlt_algo_names[a],
-                          sum / ref_sum - 1);
+    double e[2];
+    const uint64_t ns[2] = {250000, 2000000};
+    for (int b = 0; b < 2; b++) {
+        struct cmlt_config c;
+        cmlt_config_default(&c);
+        c.w = c.h = W;
+        c.n = ns[b];
+        c.n_seed = ns[b] / 16;
+        struct cmlt_stats st;
+        cmlt_run((enum cmlt_algo)a, &c, 1234, (uint64_t)(a * 2 + b), img, &st, NULL, NULL);
+        double s = 0, sum = 0;
+        for (size_t i = 0; i < npx; i++) {
+            s += (img[i] - ref[i]) * (img[i] - ref[i]);
+            sum += img[i];
         }
-        cr_log_info("%s: RMSE %.4g -> %.4g (ratio %.2f, n^-1/2 predicts 2.83)", cmlt_algo_names[a], e[0], e[1],
-                    e[0] / e[1]);
-        cr_assert(e[1] < e[0] / 2 && e[1] > e[0] / 6, "%s: RMSE %.4g at 250k, %.4g at 2M: not ~n^-1/2",
-                  cmlt_algo_names[a], e[0], e[1]);
+        e[b] = sqrt(s / npx);
+        if (b == 1)
+            cr_assert(fabs(sum / ref_sum - 1) < 0.10, "%s: image total off by %.3g", cmlt_algo_names[a],
+                      sum / ref_sum - 1);
     }
+    cr_log_info("%s: RMSE %.4g -> %.4g (ratio %.2f, n^-1/2 predicts 2.83)", cmlt_algo_names[a], e[0], e[1],
+                e[0] / e[1]);
+    cr_assert(e[1] < e[0] / 2 && e[1] > e[0] / 6, "%s: RMSE %.4g at 250k, %.4g at 2M: not ~n^-1/2", cmlt_algo_names[a],
+              e[0], e[1]);
     free(ref);
     free(img);
 }

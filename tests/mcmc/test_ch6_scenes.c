@@ -3,8 +3,10 @@
  * tested in test_mlt.c. Both scenes are lit only by a generated sky with a small sun, through a
  * window or a skylight, so most light arrives by long paths that pass an opening. */
 #include <criterion/criterion.h>
+#include <criterion/parameterized.h>
 
 #include "support/agree.h"
+#include "support/disk_cache.h"
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
@@ -53,38 +55,49 @@ static struct image *ch6_render(void *p, uint64_t seed)
 }
 
 /* 8 BDPT runs as the reference; 8 PT and 12 PSSMLT, MMLT and PITP runs, each family tested against it
- * (alpha 0.01, Sidak over the 4 families' blocks and means). */
+ * (alpha 0.01, Sidak over the 4 families' blocks and means). One family (m: pt, pssmlt, mmlt, pitp)
+ * per test, so that --jobs spreads them; the reference is rendered once (support/disk_cache.h). */
 static void ch6_agree(const char *path, int res, int bdpt_spp, int pt_spp, int pss_mpp, int mmlt_mpp, long seed_paths,
-                      uint64_t seed)
+                      uint64_t seed, int m)
 {
     struct scene *sc = test_scene(path);
     camera_resize(&sc->cam, res, res);
     static struct stack ref, a;
     struct ch6_run bd = {.sc = sc, .mc = METHOD_BDPT, .per_pixel = bdpt_spp};
-    stack_runs(&ref, ch6_render, &bd, 8, seed, 8);
+    char key[96];
+    snprintf(key, sizeof key, "bdpt spp %d threads 2 max_length 8", bdpt_spp);
+    stack_runs_cached(&ref, ch6_render, &bd, 8, seed, 8, sc, key);
     const struct ch6_run runs[4] = {{.sc = sc, .mc = METHOD_PT, .per_pixel = pt_spp},
                                     {.sc = sc, .mcmc = true, .mlt = MLT_PSSMLT, .per_pixel = pss_mpp, .seed_paths = seed_paths},
                                     {.sc = sc, .mcmc = true, .mlt = MLT_MMLT, .per_pixel = mmlt_mpp, .seed_paths = seed_paths},
                                     {.sc = sc, .mcmc = true, .mlt = MLT_PITP, .per_pixel = mmlt_mpp, .seed_paths = seed_paths}};
     const char *names[4] = {"pt", "pssmlt", "mmlt", "pitp"};
-    for (int m = 0; m < 4; m++) {
-        double pm, worst;
-        stack_runs(&a, ch6_render, (void *)&runs[m], m == 0 ? 8 : 12, seed + 100 * (m + 1), 8);
-        int f = stack_compare(&a, &ref, 4, &pm, &worst);
-        cr_assert_eq(f, 0, "%s on %s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", names[m], path,
-                     a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
-    }
+    double pm, worst;
+    stack_runs(&a, ch6_render, (void *)&runs[m], m == 0 ? 8 : 12, seed + 100 * (uint64_t)(m + 1), 8);
+    int f = stack_compare(&a, &ref, 4, &pm, &worst);
+    cr_assert_eq(f, 0, "%s on %s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", names[m], path,
+                 a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     scene_free(sc);
 }
 
-Test(stat_ch6, all_methods_agree_on_living_room, .timeout = 600)
+ParameterizedTestParameters(stat_ch6, all_methods_agree_on_living_room)
 {
-    ch6_agree("scenes/living-room/scene.json", 32, 64, 256, 256, 256, 100000, 5000);
+    static int m[] = {0, 1, 2, 3};
+    return cr_make_param_array(int, m, 4);
+}
+ParameterizedTest(int *m, stat_ch6, all_methods_agree_on_living_room, .timeout = 600)
+{
+    ch6_agree("scenes/living-room/scene.json", 32, 64, 256, 256, 256, 100000, 5000, *m);
 }
 
-Test(stat_ch6, all_methods_agree_on_staircase, .timeout = 600)
+ParameterizedTestParameters(stat_ch6, all_methods_agree_on_staircase)
 {
-    ch6_agree("scenes/staircase/scene.json", 32, 64, 256, 256, 256, 100000, 6000);
+    static int m[] = {0, 1, 2, 3};
+    return cr_make_param_array(int, m, 4);
+}
+ParameterizedTest(int *m, stat_ch6, all_methods_agree_on_staircase, .timeout = 600)
+{
+    ch6_agree("scenes/staircase/scene.json", 32, 64, 256, 256, 256, 100000, 6000, *m);
 }
 
 /* --min-length 3 (no direct lighting, as thesis chapter 6 renders) for every method: PT, BDPT, PSSMLT

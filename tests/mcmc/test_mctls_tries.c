@@ -9,6 +9,7 @@
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include "support/agree.h"
+#include "support/disk_cache.h"
 #include "support/scenes.h"
 #include <stdio.h>
 #include <string.h>
@@ -29,7 +30,8 @@ Test(stat_mctls_tries, drawn_trials_agree_with_bdpt_on_cornell_box, .timeout = 6
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
     camera_resize(&sc->cam, 64, 64);
     static struct stack ref, a;
-    stack_runs(&ref, render_bdpt, sc, 8, 1000, 8);
+    /* the reference of stat_mlt/mcmc_agrees_with_bdpt_on_cornell_box: rendered once for both */
+    stack_runs_cached(&ref, render_bdpt, sc, 8, 1000, 8, sc, "bdpt spp 16 threads 2 max_length 8");
     const struct {
         const char *name;
         int tries;

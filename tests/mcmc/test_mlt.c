@@ -1,8 +1,10 @@
 /* PSSMLT and MMLT against BDPT: per-block agreement on the Cornell box for every proposal option,
  * the furnace's exact answer, and the statistics' bookkeeping and reproducibility. */
 #include <criterion/criterion.h>
+#include <criterion/parameterized.h>
 
 #include "support/agree.h"
+#include "support/disk_cache.h"
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "mcmc/mctls.h"
@@ -50,56 +52,68 @@ static struct image *render_plain_ctx(void *p, uint64_t seed)
 
 /* Cornell box at 64x64: 8 BDPT renders of 16 spp against 12 independent MCMC runs of 16 mutations
  * per pixel (each with its own 10k-path seed pass) per configuration; Welch t on 8x8 blocks and on
- * the image mean, alpha 0.01 Sidak over the 65 comparisons of all 11 configurations. */
-Test(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
+ * the image mean, alpha 0.01 Sidak over the 65 comparisons of all 11 configurations. Each
+ * configuration is its own test; the reference is rendered once (support/disk_cache.h) and is the
+ * one stat_mctls_tries compares against. */
+static const struct cornell_cfg {
+    const char *name;
+    enum mlt_method m;
+    bool rap, cdc;
+    enum pss_kernel kernel;
+    enum large_step large;
+    double p_large;
+    bool uniform, maxh;
+} cornell_cfg[] = {
+    {"pssmlt", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"pssmlt --max-heuristic", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, true},
+    {"mmlt", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"pssmlt --rap", MLT_PSSMLT, true, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"pssmlt --cdc", MLT_PSSMLT, false, true, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"mmlt --rap --cdc --kernel gaussian", MLT_MMLT, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false},
+    {"mmlt --large-step mctls --p-large 0.5", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MCTLS, 0.5, false, false},
+    {"mmlt --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_MMLT, false, false, KERNEL_KELEMEN,
+     LARGE_HYBRID, 0.3, true, false},
+    {"pitp", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
+    {"pitp --rap --cdc --kernel gaussian", MLT_PITP, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false},
+    {"pitp --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_PITP, false, false, KERNEL_KELEMEN,
+     LARGE_HYBRID, 0.3, true, false}};
+#define CORNELL_CFGS ((int)(sizeof cornell_cfg / sizeof *cornell_cfg))
+
+ParameterizedTestParameters(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
+{
+    static int idx[CORNELL_CFGS];
+    for (int i = 0; i < CORNELL_CFGS; i++)
+        idx[i] = i;
+    return cr_make_param_array(int, idx, CORNELL_CFGS);
+}
+
+ParameterizedTest(int *param, stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
 {
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
     camera_resize(&sc->cam, 64, 64);
     static struct stack ref, a;
     struct plain_ctx bd = {sc, METHOD_BDPT, 16};
-    stack_runs(&ref, render_plain_ctx, &bd, 8, 1000, 8);
-    const struct {
-        const char *name;
-        enum mlt_method m;
-        bool rap, cdc;
-        enum pss_kernel kernel;
-        enum large_step large;
-        double p_large;
-        bool uniform, maxh;
-    } cfg[] = {{"pssmlt", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-               {"pssmlt --max-heuristic", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, true},
-               {"mmlt", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-               {"pssmlt --rap", MLT_PSSMLT, true, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-               {"pssmlt --cdc", MLT_PSSMLT, false, true, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-               {"mmlt --rap --cdc --kernel gaussian", MLT_MMLT, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false},
-               {"mmlt --large-step mctls --p-large 0.5", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MCTLS, 0.5, false, false},
-               {"mmlt --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_MMLT, false, false, KERNEL_KELEMEN,
-                LARGE_HYBRID, 0.3, true, false},
-               {"pitp", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false},
-               {"pitp --rap --cdc --kernel gaussian", MLT_PITP, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false},
-               {"pitp --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_PITP, false, false, KERNEL_KELEMEN,
-                LARGE_HYBRID, 0.3, true, false}};
-    const int families = sizeof cfg / sizeof *cfg;
-    for (size_t i = 0; i < sizeof cfg / sizeof *cfg; i++) {
-        struct mlt_ctx c = {sc, {0}};
-        opts(&c.o, sc, cfg[i].m, 16L * 64 * 64);
-        c.o.seed_paths = 10000;
-        c.o.pss.rap = cfg[i].rap;
-        c.o.pss.cdc = cfg[i].cdc;
-        c.o.pss.kernel = cfg[i].kernel;
-        c.o.large_step = cfg[i].large;
-        c.o.hybrid_length = 3;
-        c.o.p_large = cfg[i].p_large;
-        c.o.uniform_lengths = cfg[i].uniform;
-        c.o.max_heuristic = cfg[i].maxh;
-        stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * i, 8);
-        double pm, worst;
-        int f = stack_compare(&a, &ref, families, &pm, &worst);
-        fprintf(stderr, "cornell %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", cfg[i].name, a.mean,
-                a.mean_se, ref.mean, ref.mean_se, pm, worst);
-        cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", cfg[i].name, a.mean,
-                     a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
-    }
+    stack_runs_cached(&ref, render_plain_ctx, &bd, 8, 1000, 8, sc, "bdpt spp 16 threads 2 max_length 8");
+    const int i = *param;
+    const struct cornell_cfg *cf = &cornell_cfg[i];
+    struct mlt_ctx c = {sc, {0}};
+    opts(&c.o, sc, cf->m, 16L * 64 * 64);
+    c.o.seed_paths = 10000;
+    c.o.pss.rap = cf->rap;
+    c.o.pss.cdc = cf->cdc;
+    c.o.pss.kernel = cf->kernel;
+    c.o.large_step = cf->large;
+    c.o.hybrid_length = 3;
+    c.o.p_large = cf->p_large;
+    c.o.uniform_lengths = cf->uniform;
+    c.o.max_heuristic = cf->maxh;
+    stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * (uint64_t)i, 8);
+    double pm, worst;
+    int f = stack_compare(&a, &ref, CORNELL_CFGS, &pm, &worst);
+    fprintf(stderr, "cornell %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", cf->name, a.mean,
+            a.mean_se, ref.mean, ref.mean_se, pm, worst);
+    cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", cf->name, a.mean,
+                 a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     scene_free(sc);
 }
 
@@ -267,48 +281,64 @@ struct budget {
 };
 static const struct budget SMALL = {64, 16, 64, 16, 16, 0};
 
-/* PT, PSSMLT, MMLT and PITP against BDPT: Welch t on 8x8 blocks and the mean, alpha 0.01 Sidak over
- * the comparisons of all 4 methods. PITP runs as long as MMLT. */
-static void all_methods_agree(struct scene *sc, const struct budget *b, uint64_t seed)
+/* PT (m = 0), PSSMLT, MMLT or PITP (m = 1, 2, 3) against BDPT: Welch t on 8x8 blocks and the mean,
+ * alpha 0.01 Sidak over the comparisons of all 4 methods. PITP runs as long as MMLT. Each method is
+ * its own test, so that --jobs spreads them; the BDPT reference they share is rendered once
+ * (support/disk_cache.h), with the seeds it had when one test ran all four. */
+static void method_agrees(struct scene *sc, const struct budget *b, uint64_t seed, int m)
 {
     camera_resize(&sc->cam, b->res, b->res);
     static struct stack ref, a;
     struct plain_ctx bd = {sc, METHOD_BDPT, b->bdpt_spp}, pt = {sc, METHOD_PT, b->pt_spp};
-    stack_runs(&ref, render_plain_ctx, &bd, 8, seed, 8);
+    char key[96];
+    snprintf(key, sizeof key, "bdpt spp %d threads 2 max_length 8", b->bdpt_spp);
+    stack_runs_cached(&ref, render_plain_ctx, &bd, 8, seed, 8, sc, key);
     double pm, worst;
-    stack_runs(&a, render_plain_ctx, &pt, 8, seed + 100, 8);
-    int f = stack_compare(&a, &ref, 4, &pm, &worst);
-    cr_assert_eq(f, 0, "pt: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", a.mean, a.mean_se,
-                 ref.mean, ref.mean_se, f, pm, worst);
-    for (int m = 0; m < 3; m++) {
-        struct mlt_ctx c = {sc, {0}};
-        opts(&c.o, sc, (enum mlt_method)m, (long)(m == 0 ? b->pssmlt_mpp : b->mmlt_mpp) * b->res * b->res);
-        c.o.seed_paths = b->seed_paths ? b->seed_paths : 10000;
-        stack_runs(&a, render_mlt, &c, 12, seed + 200 + 100 * m, 8);
-        f = stack_compare(&a, &ref, 4, &pm, &worst);
-        fprintf(stderr, "%s agreement %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", method_names[m],
-                sc->file, a.mean, a.mean_se, ref.mean, ref.mean_se, pm, worst);
-        cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", method_names[m], a.mean,
-                     a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    if (m == 0) {
+        stack_runs(&a, render_plain_ctx, &pt, 8, seed + 100, 8);
+        int f = stack_compare(&a, &ref, 4, &pm, &worst);
+        cr_assert_eq(f, 0, "pt: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", a.mean, a.mean_se,
+                     ref.mean, ref.mean_se, f, pm, worst);
+        return;
     }
+    struct mlt_ctx c = {sc, {0}};
+    enum mlt_method mm = (enum mlt_method)(m - 1);
+    opts(&c.o, sc, mm, (long)(mm == 0 ? b->pssmlt_mpp : b->mmlt_mpp) * b->res * b->res);
+    c.o.seed_paths = b->seed_paths ? b->seed_paths : 10000;
+    stack_runs(&a, render_mlt, &c, 12, seed + 200 + 100 * (uint64_t)mm, 8);
+    int f = stack_compare(&a, &ref, 4, &pm, &worst);
+    fprintf(stderr, "%s agreement %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", method_names[mm],
+            sc->file, a.mean, a.mean_se, ref.mean, ref.mean_se, pm, worst);
+    cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", method_names[mm],
+                 a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
 }
+
+/* One test per method of method_agrees: the parameter m. */
+#define METHOD_PARAMS(name)                                                                                            \
+    ParameterizedTestParameters(stat_mlt, name)                                                                        \
+    {                                                                                                                  \
+        static int m[] = {0, 1, 2, 3};                                                                                 \
+        return cr_make_param_array(int, m, 4);                                                                         \
+    }
 
 /* scenes/smooth-sphere (interpolated normals on a coarse mesh): agreement holds only with the
  * adjoint shading-normal correction in the emitter subpaths that BDPT and the MCMC methods share. */
-Test(stat_mlt, all_methods_agree_under_shading_normals)
+METHOD_PARAMS(all_methods_agree_under_shading_normals)
+ParameterizedTest(int *m, stat_mlt, all_methods_agree_under_shading_normals)
 {
     struct scene *sc = test_scene("scenes/smooth-sphere/scene.json");
-    all_methods_agree(sc, &SMALL, 3000);
+    method_agrees(sc, &SMALL, 3000, *m);
     scene_free(sc);
 }
 
 /* The Cornell box with the tent filter: light tracing splats onto the film ring outside the image
  * and every technique spreads its splats over 2x2 pixels (camera.h, image.h). */
-Test(stat_mlt, all_methods_agree_with_tent_filter)
+METHOD_PARAMS(all_methods_agree_with_tent_filter)
+ParameterizedTest(int *m, stat_mlt, all_methods_agree_with_tent_filter)
 {
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
     sc->cam.filter = FILTER_TENT;
-    all_methods_agree(sc, &SMALL, 7000);
+    method_agrees(sc, &SMALL, 7000, *m);
     scene_free(sc);
 }
 
@@ -319,11 +349,12 @@ Test(stat_mlt, all_methods_agree_with_tent_filter)
  * chains reach some paths through the gold sphere rarely: runs of 1M mutations come out skewed
  * (that block 35 % low in most runs, 50 % high in a few), which the t-test takes for bias; runs
  * of 16M agree there with BDPT within 2 %. */
-Test(stat_mlt, all_methods_agree_on_every_bsdf_family, .timeout = 900)
+METHOD_PARAMS(all_methods_agree_on_every_bsdf_family)
+ParameterizedTest(int *m, stat_mlt, all_methods_agree_on_every_bsdf_family, .timeout = 900)
 {
     struct scene *sc = test_scene("scenes/materials/scene.json");
     const struct budget b = {32, 64, 256, 256, 4096, 0};
-    all_methods_agree(sc, &b, 5000);
+    method_agrees(sc, &b, 5000, *m);
     scene_free(sc);
 }
 
@@ -331,11 +362,12 @@ Test(stat_mlt, all_methods_agree_on_every_bsdf_family, .timeout = 900)
  * each shape's position sampling and density conversions, and light selection by power. MMLT gets
  * 256 mutations per pixel per run: with 16 its runs are skewed enough that one seed in three failed
  * a block (p = 1e-5); with 256, five seeds out of five pass. */
-Test(stat_mlt, all_methods_agree_with_sphere_cube_and_mesh_lights)
+METHOD_PARAMS(all_methods_agree_with_sphere_cube_and_mesh_lights)
+ParameterizedTest(int *m, stat_mlt, all_methods_agree_with_sphere_cube_and_mesh_lights)
 {
     struct scene *sc = test_scene("scenes/lights/scene.json");
     const struct budget b = {64, 16, 64, 16, 256, 0};
-    all_methods_agree(sc, &b, 6000);
+    method_agrees(sc, &b, 6000, *m);
     scene_free(sc);
 }
 
@@ -351,11 +383,12 @@ Test(stat_mlt, all_methods_agree_with_sphere_cube_and_mesh_lights)
  * (mean p = 8.6e-6, 1.1e-7, 4.9e-7, 1.7e-5 against alpha = 2.0e-4); with the former 64 spp and
  * 10000 seed paths the same weighting passed or failed only just (p = 1.6e-4). Unweighted, seeds
  * 5000-9000 pass (smallest mean p 0.066). */
-Test(stat_mlt, all_methods_agree_on_door_ajar, .timeout = 900)
+METHOD_PARAMS(all_methods_agree_on_door_ajar)
+ParameterizedTest(int *m, stat_mlt, all_methods_agree_on_door_ajar, .timeout = 900)
 {
     struct scene *sc = test_scene("scenes/ajar/scene.json");
     const struct budget b = {32, 256, 256, 256, 1024, 100000};
-    all_methods_agree(sc, &b, 5000);
+    method_agrees(sc, &b, 5000, *m);
     scene_free(sc);
 }
 
@@ -365,11 +398,12 @@ Test(stat_mlt, all_methods_agree_on_door_ajar, .timeout = 900)
  * and a diffuse-transmission sheet): every nested and leaf family's sample, pdf and delta lobes
  * inside BDPT's MIS and the chains. At 32x32: BDPT 64 spp, PT 256 spp, PSSMLT 256 and MMLT/PITP
  * 1024 mutations per pixel per run, 100000 seed paths per MCMC run. */
-Test(stat_mlt, all_methods_agree_on_tungsten_surfaces, .timeout = 900)
+METHOD_PARAMS(all_methods_agree_on_tungsten_surfaces)
+ParameterizedTest(int *m, stat_mlt, all_methods_agree_on_tungsten_surfaces, .timeout = 900)
 {
     struct scene *sc = test_scene("scenes/surfaces/scene.json");
     const struct budget b = {32, 64, 256, 256, 1024, 100000};
-    all_methods_agree(sc, &b, 7000);
+    method_agrees(sc, &b, 7000, *m);
     scene_free(sc);
 }
 
