@@ -62,6 +62,7 @@ struct worker {
     long *ctrl_fail;          /* [2]: forward, reverse */
     bool pitp, multiplexed;
     bool track;               /* chains keep their subpaths (controlled steps, angle statistics) */
+    int tech_before;          /* the current chain's technique when the iteration began */
     struct mlt_thread ts;
     /* scratch */
     struct scratch *w;
