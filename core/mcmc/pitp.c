@@ -137,7 +137,7 @@ static bool extend(const struct path_ctx *pc, int st, struct vertex *v, int n, c
  * within the retrace tolerance (extend checked that). So each block is inverted at the lost vertex
  * before it, and the walk's step with those numbers must reach the next (walk_step_reaches), which
  * writes no vertex and, where the step points at the vertex within float noise, casts no ray
- * (README "PITP", "Failed inversions keep detailed balance"). An emitter subpath regrown from at
+ * (docs/pitp.md, "Failed inversions keep detailed balance"). An emitter subpath regrown from at
  * most one vertex (it re-inverts its whole block 0) and a camera subpath that ended at infinity go
  * through extend, on a copy. */
 static bool reverse_ok(const struct path_ctx *pc, int st, const struct vertex *v, int n_new, int n,

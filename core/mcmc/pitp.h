@@ -8,7 +8,7 @@
  * its own and inverts only the |j - i| blocks that produce the vertices it gains, each followed by
  * one forward step with those numbers that must reach the vertex it inverted toward (a retrace).
  * A move whose inversion or retrace fails, or whose reverse move (j -> i from the new state) would
- * fail, is rejected: README "PITP" argues detailed balance. Numbers the new technique no longer
+ * fail, is rejected: docs/pitp.md argues detailed balance. Numbers the new technique no longer
  * uses are made fresh (uniform), as the reversible-jump pairing of unused dimensions requires.
  *
  * The state's path is MMLT's (struct mmlt_path, mmlt.h), kept in its technique's form by the chain. */

@@ -56,7 +56,7 @@ void cell_merge(struct accept_cell *dst, const struct accept_cell *src);
 /* Mean acceptance, its batch-means standard error (NAN with fewer than 2 batches). */
 double cell_mean(const struct accept_cell *c);
 double cell_stderr(const struct accept_cell *c);
-/* CSV rows (see README "Statistics CSV"); header once when `header`. */
+/* CSV rows (core/mcmc/docs/outputs.md, "Statistics CSV"); header once when `header`. */
 void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, bool header);
 const char *proposal_name(enum proposal_kind k);
 /* A kind named `name` for a registered mutation: its index, or -1 when every kind is taken. */

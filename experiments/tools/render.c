@@ -1,6 +1,6 @@
 /* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
  * MCMC methods, PREFIX.csv with acceptance statistics. Built with MPI=1 and started by mpirun, its
- * ranks share the render (core/dist.h) and rank 0 alone writes the outputs and the summary. */
+ * ranks share the render (core/base/dist.h) and rank 0 alone writes the outputs and the summary. */
 #include "base/dist.h"
 #include "base/parallel.h"
 #include "base/util.h"
@@ -199,7 +199,7 @@ static char *tech_head(const struct args *a, const char *name, long count, doubl
     return head;
 }
 
-/* The per-technique images and PREFIX.tech.csv of pssmlt and mmlt (core/tech_image.h). */
+/* The per-technique images and PREFIX.tech.csv of pssmlt and mmlt (core/stats/tech_image.h). */
 static bool write_tech(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
     char *head = tech_head(a, "mutations", r->mutations, r->seconds);
