@@ -11,45 +11,45 @@
 static void worker_init(struct worker *wk, struct run_job *j, int tid)
 {
     const struct mlt_opts *o = j->o;
-    *wk = (struct worker){.j = j, .o = o, .tid = tid, .g = j->g0 + tid};
-    wk->pc = (struct path_ctx){.sc = j->sc, .max_length = o->max_length, .min_length = o->min_length, .max_heuristic = o->max_heuristic};
-    wk->w = xmalloc(sizeof *wk->w);
-    wk->w->nf = (struct nonfinite){{0}};
-    wk->w->tech_k = 0; /* the MCMC methods split states by technique themselves (tech_split.h) */
+    *wk = (struct worker){.job = j, .opts = o, .tid = tid, .global_tid = j->g0 + tid};
+    wk->path_ctx = (struct path_ctx){.sc = j->sc, .max_length = o->max_length, .min_length = o->min_length, .max_heuristic = o->max_heuristic};
+    wk->scratch = xmalloc(sizeof *wk->scratch);
+    wk->scratch->nf = (struct nonfinite){{0}};
+    wk->scratch->tech_k = 0; /* the MCMC methods split states by technique themselves (tech_split.h) */
     wk->ch = xcalloc((size_t)j->nk, sizeof *wk->ch);
-    wk->mb = xmalloc(sizeof *wk->mb);
+    wk->mctls_buf = xmalloc(sizeof *wk->mctls_buf);
     wk->st = &j->stats[tid];
     wk->img = j->img[tid];
-    wk->ta = j->tech ? &j->tech[tid] : NULL;
+    wk->tech = j->tech ? &j->tech[tid] : NULL;
     wk->angle = j->angle ? &j->angle[tid] : NULL;
     wk->ctrl_fail = j->ctrl_fail[tid];
     wk->pitp = o->method == MLT_PITP;
     wk->multiplexed = o->method != MLT_PSSMLT;
     wk->spare = xmalloc(sizeof *wk->spare);
-    wk->ps = wk->pitp ? xmalloc(sizeof *wk->ps) : NULL;
-    if (wk->ps) pitp_scratch_init(wk->ps, j->sc);
-    rng_seed(&wk->r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)wk->g); /* streams and budgets are the job's global thread's */
+    wk->pitp_scratch = wk->pitp ? xmalloc(sizeof *wk->pitp_scratch) : NULL;
+    if (wk->pitp_scratch) pitp_scratch_init(wk->pitp_scratch, j->sc);
+    rng_seed(&wk->r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)wk->global_tid); /* streams and budgets are the job's global thread's */
     wk->track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
-    wk->cs = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *wk->cs) : NULL;
-    wk->ts = (struct mlt_thread){wk->ch, j->nk, &wk->r, &wk->n, &wk->w->nf, wk->st, wk->ctrl_fail, wk->img, wk->angle, wk->ta};
+    wk->ctrl = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *wk->ctrl) : NULL;
+    wk->saved = (struct mlt_thread){wk->ch, j->nk, &wk->r, &wk->n, &wk->scratch->nf, wk->st, wk->ctrl_fail, wk->img, wk->angle, wk->tech};
 }
 
 /* Every chain from a seed sample (seed_pass.c), or set up for the state a checkpoint left it in. */
 static void chains_start(struct worker *wk)
 {
-    const struct run_job *j = wk->j;
+    const struct run_job *j = wk->job;
     for (int kk = 0; kk < j->nk; kk++) {
         struct chain *c = &wk->ch[kk];
         mutations_chain_alloc(c);
         c->k = kk + 1;
         c->scale = j->scale[kk];
-        c->dropped = &wk->w->nf.len[wk->multiplexed ? c->k : 0];
+        c->dropped = &wk->scratch->nf.len[wk->multiplexed ? c->k : 0];
         if (!j->resume) {
             if (j->cdf[kk]) chain_start(wk, c, kk);
             continue;
         }
         if (!(c->scale > 0)) continue; /* a length without light: never started */
-        pss_init(&c->pss, &wk->o->pss, wk->o->seed, 0);
+        pss_init(&c->pss, &wk->opts->pss, wk->opts->seed, 0);
         if (wk->pitp) c->x = xmalloc(sizeof *c->x);
         if (wk->track) c->path = xmalloc(sizeof *c->path);
     }
@@ -58,7 +58,7 @@ static void chains_start(struct worker *wk)
 /* The chain of this iteration: MMLT's length k with probability P(k) (the job's kcdf). */
 static struct chain *pick_chain(struct worker *wk)
 {
-    const struct run_job *j = wk->j;
+    const struct run_job *j = wk->job;
     int kk = 0;
     if (j->nk > 1) {
         double u = rng_uniform(&wk->r) * j->kcdf[j->nk];
@@ -70,7 +70,7 @@ static struct chain *pick_chain(struct worker *wk)
 /* One iteration of the worker's chains. */
 static void iterate(struct worker *wk)
 {
-    const struct mlt_opts *o = wk->o;
+    const struct mlt_opts *o = wk->opts;
     struct chain *c = pick_chain(wk);
     bool large = rng_uniform(&wk->r) < o->p_large;
     double t_start = o->time_proposals ? now_seconds() : 0;
@@ -82,24 +82,24 @@ static bool within_budget(const struct worker *wk, long budget)
 {
     long n = wk->n;
     if ((n & 255) == 0 && interrupted()) return false;
-    if (wk->o->seconds > 0) return (n & 255) != 0 || budget_seconds(wk->o->cpu_time, wk->o->threads) - wk->j->t0 < wk->o->seconds;
+    if (wk->opts->seconds > 0) return (n & 255) != 0 || budget_seconds(wk->opts->cpu_time, wk->opts->threads) - wk->job->t0 < wk->opts->seconds;
     return n < budget;
 }
 
 static void report_progress(struct worker *wk)
 {
     if ((wk->n & 4095) != 4095) return;
-    if (wk->o->seconds <= 0) progress_add(&wk->j->prog, 4096);
-    else if (wk->tid == 0) progress_set(&wk->j->prog, (long)(1000 * (budget_seconds(wk->o->cpu_time, wk->o->threads) - wk->j->t0)));
+    if (wk->opts->seconds <= 0) progress_add(&wk->job->prog, 4096);
+    else if (wk->tid == 0) progress_set(&wk->job->prog, (long)(1000 * (budget_seconds(wk->opts->cpu_time, wk->opts->threads) - wk->job->t0)));
 }
 
 /* The thread's final state into its checkpoint slot, its chains' owed splats, its counts. */
 static void worker_finish(struct worker *wk)
 {
-    struct run_job *j = wk->j;
+    struct run_job *j = wk->job;
     if (j->o->ckpt) {
         /* before the final splats: a resumed run makes them itself */
-        mlt_thread_save(&j->sync.slot[wk->tid], j->sc, &wk->ts);
+        mlt_thread_save(&j->sync.slot[wk->tid], j->sc, &wk->saved);
         ckpt_sync_finish(&j->sync);
     }
     for (int kk = 0; kk < j->nk; kk++) {
@@ -108,31 +108,31 @@ static void worker_finish(struct worker *wk)
         free(wk->ch[kk].x);
         mutations_chain_free(&wk->ch[kk]);
     }
-    free(wk->cs);
+    free(wk->ctrl);
     j->done[wk->tid] = wk->n;
-    nonfinite_add(&wk->st->nonfinite, &wk->w->nf);
-    free(wk->ps);
+    nonfinite_add(&wk->st->nonfinite, &wk->scratch->nf);
+    free(wk->pitp_scratch);
     free(wk->spare);
-    free(wk->mb);
+    free(wk->mctls_buf);
     free(wk->ch);
-    free(wk->w);
+    free(wk->scratch);
 }
 
 void run_worker(int tid, void *p)
 {
     struct worker wk;
     worker_init(&wk, p, tid);
-    struct run_job *j = wk.j;
-    const struct mlt_opts *o = wk.o;
+    struct run_job *j = wk.job;
+    const struct mlt_opts *o = wk.opts;
     chains_start(&wk);
-    bool bad = j->resume && !mlt_thread_load(&j->resume[tid], j->sc, &wk.ts);
+    bool bad = j->resume && !mlt_thread_load(&j->resume[tid], j->sc, &wk.saved);
     if (bad) atomic_store(&j->resume_bad, true);
     if (j->resume && o->seconds <= 0) progress_add(&j->prog, wk.n);
-    long budget = o->mutations / j->stride + (wk.g < o->mutations % j->stride);
+    long budget = o->mutations / j->stride + (wk.global_tid < o->mutations % j->stride);
     for (; !bad; wk.n++) {
         if (!within_budget(&wk, budget)) break;
         if (o->ckpt && (wk.n & 255) == 0 && ckpt_sync_poll(&j->sync)) {
-            mlt_thread_save(&j->sync.slot[tid], j->sc, &wk.ts);
+            mlt_thread_save(&j->sync.slot[tid], j->sc, &wk.saved);
             ckpt_sync_arrive(&j->sync);
         }
         iterate(&wk);

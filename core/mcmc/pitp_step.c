@@ -16,28 +16,28 @@ static bool applies(const struct worker *wk, const struct chain *c, bool large)
 static void step(struct worker *wk, struct chain *c, bool large, double t_start)
 {
     (void)large, (void)t_start; /* not timed: its time is the small step's */
-    int sj;
-    double pa;
-    struct connection cn;
-    bool c_new;
-    enum pitp_outcome po = pitp_perturb(&wk->pc, &c->pss, c->x, wk->ps, rng_uniform(&wk->r), &sj, &pa, &cn, &c_new, &wk->w->nf);
-    int dt = abs(sj - c->x->s);
-    if (po == PITP_MOVED) {
-        dt = abs(c->k + 1 - sj - c->tech);
+    int s_new;
+    double accept;
+    struct connection conn;
+    bool conn_new;
+    enum pitp_outcome outcome = pitp_perturb(&wk->path_ctx, &c->pss, c->x, wk->pitp_scratch, rng_uniform(&wk->r), &s_new, &accept, &conn, &conn_new, &wk->scratch->nf);
+    int dtech = abs(s_new - c->x->s);
+    if (outcome == PITP_MOVED) {
+        dtech = abs(c->k + 1 - s_new - c->tech);
         c->tech = c->x->t;
         c->xsum_valid = false;
         /* controlled steps start from the current path in the new technique's form */
         if (wk->track) ctrl_path_capture(c->path, c->x->cam, c->x->t, c->x->emi, c->x->s);
-        if (c_new) {
+        if (conn_new) {
             /* the target changed with the technique (refraction, delta vertices): the state's
              * splat and target follow */
             struct splat_list l;
             l.n = 0;
-            splat_push(&l, cn.px, cn.py, mmlt_contribution(&cn, c->k));
+            splat_push(&l, conn.px, conn.py, mmlt_contribution(&conn, c->k));
             move_to(wk->img, c, &l, splat_luminance(&l));
         }
     }
-    stats_record_dt(wk->st, PROPOSAL_PITP, c->k, dt != 0, dt, po == PITP_FAILED, pa, po == PITP_SAME || po == PITP_MOVED,
+    stats_record_dt(wk->st, PROPOSAL_PITP, c->k, dtech != 0, dtech, outcome == PITP_FAILED, accept, outcome == PITP_SAME || outcome == PITP_MOVED,
                     true, 0);
 }
 

@@ -9,14 +9,14 @@
 #include "mcmc/tech_split.h"
 #include <stdlib.h>
 
-double mutation_elapsed(const struct worker *wk, double t_start) { return wk->o->time_proposals ? now_seconds() - t_start : 0; }
+double mutation_elapsed(const struct worker *wk, double t_start) { return wk->opts->time_proposals ? now_seconds() - t_start : 0; }
 
 void mutation_take_connections(struct worker *wk)
 {
     /* the statistics are in the checkpoint; the scratch is not */
-    wk->st->conn_tried += wk->w->conn_tried;
-    wk->st->conn_nonzero += wk->w->conn_nonzero;
-    wk->w->conn_tried = wk->w->conn_nonzero = 0;
+    wk->st->conn_tried += wk->scratch->conn_tried;
+    wk->st->conn_nonzero += wk->scratch->conn_nonzero;
+    wk->scratch->conn_tried = wk->scratch->conn_nonzero = 0;
 }
 
 /* The one dispatch point of the small-step kind: a controlled or root step traces the proposal
@@ -24,15 +24,15 @@ void mutation_take_connections(struct worker *wk)
  * lazy primary-sample-space step's is 1. */
 void mutation_propose(struct worker *wk, struct chain *c, bool large, struct proposal *pr)
 {
-    const struct mlt_opts *o = wk->o;
-    struct ctrl_sampler *cs = large ? NULL : wk->cs;
+    const struct mlt_opts *o = wk->opts;
+    struct ctrl_sampler *cs = large ? NULL : wk->ctrl;
     pss_begin(&c->pss, large);
     if (cs) ctrl_begin(cs, &c->pss, c->path, wk->spare->cam, wk->spare->emi, o->small_step);
-    wk->w->conn_tried = wk->w->conn_nonzero = 0; /* the chain starts' and seed pass's are not counted */
-    pr->f = eval_state(o->method, &wk->pc, cs ? &cs->base : &c->pss.base, wk->w, c->k, wk->spare, &wk->prop, &pr->tech,
+    wk->scratch->conn_tried = wk->scratch->conn_nonzero = 0; /* the chain starts' and seed pass's are not counted */
+    pr->f = eval_state(o->method, &wk->path_ctx, cs ? &cs->base : &c->pss.base, wk->scratch, c->k, wk->spare, &wk->prop, &pr->tech,
                        &pr->complete);
     mutation_take_connections(wk);
-    if (wk->ta) tech_split_record(wk->ta, &wk->pc, wk->w, wk->multiplexed ? c->k : 0, pr->tech, &wk->prop, false);
+    if (wk->tech) tech_split_record(wk->tech, &wk->path_ctx, wk->scratch, wk->multiplexed ? c->k : 0, pr->tech, &wk->prop, false);
     pr->tr = cs ? ctrl_finish(cs, pr->complete) : 1;
     if (cs && cs->fail != CTRL_OK) wk->ctrl_fail[cs->fail - 1]++;
     if (o->ctrl_unit_ratio && pr->tr > 0) pr->tr = 1;
@@ -59,7 +59,7 @@ void mutation_decide(struct worker *wk, struct chain *c, int kind, const struct 
     double a = c->f > 0 ? mind(pr->f * pr->tr / c->f, 1.0) : 1.0;
     splat_ev(wk->img, c, &wk->prop, pr->f, a);
     bool acc = rng_uniform(&wk->r) < a;
-    if (wk->ta) tech_acc_step(wk->ta, a, acc, pr->f, c->f, c->scale);
+    if (wk->tech) tech_acc_step(wk->tech, a, acc, pr->f, c->f, c->scale);
     if (acc) {
         pss_accept(&c->pss);
         move_to(wk->img, c, &wk->prop, pr->f);
@@ -103,7 +103,7 @@ static void small_step(struct worker *wk, struct chain *c, bool large, double t_
 {
     struct proposal pr;
     mutation_propose(wk, c, large, &pr);
-    if (wk->o->angle_stats) record_angle(wk, c, &pr);
+    if (wk->opts->angle_stats) record_angle(wk, c, &pr);
     mutation_decide(wk, c, PROPOSAL_SMALL, &pr, t_start);
 }
 
