@@ -334,15 +334,84 @@ static const char *threads_note(int threads)
     return s;
 }
 
+/* --method pt or bdpt; *ok and *partial for the summary, or an exit status (> 0) to stop at. */
+static int run_mc(struct args *a, const struct scene *sc, const struct ckpt_ctl *ctl, bool *ok, bool *partial, char *err,
+                  size_t errlen)
+{
+    method_parse(a->method, &a->mc.method);
+    struct render_stats st;
+    if (a->mlt.technique_k && strcmp(a->method, "pt")) {
+        if (a->mlt.technique_k > a->mc.max_length || a->mlt.technique_k < a->mc.min_length)
+            opts_fail("render", "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length)",
+                      a->mlt.technique_k, a->mc.min_length > 1 ? a->mc.min_length : 1, a->mc.max_length);
+        if (a->resume) opts_fail("render", "--technique-images: bdpt's per-technique sums are not checkpointed; render again without --resume");
+        if (dist_size() > 1) {
+            if (dist_root()) fprintf(stderr, "render: technique images are not merged across MPI ranks: make them without mpirun\n");
+            return 2;
+        }
+        a->mc.tech_k = a->mlt.technique_k;
+    }
+    struct image *img = render_mc(sc, &a->mc, &st);
+    if (st.resume_failed) {
+        fprintf(stderr, "render: --resume %s: the checkpoint's state does not fit this run\n", a->resume);
+        img_destroy(img);
+        return 2;
+    }
+    *ok = ctl->err[0] || !dist_root() || img_write_exr_png(img, a->out, err, errlen);
+    *partial = st.partial;
+    if (*ok && !ctl->err[0] && dist_root())
+        printf("%s%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",
+               *partial ? "PARTIAL (interrupted) " : "", a->method, a->mc.sobol ? " (sobol)" : "", st.samples, st.spp,
+               st.seconds, st.samples / st.seconds,
+               threads_note(a->mc.threads), st.nonfinite, nonfinite_note(&st.nonfinite_len));
+    if (*ok && !ctl->err[0] && dist_root()) warn_nonfinite(st.nonfinite, &st.nonfinite_len);
+    if (*ok && !ctl->err[0] && dist_root() && st.tech) *ok = write_bdpt_tech(a, &st, img, err, errlen);
+    bdpt_tech_free(st.tech);
+    img_destroy(img);
+    return 0;
+}
+
+/* --method pssmlt, mmlt or pitp; as run_mc. */
+static int run_mcmc(struct args *a, const struct scene *sc, const struct ckpt_ctl *ctl, bool *ok, bool *partial,
+                    char *err, size_t errlen)
+{
+    if (a->mlt.technique_k && (a->mlt.technique_k > a->mlt.max_length || a->mlt.technique_k < a->mlt.min_length ||
+                              a->mlt.large_step != LARGE_MMLT))
+        opts_fail("render",
+                 "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length) and MMLT "
+                 "large steps",
+                 a->mlt.technique_k, a->mlt.min_length > 1 ? a->mlt.min_length : 1, a->mlt.max_length);
+    a->mlt.pss.width = camera_film_width(&sc->cam);
+    a->mlt.pss.height = camera_film_height(&sc->cam);
+    struct mlt_result r;
+    *ok = mlt_render(sc, &a->mlt, &r, err, errlen);
+    if (!*ok) {
+        fprintf(stderr, "%s%s\n", a->resume ? "render: --resume: " : "", err);
+        return a->resume ? 2 : 1;
+    }
+    *partial = r.partial;
+    *ok = ctl->err[0] || !dist_root() || (img_write_exr_png(r.img, a->out, err, errlen) && write_csv(a, &r, err, errlen) &&
+                          (!r.angle || write_angle(a, &r, err, errlen)) && (!r.tech || write_tech(a, &r, err, errlen)));
+    if (*ok && !ctl->err[0] && dist_root())
+        printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass, normalisation rel. s.e. %.2f %%), %.0f mutations/s (%s), "
+               "%ld non-finite dropped%s\n",
+               *partial ? "PARTIAL (interrupted) " : "", a->method, r.mutations, r.seconds, r.seed_seconds, 100 * r.b_rse,
+               r.mutations / r.seconds, threads_note(a->mlt.threads), r.nonfinite, nonfinite_note(&r.stats.nonfinite));
+    if (*ok && !ctl->err[0] && dist_root()) {
+        warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
+        warn_normalisation(&r, a->mlt.seed_paths);
+    }
+    mlt_result_free(&r);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     dist_init(&argc, &argv);
     struct args a = {0};
     a.mc = (struct render_opts){.method = METHOD_BDPT, .spp = -1, .max_length = -1};
     pss_opts_default(&a.mlt.pss, 1, 1);
-    struct pss_opts cli_pss;
     parse(argc, argv, &a);
-    cli_pss = a.mlt.pss;
     const char *inject = getenv("PSS_INJECT_NONFINITE"); /* tests only (path/splat.h) */
     if (inject) nonfinite_inject_every = atol(inject);
     opts_require_image_output("render");
@@ -396,71 +465,12 @@ int main(int argc, char **argv)
     a.mc.ckpt = a.mlt.ckpt = &ctl;
     bool ok, partial;
     interrupt_install();
-    if (!strcmp(a.method, "pt") || !strcmp(a.method, "bdpt")) {
-        method_parse(a.method, &a.mc.method);
-        struct render_stats st;
-        if (a.mlt.technique_k && strcmp(a.method, "pt")) {
-            if (a.mlt.technique_k > a.mc.max_length || a.mlt.technique_k < a.mc.min_length)
-                opts_fail("render", "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length)",
-                          a.mlt.technique_k, a.mc.min_length > 1 ? a.mc.min_length : 1, a.mc.max_length);
-            if (a.resume) opts_fail("render", "--technique-images: bdpt's per-technique sums are not checkpointed; render again without --resume");
-            if (dist_size() > 1) {
-                if (dist_root()) fprintf(stderr, "render: technique images are not merged across MPI ranks: make them without mpirun\n");
-                scene_free(sc);
-                return 2;
-            }
-            a.mc.tech_k = a.mlt.technique_k;
-        }
-        struct image *img = render_mc(sc, &a.mc, &st);
-        if (st.resume_failed) {
-            fprintf(stderr, "render: --resume %s: the checkpoint's state does not fit this run\n", a.resume);
-            img_destroy(img);
-            ckpt_buf_free(&resume);
-            scene_free(sc);
-            return 2;
-        }
-        ok = ctl.err[0] || !dist_root() || img_write_exr_png(img, a.out, err, sizeof err);
-        partial = st.partial;
-        if (ok && !ctl.err[0] && dist_root())
-            printf("%s%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",
-                   partial ? "PARTIAL (interrupted) " : "", a.method, a.mc.sobol ? " (sobol)" : "", st.samples, st.spp,
-                   st.seconds, st.samples / st.seconds,
-                   threads_note(a.mc.threads), st.nonfinite, nonfinite_note(&st.nonfinite_len));
-        if (ok && !ctl.err[0] && dist_root()) warn_nonfinite(st.nonfinite, &st.nonfinite_len);
-        if (ok && !ctl.err[0] && dist_root() && st.tech) ok = write_bdpt_tech(&a, &st, img, err, sizeof err);
-        bdpt_tech_free(st.tech);
-        img_destroy(img);
-    } else {
-        if (a.mlt.technique_k && (a.mlt.technique_k > a.mlt.max_length || a.mlt.technique_k < a.mlt.min_length ||
-                                  a.mlt.large_step != LARGE_MMLT))
-            opts_fail("render",
-                     "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length) and MMLT "
-                     "large steps",
-                     a.mlt.technique_k, a.mlt.min_length > 1 ? a.mlt.min_length : 1, a.mlt.max_length);
-        a.mlt.pss = cli_pss;
-        a.mlt.pss.width = camera_film_width(&sc->cam);
-        a.mlt.pss.height = camera_film_height(&sc->cam);
-        struct mlt_result r;
-        ok = mlt_render(sc, &a.mlt, &r, err, sizeof err);
-        if (!ok) {
-            fprintf(stderr, "%s%s\n", a.resume ? "render: --resume: " : "", err);
-            ckpt_buf_free(&resume);
-            scene_free(sc);
-            return a.resume ? 2 : 1;
-        }
-        partial = r.partial;
-        ok = ctl.err[0] || !dist_root() || (img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
-                              (!r.angle || write_angle(&a, &r, err, sizeof err)) && (!r.tech || write_tech(&a, &r, err, sizeof err)));
-        if (ok && !ctl.err[0] && dist_root())
-            printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass, normalisation rel. s.e. %.2f %%), %.0f mutations/s (%s), "
-                   "%ld non-finite dropped%s\n",
-                   partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, 100 * r.b_rse,
-                   r.mutations / r.seconds, threads_note(a.mlt.threads), r.nonfinite, nonfinite_note(&r.stats.nonfinite));
-        if (ok && !ctl.err[0] && dist_root()) {
-            warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
-            warn_normalisation(&r, a.mlt.seed_paths);
-        }
-        mlt_result_free(&r);
+    int rc = strcmp(a.method, "pt") && strcmp(a.method, "bdpt") ? run_mcmc(&a, sc, &ctl, &ok, &partial, err, sizeof err)
+                                                                : run_mc(&a, sc, &ctl, &ok, &partial, err, sizeof err);
+    if (rc) {
+        ckpt_buf_free(&resume);
+        scene_free(sc);
+        return rc;
     }
     /* A checkpoint that could not be written stopped the run (ckpt_save_run): its line alone, and
      * no outputs, which a full disk would refuse too. */
