@@ -13,6 +13,11 @@
 #include "stats/mlt_stats.h"
 #include "stats/tech_image.h"
 
+/* Per-chain state slots of the mutations (mcmc/mutation.h): those registered at run time, and room
+ * for the built-in table. */
+#define MUTATIONS_ADDED_MAX 4
+#define MUTATIONS_MAX (MUTATIONS_ADDED_MAX + 12)
+
 struct chain {
     struct pss_sampler pss;
     struct splat_list cur;
@@ -26,6 +31,7 @@ struct chain {
     struct mmlt_path *x;    /* PITP: the current path in its technique's form (swapped with a spare on accept) */
     long *dropped;          /* where its weighted splats that come out non-finite are counted (a
                              * tiny target's weight can overflow): its length's cell, PSSMLT's [0] */
+    void *state[MUTATIONS_MAX]; /* each mutation's own, by its place in the registry (or NULL) */
 };
 
 /* Everything one worker thread carries from one iteration to the next. Scratch buffers (walks,

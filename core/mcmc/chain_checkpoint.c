@@ -1,6 +1,7 @@
 /* A worker thread's MLT state (its chains, generator, counts, statistics and images) in and out of a
  * checkpoint payload; see chain.h. */
 #include "mcmc/chain.h"
+#include "mcmc/mutation.h"
 #include "path/path_checkpoint.h"
 #include <string.h>
 
@@ -21,15 +22,7 @@ static void put_chain(struct ckpt_buf *b, const struct scene *sc, const struct c
         ckpt_put_vertices(b, sc, c->path->cam, MAX_SUBPATH_VERTS);
         ckpt_put_vertices(b, sc, c->path->emi, MAX_SUBPATH_VERTS);
     }
-    if (c->x) {
-        CKPT_PUT(b, c->x->k);
-        CKPT_PUT(b, c->x->t);
-        CKPT_PUT(b, c->x->s);
-        CKPT_PUT(b, c->x->complete);
-        CKPT_PUT(b, c->x->ratios);
-        ckpt_put_vertices(b, sc, c->x->cam, MAX_SUBPATH_VERTS);
-        ckpt_put_vertices(b, sc, c->x->emi, MAX_SUBPATH_VERTS);
-    }
+    mutations_chain_save(b, sc, c); /* PITP's path, and the state of any mutation that has one */
 }
 
 /* The checksum vouches for the bytes, not for what they mean: every count that later indexes an
@@ -43,10 +36,8 @@ static bool chain_valid(const struct chain *c)
         if (p->touched[i] >= dims) return false;
     if (c->cur.n < 0 || c->cur.n > MAX_SPLATS) return false;
     const struct ctrl_path *cp = c->path;
-    if (cp && (cp->t < 0 || cp->t > MAX_SUBPATH_VERTS || cp->s < 0 || cp->s > MAX_SUBPATH_VERTS)) return false;
-    const struct mmlt_path *x = c->x;
-    return !x || (x->k >= 0 && x->k <= MAX_PATH_LENGTH && x->t >= 0 && x->t <= MAX_SUBPATH_VERTS && x->s >= 0 &&
-                  x->s <= MAX_SUBPATH_VERTS);
+    /* the mutations' states check themselves as they load (PITP's path: pitp_step.c) */
+    return !cp || (cp->t >= 0 && cp->t <= MAX_SUBPATH_VERTS && cp->s >= 0 && cp->s <= MAX_SUBPATH_VERTS);
 }
 
 static bool get_chain(struct ckpt_buf *b, const struct scene *sc, struct chain *c)
@@ -69,15 +60,7 @@ static bool get_chain(struct ckpt_buf *b, const struct scene *sc, struct chain *
         ckpt_get_vertices(b, sc, c->path->cam, MAX_SUBPATH_VERTS);
         ckpt_get_vertices(b, sc, c->path->emi, MAX_SUBPATH_VERTS);
     }
-    if (c->x) {
-        CKPT_GET(b, c->x->k);
-        CKPT_GET(b, c->x->t);
-        CKPT_GET(b, c->x->s);
-        CKPT_GET(b, c->x->complete);
-        CKPT_GET(b, c->x->ratios);
-        ckpt_get_vertices(b, sc, c->x->cam, MAX_SUBPATH_VERTS);
-        ckpt_get_vertices(b, sc, c->x->emi, MAX_SUBPATH_VERTS);
-    }
+    if (!mutations_chain_load(b, sc, c)) return false;
     return !b->short_read && chain_valid(c);
 }
 

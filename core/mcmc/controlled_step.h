@@ -20,7 +20,7 @@
  * auxiliary variables xi, drawn afresh by the forward inversions (u'_i) and again by the reverse
  * ones (v'_i). The ratio is taken conditionally on them: pi(u) q(xi) q(xi') T(u->v | xi) min(1, R)
  * with R = pi(v) T(v->u | xi') / (pi(u) T(u->v | xi)) is symmetric under (u, xi) <-> (v, xi'), so
- * detailed balance holds after integrating xi and xi' out (README, "Controlled small steps").
+ * detailed balance holds after integrating xi and xi' out (docs/controlled_step.md).
  *
  * Impossible inversions: u'_i (w'_i outside the support of y_i's BSDF) ends the proposal
  * (`failed`; it stays at u, a self-loop that keeps detailed balance); v'_i makes T(v -> u) = 0 and

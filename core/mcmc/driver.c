@@ -7,6 +7,7 @@
 #include "camera/camera.h"
 #include "io/image_merge.h"
 #include "mcmc/mlt_internal.h"
+#include "mcmc/mlt_options.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,37 +18,7 @@ static bool check_opts(const struct mlt_opts *o, char *err, size_t errlen)
                  o->max_length, MAX_PATH_LENGTH);
         return false;
     }
-    if (o->small_step != SMALL_STEP_PSS &&
-        (o->method == MLT_PSSMLT || o->large_step != LARGE_MMLT || o->pss.kernel != KERNEL_GAUSSIAN || o->pss.cdc)) {
-        /* the reverse density needs the Gaussian's (controlled_step.h); MCTLS does not keep the
-         * current subpaths; --cdc would make the kernel singular */
-        snprintf(err, errlen, "controlled and root small steps need mmlt or pitp, MMLT large steps, the Gaussian kernel and no --cdc");
-        return false;
-    }
-    if (o->technique_k && (o->method == MLT_PITP || o->large_step != LARGE_MMLT || o->technique_k < o->min_length ||
-                           o->technique_k > o->max_length)) {
-        snprintf(err, errlen,
-                 "technique images need pssmlt or mmlt with MMLT large steps and a length within "
-                 "--min-length..--max-length");
-        return false;
-    }
-    if (o->technique_k && dist_size() > 1) {
-        snprintf(err, errlen, "technique images are not merged across MPI ranks: make them without mpirun");
-        return false;
-    }
-    if ((o->mctls_tries || o->mctls_count_t0) &&
-        (o->method == MLT_PSSMLT || o->large_step == LARGE_MMLT || o->mctls_tries < (o->mctls_count_t0 ? 1 : 0) ||
-         o->mctls_tries > MCTLS_MAX_TRIES)) {
-        /* Eq. 4.7's sums do not change by a zero term: counting t = 0 needs drawn trials */
-        snprintf(err, errlen, "MCTLS trials: 1..%d, with mmlt or pitp and MCTLS large steps; counting t = 0 needs them",
-                 MCTLS_MAX_TRIES);
-        return false;
-    }
-    if (o->angle_stats && (o->method == MLT_PSSMLT || o->large_step != LARGE_MMLT)) {
-        snprintf(err, errlen, "angle statistics need mmlt or pitp with MMLT large steps");
-        return false;
-    }
-    return true;
+    return mlt_options_check(o, err, errlen); /* the checks between options (mlt_options.c) */
 }
 
 /* A checkpoint: the normalisation, the chains' elapsed time, then every thread's state. Called

@@ -1,6 +1,7 @@
 /* MCTLS, the multiple correlated-try large step (see mctls.h; thesis §4.3, Eq. 4.1-4.7). */
 #include "mcmc/mctls.h"
 #include "mcmc/mmlt.h"
+#include "mcmc/mutation.h"
 #include "mcmc/splat_ev.h"
 #include "path/connect.h"
 #include "sampling/pick.h"
@@ -127,3 +128,18 @@ double mctls_step(const struct path_ctx *pc, const struct mlt_opts *o, struct ch
     }
     return a;
 }
+
+/* As a mutation (mutation.h): the large steps of the lengths MCTLS is chosen for. */
+static bool applies(const struct worker *wk, const struct chain *c, bool large) { return large && use_mctls(wk->opts, c->k); }
+
+static void step(struct worker *wk, struct chain *c, bool large, double t_start)
+{
+    (void)large;
+    bool acc, changed, nonzero;
+    wk->scratch->conn_tried = wk->scratch->conn_nonzero = 0;
+    double a = mctls_step(&wk->path_ctx, wk->opts, c, wk->scratch, wk->mctls_buf, &wk->r, wk->img, &acc, &changed, &nonzero);
+    mutation_take_connections(wk);
+    stats_record(wk->st, PROPOSAL_MCTLS, c->k, changed, a, acc, nonzero, mutation_elapsed(wk, t_start));
+}
+
+const struct mutation mutation_mctls = {.name = "mctls", .applies = applies, .step = step};

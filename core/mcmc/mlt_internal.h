@@ -45,31 +45,32 @@ struct run_job {
     double elapsed0; /* chain seconds before the resume */
 };
 
-/* One worker thread: its chains, generator and counts (ts: what a checkpoint holds of them), its
+/* One worker thread: its chains, generator and counts (saved: what a checkpoint holds of them), its
  * shares of the job's accumulators, and the scratch its proposals are traced into. */
 struct worker {
-    struct run_job *j;
-    const struct mlt_opts *o;
-    int tid, g;               /* the thread, and the job's global thread (streams, budgets) */
-    struct path_ctx pc;
-    struct chain *ch;         /* j->nk chains */
-    rng r;                    /* length selection, step kind, acceptance */
-    long n;                   /* iterations done */
+    struct run_job *job;
+    const struct mlt_opts *opts;
+    int tid, global_tid;          /* the thread, and the job's global thread (streams, budgets) */
+    struct path_ctx path_ctx;     /* the scene and path lengths the walks and connections use */
+    struct chain *ch;             /* job->nk chains */
+    rng r;                        /* length selection, step kind, acceptance */
+    long n;                       /* iterations done */
     struct mlt_stats *st;
     struct image *img;
-    struct tech_acc *ta;      /* or NULL */
-    struct angle_acc *angle;  /* or NULL */
-    long *ctrl_fail;          /* [2]: forward, reverse */
+    struct tech_acc *tech;        /* or NULL */
+    struct angle_acc *angle;      /* or NULL */
+    long *ctrl_fail;              /* [2]: forward, reverse */
     bool pitp, multiplexed;
-    bool track;               /* chains keep their subpaths (controlled steps, angle statistics) */
-    struct mlt_thread ts;
+    bool track;                   /* chains keep their subpaths (controlled steps, angle statistics) */
+    int tech_before;              /* the current chain's technique when the iteration began */
+    struct mlt_thread saved;
     /* scratch */
-    struct scratch *w;
-    struct splat_list prop;   /* the proposal's splats */
-    struct mmlt_path *spare;  /* the proposal's path; under PITP swapped with the chain's on accept */
-    struct mctls_buf *mb;
-    struct pitp_scratch *ps;  /* PITP only */
-    struct ctrl_sampler *cs;  /* controlled and root small steps only */
+    struct scratch *scratch;      /* walks and connections of the proposal being traced */
+    struct splat_list prop;       /* the proposal's splats */
+    struct mmlt_path *spare;      /* the proposal's path; under PITP swapped with the chain's on accept */
+    struct mctls_buf *mctls_buf;
+    struct pitp_scratch *pitp_scratch; /* PITP only */
+    struct ctrl_sampler *ctrl;    /* controlled and root small steps only */
 };
 
 /* The seed pass's stream of sample i for chain index kk: the chain start reproduces the sample. */

@@ -8,7 +8,7 @@
  * its own and inverts only the |j - i| blocks that produce the vertices it gains, each followed by
  * one forward step with those numbers that must reach the vertex it inverted toward (a retrace).
  * A move whose inversion or retrace fails, or whose reverse move (j -> i from the new state) would
- * fail, is rejected: README "PITP" argues detailed balance. Numbers the new technique no longer
+ * fail, is rejected: docs/pitp.md argues detailed balance. Numbers the new technique no longer
  * uses are made fresh (uniform), as the reversible-jump pairing of unused dimensions requires.
  *
  * The state's path is MMLT's (struct mmlt_path, mmlt.h), kept in its technique's form by the chain. */
@@ -31,16 +31,16 @@ void pitp_scratch_init(struct pitp_scratch *w, const struct scene *sc);
  * PITP_FAILED: an inversion or retrace (forward or reverse) failed. */
 enum pitp_outcome { PITP_SAME, PITP_MOVED, PITP_REJECTED, PITP_FAILED };
 
-/* One technique perturbation of the chain state (p, x): u_pick chooses j in proportion to
- * x->ratios; fresh numbers of discrete inversions come from p's own stream. On
- * PITP_MOVED the current numbers of p and x (now in j's form) describe (j, v); otherwise both are
- * unchanged. *j receives the technique chosen (emitter vertex count), *a the acceptance
- * probability. When the target was re-evaluated (*c_new set true), *c holds the new state's
+/* One technique perturbation of the chain state (pss, x): u_pick chooses j in proportion to
+ * x->ratios; fresh numbers of discrete inversions come from pss's own stream. On
+ * PITP_MOVED the current numbers of pss and x (now in j's form) describe (j, v); otherwise both are
+ * unchanged. *j_out receives the technique chosen (emitter vertex count), *a the acceptance
+ * probability. When the target was re-evaluated (*conn_new set true), *conn holds the new state's
  * connection (its target is (k + 1) w f of it), which the caller's splats must then use. A
  * re-evaluated target that is NaN or infinite fails the move and is counted in nf->len[k]. */
-enum pitp_outcome pitp_perturb(const struct path_ctx *pc, struct pss_sampler *p, struct mmlt_path *x,
-                               struct pitp_scratch *w, double u_pick, int *j, double *a,
-                               struct connection *c, bool *c_new, struct nonfinite *nf);
+enum pitp_outcome pitp_perturb(const struct path_ctx *ctx, struct pss_sampler *pss, struct mmlt_path *x,
+                               struct pitp_scratch *scratch, double u_pick, int *j_out, double *a,
+                               struct connection *conn, bool *conn_new, struct nonfinite *nf);
 
 /* Whether the path's target can change with its technique (a refracting or delta vertex: pitp.c);
  * on the other paths the stationary law of the technique given the path is w(x). */

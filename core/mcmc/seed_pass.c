@@ -144,15 +144,15 @@ bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errle
 
 void chain_start(struct worker *wk, struct chain *c, int kk)
 {
-    const struct run_job *j = wk->j;
-    const struct mlt_opts *o = wk->o;
+    const struct run_job *j = wk->job;
+    const struct mlt_opts *o = wk->opts;
     long i = pick_cdf(j->cdf[kk], o->seed_paths, rng_uniform(&wk->r));
     pss_init(&c->pss, &o->pss, o->seed, seed_stream(i, j->nk, kk));
     if (wk->pitp) c->x = xmalloc(sizeof *c->x);
     struct mmlt_path *x0 = wk->pitp ? c->x : wk->spare;
     bool complete;
-    c->f = eval_state(o->method, &wk->pc, &c->pss.base, wk->w, c->k, x0, &c->cur, &c->tech, &complete);
-    if (wk->ta) tech_split_record(wk->ta, &wk->pc, wk->w, wk->multiplexed ? c->k : 0, c->tech, &c->cur, true);
+    c->f = eval_state(o->method, &wk->path_ctx, &c->pss.base, wk->scratch, c->k, x0, &c->cur, &c->tech, &complete);
+    if (wk->tech) tech_split_record(wk->tech, &wk->path_ctx, wk->scratch, wk->multiplexed ? c->k : 0, c->tech, &c->cur, true);
     pss_accept(&c->pss);
     if (wk->track) {
         c->path = xmalloc(sizeof *c->path);
@@ -160,5 +160,5 @@ void chain_start(struct worker *wk, struct chain *c, int kk)
     }
     /* The seed's stream reproduced its path; the mutations get a stream of their own, so that two
      * threads starting from the same seed sample do not run identical chains. */
-    rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)wk->g << 24) | (uint64_t)kk);
+    rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)wk->global_tid << 24) | (uint64_t)kk);
 }

@@ -7,7 +7,17 @@
  *
  * Inversion (thesis §5.1) runs the same calls through a writer: inverse sampling functions call
  * sampler_put() in exactly the order their forward function calls sampler_next(), and draw the
- * fresh random numbers xi of Eq. 5.6-5.8 from sampler_fresh(). */
+ * fresh random numbers xi of Eq. 5.6-5.8 from sampler_fresh().
+ *
+ * Every implementation (a struct with `struct sampler base` first, and its sampler_ops):
+ *   sampler/sampler.c     the independent sampler, the writer (inversion) and the replay
+ *   sampler/pss.c         struct pss_sampler: MLT's primary-sample-space state, lazy small steps
+ *   mc/render.c           struct pixel_sampler: PT/BDPT's per-pixel numbers, independent or Sobol
+ *   mcmc/controlled_step.c struct ctrl_sampler: the controlled and root small steps (thesis §5.3),
+ *                         and struct block_io: one block an inversion writes and a BSDF reads
+ *   mcmc/pitp.c           struct block_sampler: a block PITP's inversion writes and its retrace reads
+ *   path/path_invert.c    struct tee: passes an inversion's numbers on and replays its block
+ *   bsdf/bsdf_nested.c    struct probe_io: a nested BSDF's inverse probed through its forward */
 #ifndef SAMPLER_H
 #define SAMPLER_H
 

@@ -5,8 +5,16 @@
 #include <math.h>
 #include <string.h>
 
-static const char *kind_names[] = {"small", "large", "mctls", "pitp"};
+static const char *kind_names[PROPOSAL_KINDS] = {"small", "large", "mctls", "pitp"};
+static int kinds = PROPOSAL_BUILTIN;
 const char *proposal_name(enum proposal_kind k) { return kind_names[k]; }
+
+int proposal_kind_add(const char *name)
+{
+    if (kinds == PROPOSAL_KINDS) return -1;
+    kind_names[kinds] = name;
+    return kinds++;
+}
 
 void stats_clear(struct mlt_stats *s) { memset(s, 0, sizeof *s); }
 

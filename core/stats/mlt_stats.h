@@ -11,7 +11,10 @@
 /* PROPOSAL_PITP records PITP's technique perturbations (mcmc/pitp.c): "accepted" means carried
  * out; a is 1, or min(1, f_j / f_i) on paths refracting between the connections, and 0 for a
  * failed inversion or retrace (counted in `failed`); technique_changed is j != i. */
-enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_KINDS };
+enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_BUILTIN };
+/* Kinds PROPOSAL_BUILTIN.. are the mutations registered at run time (mcmc/mutation.h); a kind
+ * without attempts writes no rows, so the CSV of a run without them is unchanged. */
+#define PROPOSAL_KINDS (PROPOSAL_BUILTIN + 4)
 #define STATS_LENGTHS (MAX_PATH_LENGTH + 1) /* index 0 = all lengths (PSSMLT states) */
 #define STATS_BATCH 2048 /* proposals per batch: long enough for chains stuck ~1/acceptance steps */
 
@@ -53,8 +56,10 @@ void cell_merge(struct accept_cell *dst, const struct accept_cell *src);
 /* Mean acceptance, its batch-means standard error (NAN with fewer than 2 batches). */
 double cell_mean(const struct accept_cell *c);
 double cell_stderr(const struct accept_cell *c);
-/* CSV rows (see README "Statistics CSV"); header once when `header`. */
+/* CSV rows (core/mcmc/docs/outputs.md, "Statistics CSV"); header once when `header`. */
 void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, bool header);
 const char *proposal_name(enum proposal_kind k);
+/* A kind named `name` for a registered mutation: its index, or -1 when every kind is taken. */
+int proposal_kind_add(const char *name);
 
 #endif

@@ -117,7 +117,7 @@ static double mutation_rate(const struct scene *sc, enum mlt_method m, enum smal
 }
 
 /* Peak memory once an image has been written: the first write opens the OpenImageIO module, whose
- * Debian build maps ~260 libraries (core/oiio.h). Until then the figure above is the renderer's. */
+ * Debian build maps ~260 libraries (core/io/oiio.h). Until then the figure above is the renderer's. */
 static double image_io_peak_mb(const struct scene *sc)
 {
     char dir[] = "/tmp/bench-XXXXXX", prefix[64], err[1024];

@@ -1,12 +1,13 @@
 /* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
  * MCMC methods, PREFIX.csv with acceptance statistics. Built with MPI=1 and started by mpirun, its
- * ranks share the render (core/dist.h) and rank 0 alone writes the outputs and the summary. */
+ * ranks share the render (core/base/dist.h) and rank 0 alone writes the outputs and the summary. */
 #include "base/dist.h"
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
+#include "tools/mlt_cli.h"
 #include "emitter/emitter.h"
 #include "io/checkpoint.h"
 #include "mc/render.h"
@@ -20,21 +21,18 @@
 #include <string.h>
 #include <unistd.h>
 
-/* Which methods read an option (struct opt's tag); given to another method it would be silently
- * ignored, which would quietly change an experiment: a warning names it. */
-enum { MCMC = 1, MMLT_ONLY = 2, PSSMLT_ONLY = 4, MC_ONLY = 8 };
 static const char *const methods[] = {"pt", "bdpt", "pssmlt", "mmlt", "pitp", NULL};
-static const char *const kernels[] = {"kelemen", "gaussian", NULL};
 static const char *const samplers[] = {"independent", "sobol", NULL};
-static const char *const large_steps[] = {"mmlt", "mctls", "hybrid", NULL};
-static const char *const small_steps[] = {"pss", "controlled", "root", NULL};
+
+/* The small steps' names (mlt_options.c). */
+static const char *small_step_name(enum small_step k) { return mlt_option_find("small_step")->choices[k]; }
 
 struct args {
     const char *scene, *out, *resume, *method;
     double checkpoint, cpu_seconds;
     struct render_opts mc;
     struct mlt_opts mlt;
-    int res[2], kernel, sampler;
+    int res[2], sampler;
     const char *res_arg; /* --resolution as given */
     bool quiet;
 };
@@ -57,25 +55,6 @@ static void scene_arg(const char *prog, const char *arg, void *ctx)
     a->scene = arg;
 }
 
-/* One warning line per option that the chosen method does not read. */
-static void warn_unused(const struct opts_spec *spec, const char *method, int argc, char **argv)
-{
-    bool mcmc = !strcmp(method, "pssmlt") || !strcmp(method, "mmlt") || !strcmp(method, "pitp");
-    bool multiplexed = !strcmp(method, "mmlt") || !strcmp(method, "pitp");
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        const struct opt *e = opts_find(spec, o);
-        int tag = e ? e->tag : 0;
-        const char *only = mcmc && (tag & MC_ONLY)                                  ? "pt and bdpt"
-                           : !mcmc && (tag & MCMC)                                  ? "pssmlt, mmlt and pitp"
-                           : !strcmp(method, "pssmlt") && (tag & MMLT_ONLY) ? "mmlt and pitp"
-                           : multiplexed && (tag & PSSMLT_ONLY)                     ? "pssmlt"
-                                                                                    : NULL;
-        if (!strcmp(o, "--technique-images") && !strcmp(method, "pt")) only = "bdpt, pssmlt and mmlt"; /* not pitp */
-        if (only) fprintf(stderr, "render: warning: %s has no effect with --method %s (it applies to %s)\n", o, method, only);
-    }
-}
-
 #define STR_(x) #x
 #define STR(x) STR_(x)
 
@@ -93,11 +72,19 @@ static const char *help_tail(void)
     return t;
 }
 
+/* Whether argv holds the option (opts.h takes no --opt=value). */
+static bool given(int argc, char **argv, const char *name)
+{
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], name)) return true;
+    return false;
+}
+
 static void parse(int argc, char **argv, struct args *a)
 {
     const char *prog = "render";
     struct mlt_opts *m = &a->mlt;
-    const struct opt opts[] = {
+    const struct opt shared[] = {
         {"--method", OPT_CHOICE, .choices = methods, .str = &a->method, .def = "bdpt",
          .help = "estimator (pitp: MMLT with the path-invariant technique perturbation, thesis 5.2)"},
         {"--spp", OPT_INT, OPT_DST(a->mc.spp), .arg = "N", .lo = 1, .hi = 1 << 24,
@@ -109,7 +96,8 @@ static void parse(int argc, char **argv, struct args *a)
          .help = "as --time, in CPU seconds per thread (the process's CPU time over --threads): other load on the "
                  "machine then changes the wall time, not the work done"},
         OPT_SEED(a->mc.seed, .help = "random seed; same seed and threads -> same output", .def = "1"),
-        {"--sampler", OPT_CHOICE, OPT_DST(a->sampler), .choices = samplers, .def = "independent", .tag = MC_ONLY,
+        {"--sampler", OPT_CHOICE, OPT_DST(a->sampler), .choices = samplers, .def = "independent",
+         .tag = APPLIES_PT | APPLIES_BDPT,
          .help = "pt/bdpt numbers: independent, or sobol (scrambled (0,2)-sequences per pixel, as Tungsten's default): "
                  "equally unbiased, lower error where stratification pays (pixel area, direct light; not fireflies)"},
         OPT_THREADS(a->mc.threads, .hi = 1024, .help = "worker threads (default: all cores)", .def_int = cpu_count),
@@ -132,43 +120,12 @@ static void parse(int argc, char **argv, struct args *a)
          .help = "Embree's kernels: sse2, sse4.2, avx, avx2 or avx512 (those this CPU runs; default: the best, or the "
                  "environment's PSS_EMBREE_ISA): hit points, so images, differ in the last bits between kernels"},
         {.type = OPT_TEXT, .help = "MCMC options (pssmlt, mmlt, pitp; the mmlt options apply to pitp too):"},
-        {"--p-large", OPT_DOUBLE, OPT_DST(m->p_large), .arg = "P", .lo = 0, .hi = 1, .help = "large-step probability",
-         .def = "0.1", .tag = MCMC},
-        {"--kernel", OPT_CHOICE, OPT_DST(a->kernel), .choices = kernels, .tag = MCMC,
-         .help = "small-step kernel (default kelemen: s1 = 1/1024, s2 = 1/64)"},
-        {"--sigma", OPT_DOUBLE, OPT_DST(m->pss.sigma), .arg = "S", .lo = 1e-9, .hi = 1, .tag = MCMC,
-         .help = "gaussian small-step standard deviation (default 1/64)"},
-        {"--rap", OPT_FLAG, OPT_DST(m->pss.rap), .tag = MCMC,
-         .help = "resolution-aware proposals: image steps corrected for aspect ratio"},
-        {"--rap-resolution", OPT_FLAG, OPT_DST(m->pss.rap_resolution), .tag = MCMC,
-         .help = "also scale image steps to a fixed size in pixels (thesis 4.1); implies --rap"},
-        {"--cdc", OPT_FLAG, OPT_DST(m->pss.cdc), .tag = MCMC,
-         .help = "constrained discrete choices: small steps keep discrete numbers"},
-        {"--seed-paths", OPT_INT, OPT_DST(m->seed_paths), .arg = "N", .lo = 1, .hi = 1L << 40, .def = "100000",
-         .tag = MCMC, .help = "samples of the normalisation seed pass"},
-        {"--seed-bdpt", OPT_FLAG, OPT_DST(m->seed_bdpt), .tag = MCMC | MMLT_ONLY,
-         .help = "mmlt, pitp: estimate b_k from BDPT samples, one per seed path and length (every technique; MMLT "
-                 "paper 4), instead of the seed pool's one-technique targets: the same b, a smaller normalisation "
-                 "error per seed path at 3-4x the seed pass's time"},
-        {"--large-step", OPT_CHOICE, OPT_DST(m->large_step), .choices = large_steps, .tag = MCMC | MMLT_ONLY,
-         .help = "mmlt's large step (default mmlt; mctls: thesis 4.3)"},
-        OPT_HYBRID_LENGTH(m->hybrid_length, .help = "hybrid: MCTLS from path length K on, MMLT large steps below",
-                          .def = "6", .tag = MCMC | MMLT_ONLY),
-        {"--uniform-lengths", OPT_FLAG, OPT_DST(m->uniform_lengths), .tag = MCMC | MMLT_ONLY,
-         .help = "mmlt: equal mutations per path length instead of in proportion to b_k"},
-        {"--max-heuristic", OPT_FLAG, OPT_DST(m->max_heuristic), .tag = MCMC | PSSMLT_ONLY,
-         .help = "pssmlt: Kelemen's maximum heuristic instead of the balance heuristic"},
-        {"--small-step", OPT_CHOICE, OPT_DST(m->small_step), .choices = small_steps, .tag = MCMC | MMLT_ONLY,
-         .help = "mmlt/pitp small step (default pss; controlled: thesis 5.3 Alg. 4, root: Alg. 3, analysis only); the "
-                 "latter two use the Gaussian kernel"},
-        {"--angle-stats", OPT_FLAG, OPT_DST(m->angle_stats), .tag = MCMC | MMLT_ONLY,
-         .help = "mmlt, pitp: angle change of every small step, PREFIX.angle.exr and .angle.csv"},
-        {"--technique-images", OPT_INT, OPT_DST(m->technique_k), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH,
-         .help = "bdpt, pssmlt, mmlt (MMLT large steps): per-technique images of path length K (MMLT paper 5): "
-                 "PREFIX.tech-tT.exr/.png contribution of technique T; pssmlt/mmlt: PREFIX.count-tT.exr/.png chain "
-                 "samples in it, PREFIX.tech.csv shares; bdpt: PREFIX.tech.csv each technique's variance "
-                 "(the error it carries); pssmlt runs slower with it"},
-        {0}};
+    };
+    /* then the MCMC options, from their descriptors (core/mcmc/mlt_options.h), and the end */
+    struct opt opts[sizeof shared / sizeof shared[0] + 32] = {0};
+    size_t n = sizeof shared / sizeof shared[0];
+    memcpy(opts, shared, sizeof shared);
+    n += mlt_cli_opts(m, opts + n, sizeof opts / sizeof opts[0] - n - 1);
     const struct opts_spec spec = {.prog = prog, .usage = "usage: render SCENE.json [options]\n", .opts = opts,
                                  .tail = help_tail(),
                                  .positional = scene_arg, .ctx = a};
@@ -186,16 +143,15 @@ static void parse(int argc, char **argv, struct args *a)
     m->seconds = a->mc.seconds, m->seed = a->mc.seed, m->threads = a->mc.threads;
     a->mc.progress = m->progress = !a->quiet;
     if (m->pss.rap_resolution) m->pss.rap = true;
-    if (a->kernel >= 0) m->pss.kernel = a->kernel == 0 ? KERNEL_KELEMEN : KERNEL_GAUSSIAN;
-    /* controlled steps need the Gaussian's density (core/controlled_step.h) */
+    /* controlled steps need the Gaussian's density (mcmc/controlled_step.h) */
     if (m->small_step != SMALL_STEP_PSS) {
-        if (a->kernel >= 0 && m->pss.kernel != KERNEL_GAUSSIAN)
-            opts_fail(prog, "--small-step %s: needs --kernel gaussian", small_steps[m->small_step]);
+        if (given(argc, argv, "--kernel") && m->pss.kernel != KERNEL_GAUSSIAN)
+            opts_fail(prog, "--small-step %s: needs --kernel gaussian", small_step_name(m->small_step));
         m->pss.kernel = KERNEL_GAUSSIAN;
     }
-    warn_unused(&spec, a->method, argc, argv);
     if (m->technique_k && !strcmp(a->method, "pitp"))
         opts_fail(prog, "--technique-images: pssmlt and mmlt only (PITP's perturbation moves a state between techniques)");
+    mlt_cli_warn_unused(&spec, a->method, argc, argv);
 }
 
 /* The metadata lines every CSV of a run opens with: "# render SCENE --method M EXTRA", the commit
@@ -217,7 +173,7 @@ static bool write_angle(const struct args *a, const struct mlt_result *r, char *
     bool ok = img_write_exr(im, 1.0, path, err, errlen);
     img_destroy(im);
     FILE *f = open_memstream(&buf, &len);
-    snprintf(extra, sizeof extra, " --small-step %s", small_steps[a->mlt.small_step]);
+    snprintf(extra, sizeof extra, " --small-step %s", small_step_name(a->mlt.small_step));
     meta_head(f, a, extra);
     csv_meta(f, "skipped_steps", "%ld", r->angle->skipped);
     angle_acc_write_csv(f, r->angle);
@@ -243,7 +199,7 @@ static char *tech_head(const struct args *a, const char *name, long count, doubl
     return head;
 }
 
-/* The per-technique images and PREFIX.tech.csv of pssmlt and mmlt (core/tech_image.h). */
+/* The per-technique images and PREFIX.tech.csv of pssmlt and mmlt (core/stats/tech_image.h). */
 static bool write_tech(const struct args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
     char *head = tech_head(a, "mutations", r->mutations, r->seconds);
@@ -272,23 +228,12 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     csv_meta(f, "threads", "%d", m->threads);
     csv_meta(f, "max_length", "%d", m->max_length);
     if (dist_size() > 1) csv_meta(f, "ranks", "%d", dist_size()); /* threads are per rank */
-    csv_meta(f, "large_step", "%s", large_steps[m->large_step]);
-    csv_meta(f, "hybrid_length", "%d", m->hybrid_length);
-    csv_meta(f, "seed_estimator", "%s", m->seed_bdpt && m->method != MLT_PSSMLT ? "bdpt" : "pool");
-    csv_meta(f, "uniform_lengths", "%d", m->uniform_lengths);
-    csv_meta(f, "mis", "%s", m->max_heuristic ? "maximum" : "balance");
-    csv_meta(f, "small_step", "%s", small_steps[m->small_step]);
-    csv_meta(f, "sigma", "%g", m->pss.sigma);
+    mlt_cli_csv(f, m, MLT_CSV_BEFORE_COUNTS); /* the options (core/mcmc/mlt_options.c) */
     if (m->small_step != SMALL_STEP_PSS) {
         csv_meta(f, "controlled_failed_forward", "%ld", r->ctrl_fail_forward);
         csv_meta(f, "controlled_failed_reverse", "%ld", r->ctrl_fail_reverse);
     }
-    csv_meta(f, "p_large", "%g", m->p_large);
-    csv_meta(f, "kernel", "%s", kernels[m->pss.kernel == KERNEL_KELEMEN ? 0 : 1]);
-    csv_meta(f, "rap", "%d", m->pss.rap);
-    csv_meta(f, "rap_resolution", "%d", m->pss.rap_resolution);
-    csv_meta(f, "cdc", "%d", m->pss.cdc);
-    csv_meta(f, "seed_paths", "%ld", m->seed_paths);
+    mlt_cli_csv(f, m, MLT_CSV_AFTER_COUNTS);
     if (r->partial) csv_meta(f, NULL, "PARTIAL: interrupted after %ld mutations", r->mutations);
     csv_meta(f, "mutations", "%ld", r->mutations);
     csv_meta(f, "seconds", "%.3f", r->seconds);
@@ -321,8 +266,17 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     return ok;
 }
 
+/* What the MCMC methods take from the shared options and the scene. */
+static void mlt_setup(struct mlt_opts *m, const struct args *a, const struct scene *sc)
+{
+    m->method = !strcmp(a->method, "mmlt") ? MLT_MMLT : !strcmp(a->method, "pitp") ? MLT_PITP : MLT_PSSMLT;
+    m->max_length = a->mc.max_length;
+    m->min_length = a->mc.min_length;
+    m->mutations = (long)a->mc.spp * sc->cam.width * sc->cam.height;
+}
+
 /* Every option that changes the numbers a run produces, as one line: a checkpoint resumes only
- * under the same. */
+ * under the same. The MCMC methods' options must be set (mlt_setup) before. */
 static void options_text(const struct args *a, const struct scene *sc, char *buf, size_t n)
 {
     const char *isa = accel_isa();
@@ -333,15 +287,9 @@ static void options_text(const struct args *a, const struct scene *sc, char *buf
                        a->mc.max_length, a->mc.min_length, sc->cam.width, sc->cam.height, isa ? isa : "?");
     /* only when not the default, so that checkpoints of independent-number runs stay resumable */
     if (a->mc.sobol && len > 0 && (size_t)len < n) len += snprintf(buf + len, n - (size_t)len, " sampler=sobol");
-    if (strcmp(a->method, "pt") && strcmp(a->method, "bdpt") && len > 0 && (size_t)len < n) {
-        const struct mlt_opts *m = &a->mlt;
-        snprintf(buf + len, n - (size_t)len,
-                 " p_large=%g kernel=%d sigma=%g rap=%d rap_resolution=%d cdc=%d seed_paths=%ld large_step=%d "
-                 "hybrid_length=%d uniform_lengths=%d max_heuristic=%d small_step=%d angle_stats=%d technique_k=%d%s",
-                 m->p_large, m->pss.kernel, m->pss.sigma, m->pss.rap, m->pss.rap_resolution, m->pss.cdc, m->seed_paths,
-                 m->large_step, m->hybrid_length, m->uniform_lengths, m->max_heuristic, m->small_step, m->angle_stats,
-                 m->technique_k, m->seed_bdpt ? " seed_bdpt=1" : ""); /* only when set: older checkpoints resume */
-    }
+    /* every number-changing MCMC option, from its descriptor: none can be left out */
+    if (strcmp(a->method, "pt") && strcmp(a->method, "bdpt") && len > 0 && (size_t)len < n)
+        mlt_options_identity(&a->mlt, buf + len, n - (size_t)len);
 }
 
 /* " (length 3: 10, length 4: 2)" for the lengths with a count, "" for none; length 0 holds sums
@@ -386,15 +334,84 @@ static const char *threads_note(int threads)
     return s;
 }
 
+/* --method pt or bdpt; *ok and *partial for the summary, or an exit status (> 0) to stop at. */
+static int run_mc(struct args *a, const struct scene *sc, const struct ckpt_ctl *ctl, bool *ok, bool *partial, char *err,
+                  size_t errlen)
+{
+    method_parse(a->method, &a->mc.method);
+    struct render_stats st;
+    if (a->mlt.technique_k && strcmp(a->method, "pt")) {
+        if (a->mlt.technique_k > a->mc.max_length || a->mlt.technique_k < a->mc.min_length)
+            opts_fail("render", "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length)",
+                      a->mlt.technique_k, a->mc.min_length > 1 ? a->mc.min_length : 1, a->mc.max_length);
+        if (a->resume) opts_fail("render", "--technique-images: bdpt's per-technique sums are not checkpointed; render again without --resume");
+        if (dist_size() > 1) {
+            if (dist_root()) fprintf(stderr, "render: technique images are not merged across MPI ranks: make them without mpirun\n");
+            return 2;
+        }
+        a->mc.tech_k = a->mlt.technique_k;
+    }
+    struct image *img = render_mc(sc, &a->mc, &st);
+    if (st.resume_failed) {
+        fprintf(stderr, "render: --resume %s: the checkpoint's state does not fit this run\n", a->resume);
+        img_destroy(img);
+        return 2;
+    }
+    *ok = ctl->err[0] || !dist_root() || img_write_exr_png(img, a->out, err, errlen);
+    *partial = st.partial;
+    if (*ok && !ctl->err[0] && dist_root())
+        printf("%s%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",
+               *partial ? "PARTIAL (interrupted) " : "", a->method, a->mc.sobol ? " (sobol)" : "", st.samples, st.spp,
+               st.seconds, st.samples / st.seconds,
+               threads_note(a->mc.threads), st.nonfinite, nonfinite_note(&st.nonfinite_len));
+    if (*ok && !ctl->err[0] && dist_root()) warn_nonfinite(st.nonfinite, &st.nonfinite_len);
+    if (*ok && !ctl->err[0] && dist_root() && st.tech) *ok = write_bdpt_tech(a, &st, img, err, errlen);
+    bdpt_tech_free(st.tech);
+    img_destroy(img);
+    return 0;
+}
+
+/* --method pssmlt, mmlt or pitp; as run_mc. */
+static int run_mcmc(struct args *a, const struct scene *sc, const struct ckpt_ctl *ctl, bool *ok, bool *partial,
+                    char *err, size_t errlen)
+{
+    if (a->mlt.technique_k && (a->mlt.technique_k > a->mlt.max_length || a->mlt.technique_k < a->mlt.min_length ||
+                              a->mlt.large_step != LARGE_MMLT))
+        opts_fail("render",
+                 "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length) and MMLT "
+                 "large steps",
+                 a->mlt.technique_k, a->mlt.min_length > 1 ? a->mlt.min_length : 1, a->mlt.max_length);
+    a->mlt.pss.width = camera_film_width(&sc->cam);
+    a->mlt.pss.height = camera_film_height(&sc->cam);
+    struct mlt_result r;
+    *ok = mlt_render(sc, &a->mlt, &r, err, errlen);
+    if (!*ok) {
+        fprintf(stderr, "%s%s\n", a->resume ? "render: --resume: " : "", err);
+        return a->resume ? 2 : 1;
+    }
+    *partial = r.partial;
+    *ok = ctl->err[0] || !dist_root() || (img_write_exr_png(r.img, a->out, err, errlen) && write_csv(a, &r, err, errlen) &&
+                          (!r.angle || write_angle(a, &r, err, errlen)) && (!r.tech || write_tech(a, &r, err, errlen)));
+    if (*ok && !ctl->err[0] && dist_root())
+        printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass, normalisation rel. s.e. %.2f %%), %.0f mutations/s (%s), "
+               "%ld non-finite dropped%s\n",
+               *partial ? "PARTIAL (interrupted) " : "", a->method, r.mutations, r.seconds, r.seed_seconds, 100 * r.b_rse,
+               r.mutations / r.seconds, threads_note(a->mlt.threads), r.nonfinite, nonfinite_note(&r.stats.nonfinite));
+    if (*ok && !ctl->err[0] && dist_root()) {
+        warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
+        warn_normalisation(&r, a->mlt.seed_paths);
+    }
+    mlt_result_free(&r);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     dist_init(&argc, &argv);
-    struct args a = {.kernel = -1};
+    struct args a = {0};
     a.mc = (struct render_opts){.method = METHOD_BDPT, .spp = -1, .max_length = -1};
     pss_opts_default(&a.mlt.pss, 1, 1);
-    struct pss_opts cli_pss;
     parse(argc, argv, &a);
-    cli_pss = a.mlt.pss;
     const char *inject = getenv("PSS_INJECT_NONFINITE"); /* tests only (path/splat.h) */
     if (inject) nonfinite_inject_every = atol(inject);
     opts_require_image_output("render");
@@ -421,10 +438,11 @@ int main(int argc, char **argv)
     /* Checkpoints are always armed: Ctrl-C leaves one even without --checkpoint. Over N > 1 MPI
      * ranks each rank keeps its own threads' state, in PREFIX.ckpt.rankR, and --resume FILE reads
      * FILE.rankR. */
-    char ckpt_path[4096], resume_path[4096], opts[1100];
+    char ckpt_path[4096], resume_path[4096], opts[2048];
     int N = dist_size(), R = dist_rank();
     snprintf(ckpt_path, sizeof ckpt_path, "%s.ckpt", a.out);
     if (N > 1) snprintf(ckpt_path + strlen(ckpt_path), sizeof ckpt_path - strlen(ckpt_path), ".rank%d", R);
+    mlt_setup(&a.mlt, &a, sc);
     options_text(&a, sc, opts, sizeof opts);
     snprintf(opts + strlen(opts), sizeof opts - strlen(opts), " ranks=%d", N);
     ckpt_remove_stale_temporaries(ckpt_path); /* a run that ends before its first write cleans up too */
@@ -447,75 +465,12 @@ int main(int argc, char **argv)
     a.mc.ckpt = a.mlt.ckpt = &ctl;
     bool ok, partial;
     interrupt_install();
-    if (!strcmp(a.method, "pt") || !strcmp(a.method, "bdpt")) {
-        method_parse(a.method, &a.mc.method);
-        struct render_stats st;
-        if (a.mlt.technique_k && strcmp(a.method, "pt")) {
-            if (a.mlt.technique_k > a.mc.max_length || a.mlt.technique_k < a.mc.min_length)
-                opts_fail("render", "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length)",
-                          a.mlt.technique_k, a.mc.min_length > 1 ? a.mc.min_length : 1, a.mc.max_length);
-            if (a.resume) opts_fail("render", "--technique-images: bdpt's per-technique sums are not checkpointed; render again without --resume");
-            if (dist_size() > 1) {
-                if (dist_root()) fprintf(stderr, "render: technique images are not merged across MPI ranks: make them without mpirun\n");
-                scene_free(sc);
-                return 2;
-            }
-            a.mc.tech_k = a.mlt.technique_k;
-        }
-        struct image *img = render_mc(sc, &a.mc, &st);
-        if (st.resume_failed) {
-            fprintf(stderr, "render: --resume %s: the checkpoint's state does not fit this run\n", a.resume);
-            img_destroy(img);
-            ckpt_buf_free(&resume);
-            scene_free(sc);
-            return 2;
-        }
-        ok = ctl.err[0] || !dist_root() || img_write_exr_png(img, a.out, err, sizeof err);
-        partial = st.partial;
-        if (ok && !ctl.err[0] && dist_root())
-            printf("%s%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",
-                   partial ? "PARTIAL (interrupted) " : "", a.method, a.mc.sobol ? " (sobol)" : "", st.samples, st.spp,
-                   st.seconds, st.samples / st.seconds,
-                   threads_note(a.mc.threads), st.nonfinite, nonfinite_note(&st.nonfinite_len));
-        if (ok && !ctl.err[0] && dist_root()) warn_nonfinite(st.nonfinite, &st.nonfinite_len);
-        if (ok && !ctl.err[0] && dist_root() && st.tech) ok = write_bdpt_tech(&a, &st, img, err, sizeof err);
-        bdpt_tech_free(st.tech);
-        img_destroy(img);
-    } else {
-        a.mlt.method = !strcmp(a.method, "mmlt") ? MLT_MMLT : !strcmp(a.method, "pitp") ? MLT_PITP : MLT_PSSMLT;
-        a.mlt.max_length = a.mc.max_length;
-        a.mlt.min_length = a.mc.min_length;
-        if (a.mlt.technique_k && (a.mlt.technique_k > a.mlt.max_length || a.mlt.technique_k < a.mlt.min_length ||
-                                  a.mlt.large_step != LARGE_MMLT))
-            opts_fail("render",
-                     "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length) and MMLT "
-                     "large steps",
-                     a.mlt.technique_k, a.mlt.min_length > 1 ? a.mlt.min_length : 1, a.mlt.max_length);
-        a.mlt.mutations = (long)a.mc.spp * sc->cam.width * sc->cam.height;
-        a.mlt.pss = cli_pss;
-        a.mlt.pss.width = camera_film_width(&sc->cam);
-        a.mlt.pss.height = camera_film_height(&sc->cam);
-        struct mlt_result r;
-        ok = mlt_render(sc, &a.mlt, &r, err, sizeof err);
-        if (!ok) {
-            fprintf(stderr, "%s%s\n", a.resume ? "render: --resume: " : "", err);
-            ckpt_buf_free(&resume);
-            scene_free(sc);
-            return a.resume ? 2 : 1;
-        }
-        partial = r.partial;
-        ok = ctl.err[0] || !dist_root() || (img_write_exr_png(r.img, a.out, err, sizeof err) && write_csv(&a, &r, err, sizeof err) &&
-                              (!r.angle || write_angle(&a, &r, err, sizeof err)) && (!r.tech || write_tech(&a, &r, err, sizeof err)));
-        if (ok && !ctl.err[0] && dist_root())
-            printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass, normalisation rel. s.e. %.2f %%), %.0f mutations/s (%s), "
-                   "%ld non-finite dropped%s\n",
-                   partial ? "PARTIAL (interrupted) " : "", a.method, r.mutations, r.seconds, r.seed_seconds, 100 * r.b_rse,
-                   r.mutations / r.seconds, threads_note(a.mlt.threads), r.nonfinite, nonfinite_note(&r.stats.nonfinite));
-        if (ok && !ctl.err[0] && dist_root()) {
-            warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
-            warn_normalisation(&r, a.mlt.seed_paths);
-        }
-        mlt_result_free(&r);
+    int rc = strcmp(a.method, "pt") && strcmp(a.method, "bdpt") ? run_mcmc(&a, sc, &ctl, &ok, &partial, err, sizeof err)
+                                                                : run_mc(&a, sc, &ctl, &ok, &partial, err, sizeof err);
+    if (rc) {
+        ckpt_buf_free(&resume);
+        scene_free(sc);
+        return rc;
     }
     /* A checkpoint that could not be written stopped the run (ckpt_save_run): its line alone, and
      * no outputs, which a full disk would refuse too. */
