@@ -13,7 +13,8 @@
 struct loader {
     struct jctx c;
     struct scene *s;
-    const struct scene_bsdf_reader *bsdf; /* reads the "bsdfs" and each primitive's "bsdf" */
+    /* reads the "bsdfs" and each primitive's "bsdf" (bsdf/bsdf_json.c) */
+    const struct scene_bsdf_reader *bsdf;
     const cJSON *bsdfs_json; /* top-level "bsdfs" array (or NULL): names resolve against it */
     char dir[4096];          /* directory of the scene file: resources are relative to it */
     int bsdf_cap;            /* s->bsdfs is allocated once with this many slots */
