@@ -51,7 +51,7 @@ else
   endif
 endif
 
-# MPI=1: the renderer over Open MPI ranks (core/dist.h, README "MPI: paper-scale runs"). Its objects
+# MPI=1: the renderer over Open MPI ranks (core/base/dist.h, README "MPI: paper-scale runs"). Its objects
 # live under $(BUILD)/mpi/; the executables stay in $(BIN), relinked whenever the mode changes
 # (LINK_MODE_FILE). The compiler stays the same, Open MPI's flags come from pkg-config (`mpicc` is
 # that compiler with those flags), so both modes compile every shared source identically.
@@ -78,7 +78,7 @@ OIIO_CFLAGS = $(shell pkg-config --cflags OpenImageIO)
 CXXFLAGS = -std=c++17 $(OPT) $(WARN) -pthread -fPIC $(OIIO_CFLAGS)
 LDFLAGS := $(OPT) -pthread
 LDLIBS = -lembree3 -lcjson -lgsl -lgslcblas -lm -ldl $(MPI_LIBS)
-# OpenImageIO lives in a module of its own, opened on the first image read or write (core/oiio.h):
+# OpenImageIO lives in a module of its own, opened on the first image read or write (core/io/oiio.h):
 # linked in, Debian's build adds 120 MB and 0.2 s of start-up to every process.
 # --no-undefined: a module linked without the library fails here, not at its first use.
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO) -lstdc++ -Wl,--no-undefined
@@ -127,7 +127,7 @@ $$(patsubst %,$$(BIN)/%,$(2)): $$(BIN)/%: $$(BUILD)/experiments/$(1)/%.c.o $$($(
 tools: $$(patsubst %,$$(BIN)/%,$(2))
 endef
 
-.PHONY: all tools deps test test-fast test-san check bench clean help
+.PHONY: all tools deps test test-fast test-san check bench clean help lint golden report
 SHELL := /bin/bash
 all: tools $(LIBCORE) $(TEST_BIN) $(TEST_OIIO_MODULE)
 # Every executable of bin/ (experiments in subfolders add theirs in their .mk), without the test runner.
@@ -157,7 +157,7 @@ $(BUILD)/%.c.o: %.c $(PGO_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PGO_CFLAGS) -c $< -o $@
 
-# Only the MPI implementation of core/dist.h sees Open MPI's headers.
+# Only the MPI implementation of core/base/dist.h sees Open MPI's headers.
 $(BUILD)/core/base/dist_mpi.c.o: CPPFLAGS += $(MPI_CFLAGS)
 
 $(BUILD)/%.cpp.o: %.cpp $(OIIO_FLAGS_FILE) | deps
@@ -325,30 +325,41 @@ bench-mpi:
 	$(MAKE) MPI=1 bench-mpi
 endif
 
+# ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----
+report:
+	@bash scripts/install-deps.sh --report
+	bash scripts/report.sh $(SCALE)
+	bash scripts/report-check.sh results/report/index.html
+
+# ---- make lint: the architecture and the layout, checked. The core's folders include only those
+# listed before them (scripts/check-layering.sh reads the order from core/README.md; its own test
+# on a tiny tree, tests/tools/check-layering-test.sh, shows it still fails on an upward include),
+# and every tracked C/C++ source is as clang-format 14 lays it out (scripts/check-format.sh;
+# LINT_FORMAT=list names only the files that differ).
+lint:
+	@bash scripts/install-deps.sh --lint
+	bash scripts/check-layering.sh
+	bash tests/tools/check-layering-test.sh
+	bash scripts/check-format.sh $(if $(filter list,$(LINT_FORMAT)),--list)
+
+# ---- make golden: every tool's outputs on small, count-budgeted runs (scripts/golden.sh) recorded
+# into GOLDEN_DIR, or run again and compared with it: `N same, M differ`, status 1 if any differ.
+# Record before a refactor, compare after it.
+GOLDEN ?= compare
+GOLDEN_DIR ?= results/golden
+golden: deps tools
+	bash scripts/golden.sh $(GOLDEN) $(BIN) $(GOLDEN_DIR)
+
 clean:
 	rm -rf build build-san build-fuzz bin
 
+# The targets are listed once, in README.md's "Make targets" table; `make help` prints that table.
 help:
-	@echo "make            install deps if missing, build core, tools (bin/) and tests"
-	@echo "make test       install deps if missing, build, run all tests"
-	@echo "make tools      every executable of bin/, without the test runner"
-	@echo "make test-san   fast tests under AddressSanitizer + UBSan"
-	@echo "make test-mpi   bin/render under mpirun -np 2 and -np 3 (builds with MPI=1)"
-	@echo "make fuzz       every libFuzzer target of tests/fuzz/ for FUZZ_S seconds (default 60; installs clang-14)"
-	@echo "MPI=1           build bin/ against Open MPI: mpirun -np N bin/render ... splits the render"
-	@echo "make fig4.1     thesis Fig. 4.1: isotropic vs resolution-aware small steps, noise shape on a 16:9 wall"
-	@echo "make fig4.2     thesis Fig. 4.2: the wall at 1024², 512², 256² and resolution-scaled steps at 256²"
-	@echo "make fig4.3     thesis Fig. 4.3: BDPT vs PSSMLT vs PSSMLT --cdc, a room reflected in a window"
-	@echo "make fig6.2 … fig6.7  thesis Figs. 6.2-6.7: equal-time PSSMLT vs MMLT vs PITP insets / full images, tables, error vs time"
-	@echo "make mmlt-ratio  MMLT paper §5: non-zero proposals, PSSMLT vs MMLT vs PITP, per scene; Fig. 5's per-technique images (ajar, length 4)"
-	@echo "make hybrid-study  thesis §4.3/§7.1: MMLT large steps vs MCTLS vs hybrid at equal time, with small steps"
-	@echo "make ch6-assets  regenerate the living-room and staircase sky and wood texture"
-	@echo "make report     results/report/index.html: every figure made so far beside its claim, checked in Chromium"
-	@echo "make check      regression-check every statistic against results/baselines/ (check-fig4.1 ... check-fig6.4, check-table1-cmlt, check-mmlt-ratio, check-hybrid-study)"
-	@echo "make bench      throughput figures (with MPI=1 also 1 vs 2 ranks; make bench-mpi: that alone)"
-	@echo "make fig4.5, fig4.6, fig5.5, fig5.6, fig6.1, table1-cmlt   thesis figures (check-<target> against the baselines)"
-	@echo "SCALE=quick|paper selects experiment sizes (default quick)"
-	@echo "PGO=0, LTO=0    build without profile-guided / link-time optimisation (after make clean)"
+	@awk '/^## Make targets/ { on = 1; next } on && /^## / { exit } \
+	  on && /^\| `/ { n = split($$0, c, " \\| "); cmd = c[1]; sub(/^\| /, "", cmd); what = c[2]; \
+	    for (i = 3; i < n; i++) what = what " | " c[i]; sub(/ \|$$/, "", what); \
+	    gsub(/`/, "", cmd); gsub(/`/, "", what); gsub(/\]\([^)]*\)/, "", what); gsub(/\[/, "", what); \
+	    printf "%-28s %s\n", cmd, what }' README.md
 
 # Every object's header dependencies, the experiments' subfolders (ch4/, cmlt/, fig5/, ...) included.
 -include $(CORE_OBJ:.o=.d) $(BUILD)/core/io/oiio.cpp.d $(TEST_OBJ:.o=.d) $(patsubst %,$(BUILD)/%.d,$(MPI_TEST_SRC)) $(patsubst %,$(BUILD)/%.d,$(EXP_SRC) $(wildcard experiments/*/*.c))

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs exactly the Debian packages the harness needs; does nothing when they are all present.
 # Used by the README's set-up, by `make` (deps target), by `make report` (with --report), by
-# `make MPI=1` (with --mpi), by `make fuzz` (with --fuzz) and by .ci/run.
+# `make MPI=1` (with --mpi), by `make fuzz` (with --fuzz), by `make lint` (with --lint) and by .ci/run.
 set -euo pipefail
 pkgs=(
   build-essential pkg-config
@@ -16,13 +16,15 @@ pkgs=(
 # `--report`: also the browser that checks results/report/index.html (make report, CI); large, so
 # only when asked. `--mpi`: Open MPI's compiler wrapper, headers and mpirun, for `make MPI=1`
 # (README "MPI: paper-scale runs"); the default build does not use them. `--fuzz`: clang 14 and
-# its libFuzzer runtime, for `make fuzz` (tests/README.md, "Fuzzing") and CI.
+# its libFuzzer runtime, for `make fuzz` (tests/README.md, "Fuzzing") and CI. `--lint`: clang-format 14,
+# the version the sources' layout is checked with (`make lint`).
 for arg in "$@"; do
   case "$arg" in
     --report) pkgs+=(chromium) ;;
     --mpi) pkgs+=(libopenmpi-dev openmpi-bin) ;;
     --fuzz) pkgs+=(clang-14 libfuzzer-14-dev) ;;
-    *) echo "install-deps: unknown option '$arg' (expected --report, --mpi or --fuzz)" >&2; exit 2 ;;
+    --lint) pkgs+=(clang-format-14) ;;
+    *) echo "install-deps: unknown option '$arg' (expected --report, --mpi, --fuzz or --lint)" >&2; exit 2 ;;
   esac
 done
 missing=()

@@ -1,6 +1,6 @@
 /* Distribution of one render over processes (MPI ranks; README "MPI: paper-scale runs").
  *
- * The default build has one process (core/dist_single.c); `make MPI=1` links core/dist_mpi.c, where
+ * The default build has one process (core/base/dist_single.c); `make MPI=1` links core/base/dist_mpi.c, where
  * a program started by mpirun has dist_size() ranks. Work is dealt over the global thread index
  * g = rank * T + tid of N * T threads, so that N ranks of T threads take exactly the samples, chains
  * and random streams of one process of N * T threads, and dist_chain adds the per-thread results in

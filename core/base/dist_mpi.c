@@ -1,4 +1,4 @@
-/* The job of a `make MPI=1` build (core/dist.h) over Open MPI. A process not started by a launcher
+/* The job of a `make MPI=1` build (core/base/dist.h) over Open MPI. A process not started by a launcher
  * (no launcher variables in its environment) never calls MPI_Init and is a job of one, exactly as
  * the default build: Open MPI's singleton start-up would spawn a helper daemon for nothing. */
 #define _GNU_SOURCE /* program_invocation_short_name */
@@ -50,7 +50,7 @@ void dist_init(int *argc, char ***argv)
     if (joined || launcher_size() < 1) return;
     int provided;
     /* SERIALIZED: the time-budgeted pass decision is taken on whichever worker thread arrives last
-     * at the pass barrier (core/render.c), never by two threads at once. */
+     * at the pass barrier (core/mc/render.c), never by two threads at once. */
     CHECK(MPI_Init_thread(argc, argv, MPI_THREAD_SERIALIZED, &provided));
     joined = true;
     atexit(dist_finalize);

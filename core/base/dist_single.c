@@ -1,4 +1,4 @@
-/* The one-process job of the default build (core/dist.h): every collective is the identity, and the
+/* The one-process job of the default build (core/base/dist.h): every collective is the identity, and the
  * ordered chain is this process's own sum over its threads. */
 #include "base/dist.h"
 #include <stdlib.h>

@@ -1,4 +1,4 @@
-/* Framebuffers and image files. File I/O goes through core/oiio.cpp (OpenImageIO has no C API);
+/* Framebuffers and image files. File I/O goes through core/io/oiio.cpp (OpenImageIO has no C API);
  * every write is atomic: a temporary file in the same directory, then rename(2). */
 #ifndef IMAGE_H
 #define IMAGE_H

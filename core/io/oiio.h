@@ -1,6 +1,6 @@
-/* The C face of core/oiio.cpp: the only code that talks to OpenImageIO.
+/* The C face of core/io/oiio.cpp: the only code that talks to OpenImageIO.
  *
- * oiio_write and oiio_read_channels (core/oiio_load.c) open the module oiio.so, which holds
+ * oiio_write and oiio_read_channels (core/io/oiio_load.c) open the module oiio.so, which holds
  * oiio.cpp, on first use and forward to its oiio_module_* functions. The module is looked for in
  * the directory of the running executable, where the build puts a copy; if it cannot be opened the
  * call fails with an error naming the file. */

@@ -63,7 +63,7 @@ struct job {
     struct progress prog;
     int first, count; /* samples first .. first + count - 1 of every pixel */
     uint64_t key;     /* sample i of film cell c draws from stream c * key + i */
-    int g0, stride;   /* this rank's first global thread; the job's threads (core/dist.h) */
+    int g0, stride;   /* this rank's first global thread; the job's threads (core/base/dist.h) */
     /* --time: passes of one sample per pixel until the budget */
     struct pass_barrier passes;
     int spp;          /* passes done */

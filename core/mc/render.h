@@ -1,7 +1,7 @@
 /* The Monte Carlo render driver: pixels in rows dealt round-robin to threads, one sampler stream
  * per camera sample, per-thread framebuffers merged in thread order. For a given seed and thread
  * count the image is bitwise reproducible; it also does not depend on the thread count except
- * through the summation order of light-tracing splats. Over MPI ranks (core/dist.h) rows go to the
+ * through the summation order of light-tracing splats. Over MPI ranks (core/base/dist.h) rows go to the
  * job's global threads, so N ranks of T threads give the image of one process of N * T threads; the
  * image and stats are the job's on rank 0 only. A time budget's passes are decided by rank 0, on the
  * slowest rank's clock, for all ranks.

@@ -86,7 +86,7 @@ int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
 /* Continues a subpath of n vertices (stream STREAM_CAMERA or STREAM_EMITTER) to at most max_verts,
  * reading blocks n - 1 on: the vertices it adds are those a whole walk would add with the same
  * numbers (v[n-1].delta and v[n-2].pdf_rev are set as the walk sets them). n < 2 walks afresh.
- * PITP's retrace of the vertices a subpath gains (core/pitp.c). */
+ * PITP's retrace of the vertices a subpath gains (core/mcmc/pitp.c). */
 int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream);
 /* walk_extend by one vertex, expected to be `to` (NULL: no expectation): where the step's direction
  * points at a surface vertex `to` within float noise, the step takes `to`'s point without casting

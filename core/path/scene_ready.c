@@ -2,6 +2,7 @@
 #include "path/scene_ready.h"
 #include "base/util.h"
 #include "bsdf/bsdf.h"
+#include "bsdf/bsdf_json.h"
 #include "emitter/emitter.h"
 #include "scene/accel.h"
 #include <stdio.h>

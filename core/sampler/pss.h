@@ -59,7 +59,7 @@ void pss_reject(struct pss_sampler *p);
  * number an MCTLS step selected. */
 void pss_set(struct pss_sampler *p, int stream, int index, double u);
 /* Outside a proposal: changes the current state itself, as an always-accepted move does (PITP's
- * technique perturbation, core/pitp.c). pss_replace sets a number of the current state; pss_forget
+ * technique perturbation, core/mcmc/pitp.c). pss_replace sets a number of the current state; pss_forget
  * makes one fresh (uniform, drawn when next read), as if never read since the last large step:
  * the numbers a path stops using are redrawn from their uniform conditional. Neither counts as an
  * iteration, so the lazy catch-up of other numbers is unaffected. */

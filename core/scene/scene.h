@@ -201,12 +201,13 @@ struct scene {
     struct accel *accel;
 };
 
-/* Loads a Tungsten JSON scene's model: geometry, BSDF parameters, textures, camera, settings,
- * without emitter table and accel (path/scene_ready.h builds those). On bad input returns NULL and
- * writes one line into err: "FILE: JSON.PATH: what was expected". Warnings for
- * unsupported-but-valid features go to stderr. */
-struct scene *scene_load_model(const char *path, char *err, size_t errlen);
-/* Frees what scene_load_model allocated (not emitters/accel); NULL is a no-op. */
+/* Reads a Tungsten JSON scene's model: geometry, BSDF parameters (through `bsdfs`, the BSDF reader:
+ * bsdf/bsdf_json.h's scene_load_model passes it), textures, camera, settings, without emitter table
+ * and accel (path/scene_ready.h builds those). On bad input returns NULL and writes one line into
+ * err: "FILE: JSON.PATH: what was expected". Warnings for unsupported-but-valid features go to stderr. */
+struct scene_bsdf_reader;
+struct scene *scene_read_model(const char *path, const struct scene_bsdf_reader *bsdfs, char *err, size_t errlen);
+/* Frees what scene_read_model allocated (not emitters/accel); NULL is a no-op. */
 void scene_model_free(struct scene *s);
 
 #endif

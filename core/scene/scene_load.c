@@ -236,13 +236,13 @@ static bool load_root(struct loader *L, const cJSON *root)
     if (!cJSON_IsArray(prims)) return jfail(c, "primitives", "expected an array of primitive objects");
     s->nprims = cJSON_GetArraySize(prims);
     /* Top-level and inline bsdfs with their nested ones, plus one shared default. */
-    L->bsdf_cap = bsdf_json_slots(L->bsdfs_json) + 1;
+    L->bsdf_cap = L->bsdf->slots(L->bsdfs_json) + 1;
     for (const cJSON *p = prims->child; p; p = p->next)
-        L->bsdf_cap += cJSON_IsObject(p) ? bsdf_json_slots(cJSON_GetObjectItemCaseSensitive(p, "bsdf")) : 0;
+        L->bsdf_cap += cJSON_IsObject(p) ? L->bsdf->slots(cJSON_GetObjectItemCaseSensitive(p, "bsdf")) : 0;
     s->bsdfs = xcalloc(L->bsdf_cap, sizeof *s->bsdfs);
     s->prims = xcalloc(s->nprims ? s->nprims : 1, sizeof *s->prims);
     for (int i = 0; i < s->nprims; i++) s->prims[i].bsdf = -1;
-    if (!load_bsdfs(L) || !load_primitives(L, prims) || !check_bsdf_nesting(L)) return false;
+    if (!L->bsdf->load_all(L) || !load_primitives(L, prims) || !L->bsdf->check(L)) return false;
     if (!load_camera(L, cJSON_GetObjectItemCaseSensitive(root, "camera"))) return false;
     if (!load_settings(L, cJSON_GetObjectItemCaseSensitive(root, "integrator"),
                        cJSON_GetObjectItemCaseSensitive(root, "renderer")))
@@ -251,7 +251,7 @@ static bool load_root(struct loader *L, const cJSON *root)
     return true;
 }
 
-struct scene *scene_load_model(const char *path, char *err, size_t errlen)
+struct scene *scene_read_model(const char *path, const struct scene_bsdf_reader *bsdfs, char *err, size_t errlen)
 {
     char *text = read_text(path, err, errlen);
     if (!text) return NULL;
@@ -265,7 +265,7 @@ struct scene *scene_load_model(const char *path, char *err, size_t errlen)
     struct scene *s = xcalloc(1, sizeof *s);
     s->file = xstrdup(path);
     s->env_prim = -1;
-    struct loader L = {.c = {.file = path, .err = err, .errlen = errlen}, .s = s, .default_bsdf = -1};
+    struct loader L = {.c = {.file = path, .err = err, .errlen = errlen}, .s = s, .bsdf = bsdfs, .default_bsdf = -1};
     const char *slash = strrchr(path, '/');
     if (slash) snprintf(L.dir, sizeof L.dir, "%.*s", (int)(slash - path), path);
     if (slash == path) snprintf(L.dir, sizeof L.dir, "/");

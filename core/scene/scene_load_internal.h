@@ -1,6 +1,9 @@
-/* Shared state of the scene loader files. Not a public interface. Calls run one way:
- * scene_load.c (the entry) -> scene_prims.c -> scene_bsdf.c -> load_resource.c (files the scene
- * names), json_transform.c beside them. */
+/* Shared state of the scene loader's files, and what the loader offers the one reader of a scene's
+ * part that lives in a later folder: the BSDF reader (bsdf/bsdf_json.c), which must know which
+ * BSDF types are implemented and how many numbers each draws. Calls run one way: scene_load.c (the
+ * entry) -> scene_prims.c -> the BSDF reader -> load_resource.c (files the scene names),
+ * json_transform.c beside them; the BSDF reader is handed to the loader (struct scene_bsdf_reader),
+ * so scene/ never names bsdf/ (core/README.md, "Folders"). */
 #ifndef SCENE_LOAD_INTERNAL_H
 #define SCENE_LOAD_INTERNAL_H
 
@@ -10,6 +13,8 @@
 struct loader {
     struct jctx c;
     struct scene *s;
+    /* reads the "bsdfs" and each primitive's "bsdf" (bsdf/bsdf_json.c) */
+    const struct scene_bsdf_reader *bsdf;
     const cJSON *bsdfs_json; /* top-level "bsdfs" array (or NULL): names resolve against it */
     char dir[4096];          /* directory of the scene file: resources are relative to it */
     int bsdf_cap;            /* s->bsdfs is allocated once with this many slots */
@@ -28,13 +33,18 @@ bool load_texture_average(struct loader *L, const cJSON *v, const char *path, st
 bool build_disk(struct loader *L, const char *path, struct prim *p, const mat4 *m);
 bool build_cylinder(struct loader *L, const char *path, struct prim *p, const mat4 *m, bool capped);
 
-bool load_bsdfs(struct loader *L);
-/* Slots a bsdf value (object, name, array of them) can take in scene.bsdfs, nested ones included. */
-int bsdf_json_slots(const cJSON *v);
-/* Refuses cycles of named nested bsdfs (after loading). */
-bool check_bsdf_nesting(struct loader *L);
-/* Resolves prim.bsdf (name, inline object, or absent → Tungsten's default lambert). */
-bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out);
+/* The BSDF reader (bsdf/bsdf_json.h's bsdf_json_reader), in the order the loader calls it. */
+struct scene_bsdf_reader {
+    /* Slots a bsdf value (object, name, array of them) can take in scene.bsdfs, nested ones included. */
+    int (*slots)(const cJSON *v);
+    /* The top-level "bsdfs" array (L->bsdfs_json) into slots 0..n-1. */
+    bool (*load_all)(struct loader *L);
+    /* Resolves prim.bsdf (name, inline object, or absent → Tungsten's default lambert). */
+    bool (*load_ref)(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out);
+    /* After the primitives: refuses cycles of named nested bsdfs and bsdfs that draw more numbers
+     * than a vertex's block holds. */
+    bool (*check)(struct loader *L);
+};
 
 bool load_primitives(struct loader *L, const cJSON *arr);
 

@@ -307,7 +307,7 @@ static bool load_prim(struct loader *L, const cJSON *j, int i)
     jpath_key(tp, path, "transform");
     if (t && !jval_transform(c, t, tp, &m)) return false;
     bool cap = strcmp(type, "infinite_sphere_cap") == 0, env = cap || strcmp(type, "infinite_sphere") == 0;
-    if (!env && !load_bsdf_ref(L, j, path, i, &p->bsdf)) return false;
+    if (!env && !L->bsdf->load_ref(L, j, path, i, &p->bsdf)) return false;
     if (strcmp(type, "quad") == 0)
         build_quad(p, &m);
     else if (strcmp(type, "cube") == 0)

@@ -197,10 +197,3 @@ CH6_CHECK_OPTS_hybrid-study := --methods '$(HYB_METHODS)' --spp 16 --seeds 8 --r
   --render-args "--p-large 0.1"
 $(eval $(call CH6_CHECK,hybrid-study,ajar))
 ch6-baselines: ch6-baseline-hybrid-study
-
-# ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----
-.PHONY: report
-report:
-	@bash scripts/install-deps.sh --report
-	bash scripts/report.sh $(SCALE)
-	bash scripts/report-check.sh results/report/index.html

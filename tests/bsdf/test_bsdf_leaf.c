@@ -6,6 +6,7 @@
  * test_bsdf_leaf_stat.c. */
 #include <criterion/criterion.h>
 
+#include "bsdf/bsdf_json.h"
 #include "bsdf/bsdf_smooth.h"
 #include "sampling/warp.h"
 #include "scene/scene.h"

@@ -6,6 +6,7 @@
 #include <criterion/criterion.h>
 
 #include "base/rng.h"
+#include "bsdf/bsdf_json.h"
 #include "bsdf/bsdf_nested.h"
 #include "sampler/sampler.h"
 #include "support/nested_util.h"

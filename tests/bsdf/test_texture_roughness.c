@@ -5,6 +5,7 @@
 #include <criterion/criterion.h>
 
 #include "bsdf/bsdf.h"
+#include "bsdf/bsdf_json.h"
 #include "io/oiio.h"
 #include "support/rng_sampler.h"
 #include "support/tmpdir.h"

@@ -3,6 +3,7 @@
  * names in a private directory: scene.json, mesh.obj, mesh.wo3 and tex.raw (a texture in fuzz.h's raw
  * texel format, which the fuzz build's stand-in for OpenImageIO reads; under the test runner the real
  * module refuses it). A scene names them as "mesh.obj", "mesh.wo3" and "tex.raw". */
+#include "bsdf/bsdf_json.h"
 #include "fuzz/fuzz.h"
 #include "scene/scene.h"
 #include <stdio.h>

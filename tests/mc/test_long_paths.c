@@ -5,6 +5,7 @@
 #include <criterion/criterion.h>
 
 #include "support/agree.h"
+#include "bsdf/bsdf_json.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"

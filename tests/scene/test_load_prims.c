@@ -2,6 +2,7 @@
  * radius, height, front sides, uv), power -> radiance, and one error line per unsupported input. */
 #include <criterion/criterion.h>
 
+#include "bsdf/bsdf_json.h"
 #include "scene/scene.h"
 #include "support/tmpdir.h"
 #include <stdio.h>

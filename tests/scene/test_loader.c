@@ -2,6 +2,7 @@
  * meshes load, and every malformed input in tests/data/bad gives its one-line message. */
 #include <criterion/criterion.h>
 
+#include "bsdf/bsdf_json.h"
 #include "path/scene_ready.h"
 #include "support/tmpdir.h"
 

@@ -4,6 +4,7 @@
  * its bump tangents from a cube's axes. */
 #include <criterion/criterion.h>
 
+#include "bsdf/bsdf_json.h"
 #include "scene/scene.h"
 #include "scene/scene_hash.h"
 

@@ -2,6 +2,7 @@
  * bilinear lookup with wrap-around, and the uv of quads, cubes and spheres. */
 #include <criterion/criterion.h>
 
+#include "bsdf/bsdf_json.h"
 #include "path/scene_ready.h"
 #include "support/tmpdir.h"
 

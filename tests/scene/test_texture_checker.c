@@ -5,6 +5,7 @@
 
 #include "bsdf/bsdf.h"
 #include "base/rng.h"
+#include "bsdf/bsdf_json.h"
 #include "scene/scene.h"
 #include "support/tmpdir.h"
 #include <stdio.h>

@@ -2,6 +2,7 @@
  * line "FILE: JSON.PATH: expectation", and bin/render exits with status 2 on them. */
 #include <criterion/criterion.h>
 
+#include "bsdf/bsdf_json.h"
 #include "scene/scene.h"
 #include "support/tmpdir.h"
 #include <stdio.h>

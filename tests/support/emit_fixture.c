@@ -1,6 +1,7 @@
 /* In-memory test scenes for emitters and camera (see emit_fixture.h). */
 #include "support/emit_fixture.h"
 #include <criterion/criterion.h>
+#include "bsdf/bsdf_json.h"
 #include "scene/scene.h"
 #include <stdio.h>
 #include <string.h>

@@ -4,6 +4,7 @@
 #define NESTED_UTIL_H
 
 #include "bsdf/bsdf.h"
+#include "bsdf/bsdf_json.h"
 #include "scene/scene.h"
 #include "support/tmpdir.h"
 #include <criterion/criterion.h>

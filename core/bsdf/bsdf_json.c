@@ -1,10 +1,14 @@
-/* BSDF blocks of a Tungsten scene: types, parameters and Tungsten's defaults
+/* The BSDF reader of the scene loader (bsdf_json.h): BSDF blocks of a Tungsten scene, their types,
+ * parameters and Tungsten's defaults
  * (the constructors in src/core/bsdfs/): albedo 1; conductors Cu; rough_conductor and rough_dielectric
  * ggx with roughness 0.1; rough_plastic ggx with roughness 0.02; dielectrics and plastics ior 1.5;
  * plastics thickness 1, sigma_a 0; enable_refraction true. Nested BSDFs: transparency alpha 1; coats ior 1.3,
  * thickness 1, sigma_a 0, substrate rough_conductor (Cu, ggx, 0.1); rough_coat ggx, roughness 0.02;
  * mixed ratio 0.5. Leaf BSDFs: thinsheet thickness 0.5; oren_nayar roughness 1;
- * diffuse_transmission transmittance 0.5; phong exponent 64, diffuse_ratio 0.2. */
+ * diffuse_transmission transmittance 0.5; phong exponent 64, diffuse_ratio 0.2. It lives in bsdf/,
+ * not beside the loader in scene/, because it asks which types are implemented and how many
+ * numbers a nested bsdf draws, which only bsdf/ knows. */
+#include "bsdf/bsdf_json.h"
 #include "base/util.h"
 #include "bsdf/bsdf.h"
 #include "scene/metals.h"
@@ -105,8 +109,7 @@ static bool parse_roughness(struct loader *L, const cJSON *j, const char *path, 
     char p[JPATH_MAX];
     jpath_key(p, path, "roughness");
     if (cJSON_IsString(r) || cJSON_IsObject(r)) return load_texture_average(L, r, p, &b->roughness_tex);
-    if (!cJSON_IsNumber(r))
-        return jfail(&L->c, p, "expected a number, an image file name or a texture object");
+    if (!cJSON_IsNumber(r)) return jfail(&L->c, p, "expected a number, an image file name or a texture object");
     if (!jval_number(&L->c, r, p, &b->roughness)) return false;
     if (b->roughness < 0) return jfail(&L->c, p, "expected a non-negative number");
     return true;
@@ -144,8 +147,10 @@ static bool parse_metal(struct loader *L, const cJSON *j, const char *path, stru
     if (m && !metal_lookup(m, &b->eta, &b->k)) {
         char p[JPATH_MAX];
         jpath_key(p, path, "material");
-        return jfail(&L->c, p, "unknown metal \"%s\" (known: Ag Al Au Be Cr Cu Cu_palik Hg Ir K Li Mo Nb "
-                               "Ni_palik Rh Ta TiN V_palik W)", m);
+        return jfail(&L->c, p,
+                     "unknown metal \"%s\" (known: Ag Al Au Be Cr Cu Cu_palik Hg Ir K Li Mo Nb "
+                     "Ni_palik Rh Ta TiN V_palik W)",
+                     m);
     }
     return true;
 }
@@ -260,8 +265,7 @@ static bool parse_phong(struct loader *L, const cJSON *j, const char *path, stru
            number_in(L, j, path, "diffuse_ratio", 0, 1, &b->diffuse_ratio);
 }
 
-static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const char *default_name,
-                       struct bsdf *b);
+static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const char *default_name, struct bsdf *b);
 static int add_bsdf(struct loader *L);
 static int find_named(const struct loader *L, const char *name);
 static int default_lambert(struct loader *L);
@@ -298,16 +302,15 @@ static bool parse_child(struct loader *L, const cJSON *j, const char *path, cons
 }
 
 /* Parses one bsdf object into b (which must be zeroed: texture ownership starts here). */
-static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const char *default_name,
-                       struct bsdf *b)
+static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const char *default_name, struct bsdf *b)
 {
     struct jctx *c = &L->c;
     if (!cJSON_IsObject(j)) return jfail(c, path, "expected a bsdf object");
     const char *type = NULL, *name = NULL;
-    if (!jget_string(c, j, path, "type", true, &type) || !jget_string(c, j, path, "name", false, &name))
-        return false;
+    if (!jget_string(c, j, path, "type", true, &type) || !jget_string(c, j, path, "name", false, &name)) return false;
     int t = 0;
-    while (t < NTYPES && !(strcmp(type_names[t], type) == 0 && (t == BSDF_NULL || bsdf_ops_for(t)))) t++;
+    while (t < NTYPES && !(strcmp(type_names[t], type) == 0 && (t == BSDF_NULL || bsdf_ops_for(t))))
+        t++;
     if (t == NTYPES) {
         char p[JPATH_MAX], known[512] = "";
         jpath_key(p, path, "type");
@@ -331,8 +334,7 @@ static bool parse_bsdf(struct loader *L, const cJSON *j, const char *path, const
         if (!parse_distribution(L, j, path, b) || !parse_roughness(L, j, path, b)) return false;
         /* fall through */
     case BSDF_DIELECTRIC:
-        return parse_ior(L, j, path, b) &&
-               jget_bool(c, j, path, "enable_refraction", false, &b->enable_refraction);
+        return parse_ior(L, j, path, b) && jget_bool(c, j, path, "enable_refraction", false, &b->enable_refraction);
     case BSDF_ROUGH_PLASTIC:
         if (!parse_distribution(L, j, path, b) || !parse_roughness(L, j, path, b)) return false;
         /* fall through */
@@ -382,11 +384,12 @@ static int default_lambert(struct loader *L)
 
 static const char *const child_keys[] = {"base", "substrate", "bsdf0", "bsdf1"};
 
-int bsdf_json_slots(const cJSON *v)
+static int bsdf_json_slots(const cJSON *v)
 {
     if (cJSON_IsArray(v)) {
         int n = 0;
-        for (const cJSON *e = v->child; e; e = e->next) n += bsdf_json_slots(e);
+        for (const cJSON *e = v->child; e; e = e->next)
+            n += bsdf_json_slots(e);
         return n;
     }
     if (!cJSON_IsObject(v)) return v ? 1 : 0; /* a name (or junk the parser refuses) */
@@ -395,7 +398,8 @@ int bsdf_json_slots(const cJSON *v)
         n += bsdf_json_slots(cJSON_GetObjectItemCaseSensitive(v, child_keys[k]));
     /* nested BSDFs: a coat without substrate gets a default rough_conductor of its own */
     const cJSON *t = cJSON_GetObjectItemCaseSensitive(v, "type");
-    if (cJSON_IsString(t) && (strcmp(t->valuestring, "smooth_coat") == 0 || strcmp(t->valuestring, "rough_coat") == 0) &&
+    if (cJSON_IsString(t) &&
+        (strcmp(t->valuestring, "smooth_coat") == 0 || strcmp(t->valuestring, "rough_coat") == 0) &&
         !cJSON_GetObjectItemCaseSensitive(v, "substrate"))
         n++;
     return n;
@@ -413,7 +417,7 @@ static int nesting(const struct bsdf *b, int depth)
     return d;
 }
 
-bool check_bsdf_nesting(struct loader *L)
+static bool check_bsdf_nesting(struct loader *L)
 {
     for (int i = 0; i < L->s->nbsdfs; i++)
         if (nesting(&L->s->bsdfs[i], 0) > BSDF_MAX_NESTING) {
@@ -431,21 +435,25 @@ bool check_bsdf_nesting(struct loader *L)
     for (int i = 0; i < ntop; i++)
         if (L->s->bsdfs[i].dims > SAMPLER_BLOCK) {
             jpath_idx(p, "bsdfs", i);
-            return jfail(&L->c, p, "bsdf \"%s\" needs %d random numbers per vertex, more than the %d of a vertex's block "
-                         "(nest fewer bsdfs)", L->s->bsdfs[i].name, L->s->bsdfs[i].dims, SAMPLER_BLOCK);
+            return jfail(&L->c, p,
+                         "bsdf \"%s\" needs %d random numbers per vertex, more than the %d of a vertex's block "
+                         "(nest fewer bsdfs)",
+                         L->s->bsdfs[i].name, L->s->bsdfs[i].dims, SAMPLER_BLOCK);
         }
     for (int i = 0; i < L->s->nprims; i++) {
         int k = L->s->prims[i].bsdf;
         if (k < ntop || L->s->bsdfs[k].dims <= SAMPLER_BLOCK) continue;
         jpath_idx(q, "primitives", i);
         jpath_key(p, q, "bsdf");
-        return jfail(&L->c, p, "bsdf \"%s\" needs %d random numbers per vertex, more than the %d of a vertex's block "
-                     "(nest fewer bsdfs)", L->s->bsdfs[k].name, L->s->bsdfs[k].dims, SAMPLER_BLOCK);
+        return jfail(&L->c, p,
+                     "bsdf \"%s\" needs %d random numbers per vertex, more than the %d of a vertex's block "
+                     "(nest fewer bsdfs)",
+                     L->s->bsdfs[k].name, L->s->bsdfs[k].dims, SAMPLER_BLOCK);
     }
     return true;
 }
 
-bool load_bsdfs(struct loader *L)
+static bool load_bsdfs(struct loader *L)
 {
     const cJSON *arr = L->bsdfs_json;
     if (!arr) return true;
@@ -453,7 +461,8 @@ bool load_bsdfs(struct loader *L)
     /* Top-level bsdf i is slot i (find_named returns array indices): their slots first, nested ones
      * after them. */
     int n = cJSON_GetArraySize(arr), i = 0;
-    for (int k = 0; k < n; k++) add_bsdf(L);
+    for (int k = 0; k < n; k++)
+        add_bsdf(L);
     for (const cJSON *j = arr->child; j; j = j->next, i++) {
         char p[JPATH_MAX], def[32];
         jpath_idx(p, "bsdfs", i);
@@ -474,7 +483,7 @@ static int find_named(const struct loader *L, const char *name)
     return -1;
 }
 
-bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out)
+static bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int prim_index, int *out)
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(prim, "bsdf");
     char p[JPATH_MAX];
@@ -503,3 +512,10 @@ bool load_bsdf_ref(struct loader *L, const cJSON *prim, const char *path, int pr
     *out = add_bsdf(L);
     return parse_bsdf(L, v, p, def, &L->s->bsdfs[*out]);
 }
+
+const struct scene_bsdf_reader bsdf_json_reader = {
+    .slots = bsdf_json_slots,
+    .load_all = load_bsdfs,
+    .load_ref = load_bsdf_ref,
+    .check = check_bsdf_nesting,
+};
