@@ -91,7 +91,7 @@ int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, 
 /* walk_extend by one vertex, expected to be `to` (NULL: no expectation): where the step's direction
  * points at a surface vertex `to` within float noise, the step takes `to`'s point without casting
  * the ray, so `to` must be a vertex of a path whose segment from v[n-1] is known unoccluded
- * (PITP's retrace of the vertices of its own path, core/mcmc/README.md "Ray-free retrace"). */
+ * (PITP's retrace of the vertices of its own path, core/mcmc/docs/pitp.md, "Ray-free retrace"). */
 int walk_extend_to(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int stream,
                    const struct vertex *to);
 

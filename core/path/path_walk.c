@@ -15,7 +15,7 @@ bool walk_hit(const struct scene *sc, const struct vertex *prev, vec3 d, struct 
 
 /* Whether the ray from p along unit d is known to reach `to` without being cast: `to` is a surface
  * vertex of the path being re-walked whose segment from p is unoccluded (an edge or the connection
- * of the current path), and d points at it within float noise (PITP's retrace, core/mcmc/README.md
+ * of the current path), and d points at it within float noise (PITP's retrace, core/mcmc/docs/pitp.md,
  * "Ray-free retrace"). The bound, 1e-9 of the coordinates' magnitude off the line, is far below
  * the 1e-7 a float ray resolves, so the ray, had it been cast, could only have hit `to` or a
  * surface within float noise of it. Very short segments, which the ray's self-intersection offset

@@ -1,4 +1,4 @@
-/* bin/fig5_5: thesis Figure 5.5. The mean angle change (Eq. 5.38-5.39, core/angle_change.h) that
+/* bin/fig5_5: thesis Figure 5.5. The mean angle change (Eq. 5.38-5.39, core/stats/angle_change.h) that
  * MMLT small steps and controlled small steps (Alg. 4) introduce, per pixel of the current path,
  * and for the analysis the root perturbation alone (Alg. 3, whose chain is not unbiased), on
  * scenes/jewelry: same mutation count, same Gaussian kernel (sigma 1/64), p_large 0.1, `seeds`

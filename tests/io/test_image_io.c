@@ -1,4 +1,4 @@
-/* OpenImageIO is opened on the first image read or write, not at start-up (core/oiio.h): a render
+/* OpenImageIO is opened on the first image read or write, not at start-up (core/io/oiio.h): a render
  * that has not touched an image has none of its libraries mapped, and the module, once opened,
  * writes and reads back the same pixels. Criterion runs each test in a process of its own, so
  * "not yet loaded" is a property of this test alone. */

@@ -1,4 +1,4 @@
-/* core/pt.c is a dedicated loop that must stay the BDPT machinery restricted to s <= 1: the same
+/* core/mc/pt.c is a dedicated loop that must stay the BDPT machinery restricted to s <= 1: the same
  * walk, the same random number in every dimension, the same balance weights (connect_st with
  * max_s = 1). This test rebuilds that estimator from walk_camera, sample_emitter_vertex and
  * connect_st and demands the same value for every camera sample, so any drift between the twins

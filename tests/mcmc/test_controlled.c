@@ -1,4 +1,4 @@
-/* Controlled small steps (thesis §5.3, core/controlled_step.c): the four-point bookkeeping on a
+/* Controlled small steps (thesis §5.3, core/mcmc/controlled_step.c): the four-point bookkeeping on a
  * scene where it must reduce to an ordinary small step, the kernel density, and agreement of the
  * chains with BDPT and with exact answers (detailed balance), including the failure of the chain
  * whose ratio T(v->u) / T(u->v) is replaced by 1. */

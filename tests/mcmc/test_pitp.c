@@ -1,4 +1,4 @@
-/* PITP's technique perturbation (thesis §5.2, core/pitp.c): it leaves the path unchanged, its
+/* PITP's technique perturbation (thesis §5.2, core/mcmc/pitp.c): it leaves the path unchanged, its
  * partial inversion gives the numbers a full re-inversion gives, the technique keeps the path's
  * target, and the chosen technique follows the MIS weights w_j(x). Agreement of whole renders with
  * BDPT is in test_mlt.c and test_env.c beside the other MCMC methods. */

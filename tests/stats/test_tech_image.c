@@ -1,4 +1,4 @@
-/* Per-technique images (core/tech_image.h): the contributions split by technique add up to the
+/* Per-technique images (core/stats/tech_image.h): the contributions split by technique add up to the
  * length-k image, the sample counts add up to the iterations spent on length k, and the "follow"
  * statistics on accumulators built by hand. */
 #include <criterion/criterion.h>

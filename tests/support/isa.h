@@ -1,4 +1,4 @@
-/* Running a test under each of Embree's instruction sets (core/accel.h): hit points differ in their
+/* Running a test under each of Embree's instruction sets (core/scene/accel.h): hit points differ in their
  * last bits between Embree's kernels, so a test of anything that depends on them (inversion,
  * retracing, exact agreement) must hold under every kernel an x86-64 machine may pick, not only
  * under this machine's best one. */

@@ -1,4 +1,4 @@
-/* Checkpoint and resume (core/checkpoint.h, bin/render --checkpoint/--resume): a run killed with
+/* Checkpoint and resume (core/io/checkpoint.h, bin/render --checkpoint/--resume): a run killed with
  * SIGKILL at random moments and resumed from its last checkpoint, or stopped with Ctrl-C and
  * resumed, ends with the same image bits and statistics as a run never stopped; a checkpoint from
  * another build, scene or options is refused, and a truncated or corrupted one is detected. */
