@@ -9,8 +9,8 @@ set -euo pipefail
 [ $# -eq 5 ] || { echo "usage: ch6-figure.sh insets|full DIR OUT.png X,Y,W,H X,Y,W,H" >&2; exit 2; }
 mode=$1 dir=$2 out=$3
 [ -f "$dir/summary.csv" ] && [ -f "$dir/reference.png" ] || { echo "ch6-figure: $dir has no summary.csv or reference.png (run bin/ch6_equal)" >&2; exit 2; }
-methods=$(awk -F, '!/^#/ && $1 != "scene" && !seen[$2]++ {print $2}' "$dir/summary.csv")
 here=$(cd "$(dirname "$0")" && pwd)
+methods=$(awk -F, "$(cat "$here/csv-col.awk")"'!/^#/ && !seen[get("method")]++ { print get("method") }' "$dir/summary.csv")
 read -r W H < <(oiiotool --info "$dir/reference.png" | awk '{for (i = 1; i < NF; i++) if ($(i + 1) == "x") {sub(",", "", $(i + 2)); print $i, $(i + 2); exit}}')
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

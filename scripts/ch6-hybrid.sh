@@ -5,9 +5,11 @@
 # usage: ch6-hybrid.sh SUMMARY.csv...
 set -euo pipefail
 [ $# -ge 1 ] || { echo "usage: ch6-hybrid.sh SUMMARY.csv..." >&2; exit 2; }
+csvcol=$(cat "$(dirname "$0")/csv-col.awk")
 for f in "$@"; do
   [ -f "$f" ] || { echo "ch6-hybrid: $f not found" >&2; exit 2; }
-  awk -F, '!/^#/ && $1 != "scene" { scene = $1; m[++n] = $2; r[$2] = $5; se[$2] = $6; mps[$2] = $9; seeds = $4; t = $3 }
+  awk -F, "$csvcol"'!/^#/ { k = get("method"); scene = get("scene"); m[++n] = k; r[k] = get("relmse"); se[k] = get("relmse_se")
+      mps[k] = get("mutations_per_s"); seeds = get("seeds"); t = get("budget") }
     END {
       printf "**%s**, %s s per run, %d seeds\n\n| method | relMSE | mutations/s | vs MMLT large steps (z) | vs MCTLS (z) |\n| --- | ---: | ---: | ---: | ---: |\n", scene, t, seeds
       for (i = 1; i <= n; i++) {

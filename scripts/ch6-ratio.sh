@@ -5,12 +5,18 @@ set -euo pipefail
 [ $# -ge 1 ] || { echo "usage: ch6-ratio.sh SUMMARY.csv..." >&2; exit 2; }
 echo "| scene | method | non-zero per proposal | non-zero per connection | non-zero, large steps | mutations/s |"
 echo "| --- | --- | ---: | ---: | ---: | ---: |"
+csvcol=$(cat "$(dirname "$0")/csv-col.awk")
 for f in "$@"; do
   [ -f "$f" ] || { echo "ch6-ratio: $f not found" >&2; exit 2; }
-  awk -F, '!/^#/ && $1 != "scene" { if ($3 + 0 >= max[$2] + 0) { max[$2] = $3; row[$2] = $0 } if (!seen[$2]++) order[++n] = $2 }
-    END { for (i = 1; i <= n; i++) { split(row[order[i]], c, ",");
-      printf "| %s | %s | %.2f %% ± %.2f | %.2f %% ± %.2f | %.2f %% ± %.2f | %.0f |\n", c[1], c[2], 100 * c[11], 100 * c[12],
-        100 * c[25], 100 * c[26], 100 * c[13], 100 * c[14], c[9] } }' "$f"
+  awk -F, "$csvcol"'!/^#/ { k = get("method")
+      if (get("budget") + 0 >= max[k] + 0) {
+        max[k] = get("budget")
+        row[k] = sprintf("| %s | %s | %.2f %% ± %.2f | %.2f %% ± %.2f | %.2f %% ± %.2f | %.0f |", get("scene"), k,
+          100 * get("nonzero"), 100 * get("nonzero_se"), 100 * get("nonzero_per_connection"),
+          100 * get("nonzero_per_connection_se"), 100 * get("large_nonzero"), 100 * get("large_nonzero_se"), get("mutations_per_s"))
+      }
+      if (!seen[k]++) order[++n] = k }
+    END { for (i = 1; i <= n; i++) print row[order[i]] }' "$f"
 done
 echo
 echo "MMLT paper §5 (door scene): 11.81 % of PSSMLT's samples and 29.75 % of MMLT's have non-zero contribution."
@@ -21,8 +27,8 @@ for f in "$@"; do
   c="$(dirname "$f")/claims.csv"
   [ -f "$c" ] || { echo "ch6-ratio: $c not found (rerun bin/ch6_equal)" >&2; exit 2; }
   scene=$(basename "$(dirname "$f")")
-  # claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed: fields 2-10
-  awk -F, -v scene="$scene" '!/^#/ && $1 != "source" && $2 ~ /^\(4\)/ {
-      printf "- %s, %s: MMLT %.2f %% ± %.2f (%s): **%s**%s\n", scene, $3, 100 * $5, 100 * $6, $7, $9,
-        (($9 == "undecided" && $10 > 0) ? sprintf(" (%d seeds would decide it)", $10) : "") }' "$c"
+  awk -F, -v scene="$scene" "$csvcol"'!/^#/ && get("claim") ~ /^\(4\)/ {
+      printf "- %s, %s: MMLT %.2f %% ± %.2f (%s): **%s**%s\n", scene, get("statistic"), 100 * get("value"), 100 * get("se"),
+        get("z_by_method"), get("verdict"),
+        ((get("verdict") == "undecided" && get("seeds_needed") > 0) ? sprintf(" (%d seeds would decide it)", get("seeds_needed")) : "") }' "$c"
 done

@@ -28,23 +28,15 @@ ch6-assets: deps $(BIN)/ch6_assets
 	$(BIN)/ch6_assets --wood scenes/staircase/wood.png
 
 # ---- equal-time figures (thesis Figures 6.2-6.7) ----
-# Quick: budgets 0.5, 1, 2, 4 s per run (separate runs with one seed each, no snapshots), 4 seeds, a
-# 256-spp BDPT reference (cached in results/reference/); paths of length >= 3 only, as the thesis
-# (no direct lighting). Paper: 300 s, 8 seeds, a 40 000-spp reference
-# and 1M seed paths (the thesis's normalisation). The method list defaults to pssmlt,mmlt,pitp; a
-# method bin/render does not know (pitp before its merge) is skipped and named in the table.
-# Full (SCALE=full, between the two, sized to decide the claims in about two hours on 2 cores): one
-# budget of 60 CPU seconds per thread, 8 seeds, images at twice the quick resolution (512x288,
-# staircase 288x512), a 4096-spp reference, 1M seed paths; every render checkpoints each minute, so
-# an interrupted `make` continues where it stopped (ch6_equal --checkpoint keeps the completed runs).
+# The scales (quick, full, paper: budgets, seeds, shortest path length, reference samples, seed
+# paths, checkpoints) are bin/ch6_equal's own table (`scales` in experiments/ch6/ch6_equal.c, also
+# in its --help): make passes --scale only. Budgets are separate runs with one seed each (no
+# snapshots); the BDPT reference is cached in results/reference/ (common/refcache.h: re-rendered
+# when the scene file or the reference's settings change). The method list defaults to
+# pssmlt,mmlt,pitp; a method bin/render does not know is skipped and named in the table. At full
+# every render checkpoints each minute, so an interrupted `make` continues where it stopped. The
+# resolutions and insets below are the scenes' (full: twice the quick resolution).
 CH6_METHODS ?= pssmlt,mmlt,pitp
-ifeq ($(SCALE),paper)
-  CH6_OPTS := --time 300 --t0 18.75 --seeds 8 --min-length 3 --reference-spp 40000 --render-args "--p-large 0.1 --seed-paths 1000000"
-else ifeq ($(SCALE),full)
-  CH6_OPTS := --time 60 --seeds 8 --min-length 3 --reference-spp 4096 --checkpoint 60 --render-args "--p-large 0.1 --seed-paths 1000000"
-else
-  CH6_OPTS := --time 4 --t0 0.5 --seeds 4 --min-length 3 --reference-spp 256 --render-args "--p-large 0.1"
-endif
 CH6_OUT := results/ch6-$(SCALE)
 # scene folder, extra tool options (the claims' source and command for claims.csv, which bin/ch6_equal
 # writes with its verdicts), and the two insets (x,y,w,h in pixels) of each scene
@@ -68,7 +60,7 @@ endif
 # The tools are order-only: every commit relinks them (version.h), which must not rerun minutes of
 # renders; a changed scene does. `make ch6-clean` reruns everything.
 $(CH6_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CH6_OUT)/$* --methods $(CH6_METHODS) $(CH6_OPTS) --scale $(SCALE) $(CH6_$*_ARGS)
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CH6_OUT)/$* --methods $(CH6_METHODS) --scale $(SCALE) $(CH6_$*_ARGS)
 	bash scripts/plot.sh scripts/ch6-time.gp $@ $(CH6_OUT)/$*/error-vs-time "name='$*'"
 
 .PHONY: fig6.2 fig6.3 fig6.4 fig6.5 fig6.6 fig6.7 ch6-clean
@@ -141,18 +133,12 @@ $(TECH_OUT)/tech.md: scenes/ajar/scene.json | deps $(BIN)/render $(BIN)/ch6_tech
 
 # The paper's own setting besides: direct lighting included (paths of length >= 2), on ajar (the
 # door scene's counterpart), the three methods at the scale's budget and seeds; no reference (only
-# the render CSVs' counts are read: ch6_equal --reference-spp 0).
-ifeq ($(SCALE),paper)
-  RATIO_OPTS := --time 300 --seeds 8 --resolution 256x144 --render-args "--p-large 0.1 --seed-paths 1000000"
-else ifeq ($(SCALE),full)
-  RATIO_OPTS := --time 60 --seeds 8 --resolution 512x288 --checkpoint 60 --render-args "--p-large 0.1 --seed-paths 1000000"
-else
-  RATIO_OPTS := --time 4 --seeds 4 --resolution 256x144 --render-args "--p-large 0.1"
-endif
+# the render CSVs' counts are read: ch6_equal --reference-spp 0). The scales are bin/ch6_equal's
+# (--study ratio).
 RATIO_OUT := results/mmlt-ratio/$(SCALE)/ajar-direct
 $(RATIO_OUT)/summary.csv: scenes/ajar/scene.json | deps $(BIN)/ch6_equal $(BIN)/render
 	$(BIN)/ch6_equal --scene scenes/ajar/scene.json --name ajar-direct --out $(RATIO_OUT) --min-length 2 --reference-spp 0 \
-	  $(RATIO_OPTS) --scale $(SCALE) --source 'MMLT paper §5' --command 'make mmlt-ratio SCALE=$(SCALE)' >/dev/null
+	  --study ratio --scale $(SCALE) --source 'MMLT paper §5' --command 'make mmlt-ratio SCALE=$(SCALE)' >/dev/null
 
 # make check-mmlt-ratio: the paper's setting (ajar, paths of length >= 2, no reference) at a fixed
 # 16 mutations per pixel at 256x144, seeds 101-108 against the baseline's 1-8: the non-zero

@@ -12,7 +12,9 @@
  * `run,tv,r,cells,references` rows to OUT.csv (atomically). */
 #include "base/util.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
+#include "common/table.h"
 #include "io/image.h"
 #include "stats/tech_image.h"
 #include <stdio.h>
@@ -24,16 +26,24 @@ static struct image *load(const char *prefix, const char *kind, int t, int w, in
     char path[4200], err[1024];
     snprintf(path, sizeof path, "%.4000s.%s-t%d.exr", prefix, kind, t);
     struct image *im = img_read(path, err, sizeof err);
-    if (!im) {
-        fprintf(stderr, "ch6_tech: %s\n", err);
-        exit(2);
-    }
-    if (w > 0 && (im->w != w || im->h != h)) {
-        fprintf(stderr, "ch6_tech: %s is %dx%d, expected %dx%d\n", path, im->w, im->h, w, h);
-        exit(2);
-    }
+    if (!im) die(DIE_USAGE, "ch6_tech", "%s", err);
+    if (w > 0 && (im->w != w || im->h != h))
+        die(DIE_USAGE, "ch6_tech", "%s is %dx%d, expected %dx%d", path, im->w, im->h, w, h);
     return im;
 }
+
+/* A row of the output: one run against the mean of the references */
+struct follow_row {
+    const char *run;
+    double tv, r;
+    int cells, references;
+};
+static const struct column follow_cols[] = {COL_STRING(struct follow_row, "run", run),
+                                            COL_DOUBLE(struct follow_row, "tv", "%.6g", tv),
+                                            COL_DOUBLE(struct follow_row, "r", "%.6g", r),
+                                            COL_INT(struct follow_row, "cells", "%d", cells),
+                                            COL_INT(struct follow_row, "references", "%d", references),
+                                            {0}};
 
 /* The prefixes after --ref (mode 1) and after --run (mode 2). */
 struct prefixes {
@@ -82,14 +92,12 @@ int main(int argc, char **argv)
             img_destroy(im);
         }
     }
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
+    struct table tab;
+    FILE *f = table_open(&tab, follow_cols);
     csv_meta(f, NULL,
              "ch6_tech: sample counts of each run against the mean contribution of the %d reference runs (leaving out "
              "the run), %dx%d blocks",
              nref, blk, blk);
-    fprintf(f, "run,tv,r,cells,references\n");
     for (int i = 0; i < nrun; i++) {
         bool own = false;
         for (int j = 0; j < nref; j++)
@@ -111,15 +119,10 @@ int main(int argc, char **argv)
         }
         struct tech_follow fo;
         tech_follow(&a, blk, &fo);
-        fprintf(f, "%s,%.6g,%.6g,%d,%d\n", run[i], fo.tv, fo.r, fo.cells, nr);
+        table_row(&tab, &(struct follow_row){run[i], fo.tv, fo.r, fo.cells, nr});
     }
-    fclose(f);
     char err[1024];
-    if (!write_text_atomic(out, buf, err, sizeof err)) {
-        fprintf(stderr, "ch6_tech: %s\n", err);
-        return 1;
-    }
-    free(buf);
+    if (!table_save(&tab, out, err, sizeof err)) die(DIE_RUNTIME, prog, "%s", err);
     tech_acc_free(&a);
     for (int t = 1; t <= k + 1; t++)
         img_destroy(sum[t]);

@@ -16,6 +16,7 @@
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
+#include "common/table.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include <math.h>
@@ -94,11 +95,47 @@ static char *claims(const struct cells *t, const char *out, const char *scale, c
     return claims_finish(&cl, out, err, errlen);
 }
 
-static bool write_file(const char *dir, const char *name, const char *text)
+/* fig6.1.csv: a row per method, length and technique change */
+struct accept_row {
+    const char *method;
+    int length;
+    const char *changed;
+    long attempts;
+    double mean, se, accepted;
+    int runs;
+    double run_se;
+};
+static const struct column accept_cols[] = {COL_STRING(struct accept_row, "method", method),
+                                            COL_INT(struct accept_row, "length", "%d", length),
+                                            COL_STRING(struct accept_row, "technique_changed", changed),
+                                            COL_LONG(struct accept_row, "attempts", "%ld", attempts),
+                                            COL_DOUBLE(struct accept_row, "mean_accept", "%.9g", mean),
+                                            COL_DOUBLE(struct accept_row, "stderr", "%.9g", se),
+                                            COL_DOUBLE(struct accept_row, "accepted_fraction", "%.9g", accepted),
+                                            COL_INT(struct accept_row, "runs", "%d", runs),
+                                            COL_DOUBLE(struct accept_row, "run_se", "%.9g", run_se),
+                                            {0}};
+/* fig6.1-pitp.csv: PITP's perturbations per length */
+struct pitp_row {
+    int length;
+    long perturbations;
+    double changed;
+    long failures;
+    double failure_fraction, dtech;
+};
+static const struct column pitp_cols[] = {COL_INT(struct pitp_row, "length", "%d", length),
+                                          COL_LONG(struct pitp_row, "perturbations", "%ld", perturbations),
+                                          COL_DOUBLE(struct pitp_row, "changed_fraction", "%.9g", changed),
+                                          COL_LONG(struct pitp_row, "failures", "%ld", failures),
+                                          COL_DOUBLE(struct pitp_row, "failure_fraction", "%.9g", failure_fraction),
+                                          COL_DOUBLE(struct pitp_row, "mean_dtech", "%.9g", dtech),
+                                          {0}};
+
+static bool save(struct table *t, const char *dir, const char *name)
 {
-    char path[4096], err[1024];
+    char path[4096], err[4200];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (!write_text_atomic(path, text, err, sizeof err)) {
+    if (!table_save(t, path, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         return false;
     }
@@ -116,9 +153,8 @@ int main(int argc, char **argv)
     int K = a.max_length, threads = a.fig.threads;
     uint64_t seed = a.fig.seed;
     char err[1024];
-    char *buf = NULL, *pbuf = NULL;
-    size_t len = 0, plen = 0;
-    FILE *f = open_memstream(&buf, &len), *pf = open_memstream(&pbuf, &plen);
+    struct table tf, tp;
+    FILE *f = table_open(&tf, accept_cols), *pf = table_open(&tp, pitp_cols);
     const char *head = "fig6.1: small-step acceptance, MMLT vs PITP, p_large = 0.1, uniform length budgets";
     for (int q = 0; q < 2; q++) {
         FILE *g = q ? pf : f;
@@ -129,8 +165,6 @@ int main(int argc, char **argv)
         csv_meta(g, "short_pass_mutations_per_method", "%ld (lengths 1..%d)", 3 * mutations / 2, SHORT_MAX);
         csv_meta(g, "seed_paths", "%ld", paper ? 1000000L : 100000L);
     }
-    fprintf(f, "method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,runs,run_se\n");
-    fprintf(pf, "length,perturbations,changed_fraction,failures,failure_fraction,mean_dtech\n");
     const char *names[2] = {"mmlt", "pitp"};
     static struct cells cells;
     cells.K = K;
@@ -190,27 +224,25 @@ int main(int argc, char **argv)
                 cells.mean[m][k][ch] = rm;
                 cells.se[m][k][ch] = run_se;
                 cells.have[m][k][ch] = true;
-                fprintf(f, "%s,%d,%s,%ld,%.9g,%.9g,%.9g,%d,%.9g\n", names[m], k, ch ? "yes" : "no", c->attempts,
-                        cell_mean(c), cell_stderr(c), (double)c->accepted / c->attempts, n, run_se);
+                table_row(&tf, &(struct accept_row){names[m], k, ch ? "yes" : "no", c->attempts, cell_mean(c),
+                                                    cell_stderr(c), (double)c->accepted / c->attempts, n, run_se});
             }
             const struct accept_cell *p = &all.any[PROPOSAL_PITP][k];
             if (m && p->attempts)
-                fprintf(pf, "%d,%ld,%.9g,%ld,%.9g,%.9g\n", k, p->attempts,
-                        (double)all.cell[PROPOSAL_PITP][k][1].attempts / p->attempts, p->failed,
-                        (double)p->failed / p->attempts, p->sum_dtech / p->attempts);
+                table_row(&tp, &(struct pitp_row){k, p->attempts,
+                                                  (double)all.cell[PROPOSAL_PITP][k][1].attempts / p->attempts,
+                                                  p->failed, (double)p->failed / p->attempts,
+                                                  p->sum_dtech / p->attempts});
         }
     }
-    fclose(f);
-    fclose(pf);
-    bool ok = write_file(a.fig.out, "fig6.1.csv", buf) && write_file(a.fig.out, "fig6.1-pitp.csv", pbuf);
+    bool ok = save(&tf, a.fig.out, "fig6.1.csv") && save(&tp, a.fig.out, "fig6.1-pitp.csv");
     char *md = ok ? claims(&cells, a.fig.out, a.fig.scale, err, sizeof err) : NULL;
     if (ok && !md) {
         fprintf(stderr, "%s\n", err);
         ok = false;
     }
     free(md);
-    free(buf);
-    free(pbuf);
+    text_out_free(&tp.out); /* not saved when the first write failed */
     scene_free(sc);
     return ok ? 0 : 1;
 }
