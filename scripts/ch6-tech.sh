@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # MMLT paper §5 / Fig. 5 (make mmlt-ratio): per-technique contribution and sample-count images of one
-# path length K, MMLT against PSSMLT, from `bin/render --technique-images K` (core/tech_image.h).
+# path length K, MMLT against PSSMLT, from `bin/render --technique-images K` (core/stats/tech_image.h).
 # Renders seeds 1..SEEDS of both methods into OUTDIR, then writes
 #   OUTDIR/tech.md                the shares per technique and the "follow" statistics, mean ± standard
 #                                 error over seeds, with the verdict on the paper's claim. The follow

@@ -109,6 +109,14 @@ struct image *img_read(const char *path, char *err, size_t errlen)
     return im;
 }
 
+double img_mean_luminance(const struct image *im)
+{
+    double s = 0;
+    for (int y = 0; y < im->h; y++)
+        for (int x = 0; x < im->w; x++) s += luminance(img_get(im, x, y));
+    return s / ((double)im->w * im->h);
+}
+
 double img_relmse(const struct image *a, const struct image *ref, double eps)
 {
     ASSERT(a->w == ref->w && a->h == ref->h);

@@ -60,8 +60,8 @@ bool img_write_exr_png(const struct image *im, const char *prefix, char *err, si
 bool img_read_rgb(const char *path, int *w, int *h, float **rgb, int *bits, char *err, size_t errlen);
 struct image *img_read(const char *path, char *err, size_t errlen);
 
-
-
+/* Mean luminance over pixels (Rec. 709 weights, base/vecmath.h's luminance). */
+double img_mean_luminance(const struct image *im);
 /* Relative MSE against a reference: mean over pixels and channels of (a - r)^2 / (r^2 + eps). */
 double img_relmse(const struct image *a, const struct image *ref, double eps);
 #endif

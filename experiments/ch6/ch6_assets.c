@@ -1,6 +1,6 @@
 /* bin/ch6_assets: writes the generated assets of scenes/living-room and scenes/staircase.
  *   sky EXR: a textured sky (blue gradient, value-noise clouds, dark ground) with a small, very bright
- *     sun (angular radius 1.5 degrees) at a given direction; equirectangular as core/envmap.c reads
+ *     sun (angular radius 1.5 degrees) at a given direction; equirectangular as core/emitter/envmap.c reads
  *     it (column = atan2(z, x) / 2pi + 0.5, row = theta / pi from +y).
  *   wood PNG: rough-plastic albedo texture, growth rings distorted by noise, streaks along u.
  * Deterministic (fixed hash noise, no RNG state), so rerunning reproduces the committed files. */

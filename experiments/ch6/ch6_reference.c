@@ -3,7 +3,6 @@
  * length, resolution), rendered by bin/render like the runs. */
 #include "ch6/ch6_equal.h"
 #include "common/die.h"
-#include "common/image_mean.h"
 #include "common/proc.h"
 #include "common/refcache.h"
 #include "io/image.h"

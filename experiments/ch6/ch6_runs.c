@@ -6,7 +6,6 @@
 #include "ch6/ch6_stats.h"
 #include "common/csv_read.h"
 #include "common/die.h"
-#include "common/image_mean.h"
 #include "common/proc.h"
 #include "common/runner.h"
 #include "io/image.h"

@@ -1,5 +1,5 @@
 /* bin/ch6_tech: do a run's per-technique sample counts follow the per-technique contributions?
- * (MMLT paper §5, Fig. 5; the images of `bin/render --technique-images K`, core/tech_image.h.)
+ * (MMLT paper §5, Fig. 5; the images of `bin/render --technique-images K`, core/stats/tech_image.h.)
  *
  * A run's own contribution images cannot be the yardstick for MMLT: every MMLT chain sample carries
  * the same luminance (b_k / P(k)), so its contribution images are its sample counts times a constant

@@ -150,7 +150,7 @@ Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
             } else {
                 x = mcmc_run(sc, (enum mlt_method)(m - 1), 64, 10000, 20 + 10 * (uint64_t)m + (uint64_t)r, 16);
             }
-            double v = image_mean_luminance(x);
+            double v = img_mean_luminance(x);
             s += v;
             s2 += v * v;
             img_destroy(x);

@@ -195,7 +195,7 @@ static void block_means(const struct image *im, double *out)
 /* The README's relMSE: eps = (0.1 * mean reference luminance)^2. */
 static double conf_relmse(const struct image *a, const struct image *ref)
 {
-    return img_relmse(a, ref, sqr(0.1 * image_mean_luminance(ref)));
+    return img_relmse(a, ref, sqr(0.1 * img_mean_luminance(ref)));
 }
 
 static struct image *read_exr(const char *name, const char *suffix)
@@ -276,7 +276,7 @@ ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
             bsum[i] += bm[i];
             bsum2[i] += bm[i] * bm[i];
         }
-        double m = image_mean_luminance(im);
+        double m = img_mean_luminance(im);
         msum += m;
         msum2 += m * m;
         img_accumulate(cand, im, 1.0 / BATCHES);
@@ -296,7 +296,7 @@ ParameterizedTest(int *param, stat_conformance, tungsten_scene, .timeout = 300)
     }
     double k = var_sum > 0 ? dev_t16 / (var_sum * 17.0 / 16.0) : 1;
 
-    double ref_mean = image_mean_luminance(ref);
+    double ref_mean = img_mean_luminance(ref);
     int fails = 0, worst_i = 0;
     double worst = 1;
     for (int i = 0; i < nb; i++) {

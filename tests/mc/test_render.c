@@ -31,7 +31,7 @@ Test(stat_render, furnace_exact_answer)
     for (int m = 0; m < 2; m++)
         for (uint64_t seed = 1; seed <= 3; seed++) {
             struct image *im = run(sc, (enum method)m, 4, seed, K, 0, 0);
-            double v = image_mean_luminance(im);
+            double v = img_mean_luminance(im);
             cr_assert(fabs(v / exact - 1) < 0.01, "%s seed %d: %g vs exact %g", method_name((enum method)m),
                       (int)seed, v, exact);
             img_destroy(im);
@@ -57,7 +57,7 @@ Test(stat_render, time_budget_passes_are_unbiased_in_furnace)
         double budget = fmax(0.2, 8 * st.seconds);
         o.seconds = budget;
         struct image *im = render_mc(sc, &o, &st);
-        double v = image_mean_luminance(im);
+        double v = img_mean_luminance(im);
         cr_assert(st.spp >= 2 && st.samples == st.spp * cells, "%s: %ld samples in %d passes of %ld cells",
                   method_name(o.method), st.samples, st.spp, cells);
         /* slack for a loaded machine, where the last pass can take longer than the mean */

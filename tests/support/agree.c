@@ -3,14 +3,6 @@
 #include <gsl/gsl_cdf.h>
 #include <string.h>
 
-double image_mean_luminance(const struct image *im)
-{
-    double s = 0;
-    for (int y = 0; y < im->h; y++)
-        for (int x = 0; x < im->w; x++) s += luminance(img_get(im, x, y));
-    return s / ((double)im->w * im->h);
-}
-
 void stack_runs(struct stack *out, render_fn render, void *ctx, int reps, uint64_t seed0, int blk)
 {
     static double sum[AGREE_MAX_BLOCKS], sum2[AGREE_MAX_BLOCKS];
@@ -24,7 +16,7 @@ void stack_runs(struct stack *out, render_fn render, void *ctx, int reps, uint64
         W = im->w / blk;
         H = im->h / blk;
         cr_assert(W * H <= AGREE_MAX_BLOCKS);
-        tot[r] = image_mean_luminance(im);
+        tot[r] = img_mean_luminance(im);
         for (int by = 0; by < H; by++)
             for (int bx = 0; bx < W; bx++) {
                 double a = 0;

@@ -24,7 +24,6 @@ void stack_runs(struct stack *out, render_fn render, void *ctx, int reps, uint64
  * comparisons times `families` (the number of such comparisons in one test); *pmean and *worst
  * receive p-values. */
 int stack_compare(const struct stack *a, const struct stack *b, int families, double *pmean, double *worst);
-double image_mean_luminance(const struct image *im);
 
 /* A replicate of an MLT render for stack_runs: ctx is a struct mlt_ctx, rendered with its options
  * and the replicate's seed (asserting success and no non-finite contribution). */
