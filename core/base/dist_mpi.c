@@ -43,7 +43,11 @@ static _Noreturn void fail(const char *what, int code)
     exit(2);
 }
 
-#define CHECK(call) do { int rc_ = (call); if (rc_ != MPI_SUCCESS) fail(#call, rc_); } while (0)
+#define CHECK(call)                                                                                                    \
+    do {                                                                                                               \
+        int rc_ = (call);                                                                                              \
+        if (rc_ != MPI_SUCCESS) fail(#call, rc_);                                                                      \
+    } while (0)
 
 void dist_init(int *argc, char ***argv)
 {
@@ -66,7 +70,8 @@ void dist_init(int *argc, char ***argv)
     }
     if (rank_ != 0) {
         if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) {
-            fprintf(stderr, "%s: rank %d: cannot silence its output: %s\n", program_invocation_short_name, rank_, strerror(errno));
+            fprintf(stderr, "%s: rank %d: cannot silence its output: %s\n", program_invocation_short_name, rank_,
+                    strerror(errno));
             MPI_Abort(MPI_COMM_WORLD, 2);
         }
     }
@@ -90,7 +95,8 @@ static void refuse_if_launched(void)
     checked = true;
     if (launcher_size() > 1) {
         if (launcher_rank() == 0)
-            fprintf(stderr, "%s: not rank-aware: run it without mpirun (only bin/render splits a render over MPI ranks; "
+            fprintf(stderr,
+                    "%s: not rank-aware: run it without mpirun (only bin/render splits a render over MPI ranks; "
                     "bin/ch6_equal --render scripts/mpirun-render.sh runs its renders that way)\n",
                     program_invocation_short_name);
         exit(2);

@@ -3,8 +3,8 @@
 #include "base/util.h"
 #include <pthread.h>
 #include <signal.h>
-#include <stdlib.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -55,7 +55,8 @@ void parallel_run(int threads, void (*fn)(int tid, void *ctx), void *ctx)
         }
     }
     fn(0, ctx);
-    for (int i = 1; i < threads; i++) pthread_join(th[i], NULL);
+    for (int i = 1; i < threads; i++)
+        pthread_join(th[i], NULL);
     free(th);
     free(jobs);
 }
@@ -108,7 +109,8 @@ bool pass_barrier_arrive(struct pass_barrier *b)
         cpu_relax();
     }
     pthread_mutex_lock(&b->lock);
-    while (atomic_load_explicit(&b->generation, memory_order_relaxed) == gen) pthread_cond_wait(&b->wake, &b->lock);
+    while (atomic_load_explicit(&b->generation, memory_order_relaxed) == gen)
+        pthread_cond_wait(&b->wake, &b->lock);
     bool more = b->more;
     pthread_mutex_unlock(&b->lock);
     return more;
@@ -130,7 +132,8 @@ static void draw(struct progress *p, long done)
     double el = now_seconds() - p->start, f = (double)done / (double)p->total;
     int bar = (int)(f * 30);
     char b[31];
-    for (int i = 0; i < 30; i++) b[i] = i < bar ? '#' : '.';
+    for (int i = 0; i < 30; i++)
+        b[i] = i < bar ? '#' : '.';
     b[30] = 0;
     double eta = f > 0 ? el * (1 - f) / f : 0;
     fprintf(stderr, "\r%s [%s] %5.1f%%  %.0fs elapsed, ~%.0fs left ", p->label, b, 100 * f, el, eta);

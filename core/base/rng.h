@@ -5,7 +5,9 @@
 
 #include <stdint.h>
 
-typedef struct { uint64_t state, inc; } rng;
+typedef struct {
+    uint64_t state, inc;
+} rng;
 
 void rng_seed(rng *r, uint64_t seed, uint64_t stream);
 

@@ -130,7 +130,8 @@ bool atomic_write(const char *path, write_fn write, void *ctx, char *err, size_t
         snprintf(why, sizeof why, "rename: %s", strerror(errno));
         ok = false;
     }
-    if (ok) sync_dir(path, base);
+    if (ok)
+        sync_dir(path, base);
     else {
         remove(tmp);
         str_sanitize(why);

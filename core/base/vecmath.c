@@ -16,7 +16,8 @@ frame frame_from_normal(vec3 n)
 mat4 mat4_identity(void)
 {
     mat4 m = {{{0}}};
-    for (int i = 0; i < 4; i++) m.m[i][i] = 1.0;
+    for (int i = 0; i < 4; i++)
+        m.m[i][i] = 1.0;
     return m;
 }
 
@@ -26,7 +27,8 @@ mat4 mat4_mul(const mat4 *a, const mat4 *b)
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
             double s = 0;
-            for (int k = 0; k < 4; k++) s += a->m[i][k] * b->m[k][j];
+            for (int k = 0; k < 4; k++)
+                s += a->m[i][k] * b->m[k][j];
             r.m[i][j] = s;
         }
     return r;
@@ -56,8 +58,8 @@ vec3 mat4_normal(const mat4 *m, vec3 n)
            c20 = a[0][1] * a[1][2] - a[0][2] * a[1][1], c21 = a[0][2] * a[1][0] - a[0][0] * a[1][2],
            c22 = a[0][0] * a[1][1] - a[0][1] * a[1][0];
     double det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
-    vec3 r = v3(c00 * n.x + c01 * n.y + c02 * n.z, c10 * n.x + c11 * n.y + c12 * n.z,
-                c20 * n.x + c21 * n.y + c22 * n.z);
+    vec3 r =
+        v3(c00 * n.x + c01 * n.y + c02 * n.z, c10 * n.x + c11 * n.y + c12 * n.z, c20 * n.x + c21 * n.y + c22 * n.z);
     return det < 0 ? vneg(r) : r;
 }
 
@@ -66,7 +68,8 @@ bool mat4_invert(const mat4 *m, mat4 *out)
     /* Gauss-Jordan with partial pivoting on [M | I]. */
     double a[4][8];
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 8; j++) a[i][j] = j < 4 ? m->m[i][j] : (j - 4 == i);
+        for (int j = 0; j < 8; j++)
+            a[i][j] = j < 4 ? m->m[i][j] : (j - 4 == i);
     for (int c = 0; c < 4; c++) {
         int piv = c;
         for (int r = c + 1; r < 4; r++)
@@ -78,15 +81,18 @@ bool mat4_invert(const mat4 *m, mat4 *out)
             a[piv][j] = t;
         }
         double inv = 1.0 / a[c][c];
-        for (int j = 0; j < 8; j++) a[c][j] *= inv;
+        for (int j = 0; j < 8; j++)
+            a[c][j] *= inv;
         for (int r = 0; r < 4; r++) {
             if (r == c) continue;
             double f = a[r][c];
-            for (int j = 0; j < 8; j++) a[r][j] -= f * a[c][j];
+            for (int j = 0; j < 8; j++)
+                a[r][j] -= f * a[c][j];
         }
     }
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) out->m[i][j] = a[i][j + 4];
+        for (int j = 0; j < 4; j++)
+            out->m[i][j] = a[i][j + 4];
     return true;
 }
 

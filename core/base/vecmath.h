@@ -13,7 +13,9 @@
 #endif
 #define INV_PI (1.0 / M_PI)
 
-typedef struct { double x, y, z; } vec3;
+typedef struct {
+    double x, y, z;
+} vec3;
 typedef vec3 rgb;
 
 /* fmax and fmin are out-of-line libm calls on x86-64 (their NaN rules keep GCC from using maxsd);
@@ -58,34 +60,48 @@ static inline void sincos_turns(double u, double *s, double *c)
     double t = 4 * u;
     long q = lrint(t);
     double x = (t - (double)q) * (M_PI / 2), y = x * x, y2 = y * y, y4 = y2 * y2;
-    double sn = x * ((1 - y * (1.0 / 6)) + y2 * (1.0 / 120 - y * (1.0 / 5040))
-                     + y4 * ((1.0 / 362880 - y * (1.0 / 39916800)) + y2 * (1.0 / 6227020800 - y * (1.0 / 1307674368000))));
-    double cs = (1 - y * 0.5) + y2 * (1.0 / 24 - y * (1.0 / 720))
-              + y4 * ((1.0 / 40320 - y * (1.0 / 3628800)) + y2 * (1.0 / 479001600 - y * (1.0 / 87178291200))
-                      + y4 * (1.0 / 20922789888000));
+    double sn =
+        x * ((1 - y * (1.0 / 6)) + y2 * (1.0 / 120 - y * (1.0 / 5040)) +
+             y4 * ((1.0 / 362880 - y * (1.0 / 39916800)) + y2 * (1.0 / 6227020800 - y * (1.0 / 1307674368000))));
+    double cs = (1 - y * 0.5) + y2 * (1.0 / 24 - y * (1.0 / 720)) +
+                y4 * ((1.0 / 40320 - y * (1.0 / 3628800)) + y2 * (1.0 / 479001600 - y * (1.0 / 87178291200)) +
+                      y4 * (1.0 / 20922789888000));
     switch (q & 3) {
-    case 0: *s = sn; *c = cs; break;
-    case 1: *s = cs; *c = -sn; break;
-    case 2: *s = -sn; *c = -cs; break;
-    default: *s = -cs; *c = sn; break;
+    case 0:
+        *s = sn;
+        *c = cs;
+        break;
+    case 1:
+        *s = cs;
+        *c = -sn;
+        break;
+    case 2:
+        *s = -sn;
+        *c = -cs;
+        break;
+    default:
+        *s = -cs;
+        *c = sn;
+        break;
     }
 }
 
 /* Orthonormal frame; local z is the normal. */
-typedef struct { vec3 s, t, n; } frame;
+typedef struct {
+    vec3 s, t, n;
+} frame;
 
 frame frame_from_normal(vec3 n);
-static inline vec3 frame_to_local(const frame *f, vec3 v)
-{
-    return v3(vdot(v, f->s), vdot(v, f->t), vdot(v, f->n));
-}
+static inline vec3 frame_to_local(const frame *f, vec3 v) { return v3(vdot(v, f->s), vdot(v, f->t), vdot(v, f->n)); }
 static inline vec3 frame_to_world(const frame *f, vec3 v)
 {
     return vadd(vadd(vscale(f->s, v.x), vscale(f->t, v.y)), vscale(f->n, v.z));
 }
 
 /* Row-major 4x4 matrix; points are column vectors (p' = M p). */
-typedef struct { double m[4][4]; } mat4;
+typedef struct {
+    double m[4][4];
+} mat4;
 
 mat4 mat4_identity(void);
 mat4 mat4_mul(const mat4 *a, const mat4 *b);

@@ -71,7 +71,8 @@ static void prepare_rec(struct bsdf *bs, bool *done, struct bsdf *b)
 void bsdf_prepare_all(struct bsdf *bs, int n)
 {
     bool *done = xcalloc((size_t)(n > 0 ? n : 1), sizeof *done);
-    for (int i = 0; i < n; i++) prepare_rec(bs, done, &bs[i]);
+    for (int i = 0; i < n; i++)
+        prepare_rec(bs, done, &bs[i]);
     free(done);
 }
 

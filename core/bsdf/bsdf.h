@@ -54,16 +54,15 @@ static inline struct bsdf_ctx bsdf_child_ctx(const struct bsdf_ctx *c, int i)
 
 struct bsdf_sample {
     vec3 wo;
-    double pdf;   /* solid angle (continuous) or discrete probability (delta) */
+    double pdf; /* solid angle (continuous) or discrete probability (delta) */
     rgb weight;
     bool delta;
-    int lobe;     /* family-specific lobe index, for statistics and tests */
+    int lobe; /* family-specific lobe index, for statistics and tests */
 };
 
 struct bsdf_ops {
     int dims; /* numbers consumed by sample(); nested types set bsdf.dims in prepare() */
-    bool (*sample)(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum transport mode,
-                   struct bsdf_sample *out);
+    bool (*sample)(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum transport mode, struct bsdf_sample *out);
     rgb (*eval)(const struct bsdf_ctx *c, vec3 wi, vec3 wo, enum transport mode);
     double (*pdf)(const struct bsdf_ctx *c, vec3 wi, vec3 wo);
     bool (*invert)(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler *w);
@@ -75,9 +74,8 @@ struct bsdf_ops {
 };
 
 /* Families (one file each). */
-extern const struct bsdf_ops bsdf_lambert_ops, bsdf_conductor_ops /* also the mirror */,
-    bsdf_dielectric_ops, bsdf_plastic_ops, bsdf_rough_conductor_ops, bsdf_rough_dielectric_ops,
-    bsdf_rough_plastic_ops;
+extern const struct bsdf_ops bsdf_lambert_ops, bsdf_conductor_ops /* also the mirror */, bsdf_dielectric_ops,
+    bsdf_plastic_ops, bsdf_rough_conductor_ops, bsdf_rough_dielectric_ops, bsdf_rough_plastic_ops;
 /* nested BSDFs: their children are b->child[0..1] (bsdf_nested.h) */
 extern const struct bsdf_ops bsdf_transparency_ops, bsdf_smooth_coat_ops, bsdf_rough_coat_ops, bsdf_mixed_ops;
 /* Leaf families of Tungsten's (bsdf_leaf.h). */
@@ -97,8 +95,8 @@ void bsdf_prepare(struct bsdf *b);
 /* bsdf_prepare on every BSDF of a scene's array, nested ones before those that hold them. */
 void bsdf_prepare_all(struct bsdf *bs, int n);
 
-static inline bool bsdf_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s,
-                               enum transport mode, struct bsdf_sample *out)
+static inline bool bsdf_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum transport mode,
+                               struct bsdf_sample *out)
 {
     return bsdf_ops_for(c->b->type)->sample(c, wi, s, mode, out);
 }

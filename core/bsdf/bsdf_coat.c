@@ -158,8 +158,10 @@ static void substrate_weight(const struct bsdf_ctx *c, const struct coat_in *k, 
     if (!(k->P < 1 && coat_substrate(c, k, wo, TRANSPORT_RADIANCE, NULL, &p, &wo_s))) return;
     struct bsdf_ctx s = bsdf_child_ctx(c, 0);
     nested_probe(&s, k->wi_s, wo_s, w, pr);
-    if (pr->ok && pr->delta) *dw = (1 - k->P) * pr->p_delta;
-    else if (pr->ok) *cw = (1 - k->P) * p;
+    if (pr->ok && pr->delta)
+        *dw = (1 - k->P) * pr->p_delta;
+    else if (pr->ok)
+        *cw = (1 - k->P) * p;
 }
 
 static bool sc_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler *w)
@@ -275,7 +277,8 @@ static bool rc_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     double dw[2] = {0, 0}, cw[2] = {0, 0}, u1 = 0, u2 = 0;
     vec3 h;
     cw[0] = k.P * rc_glossy_pdf(c, wi, wo);
-    if (!(cw[0] > 0 && mf_half_reflect(wi, wo, &h) && mf_invert(b->dist, mf_sample_alpha(c->roughness, wi.z), h, &u1, &u2)))
+    if (!(cw[0] > 0 && mf_half_reflect(wi, wo, &h) &&
+          mf_invert(b->dist, mf_sample_alpha(c->roughness, wi.z), h, &u1, &u2)))
         cw[0] = 0;
     struct nested_probe pr = {0};
     substrate_weight(c, &k, wo, w, &pr, &dw[1], &cw[1]);

@@ -52,8 +52,8 @@ static bool dt_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     if (!(p_side(c->b, transmit) > 0)) return false;
     double u1, u2;
     warp_cosine_hemisphere_invert(wo, &u1, &u2); /* reads x, y only: either side */
-    sampler_put(w, DIM_DISCRETE, transmit ? invert_discrete(pr, 1.0, sampler_fresh(w))
-                                          : invert_discrete(0.0, pr, sampler_fresh(w)));
+    sampler_put(w, DIM_DISCRETE,
+                transmit ? invert_discrete(pr, 1.0, sampler_fresh(w)) : invert_discrete(0.0, pr, sampler_fresh(w)));
     sampler_put(w, DIM_CONTINUOUS, u1);
     sampler_put(w, DIM_CONTINUOUS, u2);
     return true;

@@ -72,12 +72,15 @@ static bool mx_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
         if (!(pk[k] > 0)) continue;
         struct bsdf_ctx ck = bsdf_child_ctx(c, k);
         nested_probe(&ck, wi, wo, w, &pr[k]);
-        if (pr[k].ok && pr[k].delta) dw[k] = pk[k] * pr[k].p_delta;
-        else if (pr[k].ok) cw[k] = pk[k] * bsdf_pdf(&ck, wi, wo);
+        if (pr[k].ok && pr[k].delta)
+            dw[k] = pk[k] * pr[k].p_delta;
+        else if (pr[k].ok)
+            cw[k] = pk[k] * bsdf_pdf(&ck, wi, wo);
     }
     int k = nested_pick(w, 2, dw, cw);
     if (k < 0) return false;
-    sampler_put(w, DIM_DISCRETE, k == 0 ? invert_discrete(0, r, sampler_fresh(w)) : invert_discrete(r, 1, sampler_fresh(w)));
+    sampler_put(w, DIM_DISCRETE,
+                k == 0 ? invert_discrete(0, r, sampler_fresh(w)) : invert_discrete(r, 1, sampler_fresh(w)));
     nested_put(w, &pr[k]);
     nested_pad_put(w, end);
     return true;

@@ -4,12 +4,14 @@
 
 void nested_pad_next(struct sampler *s, int end)
 {
-    while (s->offset < end) sampler_next(s, DIM_CONTINUOUS);
+    while (s->offset < end)
+        sampler_next(s, DIM_CONTINUOUS);
 }
 
 void nested_pad_put(struct sampler *w, int end)
 {
-    while (w->offset < end) sampler_put(w, DIM_CONTINUOUS, sampler_fresh(w));
+    while (w->offset < end)
+        sampler_put(w, DIM_CONTINUOUS, sampler_fresh(w));
 }
 
 /* A block of numbers that an inverse writes and a forward sample then reads back; its fresh
@@ -55,7 +57,8 @@ void nested_probe(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler *w,
 
 void nested_put(struct sampler *w, const struct nested_probe *p)
 {
-    for (int i = 0; i < p->n; i++) sampler_put(w, p->kind[i], p->u[i]);
+    for (int i = 0; i < p->n; i++)
+        sampler_put(w, p->kind[i], p->u[i]);
 }
 
 int nested_pick(struct sampler *w, int n, const double *dw, const double *cw)

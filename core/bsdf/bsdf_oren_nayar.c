@@ -90,7 +90,8 @@ static bool on_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     } else {
         warp_cosine_hemisphere_invert(wo, &u1, &u2);
     }
-    sampler_put(w, DIM_DISCRETE, uniform ? invert_discrete(0.0, r, sampler_fresh(w)) : invert_discrete(r, 1.0, sampler_fresh(w)));
+    sampler_put(w, DIM_DISCRETE,
+                uniform ? invert_discrete(0.0, r, sampler_fresh(w)) : invert_discrete(r, 1.0, sampler_fresh(w)));
     sampler_put(w, DIM_CONTINUOUS, u1);
     sampler_put(w, DIM_CONTINUOUS, u2);
     return true;

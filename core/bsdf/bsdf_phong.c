@@ -91,7 +91,8 @@ static bool phong_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct samp
     } else {
         warp_cosine_hemisphere_invert(wo, &u1, &u2);
     }
-    sampler_put(w, DIM_DISCRETE, glossy ? invert_discrete(0.0, 1 - d, sampler_fresh(w)) : invert_discrete(1 - d, 1.0, sampler_fresh(w)));
+    sampler_put(w, DIM_DISCRETE,
+                glossy ? invert_discrete(0.0, 1 - d, sampler_fresh(w)) : invert_discrete(1 - d, 1.0, sampler_fresh(w)));
     sampler_put(w, DIM_CONTINUOUS, u1);
     sampler_put(w, DIM_CONTINUOUS, u2);
     return true;

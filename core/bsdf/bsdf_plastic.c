@@ -23,7 +23,8 @@ static double coat_fresnel(const struct bsdf *b, double cos_out)
 static double p_coat(const struct bsdf_ctx *c, double Fi)
 {
     const struct bsdf *b = c->b;
-    return coat_choice_prob(Fi, exp(-2.0 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3.0), c->albedo);
+    return coat_choice_prob(Fi, exp(-2.0 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3.0),
+                            c->albedo);
 }
 
 static rgb diffuse_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo, double Fi)

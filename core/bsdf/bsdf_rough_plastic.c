@@ -11,12 +11,11 @@
  * chosen with probability P_c = F(wi.z) / (F(wi.z) + T (1 - F(wi.z)) mean(albedo)), T =
  * exp(-2 mean(tau)): in proportion to what each lobe reflects (coat_choice_prob, fresnel.h;
  * Tungsten's specularProbability leaves the albedo out, and dark bases then starved the coat).
- * Interval [0, P_c) -> coat: m ~ D_s(m) m.z with Tungsten's widened sampling roughness (its rough plastic reuses the rough dielectric sampler), wo =
- * reflect(wi, m); [P_c, 1) -> base: cosine-weighted hemisphere. Lobes: 0 = coat, 1 = base.
- *   pdf = P_c D_s(h) h.z / (4 wo.h) + (1 - P_c) wo.z / pi;   weight = f wo.z / pdf (both lobes).
- * Inverse: both lobes can produce any wo, so the lobe is picked with probability equal to its
- * share of the pdf (thesis Eq. 5.7), then ud is uniform in its interval (Eq. 5.8) and (u1, u2)
- * come from that lobe's inverse map. */
+ * Interval [0, P_c) -> coat: m ~ D_s(m) m.z with Tungsten's widened sampling roughness (its rough plastic reuses the
+ * rough dielectric sampler), wo = reflect(wi, m); [P_c, 1) -> base: cosine-weighted hemisphere. Lobes: 0 = coat, 1 =
+ * base. pdf = P_c D_s(h) h.z / (4 wo.h) + (1 - P_c) wo.z / pi;   weight = f wo.z / pdf (both lobes). Inverse: both
+ * lobes can produce any wo, so the lobe is picked with probability equal to its share of the pdf (thesis Eq. 5.7), then
+ * ud is uniform in its interval (Eq. 5.8) and (u1, u2) come from that lobe's inverse map. */
 #include "bsdf/bsdf.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
@@ -130,7 +129,8 @@ static bool rp_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     } else {
         warp_cosine_hemisphere_invert(wo, &u1, &u2);
     }
-    sampler_put(w, DIM_DISCRETE, coat ? invert_discrete(0, P, sampler_fresh(w)) : invert_discrete(P, 1, sampler_fresh(w)));
+    sampler_put(w, DIM_DISCRETE,
+                coat ? invert_discrete(0, P, sampler_fresh(w)) : invert_discrete(P, 1, sampler_fresh(w)));
     sampler_put(w, DIM_CONTINUOUS, u1);
     sampler_put(w, DIM_CONTINUOUS, u2);
     return true;

@@ -56,8 +56,10 @@ static bool tr_invert(const struct bsdf_ctx *c, vec3 wi, vec3 wo, struct sampler
     if (b->alpha > 0) {
         struct bsdf_ctx base = bsdf_child_ctx(c, 0);
         nested_probe(&base, wi, wo, w, &pr);
-        if (pr.ok && pr.delta) dw[1] = b->alpha * pr.p_delta;
-        else if (pr.ok) cw[1] = b->alpha * bsdf_pdf(&base, wi, wo);
+        if (pr.ok && pr.delta)
+            dw[1] = b->alpha * pr.p_delta;
+        else if (pr.ok)
+            cw[1] = b->alpha * bsdf_pdf(&base, wi, wo);
     }
     int k = nested_pick(w, 2, dw, cw);
     if (k < 0) return false;

@@ -85,7 +85,8 @@ vec3 camera_sample_dir_lens(const struct camera *c, vec3 lens, struct sampler *s
         iy = (*py - 0.5) / c->height;
     }
     lens_shift(c, lens, &sx, &sy);
-    return dir_of(c, v3(c->tan_half_fov * (2 * ix - 1) - sx, c->tan_half_fov * (1 - 2 * iy) / c->aspect - sy, 1.0), pdf);
+    return dir_of(c, v3(c->tan_half_fov * (2 * ix - 1) - sx, c->tan_half_fov * (1 - 2 * iy) / c->aspect - sy, 1.0),
+                  pdf);
 }
 
 /* Raster position and density from the direction's offset (x, y) at unit distance through the
@@ -93,7 +94,8 @@ vec3 camera_sample_dir_lens(const struct camera *c, vec3 lens, struct sampler *s
 static inline double raster_of(const struct camera *c, double x, double y, double ct, double *px, double *py)
 {
     int m = camera_margin(c);
-    double rx = 0.5 * (x / c->tan_half_fov + 1) * c->width, ry = 0.5 * (1 - y * c->aspect / c->tan_half_fov) * c->height;
+    double rx = 0.5 * (x / c->tan_half_fov + 1) * c->width,
+           ry = 0.5 * (1 - y * c->aspect / c->tan_half_fov) * c->height;
     if (!(rx >= -m && rx < c->width + m && ry >= -m && ry < c->height + m)) return 0;
     *px = rx;
     *py = ry;

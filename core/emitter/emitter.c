@@ -33,14 +33,18 @@ static double tri_area(const struct prim *pr, int i, vec3 *ng)
 static double shape_area(const struct prim *pr)
 {
     switch (pr->kind) {
-    case PRIM_QUAD: return vlen(vcross(pr->quad_edge0, pr->quad_edge1));
-    case PRIM_SPHERE: return 4 * M_PI * pr->radius * pr->radius;
+    case PRIM_QUAD:
+        return vlen(vcross(pr->quad_edge0, pr->quad_edge1));
+    case PRIM_SPHERE:
+        return 4 * M_PI * pr->radius * pr->radius;
     case PRIM_MESH: {
         double a = 0;
-        for (int i = 0; i < pr->ntris; i++) a += tri_area(pr, i, NULL);
+        for (int i = 0; i < pr->ntris; i++)
+            a += tri_area(pr, i, NULL);
         return a;
     }
-    default: return 0;
+    default:
+        return 0;
     }
 }
 
@@ -99,7 +103,8 @@ struct emitter_table *emitters_build(const struct scene *sc, char *err, size_t e
             t->power[k] = a * M_PI * fmax(0.0, luminance(pr->emission));
             if (pr->kind == PRIM_MESH) {
                 double *w = xmalloc(sizeof(double) * (size_t)pr->ntris);
-                for (int j = 0; j < pr->ntris; j++) w[j] = tri_area(pr, j, NULL);
+                for (int j = 0; j < pr->ntris; j++)
+                    w[j] = tri_area(pr, j, NULL);
                 cdf_build(t->tri_cdf + off, w, pr->ntris);
                 free(w);
                 t->tri_off[k] = off;
@@ -108,10 +113,13 @@ struct emitter_table *emitters_build(const struct scene *sc, char *err, size_t e
         }
         k++;
     }
-    if (n > 0) cdf_build(t->cdf, t->power, n);
-    else t->cdf[0] = 0, t->cdf[1] = 1;
+    if (n > 0)
+        cdf_build(t->cdf, t->power, n);
+    else
+        t->cdf[0] = 0, t->cdf[1] = 1;
     t->total_power = 0;
-    for (int i = 0; i < n; i++) t->total_power += t->power[i];
+    for (int i = 0; i < n; i++)
+        t->total_power += t->power[i];
     return t;
 }
 
@@ -133,7 +141,8 @@ int emitters_count(const struct scene *sc)
 {
     if (sc->emitters) return sc->emitters->n;
     int n = 0;
-    for (int i = 0; i < sc->nprims; i++) n += sc->prims[i].emissive;
+    for (int i = 0; i < sc->nprims; i++)
+        n += sc->prims[i].emissive;
     return n;
 }
 

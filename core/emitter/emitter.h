@@ -24,9 +24,9 @@ bool emitter_pick_invert(const struct scene *sc, int prim, struct sampler *w);
 
 /* A point on an area emitter; pdf in the area measure. */
 struct emitter_pos {
-    vec3 p, n;   /* n: unit front normal (sphere: outward) */
+    vec3 p, n; /* n: unit front normal (sphere: outward) */
     double pdf;
-    int tri;     /* meshes: the triangle; else -1 */
+    int tri; /* meshes: the triangle; else -1 */
 };
 bool emitter_sample_pos(const struct scene *sc, int prim, struct sampler *s, struct emitter_pos *out);
 double emitter_pdf_pos(const struct scene *sc, int prim, vec3 p);

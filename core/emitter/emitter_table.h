@@ -13,16 +13,16 @@ struct emitter_table {
     double total_power; /* their sum, computed once */
     double *cdf;        /* n + 1: light selection CDF */
     int nprims;
-    int *slot;          /* nprims: slot of each prim, -1 if not an emitter */
+    int *slot; /* nprims: slot of each prim, -1 if not an emitter */
     /* area emitters, per slot */
-    double *area;       /* n: surface area used for the pdf (0 for the environment) */
-    int *tri_off;       /* n: meshes: offset of the triangle CDF in tri_cdf (ntris + 1 entries); else -1 */
+    double *area; /* n: surface area used for the pdf (0 for the environment) */
+    int *tri_off; /* n: meshes: offset of the triangle CDF in tri_cdf (ntris + 1 entries); else -1 */
     double *tri_cdf;
     /* environment */
-    int env_slot;       /* -1 if none */
-    bool env_map;       /* sampled by the 2D distribution (else uniform sphere) */
+    int env_slot;              /* -1 if none */
+    bool env_map;              /* sampled by the 2D distribution (else uniform sphere) */
     struct distrib2d env_dist; /* over the lat-long image: x = column, y = row from the top */
-    vec3 env_center;    /* bounding sphere of the finite geometry */
+    vec3 env_center;           /* bounding sphere of the finite geometry */
     double env_R;
 };
 

@@ -93,8 +93,8 @@ double env_build(struct emitter_table *t, const struct scene *sc, const struct p
             const float *c = tex->rgb + 3 * ((size_t)y * w + x);
             rgb v = v3(c[0], c[1], c[2]);
             if (!vfinite(v)) {
-                snprintf(err, errlen, "%s: %s.emission: non-finite texel (%d, %d) in the environment map", file,
-                         where, x, y);
+                snprintf(err, errlen, "%s: %s.emission: non-finite texel (%d, %d) in the environment map", file, where,
+                         x, y);
                 free(wt);
                 return -1;
             }

@@ -92,7 +92,7 @@ uint64_t hash64(uint64_t h, const void *p, size_t n)
         h = (h ^ w) * 0x9E3779B97F4A7C15ULL;
         h ^= h >> 29;
     }
-    uint64_t w = n; /* the tail, with its length, so "ab" and "ab\0" differ */
+    uint64_t w = n;          /* the tail, with its length, so "ab" and "ab\0" differ */
     if (n) memcpy(&w, c, n); /* an empty payload has no buffer at all */
     h = (h ^ w ^ ((uint64_t)n << 56)) * 0xBF58476D1CE4E5B9ULL;
     return h ^ (h >> 31);
@@ -107,7 +107,8 @@ uint64_t ckpt_build_hash(void)
     uint64_t h = 0x243F6A8885A308D3ULL;
     unsigned char buf[1 << 16];
     size_t n;
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0) h = hash64(h, buf, n);
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        h = hash64(h, buf, n);
     bool ok = !ferror(f);
     fclose(f);
     return cached = ok ? h : 0;
@@ -156,7 +157,8 @@ static bool write_parts(const char *tmp, void *parts, char *err, size_t errlen)
     return write_chunks(tmp, parts, 4, err, errlen);
 }
 
-bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ckpt_buf *payload, char *err, size_t errlen)
+bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ckpt_buf *payload, char *err,
+                     size_t errlen)
 {
     struct ckpt_buf head = {0};
     ckpt_put(&head, MAGIC, 8);
@@ -188,7 +190,8 @@ static bool read_verified(const char *path, struct ckpt_buf *all, char *err, siz
     }
     unsigned char buf[1 << 16];
     size_t n;
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0) ckpt_put(all, buf, n);
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        ckpt_put(all, buf, n);
     fclose(f);
     uint64_t olen = 0, sum = 0;
     if (all->len < HEAD_FIXED + 8 || memcmp(all->p, MAGIC, 8)) {
@@ -200,7 +203,8 @@ static bool read_verified(const char *path, struct ckpt_buf *all, char *err, siz
     memcpy(&olen, all->p + HEAD_FIXED - 16, 8);
     size_t hlen = olen <= all->len - HEAD_FIXED - 8 ? HEAD_FIXED + (size_t)olen : 0;
     if (!hlen || checksum(all->p, hlen, all->p + hlen, all->len - 8 - hlen) != sum) {
-        snprintf(err, errlen, "%s: the checkpoint is truncated or corrupted (checksum mismatch); nothing was read", path);
+        snprintf(err, errlen, "%s: the checkpoint is truncated or corrupted (checksum mismatch); nothing was read",
+                 path);
         ckpt_buf_free(all);
         return false;
     }
@@ -255,7 +259,8 @@ bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf 
     if (!opts || all.short_read || plen != all.len - all.pos)
         snprintf(err, errlen, "%s: the checkpoint's layout is damaged", path);
     else if (build != id->build || !build)
-        snprintf(err, errlen, "%s: written by another build of the renderer; resume with the binary that wrote it", path);
+        snprintf(err, errlen, "%s: written by another build of the renderer; resume with the binary that wrote it",
+                 path);
     else if (scene != id->scene)
         snprintf(err, errlen, "%s: written for another scene (or the scene's files changed since)", path);
     else if (strcmp(opts, id->options)) {

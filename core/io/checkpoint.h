@@ -48,7 +48,8 @@ struct ckpt_id {
 uint64_t ckpt_build_hash(void);
 uint64_t hash64(uint64_t h, const void *p, size_t n);
 
-bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ckpt_buf *payload, char *err, size_t errlen);
+bool ckpt_write_file(const char *path, const struct ckpt_id *id, const struct ckpt_buf *payload, char *err,
+                     size_t errlen);
 /* Fills payload (owned; free with ckpt_buf_free) or writes one line: unreadable, corrupted or
  * truncated, or written by another build, for another scene or with other options. */
 bool ckpt_read_file(const char *path, const struct ckpt_id *id, struct ckpt_buf *payload, char *err, size_t errlen);
@@ -61,12 +62,12 @@ void ckpt_remove_stale_temporaries(const char *path);
 
 /* How a renderer checkpoints: where to, how often, and what to continue from. */
 struct ckpt_ctl {
-    const char *path;          /* written every `every` seconds and at an interruption */
-    double every;              /* <= 0: only at an interruption */
+    const char *path; /* written every `every` seconds and at an interruption */
+    double every;     /* <= 0: only at an interruption */
     struct ckpt_id id;
-    struct ckpt_buf *resume;   /* payload of the run to continue, or NULL */
-    bool written;              /* out: a checkpoint was written */
-    char err[512];             /* out: why a write failed (the run stops) */
+    struct ckpt_buf *resume; /* payload of the run to continue, or NULL */
+    bool written;            /* out: a checkpoint was written */
+    char err[512];           /* out: why a write failed (the run stops) */
 };
 
 /* The rendezvous of a run's threads for a periodic checkpoint. Threads poll; once one finds the

@@ -21,7 +21,8 @@ void ckpt_sync_init(struct ckpt_sync *s, int threads, double every, void (*save)
 
 void ckpt_sync_destroy(struct ckpt_sync *s)
 {
-    for (int i = 0; i < s->threads; i++) ckpt_buf_free(&s->slot[i]);
+    for (int i = 0; i < s->threads; i++)
+        ckpt_buf_free(&s->slot[i]);
     free(s->slot);
     pthread_cond_destroy(&s->wake);
     pthread_mutex_destroy(&s->lock);
@@ -57,7 +58,8 @@ void ckpt_sync_arrive(struct ckpt_sync *s)
     unsigned gen = s->generation;
     s->arrived++;
     save_if_complete(s);
-    while (s->generation == gen) pthread_cond_wait(&s->wake, &s->lock);
+    while (s->generation == gen)
+        pthread_cond_wait(&s->wake, &s->lock);
     pthread_mutex_unlock(&s->lock);
 }
 
@@ -71,16 +73,20 @@ void ckpt_sync_finish(struct ckpt_sync *s)
 
 void ckpt_save_run(struct ckpt_ctl *ctl, struct ckpt_buf *head, const struct ckpt_sync *s)
 {
-    for (int i = 0; i < s->threads; i++) ckpt_put_buf(head, &s->slot[i]);
-    if (ckpt_write_file(ctl->path, &ctl->id, head, ctl->err, sizeof ctl->err)) ctl->written = true;
-    else interrupt_request(); /* a run whose checkpoints fail would lose what it computes */
+    for (int i = 0; i < s->threads; i++)
+        ckpt_put_buf(head, &s->slot[i]);
+    if (ckpt_write_file(ctl->path, &ctl->id, head, ctl->err, sizeof ctl->err))
+        ctl->written = true;
+    else
+        interrupt_request(); /* a run whose checkpoints fail would lose what it computes */
     ckpt_buf_free(head);
 }
 
 struct ckpt_buf *ckpt_resume_threads(struct ckpt_buf *b, int threads)
 {
     struct ckpt_buf *t = xcalloc((size_t)threads, sizeof *t);
-    for (int i = 0; i < threads; i++) ckpt_get_buf(b, &t[i]);
+    for (int i = 0; i < threads; i++)
+        ckpt_get_buf(b, &t[i]);
     if (!b->short_read && b->pos == b->len) return t;
     free(t);
     return NULL;

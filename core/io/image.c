@@ -27,7 +27,8 @@ void img_accumulate(struct image *dst, const struct image *src, double scale)
 {
     ASSERT(dst->w == src->w && dst->h == src->h);
     size_t n = (size_t)dst->w * dst->h * 3;
-    for (size_t i = 0; i < n; i++) dst->px[i] += scale * src->px[i];
+    for (size_t i = 0; i < n; i++)
+        dst->px[i] += scale * src->px[i];
 }
 
 rgb img_get(const struct image *im, int x, int y)
@@ -53,8 +54,7 @@ static double srgb(double x)
     return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
 }
 
-static bool write_scaled(const struct image *im, double scale, bool tonemap, const char *path,
-                         char *err, size_t errlen)
+static bool write_scaled(const struct image *im, double scale, bool tonemap, const char *path, char *err, size_t errlen)
 {
     size_t n = (size_t)im->w * im->h * 3;
     struct write_job j = {im->w, im->h, xmalloc(n * sizeof(float))};
@@ -104,7 +104,8 @@ struct image *img_read(const char *path, char *err, size_t errlen)
     float *px;
     if (!img_read_rgb(path, &w, &h, &px, NULL, err, errlen)) return NULL;
     struct image *im = img_create(w, h);
-    for (size_t i = 0; i < (size_t)w * h * 3; i++) im->px[i] = px[i];
+    for (size_t i = 0; i < (size_t)w * h * 3; i++)
+        im->px[i] = px[i];
     free(px);
     return im;
 }
@@ -113,7 +114,8 @@ double img_mean_luminance(const struct image *im)
 {
     double s = 0;
     for (int y = 0; y < im->h; y++)
-        for (int x = 0; x < im->w; x++) s += luminance(img_get(im, x, y));
+        for (int x = 0; x < im->w; x++)
+            s += luminance(img_get(im, x, y));
     return s / ((double)im->w * im->h);
 }
 
@@ -122,6 +124,7 @@ double img_relmse(const struct image *a, const struct image *ref, double eps)
     ASSERT(a->w == ref->w && a->h == ref->h);
     size_t n = (size_t)a->w * a->h * 3;
     double s = 0;
-    for (size_t i = 0; i < n; i++) s += sqr(a->px[i] - ref->px[i]) / (sqr(ref->px[i]) + eps);
+    for (size_t i = 0; i < n; i++)
+        s += sqr(a->px[i] - ref->px[i]) / (sqr(ref->px[i]) + eps);
     return s / n;
 }

@@ -23,6 +23,7 @@ void merge_thread_results(const struct thread_results *t, struct image *img_out)
     struct merge m = {t, img_out};
     size_t px = (size_t)img_out->w * img_out->h;
     struct dist_buf bufs[1 + MERGE_MAX_EXTRA] = {{img_out->px, 3 * px * sizeof *img_out->px}};
-    for (int i = 0; i < t->nextra; i++) bufs[1 + i] = t->extra[i];
+    for (int i = 0; i < t->nextra; i++)
+        bufs[1 + i] = t->extra[i];
     dist_chain(bufs, 1 + t->nextra, add_threads, &m);
 }

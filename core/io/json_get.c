@@ -98,8 +98,7 @@ bool jget_bool(struct jctx *c, const cJSON *obj, const char *path, const char *k
     return true;
 }
 
-bool jget_string(struct jctx *c, const cJSON *obj, const char *path, const char *key, bool required,
-                 const char **out)
+bool jget_string(struct jctx *c, const cJSON *obj, const char *path, const char *key, bool required, const char **out)
 {
     char kp[JPATH_MAX];
     const cJSON *v = member(c, obj, path, key, required, kp);

@@ -33,8 +33,7 @@ bool jget_number(struct jctx *c, const cJSON *obj, const char *path, const char 
 bool jget_int(struct jctx *c, const cJSON *obj, const char *path, const char *key, bool required, int lo, int hi,
               int *out);
 bool jget_bool(struct jctx *c, const cJSON *obj, const char *path, const char *key, bool required, bool *out);
-bool jget_string(struct jctx *c, const cJSON *obj, const char *path, const char *key, bool required,
-                 const char **out);
+bool jget_string(struct jctx *c, const cJSON *obj, const char *path, const char *key, bool required, const char **out);
 /* A number (broadcast to all three, as Tungsten's Vec parsing does) or an array of 3 numbers. */
 bool jget_vec3(struct jctx *c, const cJSON *obj, const char *path, const char *key, bool required, vec3 *out);
 /* Same, for a value already fetched (path names the value itself). */

@@ -165,21 +165,30 @@ static bool parse_face(struct obj_state *st, char *s, long line, char *err, size
 
 static bool parse_line(struct obj_state *st, char *s, long line, char *err, size_t errlen)
 {
-    while (*s == ' ' || *s == '\t') s++;
+    while (*s == ' ' || *s == '\t')
+        s++;
     size_t kw = strcspn(s, " \t\r\n");
     char *rest = s + kw;
     double x[3] = {0, 0, 0};
     if (kw == 1 && s[0] == 'v') {
         if (parse_numbers(rest, x, 3, 3, line, err, errlen) < 0) return false;
-        if (st->pos.n >= MESH_MAX_ELEMS) return snprintf(err, errlen, "line %ld: more than %ld vertices (the renderer's limit)", line, LIMIT_MESH_ELEMS), false;
+        if (st->pos.n >= MESH_MAX_ELEMS)
+            return snprintf(err, errlen, "line %ld: more than %ld vertices (the renderer's limit)", line,
+                            LIMIT_MESH_ELEMS),
+                   false;
         list_push(&st->pos, x);
     } else if (kw == 2 && s[0] == 'v' && s[1] == 'n') {
         if (parse_numbers(rest, x, 3, 3, line, err, errlen) < 0) return false;
-        if (st->nrm.n >= MESH_MAX_ELEMS) return snprintf(err, errlen, "line %ld: more than %ld normals (the renderer's limit)", line, LIMIT_MESH_ELEMS), false;
+        if (st->nrm.n >= MESH_MAX_ELEMS)
+            return snprintf(err, errlen, "line %ld: more than %ld normals (the renderer's limit)", line,
+                            LIMIT_MESH_ELEMS),
+                   false;
         list_push(&st->nrm, x);
     } else if (kw == 2 && s[0] == 'v' && s[1] == 't') {
         if (parse_numbers(rest, x, 1, 3, line, err, errlen) < 0) return false;
-        if (st->tex.n >= MESH_MAX_ELEMS) return snprintf(err, errlen, "line %ld: more than %ld uvs (the renderer's limit)", line, LIMIT_MESH_ELEMS), false;
+        if (st->tex.n >= MESH_MAX_ELEMS)
+            return snprintf(err, errlen, "line %ld: more than %ld uvs (the renderer's limit)", line, LIMIT_MESH_ELEMS),
+                   false;
         list_push(&st->tex, x);
     } else if (kw == 1 && s[0] == 'f') {
         return parse_face(st, rest, line, err, errlen);
@@ -203,7 +212,8 @@ static void obj_state_free(struct obj_state *st)
 static vec3 *to_vec3(const struct vec_list *l)
 {
     vec3 *v = xmalloc((size_t)(l->n ? l->n : 1) * sizeof(vec3));
-    for (int i = 0; i < l->n; i++) v[i] = v3(l->v[3 * (size_t)i], l->v[3 * (size_t)i + 1], l->v[3 * (size_t)i + 2]);
+    for (int i = 0; i < l->n; i++)
+        v[i] = v3(l->v[3 * (size_t)i], l->v[3 * (size_t)i + 1], l->v[3 * (size_t)i + 2]);
     return v;
 }
 
@@ -235,8 +245,8 @@ bool mesh_load_obj(const char *path, struct raw_mesh *m, char *err, size_t errle
 bool mesh_read_obj(FILE *f, struct raw_mesh *m, char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
-    struct obj_state st = {.pos.dim = 3, .nrm.dim = 3, .tex.dim = 2, .out_p.dim = 3, .out_n.dim = 3,
-                           .out_uv.dim = 2, .all_n = true};
+    struct obj_state st = {
+        .pos.dim = 3, .nrm.dim = 3, .tex.dim = 2, .out_p.dim = 3, .out_n.dim = 3, .out_uv.dim = 2, .all_n = true};
     char *buf = NULL;
     size_t cap = 0;
     long line = 0;
@@ -271,7 +281,8 @@ bool mesh_read_obj(FILE *f, struct raw_mesh *m, char *err, size_t errlen)
 static uint64_t rd_u64(const unsigned char *b)
 {
     uint64_t v = 0;
-    for (int i = 7; i >= 0; i--) v = v << 8 | b[i];
+    for (int i = 7; i >= 0; i--)
+        v = v << 8 | b[i];
     return v;
 }
 

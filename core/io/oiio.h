@@ -23,8 +23,7 @@ bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char
  * header, before the texels are allocated; *px (w*h*nchan) is malloc'ed. *bits (if not NULL) gets the
  * file's bits per channel when its format is an integer one (8 for most PNG/JPEG, 16 for 16-bit
  * PNG/TIFF), else 0 (half or float: EXR, HDR, PFM, float TIFF). */
-bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err,
-                        size_t errlen);
+bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err, size_t errlen);
 /* Whether the module file is there, without opening it: tools that will write images check this
  * before a long run rather than fail at its end. */
 bool oiio_module_present(char *err, size_t errlen);
@@ -34,8 +33,8 @@ bool oiio_loaded(void);
 
 /* The module's entry points. Encoding fills a malloc'ed buffer with the file's bytes (format from
  * the extension of `path`, which is not touched); oiio_write writes it out. */
-bool oiio_module_encode(const char *path, int w, int h, int nchan, const float *px, unsigned char **bytes,
-                        size_t *len, char *err, size_t errlen);
+bool oiio_module_encode(const char *path, int w, int h, int nchan, const float *px, unsigned char **bytes, size_t *len,
+                        char *err, size_t errlen);
 bool oiio_module_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err,
                                size_t errlen);
 

@@ -1,7 +1,7 @@
 /* Opens the OpenImageIO module (oiio.so beside the executable) on first use; see oiio.h for why it
  * is not linked in. */
-#include "io/oiio.h"
 #include "base/util.h"
+#include "io/oiio.h"
 #include <dlfcn.h>
 #include <limits.h>
 #include <pthread.h>
@@ -50,7 +50,8 @@ static void open_module(void)
     if (!module_encode || !module_read) {
         module_encode = NULL;
         module_read = NULL;
-        snprintf(load_error, sizeof load_error, "%s lacks the oiio_module_* entry points; rebuild it with `make`", path);
+        snprintf(load_error, sizeof load_error, "%s lacks the oiio_module_* entry points; rebuild it with `make`",
+                 path);
     }
 }
 
@@ -88,8 +89,7 @@ bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char
     return ok;
 }
 
-bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err,
-                        size_t errlen)
+bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err, size_t errlen)
 {
     return ready(path, err, errlen) && module_read(path, w, h, nchan, px, bits, err, errlen);
 }

@@ -19,8 +19,8 @@ static inline bool texels_check_size(const char *path, long w, long h, long nc, 
         return false;
     }
     if (w > LIMIT_TEXTURE_SIDE || h > LIMIT_TEXTURE_SIDE || w * h > LIMIT_TEXTURE_TEXELS) {
-        snprintf(err, errlen, "%s: %ldx%ld texels, above the limit of %ld (16384x8192) in all and %d per side", path,
-                 w, h, LIMIT_TEXTURE_TEXELS, LIMIT_TEXTURE_SIDE);
+        snprintf(err, errlen, "%s: %ldx%ld texels, above the limit of %ld (16384x8192) in all and %d per side", path, w,
+                 h, LIMIT_TEXTURE_TEXELS, LIMIT_TEXTURE_SIDE);
         return false;
     }
     if (nc > LIMIT_TEXTURE_CHANNELS || w * h * nc > LIMIT_TEXTURE_VALUES) {

@@ -33,8 +33,10 @@ void bdpt_splats(const struct path_ctx *pc, struct sampler *s, struct scratch *w
                 w->tech_on[t] = true;
                 w->tech[t] = (struct splat){c.px, c.py, v};
             }
-            if (t == 1) splat_push(out, c.px, c.py, v);
-            else sum = vadd(sum, v);
+            if (t == 1)
+                splat_push(out, c.px, c.py, v);
+            else
+                sum = vadd(sum, v);
         }
     if (nz > 0) splat_push(out, w->cam[0].px, w->cam[0].py, sum);
 }
@@ -44,5 +46,6 @@ void bdpt_sample(const struct path_ctx *pc, struct sampler *s, struct scratch *w
     struct splat_list l;
     bdpt_splats(pc, s, w, &l);
     /* only the camera-pixel sum can be non-finite here: its terms were checked one by one */
-    for (int i = 0; i < l.n; i++) splat_finite(img, l.s[i].px, l.s[i].py, l.s[i].c, &w->nf.len[0]);
+    for (int i = 0; i < l.n; i++)
+        splat_finite(img, l.s[i].px, l.s[i].py, l.s[i].c, &w->nf.len[0]);
 }

@@ -44,7 +44,8 @@ void bdpt_tech_accumulate(struct bdpt_tech *dst, const struct bdpt_tech *src)
 {
     ASSERT(dst->k == src->k && dst->w == src->w && dst->h == src->h);
     size_t n = bdpt_tech_bytes(dst) / sizeof *dst->sum;
-    for (size_t i = 0; i < n; i++) dst->sum[i] += src->sum[i];
+    for (size_t i = 0; i < n; i++)
+        dst->sum[i] += src->sum[i];
 }
 
 double bdpt_tech_var(double sum, double sq, long n, double N)
@@ -78,8 +79,10 @@ void bdpt_tech_rows(const struct bdpt_tech *a, long n, const struct image *full,
         }
         qsort(px, np, sizeof *px, cmp_desc);
         double top = 0;
-        for (size_t p = 0; p < (np + 99) / 100; p++) top += px[p];
-        rows[t - 1] = (struct bdpt_tech_row){a->k + 1 - t, t, mean / (double)np, rv / (double)np, rv > 0 ? top / rv : 0};
+        for (size_t p = 0; p < (np + 99) / 100; p++)
+            top += px[p];
+        rows[t - 1] =
+            (struct bdpt_tech_row){a->k + 1 - t, t, mean / (double)np, rv / (double)np, rv > 0 ? top / rv : 0};
     }
     free(px);
 }

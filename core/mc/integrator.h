@@ -12,7 +12,7 @@
 struct scratch {
     struct vertex cam[MAX_SUBPATH_VERTS], emi[MAX_SUBPATH_VERTS];
     struct nonfinite nf; /* contributions dropped because they were NaN or infinite */
-    int nz, ny;     /* vertex counts of the subpaths bdpt_splats last walked (per-technique images) */
+    int nz, ny;          /* vertex counts of the subpaths bdpt_splats last walked (per-technique images) */
     /* connections evaluated and those with a contribution, since the caller last took them (the
      * MMLT paper's §5 non-zero ratio per connection; mcmc/chain_loop.c moves them to the stats) */
     long conn_tried, conn_nonzero;

@@ -25,18 +25,20 @@
 static inline void add_term(rgb *sum, rgb v, struct nonfinite *nf, int k)
 {
     v = nonfinite_inject(v);
-    if (vfinite(v)) *sum = vadd(*sum, v);
-    else nf->len[k]++;
+    if (vfinite(v))
+        *sum = vadd(*sum, v);
+    else
+        nf->len[k]++;
 }
 
 struct pt_vertex {
-    struct vertex v;            /* kind, p, ng, sh, front, prim, bc, wi (world); VK_ENV: wi = -direction */
-    vec3 wi;                    /* v.wi in the shading frame */
-    rgb beta;                   /* throughput arriving at the vertex */
-    double pdf_sa;              /* solid-angle density of the direction that reached it */
-    bool after_delta;           /* ... which a delta lobe chose (or the camera: no light sample there) */
-    double dist2;               /* squared length of that segment */
-    double eps;                 /* ray_eps(v.p) */
+    struct vertex v;  /* kind, p, ng, sh, front, prim, bc, wi (world); VK_ENV: wi = -direction */
+    vec3 wi;          /* v.wi in the shading frame */
+    rgb beta;         /* throughput arriving at the vertex */
+    double pdf_sa;    /* solid-angle density of the direction that reached it */
+    bool after_delta; /* ... which a delta lobe chose (or the camera: no light sample there) */
+    double dist2;     /* squared length of that segment */
+    double eps;       /* ray_eps(v.p) */
 };
 
 /* Emitted radiance reaching the camera through z, MIS-weighted against light sampling. */

@@ -58,7 +58,7 @@ struct job {
     const struct render_opts *o;
     struct image **img;
     struct bdpt_tech **tech; /* per thread, with o->tech_k */
-    struct nonfinite *nf; /* per thread */
+    struct nonfinite *nf;    /* per thread */
     long *samples;
     struct progress prog;
     int first, count; /* samples first .. first + count - 1 of every pixel */
@@ -66,7 +66,7 @@ struct job {
     int g0, stride;   /* this rank's first global thread; the job's threads (core/base/dist.h) */
     /* --time: passes of one sample per pixel until the budget */
     struct pass_barrier passes;
-    int spp;          /* passes done */
+    int spp; /* passes done */
     double t0;
     /* checkpoints (o->ckpt): slots and rendezvous; on resume each thread's saved state */
     struct ckpt_sync sync;
@@ -135,7 +135,8 @@ static void worker(int tid, void *p)
     struct job *j = p;
     const struct scene *sc = j->sc;
     const struct render_opts *o = j->o;
-    struct path_ctx pc = {.sc = sc, .max_length = o->max_length, .min_length = o->min_length, .only_s = o->only_s, .only_t = o->only_t};
+    struct path_ctx pc = {
+        .sc = sc, .max_length = o->max_length, .min_length = o->min_length, .only_s = o->only_s, .only_t = o->only_t};
     struct scratch *w = xmalloc(sizeof *w);
     struct image *img = j->img[tid];
     int W = camera_film_width(&sc->cam), H = camera_film_height(&sc->cam);
@@ -164,8 +165,10 @@ static void worker(int tid, void *p)
                     } else {
                         rng_seed(&s.r, o->seed, cell * j->key + (uint64_t)at.i);
                     }
-                    if (o->method == METHOD_PT) pt_sample(&pc, &s.base, w, img);
-                    else bdpt_sample(&pc, &s.base, w, img);
+                    if (o->method == METHOD_PT)
+                        pt_sample(&pc, &s.base, w, img);
+                    else
+                        bdpt_sample(&pc, &s.base, w, img);
                     if (j->tech) bdpt_tech_add(j->tech[tid], w);
                     done++;
                 }
@@ -237,9 +240,13 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     ASSERT(o->max_length >= 1 && o->max_length <= MAX_PATH_LENGTH); /* the walks' arrays hold no more */
     struct render_opts opts = *o;
     opts.threads = T;
-    struct job j = {.sc = sc, .o = &opts, .img = xcalloc((size_t)T, sizeof(struct image *)),
-                    .nf = xcalloc((size_t)T, sizeof(struct nonfinite)), .samples = xcalloc((size_t)T, sizeof(long)),
-                    .g0 = dist_thread0(T), .stride = dist_size() * T};
+    struct job j = {.sc = sc,
+                    .o = &opts,
+                    .img = xcalloc((size_t)T, sizeof(struct image *)),
+                    .nf = xcalloc((size_t)T, sizeof(struct nonfinite)),
+                    .samples = xcalloc((size_t)T, sizeof(long)),
+                    .g0 = dist_thread0(T),
+                    .stride = dist_size() * T};
     for (int i = 0; i < T; i++) {
         j.img[i] = img_create(W, H);
         j.img[i]->tent = sc->cam.filter == FILTER_TENT;
@@ -247,7 +254,8 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     if (o->tech_k > 0) {
         ASSERT(o->method == METHOD_BDPT && o->tech_k <= o->max_length);
         j.tech = xcalloc((size_t)T, sizeof *j.tech);
-        for (int i = 0; i < T; i++) j.tech[i] = bdpt_tech_create(o->tech_k, W, H, sc->cam.filter == FILTER_TENT);
+        for (int i = 0; i < T; i++)
+            j.tech[i] = bdpt_tech_create(o->tech_k, W, H, sc->cam.filter == FILTER_TENT);
     }
     double t0 = budget_seconds(o->cpu_time, T), elapsed0 = 0;
     if (o->ckpt && o->ckpt->resume) {
@@ -279,7 +287,8 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         spp = j.spp;
     } else {
         int rows = 0; /* this rank's */
-        for (int y = 0; y < camera_film_height(&sc->cam); y++) rows += y % j.stride >= j.g0 && y % j.stride < j.g0 + T;
+        for (int y = 0; y < camera_film_height(&sc->cam); y++)
+            rows += y % j.stride >= j.g0 && y % j.stride < j.g0 + T;
         progress_init(&j.prog, method_name(o->method), rows, o->progress);
         j.count = spp;
         j.key = (uint64_t)spp;
@@ -304,7 +313,8 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
     }
     merge_thread_results(&tr, out);
     if (j.tech)
-        for (int i = 0; i < T; i++) bdpt_tech_free(j.tech[i]);
+        for (int i = 0; i < T; i++)
+            bdpt_tech_free(j.tech[i]);
     free(j.tech);
     /* over the job's threads: integers, exact in any order */
     struct {

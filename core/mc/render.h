@@ -41,12 +41,12 @@ struct render_opts {
 
 struct render_stats {
     long samples;
-    int spp;      /* samples per pixel taken (the passes of a time-budgeted run) */
+    int spp; /* samples per pixel taken (the passes of a time-budgeted run) */
     double seconds;
-    long nonfinite;               /* samples' contributions dropped as NaN or infinite */
+    long nonfinite;                 /* samples' contributions dropped as NaN or infinite */
     struct nonfinite nonfinite_len; /* the same by path length (path/splat.h) */
-    bool partial; /* interrupted: rows not reached (in the last pass, under a time budget) lack samples */
-    bool resume_failed; /* the checkpoint's state did not fit this run: nothing was rendered */
+    bool partial;           /* interrupted: rows not reached (in the last pass, under a time budget) lack samples */
+    bool resume_failed;     /* the checkpoint's state did not fit this run: nothing was rendered */
     struct bdpt_tech *tech; /* with tech_k: the job's per-technique sums (mc/bdpt_tech.h; caller frees) */
 };
 

@@ -23,14 +23,14 @@ struct chain {
     struct splat_list cur;
     double f;
     int k, tech;
-    double scale;      /* b_k / P(k): the chain's splat weight */
-    double xsum;       /* MCTLS: sum over techniques of the current numbers' targets */
-    double pending;    /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
+    double scale;   /* b_k / P(k): the chain's splat weight */
+    double xsum;    /* MCTLS: sum over techniques of the current numbers' targets */
+    double pending; /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
     bool xsum_valid;
-    struct ctrl_path *path; /* controlled steps and angle statistics: the current subpaths */
-    struct mmlt_path *x;    /* PITP: the current path in its technique's form (swapped with a spare on accept) */
-    long *dropped;          /* where its weighted splats that come out non-finite are counted (a
-                             * tiny target's weight can overflow): its length's cell, PSSMLT's [0] */
+    struct ctrl_path *path;     /* controlled steps and angle statistics: the current subpaths */
+    struct mmlt_path *x;        /* PITP: the current path in its technique's form (swapped with a spare on accept) */
+    long *dropped;              /* where its weighted splats that come out non-finite are counted (a
+                                 * tiny target's weight can overflow): its length's cell, PSSMLT's [0] */
     void *state[MUTATIONS_MAX]; /* each mutation's own, by its place in the registry (or NULL) */
 };
 
@@ -38,13 +38,13 @@ struct chain {
  * the proposal's splats and path) are rewritten by every proposal before they are read, so they
  * are not part of it. */
 struct mlt_thread {
-    struct chain *ch;  /* nk chains; path and x allocated as the run needs them */
+    struct chain *ch; /* nk chains; path and x allocated as the run needs them */
     int nk;
-    rng *r;            /* length selection, step kind, acceptance */
-    long *n;           /* iterations done */
+    rng *r;  /* length selection, step kind, acceptance */
+    long *n; /* iterations done */
     struct nonfinite *nonfinite;
     struct mlt_stats *st;
-    long *ctrl_fail;   /* [2]: forward, reverse */
+    long *ctrl_fail; /* [2]: forward, reverse */
     struct image *img;
     struct angle_acc *angle; /* or NULL */
     struct tech_acc *tech;   /* or NULL */

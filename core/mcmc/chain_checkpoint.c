@@ -68,7 +68,8 @@ void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct ml
 {
     b->len = 0; /* the slot's previous state, its memory kept */
     CKPT_PUT(b, t->nk);
-    for (int i = 0; i < t->nk; i++) put_chain(b, sc, &t->ch[i]);
+    for (int i = 0; i < t->nk; i++)
+        put_chain(b, sc, &t->ch[i]);
     CKPT_PUT(b, *t->r);
     CKPT_PUT(b, *t->n);
     CKPT_PUT(b, *t->nonfinite);

@@ -12,7 +12,8 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
 {
     const struct mlt_opts *o = j->o;
     *wk = (struct worker){.job = j, .opts = o, .tid = tid, .global_tid = j->g0 + tid};
-    wk->path_ctx = (struct path_ctx){.sc = j->sc, .max_length = o->max_length, .min_length = o->min_length, .max_heuristic = o->max_heuristic};
+    wk->path_ctx = (struct path_ctx){
+        .sc = j->sc, .max_length = o->max_length, .min_length = o->min_length, .max_heuristic = o->max_heuristic};
     wk->scratch = xmalloc(sizeof *wk->scratch);
     wk->scratch->nf = (struct nonfinite){{0}};
     wk->scratch->tech_k = 0; /* the MCMC methods split states by technique themselves (tech_split.h) */
@@ -28,10 +29,12 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
     wk->spare = xmalloc(sizeof *wk->spare);
     wk->pitp_scratch = wk->pitp ? xmalloc(sizeof *wk->pitp_scratch) : NULL;
     if (wk->pitp_scratch) pitp_scratch_init(wk->pitp_scratch, j->sc);
-    rng_seed(&wk->r, o->seed, 0x9E3779B97F4A7C15ULL + (uint64_t)wk->global_tid); /* streams and budgets are the job's global thread's */
+    rng_seed(&wk->r, o->seed,
+             0x9E3779B97F4A7C15ULL + (uint64_t)wk->global_tid); /* streams and budgets are the job's global thread's */
     wk->track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     wk->ctrl = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *wk->ctrl) : NULL;
-    wk->saved = (struct mlt_thread){wk->ch, j->nk, &wk->r, &wk->n, &wk->scratch->nf, wk->st, wk->ctrl_fail, wk->img, wk->angle, wk->tech};
+    wk->saved = (struct mlt_thread){wk->ch, j->nk,         &wk->r,  &wk->n,    &wk->scratch->nf,
+                                    wk->st, wk->ctrl_fail, wk->img, wk->angle, wk->tech};
 }
 
 /* Every chain from a seed sample (seed_pass.c), or set up for the state a checkpoint left it in. */
@@ -62,7 +65,8 @@ static struct chain *pick_chain(struct worker *wk)
     int kk = 0;
     if (j->nk > 1) {
         double u = rng_uniform(&wk->r) * j->kcdf[j->nk];
-        while (kk < j->nk - 1 && j->kcdf[kk + 1] <= u) kk++;
+        while (kk < j->nk - 1 && j->kcdf[kk + 1] <= u)
+            kk++;
     }
     return &wk->ch[kk];
 }
@@ -82,15 +86,20 @@ static bool within_budget(const struct worker *wk, long budget)
 {
     long n = wk->n;
     if ((n & 255) == 0 && interrupted()) return false;
-    if (wk->opts->seconds > 0) return (n & 255) != 0 || budget_seconds(wk->opts->cpu_time, wk->opts->threads) - wk->job->t0 < wk->opts->seconds;
+    if (wk->opts->seconds > 0)
+        return (n & 255) != 0 ||
+               budget_seconds(wk->opts->cpu_time, wk->opts->threads) - wk->job->t0 < wk->opts->seconds;
     return n < budget;
 }
 
 static void report_progress(struct worker *wk)
 {
     if ((wk->n & 4095) != 4095) return;
-    if (wk->opts->seconds <= 0) progress_add(&wk->job->prog, 4096);
-    else if (wk->tid == 0) progress_set(&wk->job->prog, (long)(1000 * (budget_seconds(wk->opts->cpu_time, wk->opts->threads) - wk->job->t0)));
+    if (wk->opts->seconds <= 0)
+        progress_add(&wk->job->prog, 4096);
+    else if (wk->tid == 0)
+        progress_set(&wk->job->prog,
+                     (long)(1000 * (budget_seconds(wk->opts->cpu_time, wk->opts->threads) - wk->job->t0)));
 }
 
 /* The thread's final state into its checkpoint slot, its chains' owed splats, its counts. */

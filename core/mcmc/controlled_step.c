@@ -58,10 +58,12 @@ static bool delta_lobe_dir(const struct bsdf_ctx *bc, vec3 wi, vec3 w, vec3 *out
     double best = -2;
     for (int m = 0; m < 1 << k; m++) {
         double probe[SAMPLER_BLOCK];
-        for (int d = 0; d < SAMPLER_BLOCK; d++) probe[d] = (m >> (d < k ? d : k - 1)) & 1 ? 0x1.fffffffffffffp-1 : 0.0;
+        for (int d = 0; d < SAMPLER_BLOCK; d++)
+            probe[d] = (m >> (d < k ? d : k - 1)) & 1 ? 0x1.fffffffffffffp-1 : 0.0;
         struct block_io in = {{&bio_ops, 0, 0, 0}, probe, 1, NULL};
         struct bsdf_sample bs;
-        if (bsdf_sample(bc, wi, &in.base, TRANSPORT_RADIANCE, &bs) && (bs.wo.z > 0) == (w.z > 0) && vdot(bs.wo, w) > best) {
+        if (bsdf_sample(bc, wi, &in.base, TRANSPORT_RADIANCE, &bs) && (bs.wo.z > 0) == (w.z > 0) &&
+            vdot(bs.wo, w) > best) {
             best = vdot(bs.wo, w);
             *out = bs.wo;
         }
@@ -98,7 +100,8 @@ static void build_block(struct ctrl_sampler *cs, int st, int i)
     int n;
     subpath(cs->cur, st, &x, &n);
     b->nv = 0;
-    if (i + 1 >= n || !invert_at(&cs->prop[st][i], edge_dir(&x[i], &x[i + 1], &(double){0}), &cs->pss->r, b->up, &b->nv)) {
+    if (i + 1 >= n ||
+        !invert_at(&cs->prop[st][i], edge_dir(&x[i], &x[i + 1], &(double){0}), &cs->pss->r, b->up, &b->nv)) {
         cs->fail = CTRL_FAIL_FORWARD;
         return;
     }
@@ -147,7 +150,8 @@ void ctrl_begin(struct ctrl_sampler *cs, struct pss_sampler *p, const struct ctr
         for (int i = 1; i + 1 < n; i++) {
             struct ctrl_block *b = &cs->blk[st][i];
             b->nu = x[i].bc.b ? x[i].bc.b->dims : 0;
-            for (int d = 0; d < b->nu; d++) b->u[d] = pss_current(p, st, i * SAMPLER_BLOCK + d);
+            for (int d = 0; d < b->nu; d++)
+                b->u[d] = pss_current(p, st, i * SAMPLER_BLOCK + d);
         }
     }
 }
@@ -169,7 +173,8 @@ double ctrl_finish(struct ctrl_sampler *cs, bool complete)
                 cs->fail = CTRL_FAIL_REVERSE;
                 return 0;
             }
-            for (int d = 0; d < nvp; d++) log_rev += ctrl_log_phi(b->vp[d], b->u[d], cs->sigma);
+            for (int d = 0; d < nvp; d++)
+                log_rev += ctrl_log_phi(b->vp[d], b->u[d], cs->sigma);
         }
     }
     return exp(log_rev - cs->log_fwd);

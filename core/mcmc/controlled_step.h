@@ -62,8 +62,8 @@ struct ctrl_sampler {
     enum small_step kind;
     double sigma;
     enum ctrl_fail fail;
-    double log_fwd;                                  /* log T(u -> v), blocks >= 1 */
-    struct ctrl_block blk[2][MAX_SUBPATH_VERTS];     /* [stream][vertex] */
+    double log_fwd;                              /* log T(u -> v), blocks >= 1 */
+    struct ctrl_block blk[2][MAX_SUBPATH_VERTS]; /* [stream][vertex] */
 };
 
 /* Starts a proposal from the current state (pss after pss_begin(p, false), cur its subpaths):

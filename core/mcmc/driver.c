@@ -81,7 +81,8 @@ static void job_alloc(struct run_job *rj, const struct scene *sc)
     rj->ctrl_fail = xcalloc((size_t)T, sizeof *rj->ctrl_fail);
     if (o->angle_stats) {
         rj->angle = xcalloc((size_t)T, sizeof *rj->angle);
-        for (int i = 0; i < T; i++) angle_acc_init(&rj->angle[i], W, H);
+        for (int i = 0; i < T; i++)
+            angle_acc_init(&rj->angle[i], W, H);
     }
     if (o->technique_k) rj->tech = tech_acc_alloc(T, o->technique_k, W, H, sc->cam.filter == FILTER_TENT);
     for (int i = 0; i < T; i++) {
@@ -93,12 +94,16 @@ static void job_alloc(struct run_job *rj, const struct scene *sc)
 static void job_free(struct run_job *rj)
 {
     int T = rj->o->threads;
-    for (int i = 0; i < T; i++) img_destroy(rj->img[i]);
+    for (int i = 0; i < T; i++)
+        img_destroy(rj->img[i]);
     if (rj->angle)
-        for (int i = 0; i < T; i++) angle_acc_free(&rj->angle[i]);
+        for (int i = 0; i < T; i++)
+            angle_acc_free(&rj->angle[i]);
     if (rj->tech)
-        for (int i = 0; i < T; i++) tech_acc_free(&rj->tech[i]);
-    for (int kk = 0; kk < rj->nk; kk++) free((void *)rj->cdf[kk]);
+        for (int i = 0; i < T; i++)
+            tech_acc_free(&rj->tech[i]);
+    for (int kk = 0; kk < rj->nk; kk++)
+        free((void *)rj->cdf[kk]);
     free(rj->img);
     free(rj->stats);
     free(rj->done);

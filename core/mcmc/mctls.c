@@ -17,7 +17,7 @@ bool use_mctls(const struct mlt_opts *o, int k)
 double mctls_accept(double ysum, double xsum) { return xsum > 0 ? fmin(1.0, ysum / xsum) : 1.0; }
 
 double mctls_trials(const struct path_ctx *pc, struct sampler *s, struct scratch *w, int k, double *pi,
-                             struct splat_list *sp)
+                    struct splat_list *sp)
 {
     int nz = walk_camera(pc, s, w->cam, k + 1);
     int ny = walk_emitter(pc, s, w->emi, k);
@@ -130,14 +130,18 @@ double mctls_step(const struct path_ctx *pc, const struct mlt_opts *o, struct ch
 }
 
 /* As a mutation (mutation.h): the large steps of the lengths MCTLS is chosen for. */
-static bool applies(const struct worker *wk, const struct chain *c, bool large) { return large && use_mctls(wk->opts, c->k); }
+static bool applies(const struct worker *wk, const struct chain *c, bool large)
+{
+    return large && use_mctls(wk->opts, c->k);
+}
 
 static void step(struct worker *wk, struct chain *c, bool large, double t_start)
 {
     (void)large;
     bool acc, changed, nonzero;
     wk->scratch->conn_tried = wk->scratch->conn_nonzero = 0;
-    double a = mctls_step(&wk->path_ctx, wk->opts, c, wk->scratch, wk->mctls_buf, &wk->r, wk->img, &acc, &changed, &nonzero);
+    double a =
+        mctls_step(&wk->path_ctx, wk->opts, c, wk->scratch, wk->mctls_buf, &wk->r, wk->img, &acc, &changed, &nonzero);
     mutation_take_connections(wk);
     stats_record(wk->st, PROPOSAL_MCTLS, c->k, changed, a, acc, nonzero, mutation_elapsed(wk, t_start));
 }

@@ -48,9 +48,9 @@ struct mlt_opts {
     enum mlt_method method;
     struct pss_opts pss;
     double p_large;
-    long mutations;        /* total over all threads; ignored when seconds > 0 */
-    double seconds;        /* equal-time budget */
-    bool cpu_time;         /* seconds are CPU seconds per thread (budget_seconds, parallel.h) */
+    long mutations; /* total over all threads; ignored when seconds > 0 */
+    double seconds; /* equal-time budget */
+    bool cpu_time;  /* seconds are CPU seconds per thread (budget_seconds, parallel.h) */
     long seed_paths;
     /* MMLT/PITP: b_k from BDPT samples, one per seed path and length (all k + 1 techniques, the MMLT
      * paper's §4 "Initialization"), instead of from the seed pool's one-technique targets; the pool
@@ -59,9 +59,9 @@ struct mlt_opts {
     uint64_t seed;
     int threads;
     int max_length;
-    int min_length;        /* paths shorter than this (segments) are left out */
+    int min_length; /* paths shorter than this (segments) are left out */
     bool progress;
-    enum large_step large_step;  /* MMLT only */
+    enum large_step large_step; /* MMLT only */
     int hybrid_length;
     /* MCTLS's trials, for analysis (fig4.5): 0 = every technique once (Eq. 4.7, the limit of many
      * trials); N > 0 = Eq. 4.5 with N trials whose techniques are drawn uniformly with replacement,
@@ -72,35 +72,35 @@ struct mlt_opts {
      * and connection counts are not those of Eq. 4.7's. */
     int mctls_tries;
     bool mctls_count_t0;
-    bool uniform_lengths;        /* MMLT: every length gets the same share of mutations, not b_k */
-    bool time_proposals;         /* record each proposal's time in the statistics (two clock reads) */
-    bool max_heuristic;          /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */
+    bool uniform_lengths; /* MMLT: every length gets the same share of mutations, not b_k */
+    bool time_proposals;  /* record each proposal's time in the statistics (two clock reads) */
+    bool max_heuristic;   /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */
     /* MMLT's small step: the lazy primary-sample-space step, or thesis §5.3's controlled step
      * (Alg. 4) or root perturbation (Alg. 3), see controlled_step.h. Controlled and root need the
      * Gaussian kernel without --cdc, and MMLT large steps. */
     enum small_step small_step;
-    bool angle_stats;            /* MMLT: angle change of every small step (angle_change.h) */
-    bool ctrl_unit_ratio;        /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
+    bool angle_stats;     /* MMLT: angle change of every small step (angle_change.h) */
+    bool ctrl_unit_ratio; /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
     /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a mutation
      * budget a resumed run ends bit-identical to an uninterrupted one; with a time budget it runs
      * for what the checkpointed run had left. The seed pass is not checkpointed (a checkpoint
      * holds the normalisation it found). */
     struct ckpt_ctl *ckpt;
-    int technique_k;             /* > 0: per-technique images of this path length (pssmlt, mmlt; tech_image.h) */
+    int technique_k; /* > 0: per-technique images of this path length (pssmlt, mmlt; tech_image.h) */
 };
 
 struct mlt_result {
-    struct image *img;     /* final units, like render_mc */
+    struct image *img; /* final units, like render_mc */
     struct mlt_stats stats;
-    double b;              /* total normalisation sum_k b_k */
+    double b; /* total normalisation sum_k b_k */
     double b_k[MAX_PATH_LENGTH + 1];
     /* The seed pass's relative standard errors: of b and of each b_k (sd / (mean sqrt n) over the
      * seed paths; 0 where b_k is 0). They move every MCMC image's mean, and a length's share. */
     double b_rse, b_k_rse[MAX_PATH_LENGTH + 1];
     long mutations;
     double seconds, seed_seconds;
-    long nonfinite;        /* contributions dropped as NaN or infinite; by length in stats.nonfinite */
-    bool partial;          /* interrupted: fewer mutations than asked (the image stays unbiased) */
+    long nonfinite;          /* contributions dropped as NaN or infinite; by length in stats.nonfinite */
+    bool partial;            /* interrupted: fewer mutations than asked (the image stays unbiased) */
     struct angle_acc *angle; /* with angle_stats */
     long ctrl_fail_forward, ctrl_fail_reverse; /* controlled steps: impossible inversions */
     struct tech_acc *tech;                     /* with technique_k */

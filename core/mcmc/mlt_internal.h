@@ -33,7 +33,7 @@ struct run_job {
     struct tech_acc *tech;   /* per thread, with technique_k */
     long (*ctrl_fail)[2];    /* per thread: forward, reverse */
     long *done;
-    int g0, stride;          /* this rank's first global thread; the job's threads (base/dist.h) */
+    int g0, stride; /* this rank's first global thread; the job's threads (base/dist.h) */
     double t0;
     struct progress prog;
     /* checkpoints (o->ckpt): the rendezvous, the run's normalisation, and on resume each thread's
@@ -50,27 +50,27 @@ struct run_job {
 struct worker {
     struct run_job *job;
     const struct mlt_opts *opts;
-    int tid, global_tid;          /* the thread, and the job's global thread (streams, budgets) */
-    struct path_ctx path_ctx;     /* the scene and path lengths the walks and connections use */
-    struct chain *ch;             /* job->nk chains */
-    rng r;                        /* length selection, step kind, acceptance */
-    long n;                       /* iterations done */
+    int tid, global_tid;      /* the thread, and the job's global thread (streams, budgets) */
+    struct path_ctx path_ctx; /* the scene and path lengths the walks and connections use */
+    struct chain *ch;         /* job->nk chains */
+    rng r;                    /* length selection, step kind, acceptance */
+    long n;                   /* iterations done */
     struct mlt_stats *st;
     struct image *img;
-    struct tech_acc *tech;        /* or NULL */
-    struct angle_acc *angle;      /* or NULL */
-    long *ctrl_fail;              /* [2]: forward, reverse */
+    struct tech_acc *tech;   /* or NULL */
+    struct angle_acc *angle; /* or NULL */
+    long *ctrl_fail;         /* [2]: forward, reverse */
     bool pitp, multiplexed;
-    bool track;                   /* chains keep their subpaths (controlled steps, angle statistics) */
-    int tech_before;              /* the current chain's technique when the iteration began */
+    bool track;      /* chains keep their subpaths (controlled steps, angle statistics) */
+    int tech_before; /* the current chain's technique when the iteration began */
     struct mlt_thread saved;
     /* scratch */
-    struct scratch *scratch;      /* walks and connections of the proposal being traced */
-    struct splat_list prop;       /* the proposal's splats */
-    struct mmlt_path *spare;      /* the proposal's path; under PITP swapped with the chain's on accept */
+    struct scratch *scratch; /* walks and connections of the proposal being traced */
+    struct splat_list prop;  /* the proposal's splats */
+    struct mmlt_path *spare; /* the proposal's path; under PITP swapped with the chain's on accept */
     struct mctls_buf *mctls_buf;
     struct pitp_scratch *pitp_scratch; /* PITP only */
-    struct ctrl_sampler *ctrl;    /* controlled and root small steps only */
+    struct ctrl_sampler *ctrl;         /* controlled and root small steps only */
 };
 
 /* The seed pass's stream of sample i for chain index kk: the chain start reproduces the sample. */

@@ -18,7 +18,10 @@ unsigned mlt_method_bit(const char *method)
     return 0;
 }
 
-static unsigned method_bit(enum mlt_method m) { return m == MLT_PSSMLT ? APPLIES_PSSMLT : m == MLT_MMLT ? APPLIES_MMLT : APPLIES_PITP; }
+static unsigned method_bit(enum mlt_method m)
+{
+    return m == MLT_PSSMLT ? APPLIES_PSSMLT : m == MLT_MMLT ? APPLIES_MMLT : APPLIES_PITP;
+}
 
 /* ---- the checks between options (mlt_render's; the messages name what each needs) ---- */
 
@@ -26,14 +29,17 @@ static bool small_step_conflict(const struct mlt_opts *o, char *err, size_t errl
 {
     /* the reverse density needs the Gaussian's (controlled_step.h); MCTLS does not keep the
      * current subpaths; --cdc would make the kernel singular */
-    if (o->method != MLT_PSSMLT && o->large_step == LARGE_MMLT && o->pss.kernel == KERNEL_GAUSSIAN && !o->pss.cdc) return false;
-    snprintf(err, errlen, "controlled and root small steps need mmlt or pitp, MMLT large steps, the Gaussian kernel and no --cdc");
+    if (o->method != MLT_PSSMLT && o->large_step == LARGE_MMLT && o->pss.kernel == KERNEL_GAUSSIAN && !o->pss.cdc)
+        return false;
+    snprintf(err, errlen,
+             "controlled and root small steps need mmlt or pitp, MMLT large steps, the Gaussian kernel and no --cdc");
     return true;
 }
 
 static bool technique_conflict(const struct mlt_opts *o, char *err, size_t errlen)
 {
-    if (o->method == MLT_PITP || o->large_step != LARGE_MMLT || o->technique_k < o->min_length || o->technique_k > o->max_length) {
+    if (o->method == MLT_PITP || o->large_step != LARGE_MMLT || o->technique_k < o->min_length ||
+        o->technique_k > o->max_length) {
         snprintf(err, errlen,
                  "technique images need pssmlt or mmlt with MMLT large steps and a length within "
                  "--min-length..--max-length");
@@ -83,8 +89,8 @@ const struct mlt_option mlt_options[] = {
      .numbers = true, .help = "small-step kernel (default kelemen: s1 = 1/1024, s2 = 1/64)",
      .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 2, .csv_key = "kernel"},
     {"sigma", "--sigma", MLT_OPTION_DOUBLE, FIELD(pss.sigma), .lo = 1e-9, .hi = 1, .arg = "S", .methods = APPLIES_MCMC,
-     .numbers = true, .help = "gaussian small-step standard deviation (default 1/64)", .csv_group = MLT_CSV_BEFORE_COUNTS,
-     .csv_pos = 7, .csv_key = "sigma"},
+     .numbers = true, .help = "gaussian small-step standard deviation (default 1/64)",
+     .csv_group = MLT_CSV_BEFORE_COUNTS, .csv_pos = 7, .csv_key = "sigma"},
     {"rap", "--rap", MLT_OPTION_FLAG, FIELD(pss.rap), .methods = APPLIES_MCMC, .numbers = true,
      .help = "resolution-aware proposals: image steps corrected for aspect ratio", .csv_group = MLT_CSV_AFTER_COUNTS,
      .csv_pos = 3, .csv_key = "rap"},
@@ -136,8 +142,8 @@ const struct mlt_option mlt_options[] = {
      .methods = APPLIES_MULTIPLEXED, .numbers = true, .help = "MCTLS trials (mlt.h)", .conflict = mctls_conflict},
     {"mctls_count_t0", NULL, MLT_OPTION_FLAG, FIELD(mctls_count_t0), .methods = APPLIES_MULTIPLEXED, .numbers = true,
      .help = "MCTLS trials among k + 2 techniques (mlt.h)", .conflict = mctls_conflict},
-    {"ctrl_unit_ratio", NULL, MLT_OPTION_FLAG, FIELD(ctrl_unit_ratio), .methods = APPLIES_MULTIPLEXED,
-     .numbers = true, .help = "tests only: a broken controlled step"},
+    {"ctrl_unit_ratio", NULL, MLT_OPTION_FLAG, FIELD(ctrl_unit_ratio), .methods = APPLIES_MULTIPLEXED, .numbers = true,
+     .help = "tests only: a broken controlled step"},
     {"time_proposals", NULL, MLT_OPTION_FLAG, FIELD(time_proposals), .methods = APPLIES_MCMC,
      .help = "each proposal's time in the statistics"},
     /* what bin/render's shared options (pt and bdpt read them too) set */
@@ -149,10 +155,10 @@ const struct mlt_option mlt_options[] = {
      .numbers = true, .help = "maximum path length"},
     {"min_length", NULL, MLT_OPTION_INT, FIELD(min_length), .lo = 0, .hi = MAX_PATH_LENGTH, .methods = APPLIES_MCMC,
      .numbers = true, .help = "minimum path length"},
-    {"mutations", NULL, MLT_OPTION_INT, FIELD(mutations), .lo = 0, .hi = 1e18, .methods = APPLIES_MCMC,
-     .numbers = true, .help = "mutation budget over all threads"},
-    {"seconds", NULL, MLT_OPTION_DOUBLE, FIELD(seconds), .lo = 0, .hi = 1e9, .methods = APPLIES_MCMC,
-     .numbers = true, .help = "time budget"},
+    {"mutations", NULL, MLT_OPTION_INT, FIELD(mutations), .lo = 0, .hi = 1e18, .methods = APPLIES_MCMC, .numbers = true,
+     .help = "mutation budget over all threads"},
+    {"seconds", NULL, MLT_OPTION_DOUBLE, FIELD(seconds), .lo = 0, .hi = 1e9, .methods = APPLIES_MCMC, .numbers = true,
+     .help = "time budget"},
     {"cpu_time", NULL, MLT_OPTION_FLAG, FIELD(cpu_time), .methods = APPLIES_MCMC, .numbers = true,
      .help = "the time budget in CPU seconds per thread"},
 };
@@ -181,9 +187,12 @@ double mlt_option_get(const struct mlt_option *d, const struct mlt_opts *o)
 void mlt_option_set(const struct mlt_option *d, struct mlt_opts *o, double v)
 {
     char *p = (char *)o + d->offset;
-    if (d->type == MLT_OPTION_DOUBLE) *(double *)p = v;
-    else if (d->size == 1) *(bool *)p = v != 0;
-    else if (d->size == sizeof(int)) *(int *)p = (int)v;
+    if (d->type == MLT_OPTION_DOUBLE)
+        *(double *)p = v;
+    else if (d->size == 1)
+        *(bool *)p = v != 0;
+    else if (d->size == sizeof(int))
+        *(int *)p = (int)v;
     else {
         int64_t i = (int64_t)v;
         memcpy(p, &i, sizeof i);
@@ -207,20 +216,27 @@ void mlt_opts_defaults(struct mlt_opts *o)
     }
 }
 
-bool mlt_option_at_default(const struct mlt_option *d, const struct mlt_opts *o) { return mlt_option_get(d, o) == default_value(d); }
+bool mlt_option_at_default(const struct mlt_option *d, const struct mlt_opts *o)
+{
+    return mlt_option_get(d, o) == default_value(d);
+}
 
 void mlt_option_format(const struct mlt_option *d, const struct mlt_opts *o, bool csv, char *buf, size_t n)
 {
     double v = mlt_option_get(d, o);
     if (csv && d->csv_effective && !(d->methods & method_bit(o->method))) v = default_value(d);
-    if (d->type == MLT_OPTION_CHOICE) snprintf(buf, n, "%s", d->choices[(int)v]);
-    else if (csv && d->csv_values) snprintf(buf, n, "%s", d->csv_values[v != 0]);
-    else if (d->type == MLT_OPTION_DOUBLE) snprintf(buf, n, csv ? "%g" : "%.17g", v);
+    if (d->type == MLT_OPTION_CHOICE)
+        snprintf(buf, n, "%s", d->choices[(int)v]);
+    else if (csv && d->csv_values)
+        snprintf(buf, n, "%s", d->csv_values[v != 0]);
+    else if (d->type == MLT_OPTION_DOUBLE)
+        snprintf(buf, n, csv ? "%g" : "%.17g", v);
     else if (d->size == sizeof(uint64_t)) { /* exact, above 2^53 too (seeds) */
         uint64_t u;
         memcpy(&u, (const char *)o + d->offset, sizeof u);
         snprintf(buf, n, "%llu", (unsigned long long)u);
-    } else snprintf(buf, n, "%lld", (long long)v);
+    } else
+        snprintf(buf, n, "%lld", (long long)v);
 }
 
 int mlt_options_identity(const struct mlt_opts *o, char *buf, size_t n)
@@ -242,7 +258,8 @@ size_t mlt_options_csv(enum mlt_csv_group g, const struct mlt_option **out, size
     for (int pos = 1; m < max; pos++) {
         size_t before = m;
         for (size_t i = 0; i < mlt_options_count; i++)
-            if (mlt_options[i].csv_group == g && g != MLT_CSV_NONE && mlt_options[i].csv_pos == pos && m < max) out[m++] = &mlt_options[i];
+            if (mlt_options[i].csv_group == g && g != MLT_CSV_NONE && mlt_options[i].csv_pos == pos && m < max)
+                out[m++] = &mlt_options[i];
         if (m == before) break; /* positions run 1, 2, ... without a gap */
     }
     return m;

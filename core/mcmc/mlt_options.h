@@ -34,13 +34,13 @@ enum mlt_option_type { MLT_OPTION_FLAG, MLT_OPTION_INT, MLT_OPTION_DOUBLE, MLT_O
 enum mlt_csv_group { MLT_CSV_NONE, MLT_CSV_BEFORE_COUNTS, MLT_CSV_AFTER_COUNTS };
 
 struct mlt_option {
-    const char *key;     /* the identity's and the coverage test's name: the field's */
-    const char *cli;     /* "--p-large" when bin/render takes it; NULL: set by the tools from their own */
+    const char *key; /* the identity's and the coverage test's name: the field's */
+    const char *cli; /* "--p-large" when bin/render takes it; NULL: set by the tools from their own */
     enum mlt_option_type type;
-    size_t offset, size; /* the field in struct mlt_opts */
-    const char *field;   /* its path there ("pss.sigma") */
-    const char *def;     /* the default as it would be given; NULL: what mlt_opts_defaults leaves */
-    double lo, hi;       /* MLT_OPTION_INT, MLT_OPTION_DOUBLE */
+    size_t offset, size;        /* the field in struct mlt_opts */
+    const char *field;          /* its path there ("pss.sigma") */
+    const char *def;            /* the default as it would be given; NULL: what mlt_opts_defaults leaves */
+    double lo, hi;              /* MLT_OPTION_INT, MLT_OPTION_DOUBLE */
     const char *const *choices; /* MLT_OPTION_CHOICE: NULL-terminated, indexed by the field's value */
     const char *arg;            /* the value's name in the help */
     unsigned methods;           /* APPLIES_ bits */

@@ -6,8 +6,10 @@
 double mmlt_technique_number(int t, int k, double xi)
 {
     double u = invert_discrete((double)(t - 1) / (k + 1), (double)t / (k + 1), xi);
-    while (1 + (int)((k + 1) * u) < t) u = nextafter(u, 1.0);
-    while (1 + (int)((k + 1) * u) > t) u = nextafter(u, 0.0);
+    while (1 + (int)((k + 1) * u) < t)
+        u = nextafter(u, 1.0);
+    while (1 + (int)((k + 1) * u) > t)
+        u = nextafter(u, 0.0);
     return u;
 }
 
@@ -32,8 +34,10 @@ double mmlt_eval_state(const struct path_ctx *pc, struct sampler *s, int k, stru
     out->n = 0;
     if (mmlt_eval(pc, s, k, x, &c)) {
         rgb v = mmlt_contribution(&c, k);
-        if (vfinite(v)) splat_push(out, c.px, c.py, v);
-        else nf->len[k]++;
+        if (vfinite(v))
+            splat_push(out, c.px, c.py, v);
+        else
+            nf->len[k]++;
     }
     double f = splat_luminance(out);
     return isfinite(f) && f > 0 ? f : 0;

@@ -1,7 +1,7 @@
 /* The registry of mutations (mutation.h): the built-in table, the ones registered at run time, the
  * walk of one iteration, and the chains' per-mutation state. */
-#include "mcmc/mutation.h"
 #include "base/util.h"
+#include "mcmc/mutation.h"
 #include <stdlib.h>
 
 /* The built-in mutations in the order they are tried: one line each. */
@@ -63,8 +63,10 @@ void mutations_chain_save(struct ckpt_buf *b, const struct scene *sc, const stru
 {
     for (int i = 0; i < count(); i++) {
         const struct mutation *m = entry(i);
-        if (m->save) m->save(b, sc, c, c->state[i]);
-        else if (m->chain_state && c->state[i]) ckpt_put(b, c->state[i], m->chain_state);
+        if (m->save)
+            m->save(b, sc, c, c->state[i]);
+        else if (m->chain_state && c->state[i])
+            ckpt_put(b, c->state[i], m->chain_state);
     }
 }
 

@@ -3,9 +3,9 @@
  * partial inversion with a retrace of each gained vertex, the reverse move's check, the target
  * ratio of refracting paths (Eq. 5.18), and the update of the chain's numbers (technique number:
  * mmlt.h, Eq. 5.6). */
-#include "camera/camera.h"
 #include "mcmc/pitp.h"
 #include "bsdf/bsdf_smooth.h"
+#include "camera/camera.h"
 #include "sampling/pick.h"
 #include <math.h>
 
@@ -82,8 +82,8 @@ static struct vertex as_emitter_origin(const struct vertex *z)
  * invert the block of the last vertex toward the next target, then step the walk with exactly
  * those numbers and require that it reaches the target. An emitter subpath of at most one vertex
  * re-inverts its block 0 whole (light choice, position and direction are one block). */
-static bool extend(const struct path_ctx *ctx, int stream, struct vertex *v, int n, const struct vertex *const *tgt, int m,
-                   struct block_sampler *blocks, struct block_rec *recs, int *nrec, double tol)
+static bool extend(const struct path_ctx *ctx, int stream, struct vertex *v, int n, const struct vertex *const *tgt,
+                   int m, struct block_sampler *blocks, struct block_rec *recs, int *nrec, double tol)
 {
     *nrec = 0;
     for (int next = 0; next < m;) {
@@ -114,7 +114,8 @@ static bool extend(const struct path_ctx *ctx, int stream, struct vertex *v, int
         } else {
             /* the walk's step must reach the vertex its numbers were inverted toward */
             ok = invert_step(ctx, stream, v, n, tgt[next], &blocks->base) &&
-                 walk_extend_to(ctx, &blocks->base, v, n, stream, tgt[next]) == n + 1 && !blocks->bad && vertex_same(&v[n], tgt[next], tol);
+                 walk_extend_to(ctx, &blocks->base, v, n, stream, tgt[next]) == n + 1 && !blocks->bad &&
+                 vertex_same(&v[n], tgt[next], tol);
             used = 1;
             n_after = n + 1;
         }
@@ -123,7 +124,8 @@ static bool extend(const struct path_ctx *ctx, int stream, struct vertex *v, int
         rec->stream = blocks->stream;
         rec->vertex = blocks->vertex;
         rec->n = blocks->n;
-        for (int i = 0; i < blocks->n; i++) rec->u[i] = blocks->u[i];
+        for (int i = 0; i < blocks->n; i++)
+            rec->u[i] = blocks->u[i];
         next += used;
         n = n_after;
     }
@@ -145,11 +147,14 @@ static bool reverse_ok(const struct path_ctx *ctx, int stream, const struct vert
 {
     int lost = n - n_new;
     bool surfaces = true;
-    for (int vert = n_new; vert < n; vert++) surfaces = surfaces && v[vert].kind == VK_SURFACE;
+    for (int vert = n_new; vert < n; vert++)
+        surfaces = surfaces && v[vert].kind == VK_SURFACE;
     if ((stream == STREAM_EMITTER && n_new <= 1) || !surfaces) {
         /* extend reads and writes only the last two vertices of the subpath it extends */
-        for (int i = n_new >= 2 ? n_new - 2 : 0; i < n_new; i++) scratch->rev[i] = v[i];
-        for (int vert = 0; vert < lost; vert++) scratch->tgt[vert] = &gained[lost - 1 - vert];
+        for (int i = n_new >= 2 ? n_new - 2 : 0; i < n_new; i++)
+            scratch->rev[i] = v[i];
+        for (int vert = 0; vert < lost; vert++)
+            scratch->tgt[vert] = &gained[lost - 1 - vert];
         struct block_rec recs[MAX_SUBPATH_VERTS];
         int nrec;
         return extend(ctx, stream, scratch->rev, n_new, scratch->tgt, lost, blocks, recs, &nrec, scratch->tol);
@@ -157,8 +162,8 @@ static bool reverse_ok(const struct path_ctx *ctx, int stream, const struct vert
     for (int vert = n_new; vert < n; vert++) {
         blk_reset(blocks);
         blocks->bad = false;
-        if (!invert_step(ctx, stream, v, vert, &v[vert], &blocks->base) || !walk_step_reaches(ctx, &blocks->base, v, vert, stream, &v[vert], scratch->tol) ||
-            blocks->bad)
+        if (!invert_step(ctx, stream, v, vert, &v[vert], &blocks->base) ||
+            !walk_step_reaches(ctx, &blocks->base, v, vert, stream, &v[vert], scratch->tol) || blocks->bad)
             return false;
     }
     return true;
@@ -173,7 +178,8 @@ static void forget_dropped(const struct path_ctx *ctx, struct pss_sampler *pss, 
     int first = n_new - 1, last = stream == STREAM_EMITTER && n >= 1 ? (n >= 2 ? n - 2 : 0) : n - 2;
     int lens = camera_lens_dims(&ctx->sc->cam);
     if (stream == STREAM_CAMERA && n_new == 1 && lens > 0) {
-        for (int offset = lens; offset < SAMPLER_BLOCK; offset++) pss_forget(pss, stream, offset);
+        for (int offset = lens; offset < SAMPLER_BLOCK; offset++)
+            pss_forget(pss, stream, offset);
         first = 1;
     }
     if (stream == STREAM_EMITTER && n_new == 1) {
@@ -181,12 +187,14 @@ static void forget_dropped(const struct path_ctx *ctx, struct pss_sampler *pss, 
         struct vertex y0;
         sampler_begin(&pss->base, STREAM_EMITTER, 0);
         sample_emitter_vertex(ctx->sc, &pss->base, &y0);
-        for (int offset = pss->base.offset; offset < SAMPLER_BLOCK; offset++) pss_forget(pss, stream, offset);
+        for (int offset = pss->base.offset; offset < SAMPLER_BLOCK; offset++)
+            pss_forget(pss, stream, offset);
         first = 1;
     }
     if (first < 0) first = 0;
     for (int block = first; block <= last; block++)
-        for (int offset = 0; offset < SAMPLER_BLOCK; offset++) pss_forget(pss, stream, block * SAMPLER_BLOCK + offset);
+        for (int offset = 0; offset < SAMPLER_BLOCK; offset++)
+            pss_forget(pss, stream, block * SAMPLER_BLOCK + offset);
 }
 
 /* Whether the target of the path can change with the technique: through a refracting BSDF (its
@@ -230,12 +238,14 @@ static double f_ratio(const struct mmlt_path *x, int sj)
 {
     const struct vertex *path_vertex[2 * MAX_SUBPATH_VERTS];
     int k = x->k, si = x->s;
-    for (int l = 0; l <= k; l++) path_vertex[l] = l < si ? &x->emi[l] : &x->cam[k - l];
+    for (int l = 0; l <= k; l++)
+        path_vertex[l] = l < si ? &x->emi[l] : &x->cam[k - l];
     double r = 1;
     int first = si < sj ? si : sj, end = si < sj ? sj : si;
     for (int l = first > 1 ? first : 1; l < end; l++) {
         double dist2;
-        double factor = radiance_factor(path_vertex[l], edge_dir(path_vertex[l], path_vertex[l + 1], &dist2), edge_dir(path_vertex[l], path_vertex[l - 1], &dist2));
+        double factor = radiance_factor(path_vertex[l], edge_dir(path_vertex[l], path_vertex[l + 1], &dist2),
+                                        edge_dir(path_vertex[l], path_vertex[l - 1], &dist2));
         r = sj > si ? r / factor : r * factor;
     }
     return r;
@@ -254,9 +264,11 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *ctx, struct pss_sampler *p
     if (s_new == s_old) return PITP_SAME;
     int t_new = k + 1 - s_new;
     bool to_emitter = s_new > s_old; /* the emitter subpath gains vertices, the camera subpath loses them */
-    int grow_stream = to_emitter ? STREAM_EMITTER : STREAM_CAMERA, shrink_stream = to_emitter ? STREAM_CAMERA : STREAM_EMITTER;
+    int grow_stream = to_emitter ? STREAM_EMITTER : STREAM_CAMERA,
+        shrink_stream = to_emitter ? STREAM_CAMERA : STREAM_EMITTER;
     struct vertex *grow = to_emitter ? x->emi : x->cam, *shrink = to_emitter ? x->cam : x->emi;
-    int n_grow = to_emitter ? s_old : x->t, n_shrink = to_emitter ? x->t : s_old, n_shrink_new = to_emitter ? t_new : s_new;
+    int n_grow = to_emitter ? s_old : x->t, n_shrink = to_emitter ? x->t : s_old,
+        n_shrink_new = to_emitter ? t_new : s_new;
     int moved = n_shrink - n_shrink_new;
     struct block_sampler blocks; /* u[] is written before it is read (blk_next checks n): not cleared */
     blocks.base = (struct sampler){&blk_ops, 0, 0, 0};
@@ -270,13 +282,15 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *ctx, struct pss_sampler *p
     if (*a < 1 && !(rng_uniform(&pss->r) < *a)) return PITP_REJECTED;
     bool may_change = pitp_target_may_change(x);
     /* forward: the vertices the shrinking subpath loses, in the growing subpath's order */
-    for (int m = 0; m < moved; m++) scratch->tgt[m] = &shrink[n_shrink - 1 - m];
+    for (int m = 0; m < moved; m++)
+        scratch->tgt[m] = &shrink[n_shrink - 1 - m];
     /* what the extension rewrites of the growing subpath: from fewer than 2 vertices it walks
      * afresh, else it sets the last vertex's delta and the one before's reverse density */
     bool afresh = n_grow < 2;
     bool last_delta = afresh ? false : grow[n_grow - 1].delta;
     double before_pdf_rev = afresh ? 0 : grow[n_grow - 2].pdf_rev;
-    for (int i = 0; afresh && i < n_grow; i++) scratch->save[i] = grow[i];
+    for (int i = 0; afresh && i < n_grow; i++)
+        scratch->save[i] = grow[i];
     bool ok = extend(ctx, grow_stream, grow, n_grow, scratch->tgt, moved, &blocks, recs, &nrecs, scratch->tol);
     /* reverse: from (j, v) the move back to i must succeed as well, or the pair is not symmetric */
     if (ok) ok = reverse_ok(ctx, shrink_stream, shrink, n_shrink_new, n_shrink, grow + n_grow, scratch, &blocks);
@@ -284,14 +298,16 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *ctx, struct pss_sampler *p
         /* the new state's target: the same path, but (k + 1) w_j C_j need not equal the old one */
         const struct vertex *emi_side = to_emitter ? grow : shrink, *cam_side = to_emitter ? shrink : grow;
         double target = 0;
-        if (connect_st(ctx, emi_side, s_new, cam_side, t_new, k, conn, scratch->ratios)) target = luminance(mmlt_contribution(conn, k));
+        if (connect_st(ctx, emi_side, s_new, cam_side, t_new, k, conn, scratch->ratios))
+            target = luminance(mmlt_contribution(conn, k));
         /* every channel weighs in the luminance: it is finite only when the colour is */
         if (!isfinite(target)) nf->len[k]++;
         *conn_new = isfinite(target) && target > 0;
         if (!*conn_new) ok = false; /* the retraced connection lost the path (occluded in float) */
     }
     if (!ok) {
-        for (int i = 0; afresh && i < n_grow; i++) grow[i] = scratch->save[i];
+        for (int i = 0; afresh && i < n_grow; i++)
+            grow[i] = scratch->save[i];
         if (!afresh) {
             grow[n_grow - 1].delta = last_delta;
             grow[n_grow - 2].pdf_rev = before_pdf_rev;
@@ -301,14 +317,17 @@ enum pitp_outcome pitp_perturb(const struct path_ctx *ctx, struct pss_sampler *p
     }
     /* the move is taken: the gained blocks' numbers, fresh dropped numbers, the technique number */
     for (int rec = 0; rec < nrecs; rec++)
-        for (int i = 0; i < recs[rec].n; i++) pss_replace(pss, recs[rec].stream, recs[rec].vertex * SAMPLER_BLOCK + i, recs[rec].u[i]);
+        for (int i = 0; i < recs[rec].n; i++)
+            pss_replace(pss, recs[rec].stream, recs[rec].vertex * SAMPLER_BLOCK + i, recs[rec].u[i]);
     forget_dropped(ctx, pss, shrink_stream, n_shrink, n_shrink_new);
     pss_replace(pss, STREAM_TECHNIQUE, 0, mmlt_technique_number(t_new, k, rng_uniform(&pss->r)));
     if (*conn_new) {
-        for (int i = 0; i <= k; i++) x->ratios[i] = scratch->ratios[i];
+        for (int i = 0; i <= k; i++)
+            x->ratios[i] = scratch->ratios[i];
     } else {
         double ratio_new = x->ratios[s_new];
-        for (int i = 0; i <= k; i++) x->ratios[i] /= ratio_new;
+        for (int i = 0; i <= k; i++)
+            x->ratios[i] /= ratio_new;
     }
     x->s = s_new;
     x->t = t_new;

@@ -20,7 +20,8 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
     double accept;
     struct connection conn;
     bool conn_new;
-    enum pitp_outcome outcome = pitp_perturb(&wk->path_ctx, &c->pss, c->x, wk->pitp_scratch, rng_uniform(&wk->r), &s_new, &accept, &conn, &conn_new, &wk->scratch->nf);
+    enum pitp_outcome outcome = pitp_perturb(&wk->path_ctx, &c->pss, c->x, wk->pitp_scratch, rng_uniform(&wk->r),
+                                             &s_new, &accept, &conn, &conn_new, &wk->scratch->nf);
     int dtech = abs(s_new - c->x->s);
     if (outcome == PITP_MOVED) {
         dtech = abs(c->k + 1 - s_new - c->tech);
@@ -37,8 +38,8 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
             move_to(wk->img, c, &l, splat_luminance(&l));
         }
     }
-    stats_record_dt(wk->st, PROPOSAL_PITP, c->k, dtech != 0, dtech, outcome == PITP_FAILED, accept, outcome == PITP_SAME || outcome == PITP_MOVED,
-                    true, 0);
+    stats_record_dt(wk->st, PROPOSAL_PITP, c->k, dtech != 0, dtech, outcome == PITP_FAILED, accept,
+                    outcome == PITP_SAME || outcome == PITP_MOVED, true, 0);
 }
 
 static void save(struct ckpt_buf *b, const struct scene *sc, const struct chain *c, const void *state)
@@ -71,4 +72,5 @@ static bool load(struct ckpt_buf *b, const struct scene *sc, struct chain *c, vo
            x->s <= MAX_SUBPATH_VERTS;
 }
 
-const struct mutation mutation_pitp = {.name = "pitp", .before = true, .applies = applies, .step = step, .save = save, .load = load};
+const struct mutation mutation_pitp = {
+    .name = "pitp", .before = true, .applies = applies, .step = step, .save = save, .load = load};

@@ -9,7 +9,10 @@
 #include "mcmc/tech_split.h"
 #include <stdlib.h>
 
-double mutation_elapsed(const struct worker *wk, double t_start) { return wk->opts->time_proposals ? now_seconds() - t_start : 0; }
+double mutation_elapsed(const struct worker *wk, double t_start)
+{
+    return wk->opts->time_proposals ? now_seconds() - t_start : 0;
+}
 
 void mutation_take_connections(struct worker *wk)
 {
@@ -29,10 +32,11 @@ void mutation_propose(struct worker *wk, struct chain *c, bool large, struct pro
     pss_begin(&c->pss, large);
     if (cs) ctrl_begin(cs, &c->pss, c->path, wk->spare->cam, wk->spare->emi, o->small_step);
     wk->scratch->conn_tried = wk->scratch->conn_nonzero = 0; /* the chain starts' and seed pass's are not counted */
-    pr->f = eval_state(o->method, &wk->path_ctx, cs ? &cs->base : &c->pss.base, wk->scratch, c->k, wk->spare, &wk->prop, &pr->tech,
-                       &pr->complete);
+    pr->f = eval_state(o->method, &wk->path_ctx, cs ? &cs->base : &c->pss.base, wk->scratch, c->k, wk->spare, &wk->prop,
+                       &pr->tech, &pr->complete);
     mutation_take_connections(wk);
-    if (wk->tech) tech_split_record(wk->tech, &wk->path_ctx, wk->scratch, wk->multiplexed ? c->k : 0, pr->tech, &wk->prop, false);
+    if (wk->tech)
+        tech_split_record(wk->tech, &wk->path_ctx, wk->scratch, wk->multiplexed ? c->k : 0, pr->tech, &wk->prop, false);
     pr->tr = cs ? ctrl_finish(cs, pr->complete) : 1;
     if (cs && cs->fail != CTRL_OK) wk->ctrl_fail[cs->fail - 1]++;
     if (o->ctrl_unit_ratio && pr->tr > 0) pr->tr = 1;
@@ -75,8 +79,8 @@ void mutation_decide(struct worker *wk, struct chain *c, int kind, const struct 
     }
     bool m = wk->multiplexed;
     int tech0 = wk->tech_before;
-    stats_record_dt(wk->st, (enum proposal_kind)kind, m ? c->k : 0, m && pr->tech != tech0, m ? abs(pr->tech - tech0) : 0,
-                    false, a, acc, pr->f > 0, mutation_elapsed(wk, t_start));
+    stats_record_dt(wk->st, (enum proposal_kind)kind, m ? c->k : 0, m && pr->tech != tech0,
+                    m ? abs(pr->tech - tech0) : 0, false, a, acc, pr->f > 0, mutation_elapsed(wk, t_start));
     if (acc) c->tech = pr->tech;
 }
 

@@ -18,17 +18,20 @@
 struct seed_job {
     const struct scene *sc;
     const struct mlt_opts *o;
-    int nk;            /* chains per thread: 1 (PSSMLT) or K (MMLT) */
-    double *f;         /* seed_paths * nk targets, index i * nk + (k - 1) */
-    double *bk;        /* o->seed_bdpt: the BDPT samples' luminance per length, same index; else NULL */
-    int g0, stride;    /* this rank's first global thread; the job's threads (base/dist.h) */
+    int nk;         /* chains per thread: 1 (PSSMLT) or K (MMLT) */
+    double *f;      /* seed_paths * nk targets, index i * nk + (k - 1) */
+    double *bk;     /* o->seed_bdpt: the BDPT samples' luminance per length, same index; else NULL */
+    int g0, stride; /* this rank's first global thread; the job's threads (base/dist.h) */
     struct progress prog;
 };
 
 static void seed_worker(int tid, void *p)
 {
     struct seed_job *j = p;
-    struct path_ctx pc = {.sc = j->sc, .max_length = j->o->max_length, .min_length = j->o->min_length, .max_heuristic = j->o->max_heuristic};
+    struct path_ctx pc = {.sc = j->sc,
+                          .max_length = j->o->max_length,
+                          .min_length = j->o->min_length,
+                          .max_heuristic = j->o->max_heuristic};
     struct scratch *w = xcalloc(1, sizeof *w); /* its counts are not kept: a seed target is never splatted */
     struct mmlt_path *x = xmalloc(sizeof *x);
     struct sampler_independent s;
@@ -101,7 +104,8 @@ bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errle
     int live = 0;
     for (int kk = 0; kk < rj->nk; kk++) {
         double *cdf = xmalloc((size_t)o->seed_paths * sizeof(double)), acc = 0;
-        for (long i = 0; i < o->seed_paths; i++) cdf[i] = acc += f[i * rj->nk + kk];
+        for (long i = 0; i < o->seed_paths; i++)
+            cdf[i] = acc += f[i * rj->nk + kk];
         /* a length whose pool found nothing has no chain to start: it is left out under either
          * estimate of b_k (a bias only where the seed pass is too small to see the length) */
         double mean = 0, var_mean = 0;
@@ -134,7 +138,8 @@ bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errle
     if (emitters_count(rj->sc) == 0)
         snprintf(err, errlen, "%s: the scene has no emitter: there is no light to sample", rj->sc->file);
     else
-        snprintf(err, errlen, "%s: the seed pass of %ld paths found no light; raise --seed-paths", rj->sc->file, o->seed_paths);
+        snprintf(err, errlen, "%s: the seed pass of %ld paths found no light; raise --seed-paths", rj->sc->file,
+                 o->seed_paths);
     for (int kk = 0; kk < rj->nk; kk++) {
         free((void *)rj->cdf[kk]);
         rj->cdf[kk] = NULL;
@@ -152,7 +157,8 @@ void chain_start(struct worker *wk, struct chain *c, int kk)
     struct mmlt_path *x0 = wk->pitp ? c->x : wk->spare;
     bool complete;
     c->f = eval_state(o->method, &wk->path_ctx, &c->pss.base, wk->scratch, c->k, x0, &c->cur, &c->tech, &complete);
-    if (wk->tech) tech_split_record(wk->tech, &wk->path_ctx, wk->scratch, wk->multiplexed ? c->k : 0, c->tech, &c->cur, true);
+    if (wk->tech)
+        tech_split_record(wk->tech, &wk->path_ctx, wk->scratch, wk->multiplexed ? c->k : 0, c->tech, &c->cur, true);
     pss_accept(&c->pss);
     if (wk->track) {
         c->path = xmalloc(sizeof *c->path);

@@ -4,7 +4,8 @@
 void splat_list_weighted(struct image *img, const struct splat_list *l, double wgt, long *dropped)
 {
     if (wgt <= 0) return;
-    for (int i = 0; i < l->n; i++) splat_finite(img, l->s[i].px, l->s[i].py, vscale(l->s[i].c, wgt), dropped);
+    for (int i = 0; i < l->n; i++)
+        splat_finite(img, l->s[i].px, l->s[i].py, vscale(l->s[i].c, wgt), dropped);
 }
 
 void splat_ev(struct image *img, struct chain *c, const struct splat_list *l, double f, double a)
@@ -30,6 +31,7 @@ void move_to(struct image *img, struct chain *c, const struct splat_list *l, dou
     c->cur.n = l->n;
     /* element by element: a state holds one splat or a few, and gcc's memcpy of a variable size
      * (vector_loop strategy) cost ~200 instructions per accepted move, 5 % of an MMLT iteration */
-    for (int i = 0; i < l->n; i++) c->cur.s[i] = l->s[i];
+    for (int i = 0; i < l->n; i++)
+        c->cur.s[i] = l->s[i];
     c->f = f;
 }

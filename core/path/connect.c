@@ -1,8 +1,8 @@
 /* Joining subpaths: contributions and the density bookkeeping at the connection. */
 #include "path/connect.h"
-#include "path/splat.h"
 #include "camera/camera.h"
 #include "emitter/emitter.h"
+#include "path/splat.h"
 
 /* Solid-angle density with which vertex `at` (entered from `from_dir`, world, toward its
  * predecessor) scatters into unit direction d; for camera and emitter vertices their own densities. */
@@ -89,8 +89,8 @@ static double endpoint_cos(const struct vertex *v, vec3 d)
     return fabs(vdot(v->sh.n, d));
 }
 
-bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t,
-                int max_s, struct connection *out, double *ratios)
+bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t, int max_s,
+                struct connection *out, double *ratios)
 {
     const struct scene *sc = pc->sc;
     const struct vertex *zc = &z[t - 1];
@@ -107,7 +107,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     } else {
         const struct vertex *yc = &y[s - 1];
         if (zc->kind == VK_ENV) return false; /* nothing scatters at infinity */
-        d = edge_dir(yc, zc, &dist2); /* dist2 = 1 from the environment: no falloff */
+        d = edge_dir(yc, zc, &dist2);         /* dist2 = 1 from the environment: no falloff */
         if (dist2 == 0) return false;
         if (t == 1 && !((cam_pdf = camera_raster(&sc->cam, zc->p, vneg(d), &out->px, &out->py)) > 0)) {
             if (!sc->cam.tungsten_defects ||
@@ -125,7 +125,8 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     struct mis_path m;
     densities(pc, y, s, z, t, d, dist2, cam_pdf, &m);
     const struct vertex *x[MAX_PATH_LENGTH + 2];
-    for (int i = 0; i <= m.k; i++) x[i] = i < s ? &y[i] : &z[m.k - i];
+    for (int i = 0; i <= m.k; i++)
+        x[i] = i < s ? &y[i] : &z[m.k - i];
     mis_unfold_delta_chains(&m, x);
     double r[MAX_PATH_LENGTH + 2];
     double *rat = ratios ? ratios : r;

@@ -17,7 +17,8 @@ static bool connectable(const struct mis_path *m, int j)
 double mis_weights(const struct mis_path *m, int s, int max_s, double *ratios)
 {
     int k = m->k;
-    for (int j = 0; j <= k; j++) ratios[j] = 0;
+    for (int j = 0; j <= k; j++)
+        ratios[j] = 0;
     ratios[s] = 1;
     double sum = 1, r = 1;
     for (int j = s; j < k && j < max_s; j++) { /* more emitter vertices */
@@ -85,7 +86,8 @@ void mis_unfold_delta_chains(struct mis_path *m, const struct vertex *const *x)
     for (int a = 0; a + 1 < m->k; a++) {
         if (m->delta[a] || !m->delta[a + 1]) continue;
         int b = a + 2;
-        while (b <= m->k && m->delta[b]) b++;
+        while (b <= m->k && m->delta[b])
+            b++;
         if (b > m->k) return;
         unfold_chain(m, x, a, b);
         a = b - 1;

@@ -8,10 +8,10 @@
  * Emitter stream block 0 = light choice, position, direction; block i >= 1 = BSDF sampling at y_i.
  *
  * Throughput convention: z_0.beta = 1 (the camera's importance equals the density of its lens
- * point and direction, see camera.h; z_0.p is the lens point, z_0.pdf_fwd its area density); y_0.beta = 1 / (pick * pdf_pos); vertex i's beta is the subpath's contribution up to
- * and including the sampling of vertex i. pdf_fwd is the area density of a vertex given its
- * predecessor in its own subpath, pdf_rev the area density of generating it from its successor
- * (0 stands for a Dirac density, which cancels in the MIS ratios as in Veach's thesis). */
+ * point and direction, see camera.h; z_0.p is the lens point, z_0.pdf_fwd its area density); y_0.beta = 1 / (pick *
+ * pdf_pos); vertex i's beta is the subpath's contribution up to and including the sampling of vertex i. pdf_fwd is the
+ * area density of a vertex given its predecessor in its own subpath, pdf_rev the area density of generating it from its
+ * successor (0 stands for a Dirac density, which cancels in the MIS ratios as in Veach's thesis). */
 #ifndef PATH_H
 #define PATH_H
 
@@ -31,9 +31,9 @@ struct vertex {
      * and MMLT/PITP copy whole subpaths of these, and their size shows in instruction counts. A
      * new field must also be set in vertex_start (below) and surface_from_hit. */
     enum vertex_kind kind;
-    bool front;         /* reached from the front (emitting) side of the geometry */
-    bool flipped;       /* two-sided shading flipped the frame */
-    bool delta;         /* the next vertex of its subpath was sampled by a delta lobe */
+    bool front;   /* reached from the front (emitting) side of the geometry */
+    bool flipped; /* two-sided shading flipped the frame */
+    bool delta;   /* the next vertex of its subpath was sampled by a delta lobe */
     int prim, tri;
     vec3 p;
     vec3 ng;            /* geometric normal, flipped to the incoming side for two-sided shading */
@@ -43,7 +43,7 @@ struct vertex {
     vec3 wi;            /* unit, toward the previous vertex of its subpath (world) */
     rgb beta;
     double pdf_fwd, pdf_rev;
-    double px, py;      /* camera vertex: raster position of the primary ray */
+    double px, py; /* camera vertex: raster position of the primary ray */
 };
 
 /* Starts a vertex that is no ray hit (a camera or emitter vertex): every field but p, ng and sh,
@@ -69,8 +69,8 @@ static inline void vertex_start(struct vertex *v, enum vertex_kind kind, int pri
 
 struct path_ctx {
     const struct scene *sc;
-    int max_length;     /* segments */
-    int min_length;     /* segments; shorter paths contribute nothing (0 or 1: none excluded) */
+    int max_length; /* segments */
+    int min_length; /* segments; shorter paths contribute nothing (0 or 1: none excluded) */
     /* BDPT restricted to one technique (s, t), unweighted, when only_t > 0: each technique alone is
      * an unbiased estimator of the paths of length s + t - 1 (tests, per-technique images). */
     int only_s, only_t;

@@ -29,8 +29,8 @@ struct tee {
     struct sampler base;
     struct sampler *w;
     double u[SAMPLER_BLOCK];
-    int n;        /* numbers put in the block */
-    bool short_;  /* the replay read a number the inversion did not put */
+    int n;       /* numbers put in the block */
+    bool short_; /* the replay read a number the inversion did not put */
 };
 
 static double tee_next(struct sampler *s, enum dim_kind kind)

@@ -56,8 +56,8 @@ static bool hit_tangents(const struct prim *pr, const struct vertex *v, vec3 n, 
  * rising along T tilts the normal toward -T; along B, the slope's sign is Tungsten's, whose dv runs
  * down the image rows (-v), so a height rising with v tilts the normal toward +B. Falls back to n
  * where there are no tangents or T' x B' vanishes. */
-static vec3 bump_normal(const struct prim *pr, const struct vertex *v, const struct texture *bump,
-                        const double uv[2], vec3 n)
+static vec3 bump_normal(const struct prim *pr, const struct vertex *v, const struct texture *bump, const double uv[2],
+                        vec3 n)
 {
     vec3 T, B;
     if (!hit_tangents(pr, v, n, &T, &B)) return n;

@@ -80,8 +80,7 @@ static inline bool scatter_at(struct sampler *s, struct vertex *v, int n, enum t
 
 /* Whether a step from p along d reaches the surface vertex `to` within tol: without a ray where
  * on_known_segment says so, else by the walk's own ray (vertex_same). */
-static bool step_reaches(const struct scene *sc, const struct vertex *from, vec3 d, const struct vertex *to,
-                         double tol)
+static bool step_reaches(const struct scene *sc, const struct vertex *from, vec3 d, const struct vertex *to, double tol)
 {
     double t;
     if (on_known_segment(from->p, d, to, &t)) return true;
@@ -116,8 +115,8 @@ bool walk_step_reaches(const struct path_ctx *pc, struct sampler *s, const struc
 /* Extends a subpath whose last vertex v[n-1] emits direction d with solid-angle density pdf_sa
  * (0 for a delta lobe); beta is the throughput the next vertex receives. `to`, when not NULL, is
  * the vertex the first step is expected to reach (known_hit). */
-static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts,
-                 vec3 d, double pdf_sa, rgb beta, enum transport mode, int stream, const struct vertex *to)
+static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, vec3 d,
+                 double pdf_sa, rgb beta, enum transport mode, int stream, const struct vertex *to)
 {
     const struct scene *sc = pc->sc;
     while (n < max_verts) {
@@ -127,8 +126,15 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
         if (!known && !walk_hit(sc, prev, d, cur)) {
             /* A camera subpath that leaves the scene ends on the environment. */
             if (stream == STREAM_CAMERA && sc->env_prim >= 0) {
-                *cur = (struct vertex){.kind = VK_ENV, .p = prev->p, .ng = vneg(d), .sh = frame_from_normal(vneg(d)),
-                                       .front = true, .prim = sc->env_prim, .tri = -1, .wi = vneg(d), .beta = beta,
+                *cur = (struct vertex){.kind = VK_ENV,
+                                       .p = prev->p,
+                                       .ng = vneg(d),
+                                       .sh = frame_from_normal(vneg(d)),
+                                       .front = true,
+                                       .prim = sc->env_prim,
+                                       .tri = -1,
+                                       .wi = vneg(d),
+                                       .beta = beta,
                                        .pdf_fwd = pdf_sa};
                 n++;
             }
@@ -152,7 +158,8 @@ static int emitter_walk(const struct path_ctx *pc, struct sampler *s, struct ver
 static int extend_walk(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream,
                        const struct vertex *to)
 {
-    if (n < 2) return stream == STREAM_CAMERA ? camera_walk(pc, s, v, max_verts, to) : emitter_walk(pc, s, v, max_verts, to);
+    if (n < 2)
+        return stream == STREAM_CAMERA ? camera_walk(pc, s, v, max_verts, to) : emitter_walk(pc, s, v, max_verts, to);
     if (n >= max_verts || !v[n - 1].bc.b) return n;
     enum transport mode = stream == STREAM_CAMERA ? TRANSPORT_RADIANCE : TRANSPORT_IMPORTANCE;
     vec3 d;
@@ -260,7 +267,8 @@ static int emitter_walk(const struct path_ctx *pc, struct sampler *s, struct ver
         /* rays leave the origin disc (area density 1 / (pi R^2), cosine 1) against env_dir */
         double pdf_disc = 1.0 / (M_PI * sqr(env_radius(sc)));
         rgb beta = vscale(vmul(v[0].beta, env_radiance(sc, env_dir(&v[0]))), 1.0 / pdf_disc);
-        return trace(pc, s, v, 1, max_verts, vneg(env_dir(&v[0])), pdf_disc, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER, to);
+        return trace(pc, s, v, 1, max_verts, vneg(env_dir(&v[0])), pdf_disc, beta, TRANSPORT_IMPORTANCE, STREAM_EMITTER,
+                     to);
     }
     double pdf_dir;
     vec3 d = emitter_sample_dir(v[0].ng, s, &pdf_dir);

@@ -37,13 +37,15 @@ struct nonfinite {
 static inline long nonfinite_total(const struct nonfinite *n)
 {
     long t = 0;
-    for (int k = 0; k <= MAX_PATH_LENGTH; k++) t += n->len[k];
+    for (int k = 0; k <= MAX_PATH_LENGTH; k++)
+        t += n->len[k];
     return t;
 }
 
 static inline void nonfinite_add(struct nonfinite *dst, const struct nonfinite *src)
 {
-    for (int k = 0; k <= MAX_PATH_LENGTH; k++) dst->len[k] += src->len[k];
+    for (int k = 0; k <= MAX_PATH_LENGTH; k++)
+        dst->len[k] += src->len[k];
 }
 
 /* Tests only: n > 0 makes every n-th non-zero contribution a thread computes (connect_st, the path
@@ -52,21 +54,27 @@ static inline void nonfinite_add(struct nonfinite *dst, const struct nonfinite *
  * start; 0 otherwise, which costs one predictable branch per contribution. */
 extern long nonfinite_inject_every;
 rgb nonfinite_injected(rgb v);
-static inline rgb nonfinite_inject(rgb v) { return __builtin_expect(nonfinite_inject_every > 0, 0) ? nonfinite_injected(v) : v; }
+static inline rgb nonfinite_inject(rgb v)
+{
+    return __builtin_expect(nonfinite_inject_every > 0, 0) ? nonfinite_injected(v) : v;
+}
 
 /* The one door to the image for every estimator: a NaN or infinite colour would poison the pixel
  * and, through the merge, the whole image's mean, so it is counted in *dropped instead. */
 static inline void splat_finite(struct image *img, double px, double py, rgb c, long *dropped)
 {
-    if (vfinite(c)) img_splat(img, px, py, c);
-    else (*dropped)++;
+    if (vfinite(c))
+        img_splat(img, px, py, c);
+    else
+        (*dropped)++;
 }
 
 /* Sum of the luminances: the scalar MCMC target of a splat list. */
 static inline double splat_luminance(const struct splat_list *l)
 {
     double s = 0;
-    for (int i = 0; i < l->n; i++) s += luminance(l->s[i].c);
+    for (int i = 0; i < l->n; i++)
+        s += luminance(l->s[i].c);
     return s;
 }
 

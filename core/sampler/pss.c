@@ -11,8 +11,10 @@ void pss_opts_default(struct pss_opts *o, int width, int height)
 /* Back onto [0, 1); steps shorter than 1 (every Kelemen step) need no floor. */
 static double wrap(double u)
 {
-    if (u < 0) u += 1;
-    else if (u >= 1) u -= 1;
+    if (u < 0)
+        u += 1;
+    else if (u >= 1)
+        u -= 1;
     if (!(u >= 0 && u < 1)) u -= floor(u); /* long Gaussian steps */
     return u >= 1.0 ? 0.0 : u;
 }
@@ -129,7 +131,8 @@ double pss_read(struct pss_sampler *p, int stream, int idx, enum dim_kind kind)
     } else {
         uint64_t n = p->iteration - d->modified;
         if (n > 16) n = 16;
-        for (uint64_t i = 0; i < n; i++) d->value = pss_small_step(p, kind, d->value);
+        for (uint64_t i = 0; i < n; i++)
+            d->value = pss_small_step(p, kind, d->value);
     }
     d->modified = p->iteration;
     return d->value;
@@ -175,7 +178,8 @@ double pss_current(struct pss_sampler *p, int stream, int index)
 void pss_export(const struct pss_sampler *p, double (*u)[STREAM_DIMS])
 {
     for (int st = 0; st < STREAM_COUNT; st++)
-        for (int i = 0; i < STREAM_DIMS; i++) u[st][i] = p->d[st][i].modified ? p->d[st][i].value : NAN;
+        for (int i = 0; i < STREAM_DIMS; i++)
+            u[st][i] = p->d[st][i].modified ? p->d[st][i].value : NAN;
 }
 
 void pss_import(struct pss_sampler *p, const double (*u)[STREAM_DIMS])

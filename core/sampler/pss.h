@@ -21,8 +21,8 @@ enum pss_kernel { KERNEL_KELEMEN, KERNEL_GAUSSIAN };
 
 struct pss_opts {
     enum pss_kernel kernel;
-    double s1, s2;        /* Kelemen: smallest and largest step */
-    double sigma;         /* Gaussian: standard deviation */
+    double s1, s2; /* Kelemen: smallest and largest step */
+    double sigma;  /* Gaussian: standard deviation */
     bool rap, rap_resolution, cdc;
     int width, height;    /* image, for rap */
     double rap_reference; /* pixels, for rap_resolution (default 1024) */

@@ -63,8 +63,8 @@ static double replay_next(struct sampler *s, enum dim_kind kind)
     (void)kind;
     double u = ((struct sampler_replay *)s)->u[s->stream][sampler_index(s)];
     if (isnan(u)) {
-        fprintf(stderr, "sampler_replay: stream %d vertex %d offset %d was never written\n",
-                s->stream, s->vertex, s->offset);
+        fprintf(stderr, "sampler_replay: stream %d vertex %d offset %d was never written\n", s->stream, s->vertex,
+                s->offset);
         abort();
     }
     return u;

@@ -30,13 +30,13 @@ enum dim_kind {
     DIM_DISCRETE,   /* drives a discrete decision (lobe, reflect/refract, light choice, RR) */
     DIM_IMAGE_X,    /* image-plane position of the camera subpath */
     DIM_IMAGE_Y,
-    DIM_TECHNIQUE   /* MMLT's technique index: small steps mutate it like a continuous number
-                       (MMLT §4), constrained discrete choices leave it free */
+    DIM_TECHNIQUE /* MMLT's technique index: small steps mutate it like a continuous number
+                     (MMLT §4), constrained discrete choices leave it free */
 };
 
 enum { STREAM_CAMERA = 0, STREAM_EMITTER = 1, STREAM_TECHNIQUE = 2, STREAM_COUNT = 3 };
 
-#define SAMPLER_BLOCK 8      /* dimensions per vertex */
+#define SAMPLER_BLOCK 8 /* dimensions per vertex */
 /* Segments; subpaths hold at most MAX_PATH_LENGTH + 1 vertices. 64 is Tungsten's default
  * max_bounces, so most Tungsten scenes fit; the loader clamps longer limits with a warning.
  * Every fixed-size per-path array of the core is sized from it. */
@@ -46,9 +46,9 @@ enum { STREAM_CAMERA = 0, STREAM_EMITTER = 1, STREAM_TECHNIQUE = 2, STREAM_COUNT
 
 struct sampler;
 struct sampler_ops {
-    double (*next)(struct sampler *s, enum dim_kind kind);          /* forward */
-    void (*put)(struct sampler *s, enum dim_kind kind, double u);   /* writers only */
-    double (*fresh)(struct sampler *s);                             /* writers only */
+    double (*next)(struct sampler *s, enum dim_kind kind);        /* forward */
+    void (*put)(struct sampler *s, enum dim_kind kind, double u); /* writers only */
+    double (*fresh)(struct sampler *s);                           /* writers only */
 };
 
 /* Implementations embed this as their first member. */
@@ -57,10 +57,7 @@ struct sampler {
     int stream, vertex, offset;
 };
 
-static inline int sampler_index(const struct sampler *s)
-{
-    return s->vertex * SAMPLER_BLOCK + s->offset;
-}
+static inline int sampler_index(const struct sampler *s) { return s->vertex * SAMPLER_BLOCK + s->offset; }
 static inline void sampler_begin(struct sampler *s, int stream, int vertex)
 {
     assert(stream >= 0 && stream < STREAM_COUNT && vertex >= 0 && vertex < MAX_SUBPATH_VERTS);

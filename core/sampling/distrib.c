@@ -13,11 +13,13 @@ double cdf_build(double *cdf, const double *w, int n)
         cdf[i + 1] = total;
     }
     if (!(total > 0) || !isfinite(total)) {
-        for (int i = 0; i <= n; i++) cdf[i] = (double)i / n;
+        for (int i = 0; i <= n; i++)
+            cdf[i] = (double)i / n;
         cdf[n] = 1;
         return 0;
     }
-    for (int i = 1; i < n; i++) cdf[i] /= total;
+    for (int i = 1; i < n; i++)
+        cdf[i] /= total;
     cdf[n] = 1;
     return total;
 }
@@ -31,8 +33,10 @@ int cdf_find(const double *cdf, int n, double u)
     int lo = 0, hi = n - 1;
     while (lo < hi) {
         int mid = lo + (hi - lo + 1) / 2;
-        if (cdf[mid] <= u) lo = mid;
-        else hi = mid - 1;
+        if (cdf[mid] <= u)
+            lo = mid;
+        else
+            hi = mid - 1;
     }
     return lo;
 }
@@ -63,7 +67,8 @@ bool distrib2d_init(struct distrib2d *d, const double *w, int nx, int ny)
     d->marg = xmalloc(sizeof(double) * (size_t)(ny + 1));
     d->cond = xmalloc(sizeof(double) * (size_t)ny * (size_t)(nx + 1));
     double *rows = xmalloc(sizeof(double) * (size_t)ny);
-    for (int y = 0; y < ny; y++) rows[y] = cdf_build(d->cond + (size_t)y * (nx + 1), w + (size_t)y * nx, nx);
+    for (int y = 0; y < ny; y++)
+        rows[y] = cdf_build(d->cond + (size_t)y * (nx + 1), w + (size_t)y * nx, nx);
     d->total = cdf_build(d->marg, rows, ny);
     free(rows);
     return d->total > 0;

@@ -25,9 +25,9 @@ double cdf_invert_cont(const double *cdf, int i, double frac);
  * marginal over rows (u1) then a conditional over columns (u2). */
 struct distrib2d {
     int nx, ny;
-    double total;     /* sum of weights; 0 = unusable */
-    double *marg;     /* ny + 1 */
-    double *cond;     /* ny * (nx + 1) */
+    double total; /* sum of weights; 0 = unusable */
+    double *marg; /* ny + 1 */
+    double *cond; /* ny * (nx + 1) */
 };
 bool distrib2d_init(struct distrib2d *d, const double *w, int nx, int ny);
 void distrib2d_free(struct distrib2d *d);

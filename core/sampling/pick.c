@@ -4,12 +4,14 @@
 int pick_weighted(const double *w, int n, double u)
 {
     double sum = 0, acc = 0;
-    for (int i = 0; i < n; i++) sum += w[i];
+    for (int i = 0; i < n; i++)
+        sum += w[i];
     u *= sum;
     int j = 0;
     for (; j < n - 1; j++)
         if ((acc += w[j]) > u && w[j] > 0) break;
-    while (j > 0 && w[j] == 0) j--; /* rounding at the top end */
+    while (j > 0 && w[j] == 0)
+        j--; /* rounding at the top end */
     return j;
 }
 
@@ -19,8 +21,10 @@ long pick_cdf(const double *cdf, long n, double u)
     double x = u * cdf[n - 1];
     while (lo < hi) {
         long mid = (lo + hi) / 2;
-        if (cdf[mid] > x) hi = mid;
-        else lo = mid + 1;
+        if (cdf[mid] > x)
+            hi = mid;
+        else
+            lo = mid + 1;
     }
     return lo;
 }

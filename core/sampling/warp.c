@@ -33,10 +33,7 @@ vec3 warp_cosine_hemisphere(double u1, double u2)
 
 double warp_cosine_hemisphere_pdf(vec3 d) { return d.z > 0 ? d.z * INV_PI : 0.0; }
 
-void warp_cosine_hemisphere_invert(vec3 d, double *u1, double *u2)
-{
-    warp_disk_invert(d.x, d.y, u1, u2);
-}
+void warp_cosine_hemisphere_invert(vec3 d, double *u1, double *u2) { warp_disk_invert(d.x, d.y, u1, u2); }
 
 vec3 warp_uniform_sphere(double u1, double u2)
 {

@@ -24,16 +24,17 @@ static void add_triangles(RTCDevice dev, RTCScene scn, const struct prim *p, uns
 {
     RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
     /* rtcSetNewGeometryBuffer pads the vertex buffer as Embree's SSE loads require. */
-    float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                       (size_t)p->nverts);
-    unsigned *ix = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-                                           (size_t)p->ntris);
+    float *v =
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), (size_t)p->nverts);
+    unsigned *ix =
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), (size_t)p->ntris);
     for (int i = 0; i < p->nverts; i++) {
         v[3 * i] = (float)p->p[i].x;
         v[3 * i + 1] = (float)p->p[i].y;
         v[3 * i + 2] = (float)p->p[i].z;
     }
-    for (int i = 0; i < 3 * p->ntris; i++) ix[i] = (unsigned)p->tri[i];
+    for (int i = 0; i < 3 * p->ntris; i++)
+        ix[i] = (unsigned)p->tri[i];
     rtcCommitGeometry(g);
     rtcAttachGeometryByID(scn, g, id);
     rtcReleaseGeometry(g);
@@ -64,9 +65,12 @@ static bool cpu_runs(int i)
 {
     __builtin_cpu_init();
     switch (i) {
-    case 0: return __builtin_cpu_supports("sse2");
-    case 1: return __builtin_cpu_supports("sse4.2") && __builtin_cpu_supports("popcnt");
-    case 2: return __builtin_cpu_supports("avx");
+    case 0:
+        return __builtin_cpu_supports("sse2");
+    case 1:
+        return __builtin_cpu_supports("sse4.2") && __builtin_cpu_supports("popcnt");
+    case 2:
+        return __builtin_cpu_supports("avx");
     case 3:
         return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
                __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("lzcnt");
@@ -93,7 +97,7 @@ static bool embree_runs(int i)
     bool ok = rtcGetDeviceError(d) == RTC_ERROR_NONE;
     int w = rtcGetDeviceProperty(d, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)  ? 16
             : rtcGetDeviceProperty(d, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) ? 8
-                                                                                   : 4;
+                                                                                 : 4;
     rtcReleaseDevice(d);
     return ok && w == isa_table[i].width;
 }
@@ -167,8 +171,10 @@ struct accel *accel_build(const struct scene *sc, char *err, size_t errlen)
     rtcSetSceneBuildQuality(scn, RTC_BUILD_QUALITY_LOW);
     for (int i = 0; i < sc->nprims; i++) {
         const struct prim *p = &sc->prims[i];
-        if (p->kind == PRIM_SPHERE) add_sphere(dev, scn, p, (unsigned)i);
-        else if (p->kind == PRIM_MESH || p->kind == PRIM_QUAD) add_triangles(dev, scn, p, (unsigned)i);
+        if (p->kind == PRIM_SPHERE)
+            add_sphere(dev, scn, p, (unsigned)i);
+        else if (p->kind == PRIM_MESH || p->kind == PRIM_QUAD)
+            add_triangles(dev, scn, p, (unsigned)i);
     }
     rtcCommitScene(scn);
     if (rtcGetDeviceError(dev) != RTC_ERROR_NONE) {

@@ -6,8 +6,8 @@
 
 struct hit {
     double t;
-    int prim, tri;   /* tri = -1 for spheres */
-    double b1, b2;   /* barycentrics of the triangle's vertices 1 and 2 */
+    int prim, tri; /* tri = -1 for spheres */
+    double b1, b2; /* barycentrics of the triangle's vertices 1 and 2 */
 };
 
 /* Builds on the instruction set chosen below; fails with a message when PSS_EMBREE_ISA names one

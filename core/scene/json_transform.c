@@ -80,11 +80,21 @@ bool jval_transform(struct jctx *c, const cJSON *v, const char *path, mat4 *out)
         *flag[i] = true;
     }
     switch ((ez ? 4 : 0) + (ey ? 2 : 0) + (ex ? 1 : 0)) {
-    case 1: gram_schmidt(&x, &z, &y); break;
-    case 2: gram_schmidt(&y, &z, &x); break;
-    case 3: gram_schmidt(&y, &x, &z); break;
-    case 5: gram_schmidt(&z, &x, &y); break;
-    default: gram_schmidt(&z, &y, &x); break;
+    case 1:
+        gram_schmidt(&x, &z, &y);
+        break;
+    case 2:
+        gram_schmidt(&y, &z, &x);
+        break;
+    case 3:
+        gram_schmidt(&y, &x, &z);
+        break;
+    case 5:
+        gram_schmidt(&z, &x, &y);
+        break;
+    default:
+        gram_schmidt(&z, &y, &x);
+        break;
     }
     if (vdot(vcross(x, y), z) < 0) {
         if (!ex)

@@ -57,7 +57,8 @@ static bool load_texture(struct loader *L, const cJSON *v, const char *path, boo
             jpath_key(tp, path, "type");
             const char *why = refused_feature(REFUSED_TEXTURE, type);
             if (why) return jfail(&L->c, tp, "texture type \"%s\" is not supported: %s", type, why);
-            return jfail(&L->c, tp, "texture type \"%s\" is not supported (expected bitmap, checker or constant)", type);
+            return jfail(&L->c, tp, "texture type \"%s\" is not supported (expected bitmap, checker or constant)",
+                         type);
         }
         if (!jget_string(&L->c, v, path, "file", true, &file)) return false;
         jpath_key(fpath, path, "file");

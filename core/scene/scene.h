@@ -10,7 +10,7 @@
 #include <stddef.h>
 
 enum bsdf_type {
-    BSDF_NULL,            /* no scattering: the path ends here (see README, "null") */
+    BSDF_NULL, /* no scattering: the path ends here (see README, "null") */
     BSDF_LAMBERT,
     BSDF_MIRROR,
     BSDF_CONDUCTOR,
@@ -21,12 +21,12 @@ enum bsdf_type {
     BSDF_ROUGH_PLASTIC,
     BSDF_THINSHEET,
     BSDF_DIFFUSE_TRANSMISSION,
-    BSDF_TRANSPARENCY,    /* child[0] = base, alpha = opacity */
-    BSDF_SMOOTH_COAT,     /* child[0] = substrate */
-    BSDF_ROUGH_COAT,      /* child[0] = substrate */
+    BSDF_TRANSPARENCY, /* child[0] = base, alpha = opacity */
+    BSDF_SMOOTH_COAT,  /* child[0] = substrate */
+    BSDF_ROUGH_COAT,   /* child[0] = substrate */
     BSDF_OREN_NAYAR,
     BSDF_PHONG,
-    BSDF_MIXED,           /* child[0], child[1] = bsdf0, bsdf1, ratio = weight of bsdf0 */
+    BSDF_MIXED, /* child[0], child[1] = bsdf0, bsdf1, ratio = weight of bsdf0 */
     BSDF_NTYPES
 };
 
@@ -77,19 +77,19 @@ struct texture *texture_constant(rgb value);
 struct bsdf {
     enum bsdf_type type;
     char name[64];
-    rgb albedo;                    /* lambert, mirror, conductor tint, plastic substrate, ... */
-    struct texture *albedo_tex;    /* owned; NULL = constant albedo */
-    rgb eta, k;                    /* conductors (from `material` or explicit) */
-    double ior;                    /* dielectrics and plastics (relative, outside = 1) */
-    bool enable_refraction;        /* dielectrics */
-    enum mf_dist dist;             /* rough_* */
-    double roughness;              /* alpha, as Tungsten's `roughness` */
-    double thickness;              /* plastics, thinsheet */
-    rgb sigma_a;                   /* plastics, thinsheet */
+    rgb albedo;                 /* lambert, mirror, conductor tint, plastic substrate, ... */
+    struct texture *albedo_tex; /* owned; NULL = constant albedo */
+    rgb eta, k;                 /* conductors (from `material` or explicit) */
+    double ior;                 /* dielectrics and plastics (relative, outside = 1) */
+    bool enable_refraction;     /* dielectrics */
+    enum mf_dist dist;          /* rough_* */
+    double roughness;           /* alpha, as Tungsten's `roughness` */
+    double thickness;           /* plastics, thinsheet */
+    rgb sigma_a;                /* plastics, thinsheet */
     /* leaf BSDFs: thinsheet uses ior, thickness (default 0.5), sigma_a above; oren_nayar roughness */
-    double transmittance;          /* diffuse_transmission: share sent to the other side (0.5) */
-    double exponent;               /* phong: cosine-lobe exponent (64) */
-    double diffuse_ratio;          /* phong: weight of the Lambertian lobe (0.2) */
+    double transmittance; /* diffuse_transmission: share sent to the other side (0.5) */
+    double exponent;      /* phong: cosine-lobe exponent (64) */
+    double diffuse_ratio; /* phong: weight of the Lambertian lobe (0.2) */
     /* Nested BSDFs (transparency, coats, mixed): slots of the same scene.bsdfs array, which is
      * allocated once, so the pointers stay valid; never NULL for the types that have them. */
     const struct bsdf *child[2];
@@ -100,64 +100,64 @@ struct bsdf {
     struct texture *roughness_tex;
     struct texture *bump_tex;
     /* Derived by bsdf_prepare() after loading (children first); never read from JSON. */
-    double diffuse_fresnel;        /* plastics: hemispherical average of the coat's Fresnel (inside) */
-    int dims;                      /* numbers sample() consumes (nested types: their own + children's) */
-    bool transmissive;             /* some lobe scatters to the other side: no two-sided flip */
-    bool delta_only;               /* every lobe is a Dirac delta: never connect to it */
-    bool needs_uv;                 /* a texture somewhere in it is read at the hit's uv */
+    double diffuse_fresnel; /* plastics: hemispherical average of the coat's Fresnel (inside) */
+    int dims;               /* numbers sample() consumes (nested types: their own + children's) */
+    bool transmissive;      /* some lobe scatters to the other side: no two-sided flip */
+    bool delta_only;        /* every lobe is a Dirac delta: never connect to it */
+    bool needs_uv;          /* a texture somewhere in it is read at the hit's uv */
     /* nested BSDFs: parameters from JSON (alpha, ratio, ratio_tex), then derived by bsdf_prepare. */
-    double alpha;                  /* transparency: opacity, the probability that the base scatters */
-    double ratio;                  /* mixed: weight of child[0] (bsdf0) when ratio_tex is NULL */
-    struct texture *ratio_tex;     /* mixed: owned; scalar (texture_load_average), NULL = constant */
-    bool refracts;                 /* some lobe refracts (a dielectric, or one nested in it) */
-    double refract_ior;            /* the ior it refracts with (the first refracting child's) */
-    bool pass_through;             /* has a straight-through lobe without refraction (transparency, thinsheet) */
+    double alpha;              /* transparency: opacity, the probability that the base scatters */
+    double ratio;              /* mixed: weight of child[0] (bsdf0) when ratio_tex is NULL */
+    struct texture *ratio_tex; /* mixed: owned; scalar (texture_load_average), NULL = constant */
+    bool refracts;             /* some lobe refracts (a dielectric, or one nested in it) */
+    double refract_ior;        /* the ior it refracts with (the first refracting child's) */
+    bool pass_through;         /* has a straight-through lobe without refraction (transparency, thinsheet) */
 };
 
 enum prim_kind { PRIM_MESH, PRIM_QUAD, PRIM_SPHERE, PRIM_INFINITE_SPHERE };
 
 struct prim {
     enum prim_kind kind;
-    int bsdf;                  /* index into scene.bsdfs; -1 for the infinite sphere */
-    rgb emission;              /* constant radiance, front side only; zero = not an emitter */
+    int bsdf;     /* index into scene.bsdfs; -1 for the infinite sphere */
+    rgb emission; /* constant radiance, front side only; zero = not an emitter */
     bool emissive;
     /* triangles: PRIM_MESH and PRIM_QUAD (two triangles) */
     int nverts, ntris;
-    vec3 *p;                   /* world positions */
-    vec3 *n;                   /* world vertex normals when smooth, else NULL */
-    double *uv;                /* 2 per vertex or NULL */
-    int *tri;                  /* 3 per triangle, counter-clockwise seen from the front */
-    vec3 *tri_n;               /* unit geometric normal per triangle (built by scene_load) */
+    vec3 *p;     /* world positions */
+    vec3 *n;     /* world vertex normals when smooth, else NULL */
+    double *uv;  /* 2 per vertex or NULL */
+    int *tri;    /* 3 per triangle, counter-clockwise seen from the front */
+    vec3 *tri_n; /* unit geometric normal per triangle (built by scene_load) */
     /* PRIM_QUAD: p = base + a * edge0 + b * edge1, (a, b) in [0,1]^2; normal = edge1 x edge0 (unit) */
     vec3 quad_base, quad_edge0, quad_edge1, quad_normal;
     /* PRIM_SPHERE */
     vec3 center;
     double radius;
-    vec3 sphere_axis[3];       /* unit columns of the transform; local normal = (axis[i] . n), for uv */
+    vec3 sphere_axis[3]; /* unit columns of the transform; local normal = (axis[i] . n), for uv */
     /* textures: a mesh built from a `cube` takes the cube's axes as its bump-map tangents
      * (Cube.cpp), where other meshes take their uv parameterisation's (TriangleMesh.cpp) */
     bool cube_tangents;
     /* PRIM_INFINITE_SPHERE: emission map (NULL = constant `emission`) and its frame */
-    struct texture *env_tex;   /* owned, lat-long */
+    struct texture *env_tex; /* owned, lat-long */
     mat4 env_to_world, env_to_local;
     /* primitives: disk and cylinder load as PRIM_MESH tessellations (scene_shapes.c); an
      * infinite_sphere_cap is a PRIM_INFINITE_SPHERE whose constant emission covers only the
      * directions d with dot(d, cap_dir) >= cap_cos (cap_cos = -1: the whole sphere). */
     bool env_is_cap;
-    vec3 cap_dir;              /* world, unit: the transform applied to local +y */
-    double cap_cos;            /* cos(cap_angle) */
-    double area;               /* world surface area (0 for the infinite sphere) */
+    vec3 cap_dir;   /* world, unit: the transform applied to local +y */
+    double cap_cos; /* cos(cap_angle) */
+    double area;    /* world surface area (0 for the infinite sphere) */
 };
 
 enum recon_filter { FILTER_BOX, FILTER_TENT };
 
 struct camera {
     vec3 pos;
-    frame basis;               /* s = image right, t = image up, n = viewing direction */
-    double fov_deg;            /* horizontal */
+    frame basis;    /* s = image right, t = image up, n = viewing direction */
+    double fov_deg; /* horizontal */
     int width, height;
-    double tan_half_fov;       /* horizontal */
-    double aspect;             /* width / height */
+    double tan_half_fov; /* horizontal */
+    double aspect;       /* width / height */
     enum recon_filter filter;
     /* thin lens: lens_radius is the aperture disc's radius about pos in the (s, t) plane (Tungsten's
      * aperture_size is this radius), 0 for the pinhole; focus_dist is the distance along n of the
@@ -179,24 +179,23 @@ struct camera {
 void camera_setup(struct camera *c, vec3 pos, vec3 look_at, vec3 up, double fov_deg, int w, int h);
 void camera_resize(struct camera *c, int w, int h);
 
-struct emitter_table;          /* light selection, built by emitters_build() (emitter.h) */
-struct accel;                  /* Embree scene, built by accel_build() (accel.h) */
-
+struct emitter_table; /* light selection, built by emitters_build() (emitter.h) */
+struct accel;         /* Embree scene, built by accel_build() (accel.h) */
 
 struct scene {
-    char *file;                /* the scene file, for messages */
+    char *file; /* the scene file, for messages */
     struct bsdf *bsdfs;
     int nbsdfs;
     struct prim *prims;
     int nprims;
     struct camera cam;
     /* Defaults from the integrator/renderer blocks (command-line options override). */
-    int max_length;            /* path length cap in segments (from Tungsten's max_bounces) */
+    int max_length; /* path length cap in segments (from Tungsten's max_bounces) */
     int min_length;
     int spp;
-    bool two_sided_shading;    /* integrator.enable_two_sided_shading, default true */
-    vec3 bbox_min, bbox_max;   /* of all finite geometry */
-    int env_prim;              /* index of the infinite sphere or -1 */
+    bool two_sided_shading;  /* integrator.enable_two_sided_shading, default true */
+    vec3 bbox_min, bbox_max; /* of all finite geometry */
+    int env_prim;            /* index of the infinite sphere or -1 */
     struct emitter_table *emitters;
     struct accel *accel;
 };

@@ -97,8 +97,10 @@ uint64_t ckpt_scene_hash(const struct scene *sc)
     }
     H(sc->two_sided_shading);
     H(sc->nbsdfs);
-    for (int i = 0; i < sc->nbsdfs; i++) h = hash_bsdf(h, sc->bsdfs, &sc->bsdfs[i]);
+    for (int i = 0; i < sc->nbsdfs; i++)
+        h = hash_bsdf(h, sc->bsdfs, &sc->bsdfs[i]);
     H(sc->nprims);
-    for (int i = 0; i < sc->nprims; i++) h = hash_prim(h, &sc->prims[i]);
+    for (int i = 0; i < sc->nprims; i++)
+        h = hash_prim(h, &sc->prims[i]);
     return h;
 }

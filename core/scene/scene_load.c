@@ -14,7 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-
 static char *read_text(const char *path, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "rb");
@@ -33,7 +32,8 @@ static char *read_text(const char *path, char *err, size_t errlen)
         n += fread(b + n, 1, cap - n - 1, f);
         if (n < cap - 1) break;
         if (n > LIMIT_SCENE_BYTES) {
-            snprintf(err, errlen, "%s: larger than the limit of %ld MB for a scene file", path, LIMIT_SCENE_BYTES >> 20);
+            snprintf(err, errlen, "%s: larger than the limit of %ld MB for a scene file", path,
+                     LIMIT_SCENE_BYTES >> 20);
             fclose(f);
             free(b);
             return NULL;
@@ -87,8 +87,9 @@ static void json_error(const char *path, const char *text, const char *at, char 
 static bool load_thinlens(struct jctx *c, const cJSON *cam, struct camera *out)
 {
     if (cJSON_GetObjectItemCaseSensitive(cam, "aperture"))
-        return jfail(c, "camera.aperture", "aperture textures are not supported (the aperture is a uniform disc of "
-                                           "radius aperture_size)");
+        return jfail(c, "camera.aperture",
+                     "aperture textures are not supported (the aperture is a uniform disc of "
+                     "radius aperture_size)");
     if (cJSON_GetObjectItemCaseSensitive(cam, "focus_pivot"))
         return jfail(c, "camera.focus_pivot", "not supported (give focus_distance instead)");
     double focus = 1, radius = 0.001, cateye = 0;
@@ -214,7 +215,8 @@ static void compute_bbox(struct scene *s)
             grow(&lo, &hi, vsub(p->center, v3s(p->radius)));
             grow(&lo, &hi, vadd(p->center, v3s(p->radius)));
         } else if (p->kind != PRIM_INFINITE_SPHERE) {
-            for (int t = 0; t < 3 * p->ntris; t++) grow(&lo, &hi, p->p[p->tri[t]]);
+            for (int t = 0; t < 3 * p->ntris; t++)
+                grow(&lo, &hi, p->p[p->tri[t]]);
         }
     }
     if (lo.x > hi.x) lo = hi = s->cam.pos; /* no finite geometry: a point box at the camera */
@@ -241,7 +243,8 @@ static bool load_root(struct loader *L, const cJSON *root)
         L->bsdf_cap += cJSON_IsObject(p) ? L->bsdf->slots(cJSON_GetObjectItemCaseSensitive(p, "bsdf")) : 0;
     s->bsdfs = xcalloc(L->bsdf_cap, sizeof *s->bsdfs);
     s->prims = xcalloc(s->nprims ? s->nprims : 1, sizeof *s->prims);
-    for (int i = 0; i < s->nprims; i++) s->prims[i].bsdf = -1;
+    for (int i = 0; i < s->nprims; i++)
+        s->prims[i].bsdf = -1;
     if (!L->bsdf->load_all(L) || !load_primitives(L, prims) || !L->bsdf->check(L)) return false;
     if (!load_camera(L, cJSON_GetObjectItemCaseSensitive(root, "camera"))) return false;
     if (!load_settings(L, cJSON_GetObjectItemCaseSensitive(root, "integrator"),

@@ -97,7 +97,8 @@ static void build_cube(struct prim *p, const mat4 *m)
             v += 4;
         }
     p->area = 0;
-    for (int i = 0; i < p->ntris; i++) p->area += 0.5 * tri_area2(p, i);
+    for (int i = 0; i < p->ntris; i++)
+        p->area += 0.5 * tri_area2(p, i);
 }
 
 static void build_sphere(struct prim *p, const mat4 *m)
@@ -120,8 +121,7 @@ static bool build_mesh(struct loader *L, const cJSON *j, const char *path, struc
     struct jctx *c = &L->c;
     const char *file = NULL;
     bool smooth = false;
-    if (!jget_string(c, j, path, "file", true, &file) || !jget_bool(c, j, path, "smooth", false, &smooth))
-        return false;
+    if (!jget_string(c, j, path, "file", true, &file) || !jget_bool(c, j, path, "smooth", false, &smooth)) return false;
     if (cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(j, "recompute_normals")))
         jwarn(c, path, "recompute_normals is not supported; using the file's normals");
     char fp[JPATH_MAX], full[8192], err[1024];
@@ -131,7 +131,8 @@ static bool build_mesh(struct loader *L, const cJSON *j, const char *path, struc
     if (!mesh_load(full, &r, err, sizeof err)) return jfail(c, fp, "%s: %s", full, err);
     p->kind = PRIM_MESH;
     alloc_tris(p, r.nverts, r.ntris, r.uv != NULL);
-    for (int i = 0; i < r.nverts; i++) p->p[i] = mat4_point(m, r.p[i]);
+    for (int i = 0; i < r.nverts; i++)
+        p->p[i] = mat4_point(m, r.p[i]);
     if (r.uv) memcpy(p->uv, r.uv, (size_t)r.nverts * 2 * sizeof(double));
     /* Keep only triangles with a usable area; a zero cross product has no normal to shade with. */
     int kept = 0;
@@ -186,8 +187,10 @@ static bool build_infinite_sphere(struct loader *L, const char *path, struct pri
     }
     p->env_to_world = r;
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) p->env_to_local.m[i][j] = r.m[j][i];
-    for (int i = 0; i < 4; i++) p->env_to_local.m[i][3] = p->env_to_local.m[3][i] = i == 3;
+        for (int j = 0; j < 3; j++)
+            p->env_to_local.m[i][j] = r.m[j][i];
+    for (int i = 0; i < 4; i++)
+        p->env_to_local.m[i][3] = p->env_to_local.m[3][i] = i == 3;
     return true;
 }
 
@@ -238,14 +241,15 @@ static bool load_emission(struct loader *L, const cJSON *j, const char *path, st
         rgb pw;
         if (!colour(L, w, wp, &pw)) return false;
         if (!env && !(p->area > 0) && !vzero(pw)) return jfail(&L->c, path, "zero-area emitter");
-        p->emission = cap   ? vscale(pw, 1 / (2 * M_PI * (1 - p->cap_cos)))
-                      : env ? vscale(pw, 1 / (4 * M_PI))
+        p->emission = cap         ? vscale(pw, 1 / (2 * M_PI * (1 - p->cap_cos)))
+                      : env       ? vscale(pw, 1 / (4 * M_PI))
                       : vzero(pw) ? pw
                                   : vscale(pw, 1 / (M_PI * p->area));
     } else if (e && (cJSON_IsString(e) || cJSON_IsObject(e))) {
         if (!env || cap)
-            return jfail(&L->c, ep, "textured emission is only supported on infinite_sphere "
-                                    "(expected a number or an array of 3 numbers)");
+            return jfail(&L->c, ep,
+                         "textured emission is only supported on infinite_sphere "
+                         "(expected a number or an array of 3 numbers)");
         if (!load_texture_value(L, e, ep, &p->env_tex)) return false;
         p->emission = v3s(1);
         /* textures: the environment's sampling reads texels, so only a bitmap (or a constant) */
@@ -278,8 +282,9 @@ static bool disk_cone(struct loader *L, const cJSON *j, const char *path)
     jpath_key(cp, path, "cone_angle");
     if (!(deg > 0 && deg <= 90)) return jfail(&L->c, cp, "expected an angle in degrees with 0 < cone_angle <= 90");
     if (deg < 90)
-        jwarn(&L->c, cp, "the disk emits over its whole front hemisphere (as Tungsten 0.2.2's emitter paths "
-                         "and its BDPT reference do); the cone is not applied");
+        jwarn(&L->c, cp,
+              "the disk emits over its whole front hemisphere (as Tungsten 0.2.2's emitter paths "
+              "and its BDPT reference do); the cone is not applied");
     return true;
 }
 

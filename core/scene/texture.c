@@ -59,7 +59,8 @@ static struct texture *from_texels(const char *path, int w, int h, float *px, in
             px[i] = px[i + 1] = px[i + 2] = (float)m;
         }
     } else if (ldr) {
-        for (size_t i = 0; i < n; i++) px[i] = texture_gamma_decode(code8(px[i], bits));
+        for (size_t i = 0; i < n; i++)
+            px[i] = texture_gamma_decode(code8(px[i], bits));
     }
     struct texture *t = xcalloc(1, sizeof *t);
     t->kind = TEX_BITMAP;
@@ -133,10 +134,7 @@ static rgb bitmap_lookup(const struct texture *t, double u, double v)
 /* Tungsten converts u res to an int, which truncates toward zero (so the cells either side of
  * u = 0 share an index); parity of negative indices as two's complement. Values no int holds
  * (and NaN) take cell 0. */
-static inline long long cell(double x)
-{
-    return fabs(x) < 0x1p62 ? (long long)x : 0;
-}
+static inline long long cell(double x) { return fabs(x) < 0x1p62 ? (long long)x : 0; }
 
 rgb texture_lookup(const struct texture *t, double u, double v)
 {

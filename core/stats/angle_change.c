@@ -10,7 +10,8 @@ static double angle_between(vec3 a, vec3 b) { return atan2(vlen(vcross(a, b)), v
 double angle_subpath(const struct vertex *a, const struct vertex *b, int n)
 {
     double s = 0, d2;
-    for (int i = 0; i + 1 < n; i++) s += angle_between(edge_dir(&a[i], &a[i + 1], &d2), edge_dir(&b[i], &b[i + 1], &d2));
+    for (int i = 0; i + 1 < n; i++)
+        s += angle_between(edge_dir(&a[i], &a[i + 1], &d2), edge_dir(&b[i], &b[i + 1], &d2));
     return s;
 }
 
@@ -56,7 +57,8 @@ void angle_acc_merge(struct angle_acc *dst, const struct angle_acc *src)
         dst->sum[i] += src->sum[i];
         dst->count[i] += src->count[i];
     }
-    for (int k = 0; k <= MAX_PATH_LENGTH; k++) cell_merge(&dst->len[k], &src->len[k]);
+    for (int k = 0; k <= MAX_PATH_LENGTH; k++)
+        cell_merge(&dst->len[k], &src->len[k]);
     dst->skipped += src->skipped;
 }
 

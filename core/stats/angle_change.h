@@ -26,9 +26,9 @@ bool angle_change(const struct vertex *cur_cam, int t, const struct vertex *cur_
 /* Per thread; threads are merged in a fixed order. */
 struct angle_acc {
     int w, h;
-    double *sum, *count; /* per pixel */
+    double *sum, *count;                         /* per pixel */
     struct accept_cell len[MAX_PATH_LENGTH + 1]; /* [0]: all lengths; batch means as mlt_stats */
-    long skipped; /* small steps without a comparable proposal */
+    long skipped;                                /* small steps without a comparable proposal */
 };
 
 void angle_acc_init(struct angle_acc *a, int w, int h);

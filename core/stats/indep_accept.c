@@ -31,18 +31,22 @@ void indep_accept(const struct weighted_draws *d, double *theta)
     int G = d->groups;
     double within[JACK_MAX_GROUPS] = {0}, sumw[JACK_MAX_GROUPS] = {0}, smin[JACK_MAX_GROUPS + 1] = {0};
     struct draw *s = xmalloc((size_t)(d->n > 0 ? d->n : 1) * sizeof *s);
-    for (long i = 0; i < d->n; i++) s[i] = (struct draw){d->w[i], d->cluster[i]};
+    for (long i = 0; i < d->n; i++)
+        s[i] = (struct draw){d->w[i], d->cluster[i]};
     /* pairs inside one cluster: left out of every sum below */
     qsort(s, (size_t)d->n, sizeof *s, by_cluster);
     for (long i = 0; i < d->n;) {
         long e = i;
-        while (e < d->n && s[e].cluster == s[i].cluster) e++;
+        while (e < d->n && s[e].cluster == s[i].cluster)
+            e++;
         for (long a = i; a < e; a++)
-            for (long b = a + 1; b < e; b++) within[s[i].cluster % G] += fmin(s[a].w, s[b].w);
+            for (long b = a + 1; b < e; b++)
+                within[s[i].cluster % G] += fmin(s[a].w, s[b].w);
         i = e;
     }
     qsort(s, (size_t)d->n, sizeof *s, by_weight);
-    for (long i = 0; i < d->n; i++) sumw[s[i].cluster % G] += s[i].w;
+    for (long i = 0; i < d->n; i++)
+        sumw[s[i].cluster % G] += s[i].w;
     /* sum over pairs of min(w_i, w_j): ascending order, each weight times the draws above it;
      * replicate g (index g + 1) counts only draws outside group g, 0 all of them */
     long above[JACK_MAX_GROUPS + 1] = {0};
@@ -56,7 +60,8 @@ void indep_accept(const struct weighted_draws *d, double *theta)
     }
     free(s);
     double tw = 0, tin = 0;
-    for (int g = 0; g < G; g++) tw += sumw[g], tin += within[g];
+    for (int g = 0; g < G; g++)
+        tw += sumw[g], tin += within[g];
     for (int g = 0; g <= G; g++) {
         long c = g == 0 ? d->clusters : d->clusters - clusters_in(d->clusters, G, g - 1);
         double m = (double)c * d->per_cluster;
@@ -69,16 +74,21 @@ void indep_accept(const struct weighted_draws *d, double *theta)
 void jack_mean(const double *v, long clusters, int groups, double *theta)
 {
     double sum[JACK_MAX_GROUPS] = {0}, t = 0;
-    for (long c = 0; c < clusters; c++) sum[c % groups] += v[c];
-    for (int g = 0; g < groups; g++) t += sum[g];
+    for (long c = 0; c < clusters; c++)
+        sum[c % groups] += v[c];
+    for (int g = 0; g < groups; g++)
+        t += sum[g];
     theta[0] = t / (double)clusters;
-    for (int g = 0; g < groups; g++) theta[g + 1] = (t - sum[g]) / (double)(clusters - clusters_in(clusters, groups, g));
+    for (int g = 0; g < groups; g++)
+        theta[g + 1] = (t - sum[g]) / (double)(clusters - clusters_in(clusters, groups, g));
 }
 
 double jack_se(const double *theta, int groups)
 {
     double m = 0, v = 0;
-    for (int g = 1; g <= groups; g++) m += theta[g] / groups;
-    for (int g = 1; g <= groups; g++) v += (theta[g] - m) * (theta[g] - m);
+    for (int g = 1; g <= groups; g++)
+        m += theta[g] / groups;
+    for (int g = 1; g <= groups; g++)
+        v += (theta[g] - m) * (theta[g] - m);
     return sqrt(v * (groups - 1) / groups);
 }

@@ -19,12 +19,12 @@
 #define JACK_MAX_GROUPS 64
 
 struct weighted_draws {
-    long n;             /* positive draws */
-    double *w;          /* their weights */
-    long *cluster;      /* and clusters, 0..clusters-1 (cluster c is in group c % groups) */
-    long clusters;      /* all clusters, with or without a positive draw */
-    int per_cluster;    /* draws per cluster, zeros included */
-    int groups;         /* 2..JACK_MAX_GROUPS */
+    long n;          /* positive draws */
+    double *w;       /* their weights */
+    long *cluster;   /* and clusters, 0..clusters-1 (cluster c is in group c % groups) */
+    long clusters;   /* all clusters, with or without a positive draw */
+    int per_cluster; /* draws per cluster, zeros included */
+    int groups;      /* 2..JACK_MAX_GROUPS */
 };
 
 /* theta[0]: E[min(W1, W2)] / E[W] over all draws; theta[1..groups]: the same without group g.

@@ -77,7 +77,8 @@ void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src)
 {
     for (int k = 0; k < PROPOSAL_KINDS; k++) {
         for (int l = 0; l < STATS_LENGTHS; l++) {
-            for (int c = 0; c < 2; c++) cell_merge(&dst->cell[k][l][c], &src->cell[k][l][c]);
+            for (int c = 0; c < 2; c++)
+                cell_merge(&dst->cell[k][l][c], &src->cell[k][l][c]);
             cell_merge(&dst->any[k][l], &src->any[k][l]);
         }
         cell_merge(&dst->total[k], &src->total[k]);
@@ -107,14 +108,17 @@ static void row(FILE *f, const char *method, const char *kind, const char *len, 
 
 void stats_write_csv(FILE *f, const char *method, const struct mlt_stats *s, bool header)
 {
-    if (header) fprintf(f, "method,kind,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,nonzero,mean_dtech,failed\n");
+    if (header)
+        fprintf(f, "method,kind,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,nonzero,mean_"
+                   "dtech,failed\n");
     char len[16];
     for (int k = 0; k < PROPOSAL_KINDS; k++) {
         for (int l = 0; l < STATS_LENGTHS; l++) {
             if (!s->any[k][l].attempts) continue;
             snprintf(len, sizeof len, "%d", l);
             for (int c = 0; c < 2; c++)
-                if (s->cell[k][l][c].attempts) row(f, method, kind_names[k], l ? len : "all", c ? "yes" : "no", &s->cell[k][l][c]);
+                if (s->cell[k][l][c].attempts)
+                    row(f, method, kind_names[k], l ? len : "all", c ? "yes" : "no", &s->cell[k][l][c]);
             row(f, method, kind_names[k], l ? len : "all", "any", &s->any[k][l]);
         }
         if (s->total[k].attempts) row(f, method, kind_names[k], "total", "any", &s->total[k]);

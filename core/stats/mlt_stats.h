@@ -16,18 +16,18 @@ enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PI
  * without attempts writes no rows, so the CSV of a run without them is unchanged. */
 #define PROPOSAL_KINDS (PROPOSAL_BUILTIN + 4)
 #define STATS_LENGTHS (MAX_PATH_LENGTH + 1) /* index 0 = all lengths (PSSMLT states) */
-#define STATS_BATCH 2048 /* proposals per batch: long enough for chains stuck ~1/acceptance steps */
+#define STATS_BATCH 2048                    /* proposals per batch: long enough for chains stuck ~1/acceptance steps */
 
 struct accept_cell {
     long attempts, accepted, nonzero;
-    double sum_a;                /* sum of min(1, a) */
-    double batch_sum;            /* running batch */
+    double sum_a;     /* sum of min(1, a) */
+    double batch_sum; /* running batch */
     long batch_n;
     long nbatches;
-    double bsum, bsum2;          /* sums of batch means and their squares */
-    long failed;                 /* proposals that could not be constructed (PITP: inversion or retrace) */
-    double sum_dtech;            /* sum of |t' - t|: how far proposals move the technique */
-    double seconds;              /* time spent on these proposals (not in the CSV rows: they reproduce exactly) */
+    double bsum, bsum2; /* sums of batch means and their squares */
+    long failed;        /* proposals that could not be constructed (PITP: inversion or retrace) */
+    double sum_dtech;   /* sum of |t' - t|: how far proposals move the technique */
+    double seconds;     /* time spent on these proposals (not in the CSV rows: they reproduce exactly) */
 };
 
 /* Every proposal is recorded three times, each cell a contiguous subsequence of the chain so that
@@ -36,7 +36,7 @@ struct mlt_stats {
     struct accept_cell cell[PROPOSAL_KINDS][STATS_LENGTHS][2];
     struct accept_cell any[PROPOSAL_KINDS][STATS_LENGTHS];
     struct accept_cell total[PROPOSAL_KINDS];
-    struct nonfinite nonfinite; /* by length, as the rows (path/splat.h) */
+    struct nonfinite nonfinite;    /* by length, as the rows (path/splat.h) */
     long conn_tried, conn_nonzero; /* connections the chains evaluated, and those with a contribution */
 };
 

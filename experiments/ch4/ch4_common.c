@@ -23,8 +23,8 @@ struct ref_job {
 static struct image *render_reference(void *ctx, const char *path, char *err, size_t errlen)
 {
     const struct ref_job *j = ctx;
-    fprintf(stderr, "%s: rendering the %s reference (%d spp, %dx%d) into %s\n", j->prog, method_name(j->method),
-            j->spp, j->sc->cam.width, j->sc->cam.height, path);
+    fprintf(stderr, "%s: rendering the %s reference (%d spp, %dx%d) into %s\n", j->prog, method_name(j->method), j->spp,
+            j->sc->cam.width, j->sc->cam.height, path);
     struct render_opts o = {.method = j->method,
                             .spp = j->spp,
                             .seed = 12345,
@@ -44,8 +44,8 @@ struct image *ch4_reference(const struct scene *sc, enum method method, int spp,
                             const char *prog, char *err, size_t errlen)
 {
     char settings[256];
-    snprintf(settings, sizeof settings, "%s spp=%d seed=12345 max_length=%d resolution=%dx%d", method_name(method),
-             spp, sc->max_length, sc->cam.width, sc->cam.height);
+    snprintf(settings, sizeof settings, "%s spp=%d seed=12345 max_length=%d resolution=%dx%d", method_name(method), spp,
+             sc->max_length, sc->cam.width, sc->cam.height);
     struct refcache rc = {.path = path, .scene_hash = ckpt_scene_hash(sc), .settings = settings};
     struct image *ref = refcache_load(&rc);
     if (ref) {

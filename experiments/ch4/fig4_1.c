@@ -195,7 +195,8 @@ static bool write_tables(const struct fig41 *t, char *err, size_t errlen)
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl), *fp = open_memstream(&pb, &pl);
     FILE *all[3] = {fr, fs, fp};
     for (int i = 0; i < 3; i++) {
-        csv_meta_head(all[i], "fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)",
+        csv_meta_head(all[i],
+                      "fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)",
                       fo->scene, fo->scale);
         csv_meta(all[i], "resolution", "%dx%d", t->res[0], t->res[1]);
         csv_meta(all[i], "mutations_per_pixel", "%g", t->mpp);
@@ -204,8 +205,9 @@ static bool write_tables(const struct fig41 *t, char *err, size_t errlen)
         ch4_meta_runs(all[i], fo->seed, t->seeds, fo->threads);
         csv_meta(all[i], "reference", "%s (PT %d spp); its pixel-noise variance %.4g", t->refpath, t->refspp,
                  t->ref_var);
-        csv_meta(all[i], NULL, "error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
-                               " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)");
+        csv_meta(all[i], NULL,
+                 "error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
+                 " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)");
     }
     write_rows(t, fr, fs, fp);
     fclose(fr), fclose(fs), fclose(fp);
@@ -224,8 +226,8 @@ int main(int argc, char **argv)
     bool ok = t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err);
     if (ok) t.ref_var = ch4_pixel_noise_var(t.ref);
     ok = ok && run(&t, err, sizeof err) && write_tables(&t, err, sizeof err);
-    ok = ok &&
-         ch4_show_claims(claims(t.q[Q_RATIO], t.seeds, (double)t.res[0] / t.res[1], t.fo.out, t.fo.scale, err, sizeof err));
+    ok = ok && ch4_show_claims(
+                   claims(t.q[Q_RATIO], t.seeds, (double)t.res[0] / t.res[1], t.fo.out, t.fo.scale, err, sizeof err));
     for (int i = 0; i < NQ; i++)
         free(t.q[i]);
     free(t.evar), free(t.rx), free(t.ry);

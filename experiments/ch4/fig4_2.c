@@ -75,8 +75,8 @@ static bool glossy_accept(const struct scene *sc, bool rap_resolution, long muta
 /* Thesis §4.1 on Figure 4.2: the diffuse wall's noise at smaller resolutions and with resolution
  * scaling (q: the per-run quantities of the NCONF configurations), and the glossy case's
  * acceptance (gacc: NGLOSSY configurations). */
-static char *claims(double *const *q, const double *gacc, int seeds, const char *out,
-                    const char *scale, char *err, size_t errlen)
+static char *claims(double *const *q, const double *gacc, int seeds, const char *out, const char *scale, char *err,
+                    size_t errlen)
 {
     struct claims cl;
     char command[64], zs[128], md[256];
@@ -242,8 +242,10 @@ static bool write_tables(const struct fig42 *t, char *err, size_t errlen)
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
     FILE *all[2] = {fr, fs};
     for (int i = 0; i < 2; i++) {
-        csv_meta_head(all[i], "fig4.2: PSSMLT small steps on a square diffuse wall at 1024, 512, 256 and with"
-                              " --rap-resolution (reference 1024 px) at 256", fo->scene, fo->scale);
+        csv_meta_head(all[i],
+                      "fig4.2: PSSMLT small steps on a square diffuse wall at 1024, 512, 256 and with"
+                      " --rap-resolution (reference 1024 px) at 256",
+                      fo->scene, fo->scale);
         csv_meta(all[i], "mutations_per_pixel", "%g", t->mpp);
         csv_meta(all[i], "p_large", "%g", t->p_large);
         csv_meta(all[i], "kernel", "kelemen s1 1/1024 s2 1/64");
@@ -252,8 +254,9 @@ static bool write_tables(const struct fig42 *t, char *err, size_t errlen)
         for (int c = 0; c < NCONF; c++)
             csv_meta(all[i], NULL, "%s: reference pixel-noise variance %.4g, error variance %.4g", names[c],
                      t->refvar[c], t->errvar[c]);
-        csv_meta(all[i], NULL, "l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
-                               " l = their mean; rho1 = mean lag-1 autocorrelation");
+        csv_meta(all[i], NULL,
+                 "l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
+                 " l = their mean; rho1 = mean lag-1 autocorrelation");
         csv_meta(all[i], "glossy", "%s, %ld mutations per run (glossy-*: small_accept only)", t->glossy_scene, t->gmut);
     }
     write_rows(t, fr, fs);

@@ -56,8 +56,8 @@ static bool write_stats(const struct mlt_stats *st, const char *method, const ch
 }
 
 /* Thesis §4.2 on Figure 4.3, at equal samples per pixel. */
-static char *claims(const double *rel, const double *acc, int seeds, const char *out,
-                    const char *scale, char *err, size_t errlen)
+static char *claims(const double *rel, const double *acc, int seeds, const char *out, const char *scale, char *err,
+                    size_t errlen)
 {
     struct claims cl;
     char command[64];
@@ -177,15 +177,18 @@ static bool write_tables(const struct fig43 *t, char *err, size_t errlen)
     FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
     FILE *all[2] = {fr, fs};
     for (int i = 0; i < 2; i++) {
-        csv_meta_head(all[i], "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
-                      fo->scene, fo->scale);
+        csv_meta_head(
+            all[i],
+            "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
+            fo->scene, fo->scale);
         csv_meta(all[i], "resolution", "%dx%d", t->sc->cam.width, t->sc->cam.height);
         csv_meta(all[i], "spp", "%d", t->spp);
         csv_meta(all[i], "p_large", "%g", t->p_large);
         ch4_meta_runs(all[i], fo->seed, t->seeds, fo->threads);
         csv_meta(all[i], "reference", "%s (BDPT %d spp)", t->refpath, t->refspp);
-        csv_meta(all[i], NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
-                               "min(1, a) of small steps");
+        csv_meta(all[i], NULL,
+                 "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
+                 "min(1, a) of small steps");
     }
     write_rows(t, fr, fs);
     fclose(fr), fclose(fs);
@@ -200,8 +203,8 @@ int main(int argc, char **argv)
     char err[1024];
     t.sc = opts_figure_scene(&t.fo);
     if (t.res[0] > 0) camera_resize(&t.sc->cam, t.res[0], t.res[1]);
-    snprintf(t.defref, sizeof t.defref, "results/reference/window-bdpt-%dx%d-%d.exr", t.sc->cam.width,
-             t.sc->cam.height, t.refspp);
+    snprintf(t.defref, sizeof t.defref, "results/reference/window-bdpt-%dx%d-%d.exr", t.sc->cam.width, t.sc->cam.height,
+             t.refspp);
     if (!t.refpath) t.refpath = t.defref;
     t.ref = ch4_reference(t.sc, METHOD_BDPT, t.refspp, t.refpath, t.fo.threads, prog, err, sizeof err);
     bool ok = t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err);

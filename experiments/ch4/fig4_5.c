@@ -26,10 +26,10 @@
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include <math.h>
-#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* The runs: the large step, MCTLS's trials (mlt_opts.mctls_tries, 0 = Eq. 4.7) and whether t = 0
  * is counted. */
@@ -80,7 +80,8 @@ static void mean_over_lengths(const double *mean, const double *se, int K, doubl
 {
     double v = 0;
     *m = 0;
-    for (int k = 2; k <= K; k++) *m += mean[k] / (K - 1), v += pow(se[k] / (K - 1), 2);
+    for (int k = 2; k <= K; k++)
+        *m += mean[k] / (K - 1), v += pow(se[k] / (K - 1), 2);
     *m_se = sqrt(v);
 }
 
@@ -117,7 +118,8 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     struct claims cl;
     char command[64], zs[256], md[512];
     snprintf(command, sizeof command, "make fig4.5 SCALE=%s", scale);
-    claims_begin(&cl, scale, command, "Claims of thesis §4.3 on Fig. 4.5, lengths 2-%d (batch-means errors of one run)", t->K);
+    claims_begin(&cl, scale, command, "Claims of thesis §4.3 on Fig. 4.5, lengths 2-%d (batch-means errors of one run)",
+                 t->K);
     /* MCTLS above MMLT at every length: the smallest z over the lengths decides */
     const bool both[2] = {true, true};
     struct verdict worst = {"holds", INFINITY, -1, 0};
@@ -207,8 +209,8 @@ static bool run_variants(const struct opts_accept *a, const struct scene *sc, st
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
-    csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets", a->fig.scene,
-                  a->fig.scale);
+    csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets",
+                  a->fig.scene, a->fig.scale);
     csv_meta(f, NULL,
              "mctls-triesN: MCTLS with N trials drawn uniformly among the k + 1 techniques (Eq. 4.5; N = 1 is "
              "an MMLT large step); -t0: among k + 2, t = 0 a try that always fails (the thesis's count)");
@@ -323,8 +325,8 @@ static bool run_trials(const struct opts_accept *a, const struct scene *sc, stru
 int main(int argc, char **argv)
 {
     struct opts_accept a;
-    struct scene *sc = opts_accept_parse(&a, "fig4_5", "scenes/ajar/scene.json", "results/fig4.5", "3000000", "100000000",
-                                         argc, argv);
+    struct scene *sc =
+        opts_accept_parse(&a, "fig4_5", "scenes/ajar/scene.json", "results/fig4.5", "3000000", "100000000", argc, argv);
     char err[1024];
     struct accept_table tab = {.K = a.max_length};
     struct trials_table *tr = xmalloc(sizeof *tr);

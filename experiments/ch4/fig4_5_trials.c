@@ -8,9 +8,9 @@
 #include <math.h>
 #include <stdlib.h>
 
-const char *const trial_stat_names[TS_COUNT] = {
-    "accept_mmlt",       "accept_mctls",       "accept_ratio",       "light_ratio",      "given_light_ratio",
-    "techniques_with_light", "techniques_cv", "accept_mctls_mean", "given_light_ratio_mean"};
+const char *const trial_stat_names[TS_COUNT] = {"accept_mmlt",   "accept_mctls",      "accept_ratio",
+                                                "light_ratio",   "given_light_ratio", "techniques_with_light",
+                                                "techniques_cv", "accept_mctls_mean", "given_light_ratio_mean"};
 
 #define GROUPS 16
 
@@ -26,8 +26,8 @@ struct trials_job {
     int k, K, threads;
     long pairs;
     uint64_t seed;
-    double *sum;  /* per pair: the sum of its k + 1 targets */
-    int *n;       /* per pair: its techniques with a target */
+    double *sum; /* per pair: the sum of its k + 1 targets */
+    int *n;      /* per pair: its techniques with a target */
     struct draw_list *lists;
     struct progress prog;
 };
@@ -71,8 +71,11 @@ static void trials_worker(int tid, void *p)
 /* A draw list of one weight per pair (zero weights left out). */
 static struct weighted_draws per_pair(const double *v, long pairs)
 {
-    struct weighted_draws d = {.w = xmalloc((size_t)pairs * sizeof(double)), .cluster = xmalloc((size_t)pairs * sizeof(long)),
-                               .clusters = pairs, .per_cluster = 1, .groups = GROUPS};
+    struct weighted_draws d = {.w = xmalloc((size_t)pairs * sizeof(double)),
+                               .cluster = xmalloc((size_t)pairs * sizeof(long)),
+                               .clusters = pairs,
+                               .per_cluster = 1,
+                               .groups = GROUPS};
     for (long i = 0; i < pairs; i++)
         if (v[i] > 0) d.w[d.n] = v[i], d.cluster[d.n++] = i;
     return d;
@@ -93,19 +96,24 @@ static void summarise(struct trials_job *j, struct trials_table *t)
     double *v = xmalloc((size_t)P * sizeof *v), *mean = xmalloc((size_t)P * sizeof *mean);
     double light[GROUPS + 1], nn[GROUPS + 1], n2[GROUPS + 1], a_mmlt[GROUPS + 1], a_mctls[GROUPS + 1],
         a_mean[GROUPS + 1], r[TS_COUNT][GROUPS + 1];
-    for (long i = 0; i < P; i++) v[i] = j->n[i] > 0;
+    for (long i = 0; i < P; i++)
+        v[i] = j->n[i] > 0;
     jack_mean(v, P, GROUPS, light);
-    for (long i = 0; i < P; i++) v[i] = j->n[i];
+    for (long i = 0; i < P; i++)
+        v[i] = j->n[i];
     jack_mean(v, P, GROUPS, nn);
-    for (long i = 0; i < P; i++) v[i] = (double)j->n[i] * j->n[i];
+    for (long i = 0; i < P; i++)
+        v[i] = (double)j->n[i] * j->n[i];
     jack_mean(v, P, GROUPS, n2);
     /* MMLT's draws: every technique of every pair, k + 1 per pair (threads' lists in order) */
     struct weighted_draws d = {.clusters = P, .per_cluster = k + 1, .groups = GROUPS};
-    for (int th = 0; th < j->threads; th++) d.n += j->lists[th].n;
+    for (int th = 0; th < j->threads; th++)
+        d.n += j->lists[th].n;
     d.w = xmalloc((size_t)(d.n ? d.n : 1) * sizeof *d.w);
     d.cluster = xmalloc((size_t)(d.n ? d.n : 1) * sizeof *d.cluster);
     for (long th = 0, at = 0; th < j->threads; th++)
-        for (long e = 0; e < j->lists[th].n; e++, at++) d.w[at] = j->lists[th].w[e], d.cluster[at] = j->lists[th].cluster[e];
+        for (long e = 0; e < j->lists[th].n; e++, at++)
+            d.w[at] = j->lists[th].w[e], d.cluster[at] = j->lists[th].cluster[e];
     indep_accept(&d, a_mmlt);
     free(d.w);
     free(d.cluster);
@@ -113,7 +121,8 @@ static void summarise(struct trials_job *j, struct trials_table *t)
     indep_accept(&d, a_mctls);
     free(d.w);
     free(d.cluster);
-    for (long i = 0; i < P; i++) mean[i] = j->n[i] > 0 ? j->sum[i] / j->n[i] : 0;
+    for (long i = 0; i < P; i++)
+        mean[i] = j->n[i] > 0 ? j->sum[i] / j->n[i] : 0;
     d = per_pair(mean, P);
     indep_accept(&d, a_mean);
     free(d.w);
@@ -130,7 +139,8 @@ static void summarise(struct trials_job *j, struct trials_table *t)
         r[TS_ACCEPT_MCTLS_MEAN][g] = a_mean[g];
         r[TS_GIVEN_LIGHT_RATIO_MEAN][g] = a_mean[g] / a_mmlt[g] / lr;
     }
-    for (int s = 0; s < TS_COUNT; s++) set(t, s, k, r[s]);
+    for (int s = 0; s < TS_COUNT; s++)
+        set(t, s, k, r[s]);
     free(v);
     free(mean);
 }
@@ -146,7 +156,8 @@ bool fig45_trials(const struct scene *sc, int K, long pairs, uint64_t seed, int 
     j.lists = xcalloc((size_t)threads, sizeof *j.lists);
     progress_init(&j.prog, "fig4.5 trials", pairs * (K - 1), progress);
     for (j.k = 2; j.k <= K; j.k++) {
-        for (int th = 0; th < threads; th++) j.lists[th].n = 0;
+        for (int th = 0; th < threads; th++)
+            j.lists[th].n = 0;
         parallel_run(threads, trials_worker, &j);
         summarise(&j, t);
     }

@@ -14,14 +14,14 @@
 
 /* The statistics per length, in the CSV's order (each with a jackknife standard error). */
 enum trial_stat {
-    TS_ACCEPT_MMLT,        /* predicted mean acceptance of an MMLT large step */
-    TS_ACCEPT_MCTLS,       /* of MCTLS (Eq. 4.7: target = the sum of the k + 1 trials) */
-    TS_ACCEPT_RATIO,       /* MCTLS / MMLT */
-    TS_LIGHT_RATIO,        /* share of proposals with light, MCTLS / MMLT = (k + 1) P(n > 0) / E[n] */
-    TS_GIVEN_LIGHT_RATIO,  /* the acceptance of proposals with light, MCTLS / MMLT: accept / light ratio */
-    TS_TECHNIQUES,         /* E[n | n > 0]: techniques with light of a pair that has any */
-    TS_TECHNIQUES_CV,      /* their coefficient of variation over such pairs */
-    TS_ACCEPT_MCTLS_MEAN,  /* MCTLS with the target sum / n (the mean over the techniques with light) */
+    TS_ACCEPT_MMLT,            /* predicted mean acceptance of an MMLT large step */
+    TS_ACCEPT_MCTLS,           /* of MCTLS (Eq. 4.7: target = the sum of the k + 1 trials) */
+    TS_ACCEPT_RATIO,           /* MCTLS / MMLT */
+    TS_LIGHT_RATIO,            /* share of proposals with light, MCTLS / MMLT = (k + 1) P(n > 0) / E[n] */
+    TS_GIVEN_LIGHT_RATIO,      /* the acceptance of proposals with light, MCTLS / MMLT: accept / light ratio */
+    TS_TECHNIQUES,             /* E[n | n > 0]: techniques with light of a pair that has any */
+    TS_TECHNIQUES_CV,          /* their coefficient of variation over such pairs */
+    TS_ACCEPT_MCTLS_MEAN,      /* MCTLS with the target sum / n (the mean over the techniques with light) */
     TS_GIVEN_LIGHT_RATIO_MEAN, /* TS_GIVEN_LIGHT_RATIO with that target */
     TS_COUNT
 };

@@ -131,9 +131,9 @@ static bool run(struct fig46 *t, char *err, size_t errlen)
             if (!mlt_render(t->sc, &o, &r, err, errlen) ||
                 (s == 0 && !ch4_write_pair(r.img, fo->out, names[m], err, errlen)))
                 return false;
-            t->R[m][s] = (struct run){r.seconds, img_relmse(r.img, t->ref, 0.01),
-                                      1e6 * r.seconds * fo->threads / (double)r.mutations, acceptance(&r.stats),
-                                      r.mutations};
+            t->R[m][s] =
+                (struct run){r.seconds, img_relmse(r.img, t->ref, 0.01),
+                             1e6 * r.seconds * fo->threads / (double)r.mutations, acceptance(&r.stats), r.mutations};
             mlt_result_free(&r);
         }
     for (int m = 0; m < METHODS; m++) {
@@ -213,8 +213,8 @@ static char *claims(const struct fig46 *t, char *err, size_t errlen)
     struct claims cl;
     char command[64], zs[128], md[256];
     snprintf(command, sizeof command, "make fig4.6 SCALE=%s", fo->scale);
-    claims_begin(&cl, fo->scale, command, "Claims of thesis §4.3 on %s at %s per run, %d seeds", fo->scene,
-                 t->budget, t->seeds);
+    claims_begin(&cl, fo->scale, command, "Claims of thesis §4.3 on %s at %s per run, %d seeds", fo->scene, t->budget,
+                 t->seeds);
     const bool two[METHODS] = {true, true, false};
     double z[METHODS], acc[METHODS] = {mean[0][2], mean[1][2], mean[2][2]},
                        acc_se[METHODS] = {se[0][2], se[1][2], se[2][2]};

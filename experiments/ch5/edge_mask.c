@@ -39,8 +39,9 @@ bool *edge_mask(const struct scene *sc, int radius)
     struct px_hit *px = xcalloc((size_t)W * H, sizeof *px);
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
-            struct centre_sampler cs = {{&centre_ops, 0, 0, 0},
-                                        {(x + 0.5 + m) / camera_film_width(&sc->cam), (y + 0.5 + m) / camera_film_height(&sc->cam)}};
+            struct centre_sampler cs = {
+                {&centre_ops, 0, 0, 0},
+                {(x + 0.5 + m) / camera_film_width(&sc->cam), (y + 0.5 + m) / camera_film_height(&sc->cam)}};
             double rx, ry;
             vec3 d = camera_sample_dir(&sc->cam, sc->cam.pos, &cs.base, &rx, &ry, NULL);
             struct hit h;

@@ -101,7 +101,8 @@ static void run_kind(const struct fig5_cfg *c, struct scene *sc, const bool *mas
             sum[mask[i] ? R_EDGE : R_ELSE] += v, n[mask[i] ? R_EDGE : R_ELSE]++;
         }
         double *x = m->reg + ((size_t)kind * REGIONS) * c->seeds;
-        for (int g = 0; g < 3; g++) x[g * c->seeds + s] = sum[g] / n[g];
+        for (int g = 0; g < 3; g++)
+            x[g * c->seeds + s] = sum[g] / n[g];
         x[R_RATIO * c->seeds + s] = x[R_EDGE * c->seeds + s] / x[R_ELSE * c->seeds + s];
         for (int k = 1; k <= MAX_PATH_LENGTH; k++) {
             m->len_mean[kind * c->seeds + s][k] = r.angle->len[k].attempts ? cell_mean(&r.angle->len[k]) : NAN;

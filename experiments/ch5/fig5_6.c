@@ -32,8 +32,11 @@ static struct image *render_reference(void *ctx, const char *path, char *err, si
 {
     const struct ref_job *j = ctx;
     fprintf(stderr, "fig5_6: rendering the BDPT reference (%d spp) into %s\n", j->spp, path);
-    struct render_opts o = {
-        .method = METHOD_BDPT, .spp = j->spp, .seed = 777, .threads = j->c->fig.threads, .max_length = j->c->max_length};
+    struct render_opts o = {.method = METHOD_BDPT,
+                            .spp = j->spp,
+                            .seed = 777,
+                            .threads = j->c->fig.threads,
+                            .max_length = j->c->max_length};
     struct render_stats st;
     struct image *ref = render_mc(j->sc, &o, &st);
     if (!img_write_exr(ref, 1.0, path, err, errlen)) {
@@ -99,8 +102,8 @@ int main(int argc, char **argv)
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
     char title[256];
-    snprintf(title, sizeof title, "fig5.6: relMSE against BDPT, MMLT vs controlled small steps, p_large %g, Gaussian sigma 1/64",
-             c.p_large);
+    snprintf(title, sizeof title,
+             "fig5.6: relMSE against BDPT, MMLT vs controlled small steps, p_large %g, Gaussian sigma 1/64", c.p_large);
     fig5_meta_head(f, &c, title);
     csv_meta(f, "reference_spp", "%d", spp);
     fig5_meta_runs(f, &c);

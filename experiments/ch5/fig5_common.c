@@ -3,9 +3,9 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
-#include <limits.h>
 #include "common/csv_meta.h"
 #include "common/opts.h"
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,17 +17,18 @@ const char *const fig5_kind_name[3] = {"mmlt", "controlled", "root"};
 void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *about)
 {
     int res[2];
-    const struct opt opts[] = {
-        OPTS_FIGURE(c->fig, "scenes/jewelry/scene.json", c->fig.out),
-        OPT_RESOLUTION(res, .lo = 8, .hi = INT_MAX, .expect = "WxH", .help = "image size", .def = "160x120", .paper = "320x240"),
-        {"--mpp", OPT_INT, OPT_DST(c->mpp), .arg = "N", .lo = 1, .hi = 1L << 30, .help = "mutations per pixel", .def = "64",
-         .paper = "1024"},
-        OPT_SEEDS(c->seeds, .help = "independent runs of each small-step kind, seeds S..S+N-1", .def = "4", .paper = "8"),
-        {0}};
+    const struct opt opts[] = {OPTS_FIGURE(c->fig, "scenes/jewelry/scene.json", c->fig.out),
+                               OPT_RESOLUTION(res, .lo = 8, .hi = INT_MAX, .expect = "WxH", .help = "image size",
+                                              .def = "160x120", .paper = "320x240"),
+                               {"--mpp", OPT_INT, OPT_DST(c->mpp), .arg = "N", .lo = 1, .hi = 1L << 30,
+                                .help = "mutations per pixel", .def = "64", .paper = "1024"},
+                               OPT_SEEDS(c->seeds, .help = "independent runs of each small-step kind, seeds S..S+N-1",
+                                         .def = "4", .paper = "8"),
+                               {0}};
     char usage[64];
     snprintf(usage, sizeof usage, "usage: %s [options]\n", c->prog);
-    opts_parse(&(struct opts_spec){.prog = c->prog, .usage = usage, .about = about, .opts = opts, .fig = &c->fig},
-               argc, argv);
+    opts_parse(&(struct opts_spec){.prog = c->prog, .usage = usage, .about = about, .opts = opts, .fig = &c->fig}, argc,
+               argv);
     c->width = res[0], c->height = res[1];
     c->seed_paths = c->fig.paper ? 1000000 : 100000;
     c->max_length = 8;
@@ -57,9 +58,16 @@ struct scene *fig5_scene(const struct fig5_cfg *c)
 void fig5_run(const struct scene *sc, const struct fig5_cfg *c, enum small_step kind, uint64_t seed, bool angle,
               struct mlt_result *r)
 {
-    struct mlt_opts o = {.method = MLT_MMLT, .p_large = c->p_large, .mutations = c->mpp * c->width * c->height,
-                         .seed_paths = c->seed_paths, .seed = seed, .threads = c->fig.threads, .max_length = c->max_length,
-                         .progress = isatty(2), .small_step = kind, .angle_stats = angle};
+    struct mlt_opts o = {.method = MLT_MMLT,
+                         .p_large = c->p_large,
+                         .mutations = c->mpp * c->width * c->height,
+                         .seed_paths = c->seed_paths,
+                         .seed = seed,
+                         .threads = c->fig.threads,
+                         .max_length = c->max_length,
+                         .progress = isatty(2),
+                         .small_step = kind,
+                         .angle_stats = angle};
     pss_opts_default(&o.pss, camera_film_width(&sc->cam), camera_film_height(&sc->cam));
     o.pss.kernel = KERNEL_GAUSSIAN;
     char err[1024];

@@ -33,7 +33,8 @@ static double vnoise(double x, double y, int px, int seed)
 static double fbm(double x, double y, int px, int seed, int oct)
 {
     double s = 0, amp = 0.5;
-    for (int o = 0; o < oct; o++, x *= 2, y *= 2, px *= 2, amp *= 0.5) s += amp * vnoise(x, y, px, seed + o);
+    for (int o = 0; o < oct; o++, x *= 2, y *= 2, px *= 2, amp *= 0.5)
+        s += amp * vnoise(x, y, px, seed + o);
     return s;
 }
 
@@ -60,7 +61,8 @@ static struct image *sky(int w, int h, vec3 sun)
                 c = (rgb){c.x + (1.6 - c.x) * cl, c.y + (1.6 - c.y) * cl, c.z + (1.6 - c.z) * cl};
             }
             double cs = (d.x * sun.x + d.y * sun.y + d.z * sun.z) / sl;
-            if (cs > cos_r) c = (rgb){6000, 5400, 4600};
+            if (cs > cos_r)
+                c = (rgb){6000, 5400, 4600};
             else if (cs > cos(6 * M_PI / 180)) { /* a faint halo */
                 double k = 4 * (cs - cos(6 * M_PI / 180)) / (1 - cos(6 * M_PI / 180));
                 c = (rgb){c.x + 3 * k, c.y + 2.7 * k, c.z + 2.2 * k};
@@ -83,7 +85,8 @@ static struct image *wood(int w, int h)
             ring = pow(ring, 3);
             double streak = fbm(2 * u, 48 * v, 2, 23, 3);
             double t = fmin(1, fmax(0, 0.25 + 0.6 * ring + 0.4 * (streak - 0.5)));
-            rgb c = {light.x + (dark.x - light.x) * t, light.y + (dark.y - light.y) * t, light.z + (dark.z - light.z) * t};
+            rgb c = {light.x + (dark.x - light.x) * t, light.y + (dark.y - light.y) * t,
+                     light.z + (dark.z - light.z) * t};
             img_add(im, x, y, c);
         }
     return im;
@@ -93,7 +96,8 @@ static struct image *wood(int w, int h)
 static bool parse_sun(const char *v, void *dst, char *why, size_t n)
 {
     vec3 *sun = dst;
-    if (sscanf(v, "%lf,%lf,%lf", &sun->x, &sun->y, &sun->z) == 3 && sun->x * sun->x + sun->y * sun->y + sun->z * sun->z > 0)
+    if (sscanf(v, "%lf,%lf,%lf", &sun->x, &sun->y, &sun->z) == 3 &&
+        sun->x * sun->x + sun->y * sun->y + sun->z * sun->z > 0)
         return true;
     snprintf(why, n, "expected X,Y,Z (not all zero), got '%s'", v);
     return false;
@@ -105,15 +109,20 @@ int main(int argc, char **argv)
     int size[2] = {0, 0};
     vec3 sun = {0, 0, 0}; /* stays 0 unless --sun is given */
     const struct opt opts[] = {
-        {"--sky", OPT_STRING, OPT_DST(skyp), .arg = "FILE", .help = "equirectangular HDR sky with a sun toward direction X,Y,Z (y up)"},
-        {"--sun", OPT_CALL, .dst = &sun, .call = parse_sun, .arg = "X,Y,Z", .help = "the sun's direction (needed by --sky)"},
+        {"--sky", OPT_STRING, OPT_DST(skyp), .arg = "FILE",
+         .help = "equirectangular HDR sky with a sun toward direction X,Y,Z (y up)"},
+        {"--sun", OPT_CALL, .dst = &sun, .call = parse_sun, .arg = "X,Y,Z",
+         .help = "the sun's direction (needed by --sky)"},
         {"--wood", OPT_STRING, OPT_DST(woodp), .arg = "FILE", .help = "wood albedo texture (8-bit PNG, sRGB)"},
         {"--size", OPT_WXH, OPT_DST(size), .arg = "WxH", .lo = 8, .hi = 8192, .lo2 = 4, .hi2 = 8192,
          .expect = "WxH between 8x4 and 8192x8192", .help = "(sky default 256x128, wood default 128x128)"},
         {0}};
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: ch6_assets --sky FILE.exr --sun X,Y,Z [--size WxH] | --wood FILE.png [--size WxH]\n",
-                                   .opts = opts},
-               argc, argv);
+    opts_parse(
+        &(struct opts_spec){
+            .prog = prog,
+            .usage = "usage: ch6_assets --sky FILE.exr --sun X,Y,Z [--size WxH] | --wood FILE.png [--size WxH]\n",
+            .opts = opts},
+        argc, argv);
     bool have_sun = sun.x || sun.y || sun.z;
     int w = size[0], h = size[1];
     if (!skyp == !woodp) opts_fail(prog, "give exactly one of --sky or --wood (see --help)");

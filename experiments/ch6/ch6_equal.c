@@ -24,9 +24,9 @@
  * (methods, reference, runs, tables, report). --scale quick|full|paper applies that scale's row of
  * `scales` below as if its options were given first on the command line (later options override
  * them); any other --scale is only a name for claims.csv. */
+#include "ch6/ch6_equal.h"
 #include "base/dist.h"
 #include "base/util.h"
-#include "ch6/ch6_equal.h"
 #include "common/die.h"
 #include "common/opts.h"
 #include "common/outdir.h"
@@ -51,17 +51,27 @@ static const struct {
     const char *study, *scale;
     const char *args[MAX_SCALE_ARGS];
 } scales[] = {
-    {"equal-time", "quick", {"--time", "4", "--t0", "0.5", "--seeds", "4", "--min-length", "3", "--reference-spp", "256",
-                             "--render-args", "--p-large 0.1"}},
-    {"equal-time", "full", {"--time", "60", "--seeds", "8", "--min-length", "3", "--reference-spp", "4096",
-                            "--checkpoint", "60", "--render-args", "--p-large 0.1 --seed-paths 1000000"}},
-    {"equal-time", "paper", {"--time", "300", "--t0", "18.75", "--seeds", "8", "--min-length", "3", "--reference-spp",
-                             "40000", "--render-args", "--p-large 0.1 --seed-paths 1000000"}},
+    {"equal-time",
+     "quick",
+     {"--time", "4", "--t0", "0.5", "--seeds", "4", "--min-length", "3", "--reference-spp", "256", "--render-args",
+      "--p-large 0.1"}},
+    {"equal-time",
+     "full",
+     {"--time", "60", "--seeds", "8", "--min-length", "3", "--reference-spp", "4096", "--checkpoint", "60",
+      "--render-args", "--p-large 0.1 --seed-paths 1000000"}},
+    {"equal-time",
+     "paper",
+     {"--time", "300", "--t0", "18.75", "--seeds", "8", "--min-length", "3", "--reference-spp", "40000",
+      "--render-args", "--p-large 0.1 --seed-paths 1000000"}},
     {"ratio", "quick", {"--time", "4", "--seeds", "4", "--resolution", "256x144", "--render-args", "--p-large 0.1"}},
-    {"ratio", "full", {"--time", "60", "--seeds", "8", "--resolution", "512x288", "--checkpoint", "60",
-                       "--render-args", "--p-large 0.1 --seed-paths 1000000"}},
-    {"ratio", "paper", {"--time", "300", "--seeds", "8", "--resolution", "256x144", "--render-args",
-                        "--p-large 0.1 --seed-paths 1000000"}},
+    {"ratio",
+     "full",
+     {"--time", "60", "--seeds", "8", "--resolution", "512x288", "--checkpoint", "60", "--render-args",
+      "--p-large 0.1 --seed-paths 1000000"}},
+    {"ratio",
+     "paper",
+     {"--time", "300", "--seeds", "8", "--resolution", "256x144", "--render-args",
+      "--p-large 0.1 --seed-paths 1000000"}},
 };
 
 /* argv with the (--study, --scale) row's options inserted after argv[0] (argv itself when no row

@@ -21,8 +21,7 @@
 static bool run_complete(const char *exr, const char *csvp, const char *scene)
 {
     struct stat sc, sv;
-    if (access(exr, R_OK) || (stat(csvp, &sv) == 0 && stat(scene, &sc) == 0 && sv.st_mtime < sc.st_mtime))
-        return false;
+    if (access(exr, R_OK) || (stat(csvp, &sv) == 0 && stat(scene, &sc) == 0 && sv.st_mtime < sc.st_mtime)) return false;
     char *csv = read_whole_file(csvp);
     bool done = csv && !strstr(csv, "\n# PARTIAL");
     free(csv);
@@ -109,16 +108,26 @@ static void render_run(struct ch6_equal *e, const struct ch6_method *m, const ch
     char seed_s[32], time_s[32], log[4200], exr[4200], csvp[4200];
     snprintf(seed_s, sizeof seed_s, "%d", seed);
     snprintf(time_s, sizeof time_s, "%g", budget);
-    char *fixed[] = {e->spp > 0 ? "--spp" : e->wall ? "--time" : "--cpu-time",
-                     time_s, "--seed", seed_s, "--threads", e->thr, "--min-length", e->minlen_s, "--quiet", "--out",
+    char *fixed[] = {e->spp > 0 ? "--spp"
+                     : e->wall  ? "--time"
+                                : "--cpu-time",
+                     time_s,
+                     "--seed",
+                     seed_s,
+                     "--threads",
+                     e->thr,
+                     "--min-length",
+                     e->minlen_s,
+                     "--quiet",
+                     "--out",
                      (char *)prefix};
     char *rv[CH6_MAX_ARGS * 2 + 24];
     int c = render_argv(e, m, rv, fixed, (int)(sizeof fixed / sizeof *fixed));
     snprintf(log, sizeof log, "%.4000s.log", prefix);
     snprintf(exr, sizeof exr, "%.4000s.exr", prefix);
     snprintf(csvp, sizeof csvp, "%.4000s.csv", prefix);
-    bool keep = e->reuse ? !access(exr, R_OK) && !access(csvp, R_OK)
-                         : e->ckpt_every > 0 && run_complete(exr, csvp, e->scene);
+    bool keep =
+        e->reuse ? !access(exr, R_OK) && !access(csvp, R_OK) : e->ckpt_every > 0 && run_complete(exr, csvp, e->scene);
     fprintf(stderr, "%s: %s %s seed %d, %g %s%s\n", e->prog, e->name, m->name, seed, budget,
             e->spp > 0 ? "mutations per pixel" : "s", keep ? " (kept from an earlier run)" : "");
     if (!keep && proc_render_resumable(e->prog, rv, c, prefix, e->ckpt_every, log) != 0)

@@ -24,8 +24,8 @@ double ch6_median(double *v, int n);
 /* relMSE of a against ref with the largest `drop` fraction of per-pixel errors (the sum over the
  * three channels) left out: the error without its fireflies. */
 double ch6_trimmed_relmse(const struct image *a, const struct image *ref, double eps, double drop);
-/* relMSE of a scaled to ref's mean luminance (as stats/noise_corr.h's error_blur_share scales it) against ref: the error
- * without the normalisation's part, which scales the whole image by one number. */
+/* relMSE of a scaled to ref's mean luminance (as stats/noise_corr.h's error_blur_share scales it) against ref: the
+ * error without the normalisation's part, which scales the whole image by one number. */
 double ch6_relmse_scaled(const struct image *a, const struct image *ref, double eps);
 
 #endif

@@ -54,9 +54,12 @@ struct prefixes {
 static void prefix_arg(const char *prog, const char *arg, void *ctx)
 {
     struct prefixes *p = ctx;
-    if (p->mode == 1) p->ref[p->nref++] = arg;
-    else if (p->mode == 2) p->run[p->nrun++] = arg;
-    else opts_fail(prog, "'%s': give prefixes after --ref or --run (see --help)", arg);
+    if (p->mode == 1)
+        p->ref[p->nref++] = arg;
+    else if (p->mode == 2)
+        p->run[p->nrun++] = arg;
+    else
+        opts_fail(prog, "'%s': give prefixes after --ref or --run (see --help)", arg);
 }
 
 int main(int argc, char **argv)
@@ -65,16 +68,24 @@ int main(int argc, char **argv)
     int k = 0, blk;
     struct prefixes p = {xcalloc((size_t)argc, sizeof *p.ref), xcalloc((size_t)argc, sizeof *p.run), 0, 0, 0};
     const struct opt opts[] = {
-        {"--k", OPT_INT, OPT_DST(k), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH, .help = "the path length of the technique images"},
-        {"--block", OPT_INT, OPT_DST(blk), .arg = "B", .lo = 1, .hi = 4096, .help = "block size of the correlation", .def = "8"},
+        {"--k", OPT_INT, OPT_DST(k), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH,
+         .help = "the path length of the technique images"},
+        {"--block", OPT_INT, OPT_DST(blk), .arg = "B", .lo = 1, .hi = 4096, .help = "block size of the correlation",
+         .def = "8"},
         {"--out", OPT_STRING, OPT_DST(out), .arg = "OUT.csv", .help = "the rows run,tv,r,cells,references"},
         {"--ref", OPT_FLAG, OPT_DST(p.mode), .value = 1, .help = "the prefixes that follow are references"},
         {"--run", OPT_FLAG, OPT_DST(p.mode), .value = 2, .help = "the prefixes that follow are the runs scored"},
         {0}};
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: ch6_tech --k K --out OUT.csv [--block B] --ref PREFIX... --run PREFIX...\n",
-                                   .about = "  PREFIX: a bin/render --technique-images K output prefix (PREFIX.tech-tT.exr, PREFIX.count-tT.exr)\n",
-                                   .opts = opts, .positional = prefix_arg, .ctx = &p},
-               argc, argv);
+    opts_parse(
+        &(struct opts_spec){
+            .prog = prog,
+            .usage = "usage: ch6_tech --k K --out OUT.csv [--block B] --ref PREFIX... --run PREFIX...\n",
+            .about =
+                "  PREFIX: a bin/render --technique-images K output prefix (PREFIX.tech-tT.exr, PREFIX.count-tT.exr)\n",
+            .opts = opts,
+            .positional = prefix_arg,
+            .ctx = &p},
+        argc, argv);
     const char **ref = p.ref, **run = p.run;
     int nref = p.nref, nrun = p.nrun;
     if (!k || !out || !nref || !nrun) opts_fail(prog, "--k, --out, --ref and --run are required (see --help)");

@@ -107,7 +107,8 @@ static void write_runs(const struct ch6_equal *e)
     csv_meta(f, "render args", "%s", e->extra_s);
     csv_meta(f, "min_length", "%d", e->minlen);
     csv_meta(f, "relmse eps", "= 0.01 * (reference mean luminance %.6g)^2", e->mlum);
-    csv_meta(f, NULL, "budgets are separate runs with the same seed (no snapshots), methods interleaved seed by seed; %s",
+    csv_meta(f, NULL,
+             "budgets are separate runs with the same seed (no snapshots), methods interleaved seed by seed; %s",
              e->spp > 0 ? "budget = mutations per pixel (--spp)"
              : e->wall  ? "wall-clock --time"
                         : "--cpu-time: CPU seconds per thread");
@@ -151,12 +152,18 @@ static void write_stats(const struct ch6_equal *e)
     static const struct {
         enum ch6_q q;
         const char *name;
-    } st[] = {{Q_RELMSE, "relmse"},           {Q_RELMSE_SCALED, "relmse_scaled"},
-              {Q_BLOCK_MEDIAN, "block_median_relmse"}, {Q_TRIMMED, "trimmed_relmse"},
-              {Q_SPREAD, "block_spread"},     {Q_BLUR4, "blur4_share"},
-              {Q_BLUR8, "blur8_share"},       {Q_CORRLEN, "corr_length"},
-              {Q_NONZERO, "nonzero"},         {Q_LARGE_NONZERO, "large_nonzero"},
-              {Q_NONZERO_CONN, "nonzero_per_connection"}, {Q_B_RSE, "b_rse"}};
+    } st[] = {{Q_RELMSE, "relmse"},
+              {Q_RELMSE_SCALED, "relmse_scaled"},
+              {Q_BLOCK_MEDIAN, "block_median_relmse"},
+              {Q_TRIMMED, "trimmed_relmse"},
+              {Q_SPREAD, "block_spread"},
+              {Q_BLUR4, "blur4_share"},
+              {Q_BLUR8, "blur8_share"},
+              {Q_CORRLEN, "corr_length"},
+              {Q_NONZERO, "nonzero"},
+              {Q_LARGE_NONZERO, "large_nonzero"},
+              {Q_NONZERO_CONN, "nonzero_per_connection"},
+              {Q_B_RSE, "b_rse"}};
     struct table t;
     FILE *f = table_open(&t, stat_cols);
     csv_meta(f, NULL, "ch6_equal: mean +- standard error over %d seeds at the largest budget", e->seeds);

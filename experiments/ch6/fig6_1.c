@@ -229,10 +229,9 @@ int main(int argc, char **argv)
             }
             const struct accept_cell *p = &all.any[PROPOSAL_PITP][k];
             if (m && p->attempts)
-                table_row(&tp, &(struct pitp_row){k, p->attempts,
-                                                  (double)all.cell[PROPOSAL_PITP][k][1].attempts / p->attempts,
-                                                  p->failed, (double)p->failed / p->attempts,
-                                                  p->sum_dtech / p->attempts});
+                table_row(&tp, &(struct pitp_row){
+                                   k, p->attempts, (double)all.cell[PROPOSAL_PITP][k][1].attempts / p->attempts,
+                                   p->failed, (double)p->failed / p->attempts, p->sum_dtech / p->attempts});
         }
     }
     bool ok = save(&tf, a.fig.out, "fig6.1.csv") && save(&tp, a.fig.out, "fig6.1-pitp.csv");

@@ -27,10 +27,7 @@ double cmlt_swap_ratio(double pi_x1, double pj_x1, double pi_x2, double pj_x2)
     return (pi_x2 * pj_x1) / (pi_x1 * pj_x2);
 }
 
-double cmlt_epsm_ratio(double pi_x, double pi_y, double p_i_x, double p_i_y)
-{
-    return (pi_y * p_i_x) / (pi_x * p_i_y);
-}
+double cmlt_epsm_ratio(double pi_x, double pi_y, double p_i_x, double p_i_y) { return (pi_y * p_i_x) / (pi_x * p_i_y); }
 
 /* ---- primary-space kernel ---------------------------------------------------------------- */
 
@@ -44,7 +41,8 @@ static void kernel_init(struct kernel *k, const struct cmlt_config *c)
 {
     k->p_large = c->p_large;
     double L = log(c->s2 / c->s1);
-    for (int i = 0; i < KTAB; i++) k->mag[i] = c->s2 * exp(-L * (i + 0.5) / KTAB);
+    for (int i = 0; i < KTAB; i++)
+        k->mag[i] = c->s2 * exp(-L * (i + 0.5) / KTAB);
 }
 
 static inline double u01(rng *r) { return rng_u32(r) * (1.0 / 4294967296.0); }
@@ -53,7 +51,8 @@ static inline double u01(rng *r) { return rng_u32(r) * (1.0 / 4294967296.0); }
 static inline void kernel_propose(const struct kernel *k, rng *r, const double *u, double *up)
 {
     if (u01(r) < k->p_large) {
-        for (int d = 0; d < CMLT_DIMS; d++) up[d] = u01(r);
+        for (int d = 0; d < CMLT_DIMS; d++)
+            up[d] = u01(r);
         return;
     }
     for (int d = 0; d < CMLT_DIMS; d++) {
@@ -80,10 +79,10 @@ struct state {
 };
 
 struct chain {
-    int chart;   /* 1, 2; for TGT_PATH the chart of the next ephemeral step */
+    int chart; /* 1, 2; for TGT_PATH the chart of the next ephemeral step */
     enum target tgt;
-    int mis;     /* weight samples by w_chart (PSS-MLT-AVG) */
-    double b;    /* normalisation (integral of the chain's target) */
+    int mis;  /* weight samples by w_chart (PSS-MLT-AVG) */
+    double b; /* normalisation (integral of the chain's target) */
     struct state cur;
     double wacc; /* expected-value weight accumulated on the current state */
 };
@@ -100,9 +99,12 @@ static inline double target_value(const struct chain *c, const struct cmlt_eval 
 {
     if (!(e->fs > 0)) return 0;
     switch (c->tgt) {
-    case TGT_EQ13: return e->fs / cmlt_chart_pdf(c->chart, e);
-    case TGT_EQ15: return e->fs / (e->p1 + e->p2);
-    default: return e->fs;
+    case TGT_EQ13:
+        return e->fs / cmlt_chart_pdf(c->chart, e);
+    case TGT_EQ15:
+        return e->fs / (e->p1 + e->p2);
+    default:
+        return e->fs;
     }
 }
 
@@ -233,7 +235,8 @@ static void seed_pass(struct ctx *cx, struct chain *ch, int nch, uint64_t n_seed
     for (uint64_t k = 0; k < n_seed; k++) {
         for (int t = 1; t <= 2; t++) {
             double u[CMLT_DIMS];
-            for (int d = 0; d < CMLT_DIMS; d++) u[d] = u01(&cx->r);
+            for (int d = 0; d < CMLT_DIMS; d++)
+                u[d] = u01(&cx->r);
             struct cmlt_path x;
             if (!cmlt_chart_T(t, u, &x)) continue;
             struct cmlt_eval e;
@@ -253,7 +256,8 @@ static void seed_pass(struct ctx *cx, struct chain *ch, int nch, uint64_t n_seed
             }
         }
     }
-    for (int i = 0; i < 3; i++) b[i] = acc[i] / (double)n_seed;
+    for (int i = 0; i < 3; i++)
+        b[i] = acc[i] / (double)n_seed;
     for (int c = 0; c < nch; c++) {
         ASSERT(res[c].have); /* the seed pass found no light: n_seed far too small */
         struct state *s = &ch[c].cur;
@@ -277,9 +281,8 @@ static double now(void)
 
 #define BATCH 65536u
 
-void cmlt_run(enum cmlt_algo a, const struct cmlt_config *cfg, uint64_t seed, uint64_t stream,
-              double *img, struct cmlt_stats *st, _Atomic uint64_t *progress,
-              const volatile sig_atomic_t *stop)
+void cmlt_run(enum cmlt_algo a, const struct cmlt_config *cfg, uint64_t seed, uint64_t stream, double *img,
+              struct cmlt_stats *st, _Atomic uint64_t *progress, const volatile sig_atomic_t *stop)
 {
     double t0 = now();
     memset(st, 0, sizeof *st);
@@ -296,9 +299,18 @@ void cmlt_run(enum cmlt_algo a, const struct cmlt_config *cfg, uint64_t seed, ui
     memset(ch, 0, sizeof ch);
     int nch = 2;
     switch (a) {
-    case CMLT_PSS1: nch = 1; ch[0] = (struct chain){.chart = 1, .tgt = TGT_EQ13}; break;
-    case CMLT_PSS2: nch = 1; ch[0] = (struct chain){.chart = 2, .tgt = TGT_EQ13}; break;
-    case CMLT_EPSM: nch = 1; ch[0] = (struct chain){.chart = 1, .tgt = TGT_PATH}; break;
+    case CMLT_PSS1:
+        nch = 1;
+        ch[0] = (struct chain){.chart = 1, .tgt = TGT_EQ13};
+        break;
+    case CMLT_PSS2:
+        nch = 1;
+        ch[0] = (struct chain){.chart = 2, .tgt = TGT_EQ13};
+        break;
+    case CMLT_EPSM:
+        nch = 1;
+        ch[0] = (struct chain){.chart = 1, .tgt = TGT_PATH};
+        break;
     case CMLT_PSS_AVG:
         ch[0] = (struct chain){.chart = 1, .tgt = TGT_EQ13, .mis = 1};
         ch[1] = (struct chain){.chart = 2, .tgt = TGT_EQ13, .mis = 1};
@@ -309,16 +321,19 @@ void cmlt_run(enum cmlt_algo a, const struct cmlt_config *cfg, uint64_t seed, ui
         break;
     }
     seed_pass(cx, ch, nch, cfg->n_seed, st->b);
-    for (int c = 0; c < nch; c++) ch[c].b = ch[c].tgt == TGT_EQ15 ? st->b[ch[c].chart] : st->b[0];
+    for (int c = 0; c < nch; c++)
+        ch[c].b = ch[c].tgt == TGT_EQ15 ? st->b[ch[c].chart] : st->b[0];
 
     uint64_t per_chain = cfg->n / (uint64_t)nch, done = 0;
     int swap_every = cfg->swap_every > 0 ? cfg->swap_every : 4;
     while (done < per_chain) {
         uint64_t m = per_chain - done < BATCH ? per_chain - done : BATCH;
         if (a == CMLT_EPSM) {
-            for (uint64_t it = 0; it < m; it++) epsm_step(cx, &ch[0]);
+            for (uint64_t it = 0; it < m; it++)
+                epsm_step(cx, &ch[0]);
         } else if (nch == 1) {
-            for (uint64_t it = 0; it < m; it++) pss_step(cx, &ch[0]);
+            for (uint64_t it = 0; it < m; it++)
+                pss_step(cx, &ch[0]);
         } else {
             for (uint64_t it = 0; it < m; it++) {
                 pss_step(cx, &ch[0]);
@@ -333,10 +348,12 @@ void cmlt_run(enum cmlt_algo a, const struct cmlt_config *cfg, uint64_t seed, ui
             break;
         }
     }
-    for (int c = 0; c < nch; c++) flush(cx, &ch[c]);
+    for (int c = 0; c < nch; c++)
+        flush(cx, &ch[c]);
     /* per-chain 1/N and the pixel area (ground area 1): image = W H / N_c sum of splats */
     double scale = done ? (double)cfg->w * cfg->h / (double)done : 0;
-    for (size_t i = 0; i < 3 * (size_t)cfg->w * cfg->h; i++) img[i] *= scale;
+    for (size_t i = 0; i < 3 * (size_t)cfg->w * cfg->h; i++)
+        img[i] *= scale;
     free(cx);
     st->seconds = now() - t0;
 }

@@ -30,24 +30,24 @@ enum cmlt_algo { CMLT_PSS1, CMLT_PSS2, CMLT_PSS_AVG, CMLT_PSS_MIX, CMLT_EPSM, CM
 extern const char *const cmlt_algo_names[CMLT_NALGO];
 
 struct cmlt_config {
-    int w, h;         /* image resolution */
-    uint64_t n;       /* total chain steps (= samples), split evenly over the chains */
-    uint64_t n_seed;  /* seed-pass samples per chart */
-    double p_large;   /* probability of a large step */
-    double s1, s2;    /* Kelemen small-step range */
-    int swap_every;   /* CMLT: a chart swap after every this many iterations (paper: 4) */
+    int w, h;        /* image resolution */
+    uint64_t n;      /* total chain steps (= samples), split evenly over the chains */
+    uint64_t n_seed; /* seed-pass samples per chart */
+    double p_large;  /* probability of a large step */
+    double s1, s2;   /* Kelemen small-step range */
+    int swap_every;  /* CMLT: a chart swap after every this many iterations (paper: 4) */
 };
 
 struct cmlt_stats {
-    uint64_t steps;            /* chain steps done (all chains) */
-    double acc_sum;            /* sum of acceptance probabilities of the steps */
-    uint64_t accepted;         /* accepted steps */
-    uint64_t swaps;            /* CMLT: swap attempts */
-    double swap_acc_sum;       /* CMLT: sum of swap acceptance probabilities */
+    uint64_t steps;      /* chain steps done (all chains) */
+    double acc_sum;      /* sum of acceptance probabilities of the steps */
+    uint64_t accepted;   /* accepted steps */
+    uint64_t swaps;      /* CMLT: swap attempts */
+    double swap_acc_sum; /* CMLT: sum of swap acceptance probabilities */
     uint64_t swaps_accepted;
-    double b[3];               /* normalisations: integral of f*, of w_1 f*, of w_2 f* */
-    double seconds;            /* wall time of the run (seed pass + chains) */
-    int partial;               /* stopped early */
+    double b[3];    /* normalisations: integral of f*, of w_1 f*, of w_2 f* */
+    double seconds; /* wall time of the run (seed pass + chains) */
+    int partial;    /* stopped early */
 };
 
 void cmlt_config_default(struct cmlt_config *c);
@@ -56,9 +56,8 @@ void cmlt_config_default(struct cmlt_config *c);
  * doubles per pixel, row 0 on top, pixel value = radiance averaged over the pixel) into img, which
  * must hold w*h*3 doubles. Allocates only at start. `progress` (may be NULL) receives chain steps as
  * they are done; a non-zero *stop (may be NULL) ends the chains early (stats->partial = 1). */
-void cmlt_run(enum cmlt_algo a, const struct cmlt_config *c, uint64_t seed, uint64_t stream,
-              double *img, struct cmlt_stats *stats, _Atomic uint64_t *progress,
-              const volatile sig_atomic_t *stop);
+void cmlt_run(enum cmlt_algo a, const struct cmlt_config *c, uint64_t seed, uint64_t stream, double *img,
+              struct cmlt_stats *stats, _Atomic uint64_t *progress, const volatile sig_atomic_t *stop);
 
 /* Replica-exchange chart swap ratio (Eq. 22 with Eq. 24, i.e. Eq. 25 written with path densities,
  * r_i = 1/p_i): chain i holds x1, chain j holds x2; the swap gives chain i the path x2 and chain j

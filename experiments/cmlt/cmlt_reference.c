@@ -4,8 +4,8 @@
 #include "base/util.h"
 #include "cmlt/cmlt_scene.h"
 #include <math.h>
-#include <stdlib.h>
 #include <pthread.h>
+#include <stdlib.h>
 #include <string.h>
 
 struct ref_job {
@@ -96,25 +96,34 @@ static void *ref_worker(void *arg)
     return NULL;
 }
 
-void cmlt_reference(int w, int h, int spp, uint64_t seed, int threads, double *img,
-                    struct cmlt_ref_result *res, _Atomic uint64_t *progress)
+void cmlt_reference(int w, int h, int spp, uint64_t seed, int threads, double *img, struct cmlt_ref_result *res,
+                    _Atomic uint64_t *progress)
 {
     if (threads < 1) threads = 1;
     double *var = xmalloc(sizeof(double) * 3 * (size_t)w * h);
     struct ref_job *jobs = xcalloc((size_t)threads, sizeof *jobs);
     pthread_t *tid = xmalloc(sizeof *tid * (size_t)threads);
     for (int t = 0; t < threads; t++) {
-        jobs[t] = (struct ref_job){.w = w, .h = h, .spp = spp, .nthreads = threads, .id = t,
-                                   .seed = seed, .img = img, .var = var, .progress = progress};
+        jobs[t] = (struct ref_job){.w = w,
+                                   .h = h,
+                                   .spp = spp,
+                                   .nthreads = threads,
+                                   .id = t,
+                                   .seed = seed,
+                                   .img = img,
+                                   .var = var,
+                                   .progress = progress};
         ASSERT(pthread_create(&tid[t], NULL, ref_worker, &jobs[t]) == 0);
     }
     memset(res, 0, sizeof *res);
     for (int t = 0; t < threads; t++) {
         pthread_join(tid[t], NULL);
-        for (int q = 0; q < 3; q++) res->b[q] += jobs[t].b[q]; /* fixed order: deterministic */
+        for (int q = 0; q < 3; q++)
+            res->b[q] += jobs[t].b[q]; /* fixed order: deterministic */
     }
     double v = 0;
-    for (size_t i = 0; i < 3 * (size_t)w * h; i++) v += var[i];
+    for (size_t i = 0; i < 3 * (size_t)w * h; i++)
+        v += var[i];
     res->noise_rmse = sqrt(v / (3.0 * w * h));
     free(var);
     free(jobs);

@@ -13,12 +13,12 @@
 #include <stdint.h>
 
 struct cmlt_ref_result {
-    double b[3];        /* integrals of f*, w_1 f*, w_2 f* over path space */
-    double noise_rmse;  /* estimated RMSE of the reference itself (from per-pixel sample variance) */
+    double b[3];       /* integrals of f*, w_1 f*, w_2 f* over path space */
+    double noise_rmse; /* estimated RMSE of the reference itself (from per-pixel sample variance) */
 };
 
 /* img: w*h*3 doubles. Rows are spread over `threads` threads; deterministic for a given seed. */
-void cmlt_reference(int w, int h, int spp, uint64_t seed, int threads, double *img,
-                    struct cmlt_ref_result *res, _Atomic uint64_t *progress);
+void cmlt_reference(int w, int h, int spp, uint64_t seed, int threads, double *img, struct cmlt_ref_result *res,
+                    _Atomic uint64_t *progress);
 
 #endif

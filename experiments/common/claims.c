@@ -20,11 +20,13 @@ void claims_begin(struct claims *cl, const char *scale, const char *command, con
     va_end(ap);
     csv_meta(cl->c, NULL, "%s", head);
     csv_meta_commit(cl->c);
-    csv_meta(cl->c, NULL, "z in the claimed direction over seeds; holds: z >= 2 (against every other method, or inside "
-                          "a similarity margin); contradicted: z <= -2; seeds_needed: per method, for |z_min| = 2");
+    csv_meta(cl->c, NULL,
+             "z in the claimed direction over seeds; holds: z >= 2 (against every other method, or inside "
+             "a similarity margin); contradicted: z <= -2; seeds_needed: per method, for |z_min| = 2");
     fprintf(cl->c, "source,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n");
-    fprintf(cl->m, "%s (mean ± standard error over seeds; z in the claimed direction; holds: z ≥ 2, contradicted: "
-                   "z ≤ −2):\n\n| claim | statistic | value | against (z) | verdict |\n| --- | --- | ---: | --- | --- |\n",
+    fprintf(cl->m,
+            "%s (mean ± standard error over seeds; z in the claimed direction; holds: z ≥ 2, contradicted: "
+            "z ≤ −2):\n\n| claim | statistic | value | against (z) | verdict |\n| --- | --- | ---: | --- | --- |\n",
             head);
 }
 
@@ -48,10 +50,10 @@ void claims_row(struct claims *cl, const char *source, const char *claim, const 
         snprintf(need, sizeof need, "; no effect seen");
     char f[6][512];
     fprintf(cl->c, "%s,%s,%s,%s,%.6g,%.3g,%s,%.3f,%s,%ld,%s,%s\n", field(source, f[0], 512), field(claim, f[1], 512),
-            field(statistic, f[2], 512), field(method, f[3], 512), value, se, field(versus, f[4], 512), v->zmin, v->word,
-            v->seeds_needed, field(cl->scale, f[5], 512), cl->command);
-    fprintf(cl->m, "| %s | %s | %s %.4g ± %.2g | %s | **%s**%s |\n", claim, statistic, method, value, se, versus_md, v->word,
-            need);
+            field(statistic, f[2], 512), field(method, f[3], 512), value, se, field(versus, f[4], 512), v->zmin,
+            v->word, v->seeds_needed, field(cl->scale, f[5], 512), cl->command);
+    fprintf(cl->m, "| %s | %s | %s %.4g ± %.2g | %s | **%s**%s |\n", claim, statistic, method, value, se, versus_md,
+            v->word, need);
 }
 
 char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen)

@@ -9,10 +9,10 @@
 #include <stddef.h>
 
 struct csv_file {
-    char *name;   /* the path, for messages */
-    char *text;   /* the file, cut in place into the strings below */
-    int ncols;    /* header cells */
-    char **head;  /* [ncols] */
+    char *name;  /* the path, for messages */
+    char *text;  /* the file, cut in place into the strings below */
+    int ncols;   /* header cells */
+    char **head; /* [ncols] */
     int nrows;
     char **cells; /* [nrows * ncols] */
     int nmeta;

@@ -1,8 +1,8 @@
 /* The option table parser and its --help (opts.h). */
 #include "common/opts.h"
+#include "base/util.h"
 #include "common/die.h"
 #include "common/outdir.h"
-#include "base/util.h"
 #include "io/oiio.h"
 #include "path/scene_ready.h"
 #include <errno.h>

@@ -12,12 +12,23 @@ static void write_cell(FILE *f, const struct column *c, const void *row)
 {
     const char *at = (const char *)row + c->off, *fmt = c->fmt ? c->fmt : "%s";
     switch (c->type) {
-    case COL_STR: fprintf(f, fmt, *(const char *const *)at); break;
-    case COL_I: fprintf(f, fmt, *(const int *)at); break;
-    case COL_L: fprintf(f, fmt, *(const long *)at); break;
-    case COL_D: fprintf(f, fmt, *(const double *)at); break;
-    case COL_GET: fprintf(f, fmt, c->get(row, c->arg)); break;
-    case COL_END: break;
+    case COL_STR:
+        fprintf(f, fmt, *(const char *const *)at);
+        break;
+    case COL_I:
+        fprintf(f, fmt, *(const int *)at);
+        break;
+    case COL_L:
+        fprintf(f, fmt, *(const long *)at);
+        break;
+    case COL_D:
+        fprintf(f, fmt, *(const double *)at);
+        break;
+    case COL_GET:
+        fprintf(f, fmt, c->get(row, c->arg));
+        break;
+    case COL_END:
+        break;
     }
 }
 

@@ -40,11 +40,26 @@ struct column {
     int arg; /* passed to get: lets one getter serve a family of columns */
 };
 
-#define COL_STRING(T, name, m) {name, "%s", COL_STR, offsetof(T, m), NULL, 0}
-#define COL_INT(T, name, fmt, m) {name, fmt, COL_I, offsetof(T, m), NULL, 0}
-#define COL_LONG(T, name, fmt, m) {name, fmt, COL_L, offsetof(T, m), NULL, 0}
-#define COL_DOUBLE(T, name, fmt, m) {name, fmt, COL_D, offsetof(T, m), NULL, 0}
-#define COL_COMPUTED(name, fmt, fn, a) {name, fmt, COL_GET, 0, fn, a}
+#define COL_STRING(T, name, m)                                                                                         \
+    {                                                                                                                  \
+        name, "%s", COL_STR, offsetof(T, m), NULL, 0                                                                   \
+    }
+#define COL_INT(T, name, fmt, m)                                                                                       \
+    {                                                                                                                  \
+        name, fmt, COL_I, offsetof(T, m), NULL, 0                                                                      \
+    }
+#define COL_LONG(T, name, fmt, m)                                                                                      \
+    {                                                                                                                  \
+        name, fmt, COL_L, offsetof(T, m), NULL, 0                                                                      \
+    }
+#define COL_DOUBLE(T, name, fmt, m)                                                                                    \
+    {                                                                                                                  \
+        name, fmt, COL_D, offsetof(T, m), NULL, 0                                                                      \
+    }
+#define COL_COMPUTED(name, fmt, fn, a)                                                                                 \
+    {                                                                                                                  \
+        name, fmt, COL_GET, 0, fn, a                                                                                   \
+    }
 
 struct table {
     struct text_out out;

@@ -7,9 +7,11 @@
 void mean_se(const double *x, int n, double *mean, double *se)
 {
     double m = 0, v = 0;
-    for (int i = 0; i < n; i++) m += x[i];
+    for (int i = 0; i < n; i++)
+        m += x[i];
     m = n > 0 ? m / n : NAN;
-    for (int i = 0; i < n; i++) v += (x[i] - m) * (x[i] - m);
+    for (int i = 0; i < n; i++)
+        v += (x[i] - m) * (x[i] - m);
     *mean = m;
     *se = n > 1 ? sqrt(v / (n - 1) / n) : NAN;
 }
@@ -31,14 +33,17 @@ struct verdict verdict_similar(double a, double se_a, double b, double se_b, dou
     }
     double inside = (m - fabs(d)) / s; /* the smaller of the two one-sided z values */
     v.zmin = inside;
-    if (inside >= VERDICT_Z) v.word = "holds";
-    else if (inside <= -VERDICT_Z) v.word = "contradicted";
-    else v.seeds_needed = seeds_for(inside, seeds);
+    if (inside >= VERDICT_Z)
+        v.word = "holds";
+    else if (inside <= -VERDICT_Z)
+        v.word = "contradicted";
+    else
+        v.seeds_needed = seeds_for(inside, seeds);
     return v;
 }
 
-struct verdict verdict_extreme(const double *mean, const double *se, const bool *have, int k, int m, int sign, int seeds,
-                               double *z)
+struct verdict verdict_extreme(const double *mean, const double *se, const bool *have, int k, int m, int sign,
+                               int seeds, double *z)
 {
     struct verdict v = {"undecided", INFINITY, -1, 0};
     for (int i = 0; i < k; i++) {
@@ -50,8 +55,11 @@ struct verdict verdict_extreme(const double *mean, const double *se, const bool 
         if (z[i] < v.zmin) v.zmin = z[i], v.deciding = i;
     }
     if (v.deciding < 0) return v; /* no other method: nothing to compare */
-    if (v.zmin >= VERDICT_Z) v.word = "holds";
-    else if (v.zmin <= -VERDICT_Z) v.word = "contradicted";
-    else v.seeds_needed = seeds_for(v.zmin, seeds);
+    if (v.zmin >= VERDICT_Z)
+        v.word = "holds";
+    else if (v.zmin <= -VERDICT_Z)
+        v.word = "contradicted";
+    else
+        v.seeds_needed = seeds_for(v.zmin, seeds);
     return v;
 }

@@ -10,12 +10,12 @@
 #define VERDICT_Z 2.0
 
 struct verdict {
-    const char *word;   /* "holds", "contradicted" or "undecided" */
-    double zmin;        /* the smallest z over the other methods, in the claimed direction */
-    int deciding;       /* the other method of that z (index into the arrays), -1 if none */
-    long seeds_needed;  /* undecided: seeds per method for |zmin| to reach 2 at the observed effect and
-                         * spread (z grows as the square root of the seeds); 0 when decided, -1 when
-                         * the observed effect is 0 */
+    const char *word;  /* "holds", "contradicted" or "undecided" */
+    double zmin;       /* the smallest z over the other methods, in the claimed direction */
+    int deciding;      /* the other method of that z (index into the arrays), -1 if none */
+    long seeds_needed; /* undecided: seeds per method for |zmin| to reach 2 at the observed effect and
+                        * spread (z grows as the square root of the seeds); 0 when decided, -1 when
+                        * the observed effect is 0 */
 };
 
 /* Mean and standard error of the mean of x[0..n-1] over seeds (se = nan for n < 2). */
@@ -24,8 +24,8 @@ void mean_se(const double *x, int n, double *mean, double *se);
 /* Claim: method m has the largest (sign = +1) or smallest (sign = -1) mean among the k methods with
  * have[i] true. z[i] = sign (mean[m] - mean[i]) / sqrt(se[m]^2 + se[i]^2) is written for every
  * other method (nan for m itself and absent ones); seeds is the count behind the standard errors. */
-struct verdict verdict_extreme(const double *mean, const double *se, const bool *have, int k, int m, int sign, int seeds,
-                               double *z);
+struct verdict verdict_extreme(const double *mean, const double *se, const bool *have, int k, int m, int sign,
+                               int seeds, double *z);
 
 /* Claim: a and b are similar, |a - b| within margin * b (an equivalence test, two one-sided z tests
  * against the margin): "holds" when both z values reach 2 (the difference lies inside the margin),

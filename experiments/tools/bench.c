@@ -88,8 +88,14 @@ static double sample_rate(const struct scene *sc, enum method m, int threads, in
 static double mutation_rate(const struct scene *sc, enum mlt_method m, enum small_step ss, int threads, int K,
                             double seconds, struct rays *per)
 {
-    struct mlt_opts o = {.method = m, .p_large = 0.1, .seconds = seconds, .seed_paths = 20000, .seed = 1,
-                         .threads = threads, .max_length = K, .small_step = ss};
+    struct mlt_opts o = {.method = m,
+                         .p_large = 0.1,
+                         .seconds = seconds,
+                         .seed_paths = 20000,
+                         .seed = 1,
+                         .threads = threads,
+                         .max_length = K,
+                         .small_step = ss};
     pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
     if (ss != SMALL_STEP_PSS) o.pss.kernel = KERNEL_GAUSSIAN; /* controlled steps' density (controlled_step.h) */
     struct mlt_result r;
@@ -150,12 +156,18 @@ struct figures {
 static double method_rate(const struct scene *sc, int m, int threads, int K, double seconds, struct rays *per)
 {
     switch (m) {
-    case PT: return sample_rate(sc, METHOD_PT, threads, K, seconds, per);
-    case BDPT: return sample_rate(sc, METHOD_BDPT, threads, K, seconds, per);
-    case PSSMLT: return mutation_rate(sc, MLT_PSSMLT, SMALL_STEP_PSS, threads, K, seconds, per);
-    case PITP: return mutation_rate(sc, MLT_PITP, SMALL_STEP_PSS, threads, K, seconds, per);
-    case CTRL: return mutation_rate(sc, MLT_MMLT, SMALL_STEP_CONTROLLED, threads, K, seconds, per);
-    default: return mutation_rate(sc, MLT_MMLT, SMALL_STEP_PSS, threads, K, seconds, per);
+    case PT:
+        return sample_rate(sc, METHOD_PT, threads, K, seconds, per);
+    case BDPT:
+        return sample_rate(sc, METHOD_BDPT, threads, K, seconds, per);
+    case PSSMLT:
+        return mutation_rate(sc, MLT_PSSMLT, SMALL_STEP_PSS, threads, K, seconds, per);
+    case PITP:
+        return mutation_rate(sc, MLT_PITP, SMALL_STEP_PSS, threads, K, seconds, per);
+    case CTRL:
+        return mutation_rate(sc, MLT_MMLT, SMALL_STEP_CONTROLLED, threads, K, seconds, per);
+    default:
+        return mutation_rate(sc, MLT_MMLT, SMALL_STEP_PSS, threads, K, seconds, per);
     }
 }
 
@@ -175,7 +187,8 @@ static void measure(const struct scene *sc, int runs, double seconds, int K, boo
             v[2 + 3 * NM + m][r] = per.shadow;
         }
         if (one_thread) continue;
-        for (int m = 0; m < NM; m++) v[2 + NM + m][r] = method_rate(sc, m, 2, K, seconds, NULL);
+        for (int m = 0; m < NM; m++)
+            v[2 + NM + m][r] = method_rate(sc, m, 2, K, seconds, NULL);
     }
     f->closest_rate = median(v[0], runs);
     f->shadow_rate = median(v[1], runs);
@@ -208,9 +221,11 @@ static void report(const char *path, const struct scene *sc, int runs, double se
         printf("\n%-44s %12.0f   speed-up %.2fx\n", label, f.rate[m][1], f.rate[m][1] / f.rate[m][0]);
     }
     /* What the rays alone would take at the random-ray rates: how far the rest could ever go. */
-    printf("%-44s %8s %8s   %s\n", "rays per sample or mutation", "closest", "shadow", "Embree time at the rates above");
+    printf("%-44s %8s %8s   %s\n", "rays per sample or mutation", "closest", "shadow",
+           "Embree time at the rates above");
     for (int m = 0; m < NM; m++) {
-        double us = 1e6 / f.rate[m][0], ray_us = 1e6 * (f.per[m].closest / f.closest_rate + f.per[m].shadow / f.shadow_rate);
+        double us = 1e6 / f.rate[m][0],
+               ray_us = 1e6 * (f.per[m].closest / f.closest_rate + f.per[m].shadow / f.shadow_rate);
         printf("  %-42s %8.2f %8.2f   %.3f of %.3f us (%.0f %%)\n", method_names[m], f.per[m].closest, f.per[m].shadow,
                ray_us, us, 100 * ray_us / us);
     }
@@ -222,7 +237,8 @@ static void report(const char *path, const struct scene *sc, int runs, double se
 static void table(char **paths, struct scene **sc, int n, int runs, double seconds, int K)
 {
     printf("# 320x180, max length %d, 1 thread, median of %d runs of %g s\n", K, runs, seconds);
-    printf("| scene | Embree rays/s | PT samples/s | BDPT samples/s | PSSMLT mutations/s | MMLT mutations/s | PITP mutations/s | "
+    printf("| scene | Embree rays/s | PT samples/s | BDPT samples/s | PSSMLT mutations/s | MMLT mutations/s | PITP "
+           "mutations/s | "
            "PITP time / MMLT | MMLT controlled mutations/s |\n");
     printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (int i = 0; i < n; i++) {
@@ -253,18 +269,25 @@ int main(int argc, char **argv)
     struct scenes ss = {.paths = {"scenes/cornell-box/scene.json"}};
     int runs, K;
     double seconds;
-    const struct opt opts[] = {
-        {"--runs", OPT_INT, OPT_DST(runs), .arg = "N", .lo = 1, .hi = 99, .help = "median of N runs of each figure", .def = "3"},
-        {"--seconds", OPT_DOUBLE, OPT_DST(seconds), .arg = "S", .lo = 0.01, .hi = 600, .help = "length of each run", .def = "3"},
-        OPT_MAX_LENGTH(K, .help = "path length cap in segments", .def = "8"),
-        {0}};
-    opts_parse(&(struct opts_spec){.prog = "bench", .usage = "usage: bench [SCENE.json ...] [options]\n",
-                                   .about = "  Every scene is rendered at 320x180. One scene (default scenes/cornell-box/scene.json): Embree's\n"
-                                            "  ray rate, PT/BDPT samples/s and PSSMLT/MMLT/PITP mutations/s on 1 and 2 threads, rays per sample\n"
-                                            "  or mutation and the time they take at Embree's rate, peak memory.\n"
-                                            "  Several scenes: a Markdown table of the 1-thread figures, one row per scene.\n",
-                                   .opts = opts, .positional = scene_arg, .ctx = &ss},
-               argc, argv);
+    const struct opt opts[] = {{"--runs", OPT_INT, OPT_DST(runs), .arg = "N", .lo = 1, .hi = 99,
+                                .help = "median of N runs of each figure", .def = "3"},
+                               {"--seconds", OPT_DOUBLE, OPT_DST(seconds), .arg = "S", .lo = 0.01, .hi = 600,
+                                .help = "length of each run", .def = "3"},
+                               OPT_MAX_LENGTH(K, .help = "path length cap in segments", .def = "8"),
+                               {0}};
+    opts_parse(
+        &(struct opts_spec){
+            .prog = "bench",
+            .usage = "usage: bench [SCENE.json ...] [options]\n",
+            .about =
+                "  Every scene is rendered at 320x180. One scene (default scenes/cornell-box/scene.json): Embree's\n"
+                "  ray rate, PT/BDPT samples/s and PSSMLT/MMLT/PITP mutations/s on 1 and 2 threads, rays per sample\n"
+                "  or mutation and the time they take at Embree's rate, peak memory.\n"
+                "  Several scenes: a Markdown table of the 1-thread figures, one row per scene.\n",
+            .opts = opts,
+            .positional = scene_arg,
+            .ctx = &ss},
+        argc, argv);
     char **paths = ss.paths;
     int n = ss.n;
     int nscenes = n ? n : 1;
@@ -278,8 +301,11 @@ int main(int argc, char **argv)
         }
         camera_resize(&sc[i]->cam, 320, 180);
     }
-    if (nscenes == 1) report(paths[0], sc[0], runs, seconds, K);
-    else table(paths, sc, nscenes, runs, seconds, K);
-    for (int i = 0; i < nscenes; i++) scene_free(sc[i]);
+    if (nscenes == 1)
+        report(paths[0], sc[0], runs, seconds, K);
+    else
+        table(paths, sc, nscenes, runs, seconds, K);
+    for (int i = 0; i < nscenes; i++)
+        scene_free(sc[i]);
     return 0;
 }

@@ -50,21 +50,28 @@ int main(int argc, char **argv)
     double alpha;
     struct files fl = {.n = 0};
     const struct opt opts[] = {
-        {"--key", OPT_STRING, OPT_DST(keyarg), .arg = "COLS", .help = "comma-separated key columns matching rows (default: first column)"},
+        {"--key", OPT_STRING, OPT_DST(keyarg), .arg = "COLS",
+         .help = "comma-separated key columns matching rows (default: first column)"},
         {"--mean", OPT_STRING, OPT_DST(mean), .arg = "COL", .help = "column with the mean", .def = "mean"},
         {"--se", OPT_STRING, OPT_DST(se), .arg = "COL", .help = "column with its standard error", .def = "se"},
         {"--count", OPT_STRING, OPT_DST(count), .arg = "COL",
-         .help = "column with the number of runs behind the mean: p-values from Student's t with Welch-Satterthwaite df "
-                 "instead of the normal distribution"},
-        {"--alpha", OPT_DOUBLE, OPT_DST(alpha), .arg = "A", .lo = DBL_TRUE_MIN, .hi = 1 - 0x1p-53, .expect = "a number in (0, 1)",
-         .help = "family-wise significance level, Sidak-corrected over rows", .def = "0.01"},
+         .help =
+             "column with the number of runs behind the mean: p-values from Student's t with Welch-Satterthwaite df "
+             "instead of the normal distribution"},
+        {"--alpha", OPT_DOUBLE, OPT_DST(alpha), .arg = "A", .lo = DBL_TRUE_MIN, .hi = 1 - 0x1p-53,
+         .expect = "a number in (0, 1)", .help = "family-wise significance level, Sidak-corrected over rows",
+         .def = "0.01"},
         {"--out", OPT_STRING, OPT_DST(out), .arg = "FILE", .help = "also write the verdict table (Markdown) to FILE"},
         {0}};
-    opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: check_stats [options] BASELINE.csv CURRENT.csv\n",
-                                   .about = "Compares per-row means (with standard errors) of CURRENT against BASELINE.\n",
-                                   .tail = "exit status: 0 consistent, 1 significant difference or missing row, 2 bad input\n",
-                                   .opts = opts, .positional = file_arg, .ctx = &fl},
-               argc, argv);
+    opts_parse(
+        &(struct opts_spec){.prog = prog,
+                            .usage = "usage: check_stats [options] BASELINE.csv CURRENT.csv\n",
+                            .about = "Compares per-row means (with standard errors) of CURRENT against BASELINE.\n",
+                            .tail = "exit status: 0 consistent, 1 significant difference or missing row, 2 bad input\n",
+                            .opts = opts,
+                            .positional = file_arg,
+                            .ctx = &fl},
+        argc, argv);
     if (fl.n != 2) opts_fail(prog, "expected BASELINE.csv CURRENT.csv (see --help)");
     const char **files = fl.name;
 
@@ -101,20 +108,21 @@ int main(int argc, char **argv)
     size_t cap = 4096, len = 0;
     char *txt = malloc(cap);
     if (!txt) opts_fail(prog, "out of memory");
-#define OUT(...)                                                                                                   \
-    do {                                                                                                           \
-        int n_ = snprintf(NULL, 0, __VA_ARGS__);                                                                   \
-        while (len + (size_t)n_ + 1 > cap) {                                                                       \
-            cap *= 2;                                                                                              \
-            txt = realloc(txt, cap);                                                                               \
-            if (!txt) opts_fail(prog, "out of memory");                                                                        \
-        }                                                                                                          \
-        snprintf(txt + len, cap - len, __VA_ARGS__);                                                               \
-        len += (size_t)n_;                                                                                         \
+#define OUT(...)                                                                                                       \
+    do {                                                                                                               \
+        int n_ = snprintf(NULL, 0, __VA_ARGS__);                                                                       \
+        while (len + (size_t)n_ + 1 > cap) {                                                                           \
+            cap *= 2;                                                                                                  \
+            txt = realloc(txt, cap);                                                                                   \
+            if (!txt) opts_fail(prog, "out of memory");                                                                \
+        }                                                                                                              \
+        snprintf(txt + len, cap - len, __VA_ARGS__);                                                                   \
+        len += (size_t)n_;                                                                                             \
     } while (0)
     OUT("check_stats: %s vs baseline %s: alpha = %g family-wise, Sidak per row %.3g over %d rows, %s\n\n", files[1],
         files[0], alpha, a1, b.n, count ? "Welch t" : "normal z");
-    OUT("| %s | baseline | current | z | p | verdict |\n| --- | ---: | ---: | ---: | ---: | --- |\n", keyarg ? keyarg : keys[0]);
+    OUT("| %s | baseline | current | z | p | verdict |\n| --- | ---: | ---: | ---: | ---: | --- |\n",
+        keyarg ? keyarg : keys[0]);
     for (int i = 0; i < b.n; i++) {
         const struct stats_row *rb = &b.rows[i], *rc = NULL;
         for (int j = 0; j < c.n; j++)
@@ -126,7 +134,8 @@ int main(int argc, char **argv)
         }
         double s = sqrt(rb->se * rb->se + rc->se * rc->se), d = rc->mean - rb->mean;
         double z = s > 0 ? d / s : (d == 0 ? 0 : copysign(INFINITY, d)), p;
-        if (!isfinite(z)) p = 0;
+        if (!isfinite(z))
+            p = 0;
         else if (count) {
             double vb = rb->se * rb->se, vc = rc->se * rc->se;
             double den = vb * vb / (rb->count - 1) + vc * vc / (rc->count - 1);
@@ -136,8 +145,8 @@ int main(int argc, char **argv)
             p = 2 * gsl_cdf_ugaussian_Q(fabs(z));
         int f = p < a1;
         fails += f;
-        OUT("| %s | %.4g ± %.2g | %.4g ± %.2g | %+.2f | %.2g | %s |\n", rb->key, rb->mean, rb->se, rc->mean, rc->se, z, p,
-            f ? "FAIL" : "ok");
+        OUT("| %s | %.4g ± %.2g | %.4g ± %.2g | %+.2f | %.2g | %s |\n", rb->key, rb->mean, rb->se, rc->mean, rc->se, z,
+            p, f ? "FAIL" : "ok");
     }
     OUT("\n%s: %d of %d rows differ significantly\n", fails ? "FAIL" : "PASS", fails, b.n);
     fputs(txt, stdout);

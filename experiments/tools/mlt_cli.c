@@ -3,8 +3,10 @@
 #include "common/csv_meta.h"
 #include <string.h>
 
-static const enum opt_type opt_types[] = {[MLT_OPTION_FLAG] = OPT_FLAG, [MLT_OPTION_INT] = OPT_INT,
-                                          [MLT_OPTION_DOUBLE] = OPT_DOUBLE, [MLT_OPTION_CHOICE] = OPT_CHOICE};
+static const enum opt_type opt_types[] = {[MLT_OPTION_FLAG] = OPT_FLAG,
+                                          [MLT_OPTION_INT] = OPT_INT,
+                                          [MLT_OPTION_DOUBLE] = OPT_DOUBLE,
+                                          [MLT_OPTION_CHOICE] = OPT_CHOICE};
 
 size_t mlt_cli_opts(struct mlt_opts *m, struct opt *out, size_t max)
 {
@@ -12,9 +14,17 @@ size_t mlt_cli_opts(struct mlt_opts *m, struct opt *out, size_t max)
     for (size_t i = 0; i < mlt_options_count && n < max; i++) {
         const struct mlt_option *d = &mlt_options[i];
         if (!d->cli) continue;
-        out[n++] = (struct opt){.name = d->cli, .type = opt_types[d->type], .dst = (char *)m + d->offset, .size = d->size,
-                                .arg = d->arg, .help = d->help, .def = d->def, .lo = d->lo, .hi = d->hi,
-                                .choices = d->choices, .tag = (int)d->methods};
+        out[n++] = (struct opt){.name = d->cli,
+                                .type = opt_types[d->type],
+                                .dst = (char *)m + d->offset,
+                                .size = d->size,
+                                .arg = d->arg,
+                                .help = d->help,
+                                .def = d->def,
+                                .lo = d->lo,
+                                .hi = d->hi,
+                                .choices = d->choices,
+                                .tag = (int)d->methods};
     }
     return n;
 }
@@ -23,7 +33,8 @@ size_t mlt_cli_opts(struct mlt_opts *m, struct opt *out, size_t max)
 static void method_list(unsigned mask, char *buf, size_t n)
 {
     int count = 0, seen = 0;
-    for (int i = 0; mlt_option_methods[i]; i++) count += (mask >> i) & 1;
+    for (int i = 0; mlt_option_methods[i]; i++)
+        count += (mask >> i) & 1;
     buf[0] = 0;
     for (int i = 0; mlt_option_methods[i]; i++) {
         if (!((mask >> i) & 1)) continue;
@@ -41,7 +52,8 @@ void mlt_cli_warn_unused(const struct opts_spec *spec, const char *method, int a
         const struct opt *e = opts_find(spec, argv[i]);
         if (!e || !e->tag || (e->tag & bit)) continue;
         method_list((unsigned)e->tag, only, sizeof only);
-        fprintf(stderr, "render: warning: %s has no effect with --method %s (it applies to %s)\n", argv[i], method, only);
+        fprintf(stderr, "render: warning: %s has no effect with --method %s (it applies to %s)\n", argv[i], method,
+                only);
     }
 }
 

@@ -1,20 +1,20 @@
 /* bin/render: renders a Tungsten scene with one method; writes PREFIX.exr, PREFIX.png and, for the
  * MCMC methods, PREFIX.csv with acceptance statistics. Built with MPI=1 and started by mpirun, its
  * ranks share the render (core/base/dist.h) and rank 0 alone writes the outputs and the summary. */
+#include "mc/render.h"
 #include "base/dist.h"
 #include "base/parallel.h"
 #include "base/util.h"
 #include "camera/camera.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
-#include "tools/mlt_cli.h"
 #include "emitter/emitter.h"
 #include "io/checkpoint.h"
-#include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include "scene/accel.h"
 #include "scene/scene_hash.h"
+#include "tools/mlt_cli.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -88,10 +88,12 @@ static void parse(int argc, char **argv, struct args *a)
         {"--method", OPT_CHOICE, .choices = methods, .str = &a->method, .def = "bdpt",
          .help = "estimator (pitp: MMLT with the path-invariant technique perturbation, thesis 5.2)"},
         {"--spp", OPT_INT, OPT_DST(a->mc.spp), .arg = "N", .lo = 1, .hi = 1 << 24,
-         .help = "samples per pixel; for pssmlt/mmlt/pitp mutations per pixel (default: the scene's renderer.spp, else 16)"},
+         .help = "samples per pixel; for pssmlt/mmlt/pitp mutations per pixel (default: the scene's renderer.spp, else "
+                 "16)"},
         {"--time", OPT_DOUBLE, OPT_DST(a->mc.seconds), .arg = "SECONDS", .lo = 1e-3, .hi = 1e7,
-         .help = "equal-time budget instead of --spp: pssmlt/mmlt chains stop at it (the seed pass comes on top); pt/bdpt "
-                 "render whole passes of 1 spp while the next fits in it"},
+         .help =
+             "equal-time budget instead of --spp: pssmlt/mmlt chains stop at it (the seed pass comes on top); pt/bdpt "
+             "render whole passes of 1 spp while the next fits in it"},
         {"--cpu-time", OPT_DOUBLE, OPT_DST(a->cpu_seconds), .arg = "SECONDS", .lo = 1e-3, .hi = 1e7,
          .help = "as --time, in CPU seconds per thread (the process's CPU time over --threads): other load on the "
                  "machine then changes the wall time, not the work done"},
@@ -126,13 +128,17 @@ static void parse(int argc, char **argv, struct args *a)
     size_t n = sizeof shared / sizeof shared[0];
     memcpy(opts, shared, sizeof shared);
     n += mlt_cli_opts(m, opts + n, sizeof opts / sizeof opts[0] - n - 1);
-    const struct opts_spec spec = {.prog = prog, .usage = "usage: render SCENE.json [options]\n", .opts = opts,
-                                 .tail = help_tail(),
-                                 .positional = scene_arg, .ctx = a};
+    const struct opts_spec spec = {.prog = prog,
+                                   .usage = "usage: render SCENE.json [options]\n",
+                                   .opts = opts,
+                                   .tail = help_tail(),
+                                   .positional = scene_arg,
+                                   .ctx = a};
     opts_parse(&spec, argc, argv);
     if (!a->scene) opts_fail(prog, "no scene given (see --help)");
     if (a->res[0] && (long)a->res[0] * a->res[1] > LIMIT_IMAGE_PIXELS)
-        opts_fail(prog, "--resolution: %s is above the limit of %ld pixels (8192x8192)", a->res_arg, LIMIT_IMAGE_PIXELS);
+        opts_fail(prog, "--resolution: %s is above the limit of %ld pixels (8192x8192)", a->res_arg,
+                  LIMIT_IMAGE_PIXELS);
     if (a->cpu_seconds > 0) {
         if (a->mc.seconds > 0) opts_fail(prog, "--time and --cpu-time: give one budget");
         a->mc.seconds = a->cpu_seconds;
@@ -150,7 +156,8 @@ static void parse(int argc, char **argv, struct args *a)
         m->pss.kernel = KERNEL_GAUSSIAN;
     }
     if (m->technique_k && !strcmp(a->method, "pitp"))
-        opts_fail(prog, "--technique-images: pssmlt and mmlt only (PITP's perturbation moves a state between techniques)");
+        opts_fail(prog,
+                  "--technique-images: pssmlt and mmlt only (PITP's perturbation moves a state between techniques)");
     mlt_cli_warn_unused(&spec, a->method, argc, argv);
 }
 
@@ -228,7 +235,7 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     csv_meta(f, "threads", "%d", m->threads);
     csv_meta(f, "max_length", "%d", m->max_length);
     if (dist_size() > 1) csv_meta(f, "ranks", "%d", dist_size()); /* threads are per rank */
-    mlt_cli_csv(f, m, MLT_CSV_BEFORE_COUNTS); /* the options (core/mcmc/mlt_options.c) */
+    mlt_cli_csv(f, m, MLT_CSV_BEFORE_COUNTS);                     /* the options (core/mcmc/mlt_options.c) */
     if (m->small_step != SMALL_STEP_PSS) {
         csv_meta(f, "controlled_failed_forward", "%ld", r->ctrl_fail_forward);
         csv_meta(f, "controlled_failed_reverse", "%ld", r->ctrl_fail_reverse);
@@ -242,7 +249,8 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     csv_meta(f, "mutations_per_second", "%.0f", r->mutations / r->seconds);
     csv_meta(f, "nonfinite", "%ld", r->nonfinite);
     fputs("# nonfinite_by_length ", f); /* lengths 0..max_length; 0: sums over lengths (path/splat.h) */
-    for (int k = 0; k <= m->max_length; k++) fprintf(f, k ? ",%ld" : "%ld", r->stats.nonfinite.len[k]);
+    for (int k = 0; k <= m->max_length; k++)
+        fprintf(f, k ? ",%ld" : "%ld", r->stats.nonfinite.len[k]);
     fputc('\n', f);
     if (m->method == MLT_PITP) {
         const struct accept_cell *pc = &r->stats.total[PROPOSAL_PITP];
@@ -255,8 +263,10 @@ static bool write_csv(const struct args *a, const struct mlt_result *r, char *er
     csv_meta(f, "connections_nonzero", "%ld", r->stats.conn_nonzero);
     csv_meta(f, "b", "%.9g", r->b);
     csv_meta(f, "b_rse", "%.6g", r->b_rse);
-    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++) csv_meta(f, NULL, "b_%d %.9g", k, r->b_k[k]);
-    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++) csv_meta(f, NULL, "b_rse_%d %.6g", k, r->b_k_rse[k]);
+    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++)
+        csv_meta(f, NULL, "b_%d %.9g", k, r->b_k[k]);
+    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++)
+        csv_meta(f, NULL, "b_rse_%d %.6g", k, r->b_k_rse[k]);
     stats_write_csv(f, a->method, &r->stats, true);
     fclose(f);
     char path[4096];
@@ -281,10 +291,12 @@ static void options_text(const struct args *a, const struct scene *sc, char *buf
 {
     const char *isa = accel_isa();
     if (!isa) /* Embree's own choice: the best this machine runs */
-        for (const char *const *i = accel_isas(); *i; i++) isa = *i;
-    int len = snprintf(buf, n, "method=%s spp=%d time=%g%s seed=%llu threads=%d max_length=%d min_length=%d resolution=%dx%d isa=%s",
-                       a->method, a->mc.spp, a->mc.seconds, a->mc.cpu_time ? "cpu" : "", (unsigned long long)a->mc.seed, a->mc.threads,
-                       a->mc.max_length, a->mc.min_length, sc->cam.width, sc->cam.height, isa ? isa : "?");
+        for (const char *const *i = accel_isas(); *i; i++)
+            isa = *i;
+    int len = snprintf(
+        buf, n, "method=%s spp=%d time=%g%s seed=%llu threads=%d max_length=%d min_length=%d resolution=%dx%d isa=%s",
+        a->method, a->mc.spp, a->mc.seconds, a->mc.cpu_time ? "cpu" : "", (unsigned long long)a->mc.seed, a->mc.threads,
+        a->mc.max_length, a->mc.min_length, sc->cam.width, sc->cam.height, isa ? isa : "?");
     /* only when not the default, so that checkpoints of independent-number runs stay resumable */
     if (a->mc.sobol && len > 0 && (size_t)len < n) len += snprintf(buf + len, n - (size_t)len, " sampler=sobol");
     /* every number-changing MCMC option, from its descriptor: none can be left out */
@@ -311,7 +323,8 @@ static const char *nonfinite_note(const struct nonfinite *nf)
 static void warn_nonfinite(long total, const struct nonfinite *nf)
 {
     if (total > 0)
-        fprintf(stderr, "render: warning: %ld non-finite samples dropped%s; the scene has degenerate geometry or parameters\n",
+        fprintf(stderr,
+                "render: warning: %ld non-finite samples dropped%s; the scene has degenerate geometry or parameters\n",
                 total, nonfinite_note(nf));
 }
 
@@ -320,7 +333,8 @@ static void warn_normalisation(const struct mlt_result *r, long seed_paths)
 {
     if (r->b_rse > 0.01)
         fprintf(stderr,
-                "render: warning: the normalisation's relative standard error is %.1f %% (--seed-paths %ld): the image's mean "
+                "render: warning: the normalisation's relative standard error is %.1f %% (--seed-paths %ld): the "
+                "image's mean "
                 "is that uncertain; %ld seed paths would bring it to 0.5 %%\n",
                 100 * r->b_rse, seed_paths, (long)ceil(seed_paths * (r->b_rse / 0.005) * (r->b_rse / 0.005)));
 }
@@ -329,14 +343,16 @@ static void warn_normalisation(const struct mlt_result *r, long seed_paths)
 static const char *threads_note(int threads)
 {
     static char s[64];
-    if (dist_size() > 1) snprintf(s, sizeof s, "%d ranks x %d threads", dist_size(), threads);
-    else snprintf(s, sizeof s, "%d threads", threads);
+    if (dist_size() > 1)
+        snprintf(s, sizeof s, "%d ranks x %d threads", dist_size(), threads);
+    else
+        snprintf(s, sizeof s, "%d threads", threads);
     return s;
 }
 
 /* --method pt or bdpt; *ok and *partial for the summary, or an exit status (> 0) to stop at. */
-static int run_mc(struct args *a, const struct scene *sc, const struct ckpt_ctl *ctl, bool *ok, bool *partial, char *err,
-                  size_t errlen)
+static int run_mc(struct args *a, const struct scene *sc, const struct ckpt_ctl *ctl, bool *ok, bool *partial,
+                  char *err, size_t errlen)
 {
     method_parse(a->method, &a->mc.method);
     struct render_stats st;
@@ -344,9 +360,13 @@ static int run_mc(struct args *a, const struct scene *sc, const struct ckpt_ctl 
         if (a->mlt.technique_k > a->mc.max_length || a->mlt.technique_k < a->mc.min_length)
             opts_fail("render", "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length)",
                       a->mlt.technique_k, a->mc.min_length > 1 ? a->mc.min_length : 1, a->mc.max_length);
-        if (a->resume) opts_fail("render", "--technique-images: bdpt's per-technique sums are not checkpointed; render again without --resume");
+        if (a->resume)
+            opts_fail(
+                "render",
+                "--technique-images: bdpt's per-technique sums are not checkpointed; render again without --resume");
         if (dist_size() > 1) {
-            if (dist_root()) fprintf(stderr, "render: technique images are not merged across MPI ranks: make them without mpirun\n");
+            if (dist_root())
+                fprintf(stderr, "render: technique images are not merged across MPI ranks: make them without mpirun\n");
             return 2;
         }
         a->mc.tech_k = a->mlt.technique_k;
@@ -362,8 +382,8 @@ static int run_mc(struct args *a, const struct scene *sc, const struct ckpt_ctl 
     if (*ok && !ctl->err[0] && dist_root())
         printf("%s%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",
                *partial ? "PARTIAL (interrupted) " : "", a->method, a->mc.sobol ? " (sobol)" : "", st.samples, st.spp,
-               st.seconds, st.samples / st.seconds,
-               threads_note(a->mc.threads), st.nonfinite, nonfinite_note(&st.nonfinite_len));
+               st.seconds, st.samples / st.seconds, threads_note(a->mc.threads), st.nonfinite,
+               nonfinite_note(&st.nonfinite_len));
     if (*ok && !ctl->err[0] && dist_root()) warn_nonfinite(st.nonfinite, &st.nonfinite_len);
     if (*ok && !ctl->err[0] && dist_root() && st.tech) *ok = write_bdpt_tech(a, &st, img, err, errlen);
     bdpt_tech_free(st.tech);
@@ -376,11 +396,11 @@ static int run_mcmc(struct args *a, const struct scene *sc, const struct ckpt_ct
                     char *err, size_t errlen)
 {
     if (a->mlt.technique_k && (a->mlt.technique_k > a->mlt.max_length || a->mlt.technique_k < a->mlt.min_length ||
-                              a->mlt.large_step != LARGE_MMLT))
+                               a->mlt.large_step != LARGE_MMLT))
         opts_fail("render",
-                 "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length) and MMLT "
-                 "large steps",
-                 a->mlt.technique_k, a->mlt.min_length > 1 ? a->mlt.min_length : 1, a->mlt.max_length);
+                  "--technique-images %d: needs a path length from %d to %d (--min-length, --max-length) and MMLT "
+                  "large steps",
+                  a->mlt.technique_k, a->mlt.min_length > 1 ? a->mlt.min_length : 1, a->mlt.max_length);
     a->mlt.pss.width = camera_film_width(&sc->cam);
     a->mlt.pss.height = camera_film_height(&sc->cam);
     struct mlt_result r;
@@ -390,13 +410,16 @@ static int run_mcmc(struct args *a, const struct scene *sc, const struct ckpt_ct
         return a->resume ? 2 : 1;
     }
     *partial = r.partial;
-    *ok = ctl->err[0] || !dist_root() || (img_write_exr_png(r.img, a->out, err, errlen) && write_csv(a, &r, err, errlen) &&
-                          (!r.angle || write_angle(a, &r, err, errlen)) && (!r.tech || write_tech(a, &r, err, errlen)));
+    *ok = ctl->err[0] || !dist_root() ||
+          (img_write_exr_png(r.img, a->out, err, errlen) && write_csv(a, &r, err, errlen) &&
+           (!r.angle || write_angle(a, &r, err, errlen)) && (!r.tech || write_tech(a, &r, err, errlen)));
     if (*ok && !ctl->err[0] && dist_root())
-        printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass, normalisation rel. s.e. %.2f %%), %.0f mutations/s (%s), "
+        printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass, normalisation rel. s.e. %.2f %%), %.0f mutations/s "
+               "(%s), "
                "%ld non-finite dropped%s\n",
-               *partial ? "PARTIAL (interrupted) " : "", a->method, r.mutations, r.seconds, r.seed_seconds, 100 * r.b_rse,
-               r.mutations / r.seconds, threads_note(a->mlt.threads), r.nonfinite, nonfinite_note(&r.stats.nonfinite));
+               *partial ? "PARTIAL (interrupted) " : "", a->method, r.mutations, r.seconds, r.seed_seconds,
+               100 * r.b_rse, r.mutations / r.seconds, threads_note(a->mlt.threads), r.nonfinite,
+               nonfinite_note(&r.stats.nonfinite));
     if (*ok && !ctl->err[0] && dist_root()) {
         warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
         warn_normalisation(&r, a->mlt.seed_paths);
@@ -424,8 +447,10 @@ int main(int argc, char **argv)
     bool mcmc = strcmp(a.method, "pt") && strcmp(a.method, "bdpt");
     if (emitters_count(sc) == 0) {
         /* PT and BDPT estimate zero correctly; an MCMC method has no target to sample. */
-        fprintf(stderr, mcmc ? "%s: the scene has no emitter: --method %s has no light to sample\n"
-                             : "%s: warning: the scene has no emitter; the image will be black\n", a.scene, a.method);
+        fprintf(stderr,
+                mcmc ? "%s: the scene has no emitter: --method %s has no light to sample\n"
+                     : "%s: warning: the scene has no emitter; the image will be black\n",
+                a.scene, a.method);
         if (mcmc) {
             scene_free(sc);
             return 2;
@@ -446,16 +471,21 @@ int main(int argc, char **argv)
     options_text(&a, sc, opts, sizeof opts);
     snprintf(opts + strlen(opts), sizeof opts - strlen(opts), " ranks=%d", N);
     ckpt_remove_stale_temporaries(ckpt_path); /* a run that ends before its first write cleans up too */
-    struct ckpt_ctl ctl = {.path = ckpt_path, .every = a.checkpoint, .id = {ckpt_build_hash(), ckpt_scene_hash(sc), opts}};
+    struct ckpt_ctl ctl = {
+        .path = ckpt_path, .every = a.checkpoint, .id = {ckpt_build_hash(), ckpt_scene_hash(sc), opts}};
     struct ckpt_buf resume = {0};
     if (a.resume) {
         snprintf(resume_path, sizeof resume_path, N > 1 ? "%s.rank%d" : "%s", a.resume, R);
         long failed = !ckpt_read_file(resume_path, &ctl.id, &resume, err, sizeof err), own = failed;
         dist_sum_longs(&failed, 1); /* all ranks resume, or none */
         if (failed) {
-            if (own) fprintf(stderr, "render: --resume %s\n", err);
-            else fprintf(stderr, "render: --resume %s: %ld of the %d ranks' checkpoints (%s.rankR) are missing, damaged or of another run\n",
-                         a.resume, failed, N, a.resume);
+            if (own)
+                fprintf(stderr, "render: --resume %s\n", err);
+            else
+                fprintf(stderr,
+                        "render: --resume %s: %ld of the %d ranks' checkpoints (%s.rankR) are missing, damaged or of "
+                        "another run\n",
+                        a.resume, failed, N, a.resume);
             ckpt_buf_free(&resume);
             scene_free(sc);
             return 2;
@@ -474,9 +504,12 @@ int main(int argc, char **argv)
     }
     /* A checkpoint that could not be written stopped the run (ckpt_save_run): its line alone, and
      * no outputs, which a full disk would refuse too. */
-    if (ctl.err[0]) fprintf(stderr, "render: %s\n", ctl.err);
-    else if (!ok) fprintf(stderr, "render: %s\n", err);
-    else if (partial && ctl.written) fprintf(stderr, "render: interrupted; continue with --resume %s.ckpt\n", a.out);
+    if (ctl.err[0])
+        fprintf(stderr, "render: %s\n", ctl.err);
+    else if (!ok)
+        fprintf(stderr, "render: %s\n", err);
+    else if (partial && ctl.written)
+        fprintf(stderr, "render: interrupted; continue with --resume %s.ckpt\n", a.out);
     ckpt_buf_free(&resume);
     scene_free(sc);
     return !ok || ctl.err[0] ? 1 : partial ? 130 : 0;

@@ -96,7 +96,8 @@ static bool header(char *line, const char *name, int ln, const struct stats_cols
     if (*nh < 0) return fail(err, errlen, "%s:%d: more than %d columns", name, ln, STATS_MAXCOL);
     const char *want[STATS_MAXKEY + 3];
     int nw = 0;
-    for (int k = 0; k < cols->nkeys; k++) want[nw++] = cols->key[k];
+    for (int k = 0; k < cols->nkeys; k++)
+        want[nw++] = cols->key[k];
     want[nw++] = cols->mean;
     want[nw++] = cols->se;
     want[nw++] = cols->count;

@@ -11,7 +11,7 @@
 
 #define STATS_MAXCOL 64
 #define STATS_MAXKEY 8
-#define STATS_NAME 64  /* longest column name, with its NUL */
+#define STATS_NAME 64   /* longest column name, with its NUL */
 #define STATS_LINE 4096 /* longest line, with its newline and NUL */
 
 struct stats_row {

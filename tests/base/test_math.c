@@ -27,7 +27,8 @@ Test(math, mat4_invert_and_trs)
     cr_assert(mat4_invert(&m, &inv));
     mat4 id = mat4_mul(&m, &inv);
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) cr_assert(fabs(id.m[i][j] - (i == j)) < 1e-12);
+        for (int j = 0; j < 4; j++)
+            cr_assert(fabs(id.m[i][j] - (i == j)) < 1e-12);
     /* normals stay perpendicular to transformed tangents */
     vec3 t = v3(1, -2, 0.5), n = v3(2, 1, 0);
     cr_assert(fabs(vdot(t, n)) < 1e-12);
@@ -45,7 +46,8 @@ Test(math, rot_yxz_single_axes)
     mat4 r30 = mat4_rot_yxz(v3(0, 30, 0));
     double c = cos(M_PI / 6), s = sin(M_PI / 6), want[3][3] = {{c, 0, -s}, {0, 1, 0}, {s, 0, c}};
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) cr_assert(fabs(r30.m[i][j] - want[i][j]) < 1e-12);
+        for (int j = 0; j < 3; j++)
+            cr_assert(fabs(r30.m[i][j] - want[i][j]) < 1e-12);
     mat4 rx = mat4_rot_yxz(v3(90, 0, 0)), rz = mat4_rot_yxz(v3(0, 0, 90));
     vec3 yx = mat4_vector(&rx, v3(0, 1, 0)), xz = mat4_vector(&rz, v3(1, 0, 0));
     cr_assert(fabs(yx.z - 1) < 1e-12 && fabs(xz.y - 1) < 1e-12);

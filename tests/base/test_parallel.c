@@ -42,6 +42,7 @@ Test(parallel, pass_barrier_runs_every_thread_through_every_pass_in_step, .timeo
     parallel_run(THREADS, worker, &s);
     pass_barrier_destroy(&s.bar);
     cr_assert_eq(s.decisions, PASSES, "decide ran %d times for %d passes", s.decisions, PASSES);
-    for (int t = 0; t < THREADS; t++) cr_assert_eq(atomic_load(&s.work[t]), PASSES, "thread %d", t);
+    for (int t = 0; t < THREADS; t++)
+        cr_assert_eq(atomic_load(&s.work[t]), PASSES, "thread %d", t);
     cr_assert_eq(atomic_load(&s.bad), 0, "%d passes out of step", atomic_load(&s.bad));
 }

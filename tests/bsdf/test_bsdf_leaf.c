@@ -19,7 +19,12 @@ static double rel_err(double a, double b) { return fabs(a - b) / fmax(fabs(b), 1
 
 Test(bsdf_leaf, dispatch_and_flags)
 {
-    const struct { enum bsdf_type t; const struct bsdf_ops *ops; int dims; bool tr, delta; } want[] = {
+    const struct {
+        enum bsdf_type t;
+        const struct bsdf_ops *ops;
+        int dims;
+        bool tr, delta;
+    } want[] = {
         {BSDF_THINSHEET, &bsdf_thinsheet_ops, 1, true, true},
         {BSDF_DIFFUSE_TRANSMISSION, &bsdf_diffuse_transmission_ops, 3, true, false},
         {BSDF_OREN_NAYAR, &bsdf_oren_nayar_ops, 3, false, false},
@@ -40,17 +45,28 @@ Test(bsdf_leaf, dispatch_and_flags)
 static struct bsdf cont_material(int i)
 {
     switch (i) {
-    case 0: return leaf_dt(0.5, v3s(1));
-    case 1: return leaf_dt(0.8, v3(0.7, 0.8, 0.9));
-    case 2: return leaf_dt(0.0, v3(0.9, 0.5, 0.2));
-    case 3: return leaf_on(1.0, v3s(1));
-    case 4: return leaf_on(0.3, v3(0.7, 0.55, 0.3));
-    case 5: return leaf_on(0.0, v3(0.5, 0.5, 0.5));
-    case 6: return leaf_phong(64, 0.2, v3s(1));
-    case 7: return leaf_phong(10, 0.2, v3(0.7, 0.3, 0.2));
-    case 8: return leaf_phong(200, 0.2, v3(0.2, 0.4, 0.7));
-    case 9: return leaf_phong(40, 0.8, v3(0.3, 0.6, 0.25));
-    default: return leaf_phong(0, 0, v3s(1));
+    case 0:
+        return leaf_dt(0.5, v3s(1));
+    case 1:
+        return leaf_dt(0.8, v3(0.7, 0.8, 0.9));
+    case 2:
+        return leaf_dt(0.0, v3(0.9, 0.5, 0.2));
+    case 3:
+        return leaf_on(1.0, v3s(1));
+    case 4:
+        return leaf_on(0.3, v3(0.7, 0.55, 0.3));
+    case 5:
+        return leaf_on(0.0, v3(0.5, 0.5, 0.5));
+    case 6:
+        return leaf_phong(64, 0.2, v3s(1));
+    case 7:
+        return leaf_phong(10, 0.2, v3(0.7, 0.3, 0.2));
+    case 8:
+        return leaf_phong(200, 0.2, v3(0.2, 0.4, 0.7));
+    case 9:
+        return leaf_phong(40, 0.8, v3(0.3, 0.6, 0.25));
+    default:
+        return leaf_phong(0, 0, v3s(1));
     }
 }
 
@@ -101,7 +117,8 @@ Test(bsdf_leaf, reciprocity)
             vec3 a = warp_uniform_sphere(rng_uniform(&r), rng_uniform(&r));
             vec3 d = warp_uniform_sphere(rng_uniform(&r), rng_uniform(&r));
             if (!b.transmissive) a.z = fabs(a.z), d.z = fabs(d.z);
-            if (j % 4 == 0 && b.type == BSDF_PHONG) d = vnorm(vadd(smooth_reflect(a), vscale(d, 0.05))); /* in the lobe */
+            if (j % 4 == 0 && b.type == BSDF_PHONG)
+                d = vnorm(vadd(smooth_reflect(a), vscale(d, 0.05))); /* in the lobe */
             rgb fab = bsdf_eval(&c, a, d, TRANSPORT_RADIANCE), fba = bsdf_eval(&c, d, a, TRANSPORT_RADIANCE);
             for (int ch = 0; ch < 3; ch++)
                 cr_assert(fabs(vget(fab, ch) - vget(fba, ch)) <= 1e-12 * fmax(vget(fab, ch), 1e-300),
@@ -182,7 +199,8 @@ Test(bsdf_leaf, thinsheet_lobes)
                 cr_assert(bsdf_sample(&c, wi, fixed(&f, nextafter(1.0, 0.0)), TRANSPORT_RADIANCE, &s));
                 cr_assert(s.delta && s.lobe == THINSHEET_LOBE_TRANSMIT && rel_err(s.pdf, 1 - P) < 1e-14);
                 cr_assert(s.wo.x == -wi.x && s.wo.y == -wi.y && s.wo.z == -wi.z);
-                for (int ch = 0; ch < 3; ch++) cr_assert(rel_err(vget(s.weight, ch), vget(o.T, ch) / (1 - P)) < 1e-14);
+                for (int ch = 0; ch < 3; ch++)
+                    cr_assert(rel_err(vget(s.weight, ch), vget(o.T, ch) / (1 - P)) < 1e-14);
                 struct bsdf_sample si;
                 cr_assert(bsdf_sample(&c, wi, fixed(&f, nextafter(1.0, 0.0)), TRANSPORT_IMPORTANCE, &si));
                 cr_assert(vlen(vsub(si.weight, s.weight)) == 0); /* no eta change across the sheet */
@@ -253,9 +271,9 @@ Test(bsdf_leaf, roundtrip_thinsheet)
 
 Test(bsdf_leaf, roundtrip_continuous)
 {
-    const char *names[N_CONT] = {"dt t0.5", "dt t0.8 coloured", "dt t0", "oren_nayar 1", "oren_nayar 0.3",
-                                 "oren_nayar 0", "phong 64/0.2", "phong 10/0.2", "phong 200/0.2", "phong 40/0.8",
-                                 "phong 0/0"};
+    const char *names[N_CONT] = {"dt t0.5",        "dt t0.8 coloured", "dt t0",        "oren_nayar 1",
+                                 "oren_nayar 0.3", "oren_nayar 0",     "phong 64/0.2", "phong 10/0.2",
+                                 "phong 200/0.2",  "phong 40/0.8",     "phong 0/0"};
     for (int m = 0; m < N_CONT; m++) {
         struct bsdf b = cont_material(m);
         roundtrip(&b, names[m]);
@@ -296,8 +314,16 @@ Test(bsdf_leaf, invert_rejects_impossible_directions)
     vec3 wi = leaf_dir(0.7, 0.4), below = leaf_dir(-0.3, 2), other = leaf_dir(0.5, 1);
     struct bsdf on = leaf_on(0.5, v3s(1)), ph = leaf_phong(10, 0.2, v3s(1)), ph0 = leaf_phong(10, 0, v3s(1));
     struct bsdf sheet = leaf_sheet(1.5, 0.5, v3s(0)), dt0 = leaf_dt(0, v3s(1)), dt1 = leaf_dt(1, v3s(1));
-    const struct { struct bsdf *b; vec3 wo; } no[] = {
-        {&on, below}, {&ph, below}, {&sheet, other}, {&sheet, below}, {&dt0, below}, {&dt1, other},
+    const struct {
+        struct bsdf *b;
+        vec3 wo;
+    } no[] = {
+        {&on, below},
+        {&ph, below},
+        {&sheet, other},
+        {&sheet, below},
+        {&dt0, below},
+        {&dt1, other},
         /* phong without a diffuse part: outside the glossy lobe's support (cos a < 0) */
         {&ph0, vneg(smooth_reflect(wi))},
     };
@@ -367,19 +393,26 @@ Test(bsdf_leaf, loader_defaults_and_parameters, .init = mk_tmp, .fini = rm_tmp)
 
 Test(bsdf_leaf, loader_errors, .init = mk_tmp, .fini = rm_tmp)
 {
-    const struct { const char *bsdf, *expect; } bad[] = {
+    const struct {
+        const char *bsdf, *expect;
+    } bad[] = {
         {"{\"name\": \"a\", \"type\": \"thinsheet\", \"enable_interference\": true}",
          "bsdfs[0].enable_interference: thin-film interference is not supported"},
         {"{\"name\": \"a\", \"type\": \"thinsheet\", \"thickness\": \"t.png\"}",
          "bsdfs[0].thickness: textured thickness is not supported"},
-        {"{\"name\": \"a\", \"type\": \"thinsheet\", \"thickness\": -1}", "bsdfs[0].thickness: expected a non-negative number"},
-        {"{\"name\": \"a\", \"type\": \"thinsheet\", \"sigma_a\": [0, -1, 0]}", "bsdfs[0].sigma_a: expected non-negative"},
+        {"{\"name\": \"a\", \"type\": \"thinsheet\", \"thickness\": -1}",
+         "bsdfs[0].thickness: expected a non-negative number"},
+        {"{\"name\": \"a\", \"type\": \"thinsheet\", \"sigma_a\": [0, -1, 0]}",
+         "bsdfs[0].sigma_a: expected non-negative"},
         {"{\"name\": \"a\", \"type\": \"thinsheet\", \"ior\": 0}", "bsdfs[0].ior: expected a positive number"},
         {"{\"name\": \"a\", \"type\": \"diffuse_transmission\", \"transmittance\": 1.5}",
          "bsdfs[0].transmittance: expected a number in [0, 1]"},
-        {"{\"name\": \"a\", \"type\": \"oren_nayar\", \"roughness\": -0.1}", "bsdfs[0].roughness: expected a non-negative"},
-        {"{\"name\": \"a\", \"type\": \"phong\", \"exponent\": -1}", "bsdfs[0].exponent: expected a non-negative number"},
-        {"{\"name\": \"a\", \"type\": \"phong\", \"diffuse_ratio\": 2}", "bsdfs[0].diffuse_ratio: expected a number in [0, 1]"},
+        {"{\"name\": \"a\", \"type\": \"oren_nayar\", \"roughness\": -0.1}",
+         "bsdfs[0].roughness: expected a non-negative"},
+        {"{\"name\": \"a\", \"type\": \"phong\", \"exponent\": -1}",
+         "bsdfs[0].exponent: expected a non-negative number"},
+        {"{\"name\": \"a\", \"type\": \"phong\", \"diffuse_ratio\": 2}",
+         "bsdfs[0].diffuse_ratio: expected a number in [0, 1]"},
         {"{\"name\": \"a\", \"type\": \"phong\", \"exponent\": \"x\"}", "bsdfs[0].exponent"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {

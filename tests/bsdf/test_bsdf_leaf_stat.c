@@ -1,9 +1,9 @@
 /* Statistical tests of the leaf BSDF families (thinsheet, diffuse_transmission, oren_nayar, phong).
  *  - chi-square (support/chi2.h) of sample() against pdf(): 1M samples per case, 32 x 64
  *    equal-area cells over the whole sphere (diffuse_transmission) or 128 x 64 cells of
- *    (cos theta, phi) over the upper hemisphere (oren_nayar, phong), alpha = 0.01 Sidak-corrected over CHI2_CASES; failed
- *    samples go to the "other" cell, so the lobe choice and phong's lost below-horizon samples are
- *    tested too; diffuse_transmission from both sides;
+ *    (cos theta, phi) over the upper hemisphere (oren_nayar, phong), alpha = 0.01 Sidak-corrected over CHI2_CASES;
+ * failed samples go to the "other" cell, so the lobe choice and phong's lost below-horizon samples are tested too;
+ * diffuse_transmission from both sides;
  *  - thinsheet: reflection frequency against R / (R + mean T), chi-square 1 dof, 1M samples, same
  *    alpha;
  *  - energy: Monte Carlo directional albedo with white albedo, 1M samples: <= 1 + 3 sigma; exactly 1
@@ -187,10 +187,11 @@ Test(stat_bsdf_leaf, white_furnace)
                             sigma);
                 fprintf(stderr, "furnace %-15s side %d cos %.2f: albedo %.6f +- %.6f\n", m[j].name, side,
                         leaf_wi_cos[i], mean, sigma);
-                cr_assert(mean <= m[j].bound + 3 * sigma + 1e-12, "%s wi %d: albedo %g sigma %g", m[j].name, i, mean, sigma);
+                cr_assert(mean <= m[j].bound + 3 * sigma + 1e-12, "%s wi %d: albedo %g sigma %g", m[j].name, i, mean,
+                          sigma);
                 if (m[j].conserves)
-                    cr_assert(fabs(lo - 1) < 1e-12 && fabs(hi - 1) < 1e-12, "%s: weights in [%.17g, %.17g]",
-                              m[j].name, lo, hi);
+                    cr_assert(fabs(lo - 1) < 1e-12 && fabs(hi - 1) < 1e-12, "%s: weights in [%.17g, %.17g]", m[j].name,
+                              lo, hi);
             }
 }
 
@@ -244,13 +245,17 @@ Test(stat_bsdf_leaf, inverted_numbers_follow_the_forward_ones)
         struct bsdf b;
         const char *name;
     } m[] = {
-        {leaf_sheet(1.5, 0.4, v3(0.2, 1.5, 3.0)), "tinted sheet"}, {leaf_dt(0.8, v3(0.7, 0.8, 0.9)), "dt 0.8"},
-        {leaf_on(0.3, v3s(1)), "oren_nayar 0.3"}, {leaf_on(1.0, v3s(1)), "oren_nayar 1"},
-        {leaf_phong(10, 0.2, v3s(1)), "phong 10/0.2"}, {leaf_phong(40, 0.8, v3s(1)), "phong 40/0.8"},
+        {leaf_sheet(1.5, 0.4, v3(0.2, 1.5, 3.0)), "tinted sheet"},
+        {leaf_dt(0.8, v3(0.7, 0.8, 0.9)), "dt 0.8"},
+        {leaf_on(0.3, v3s(1)), "oren_nayar 0.3"},
+        {leaf_on(1.0, v3s(1)), "oren_nayar 1"},
+        {leaf_phong(10, 0.2, v3s(1)), "phong 10/0.2"},
+        {leaf_phong(40, 0.8, v3s(1)), "phong 40/0.8"},
     };
     int tested = 0;
     for (size_t j = 0; j < sizeof m / sizeof m[0]; j++)
         for (int side = 0; side < (m[j].b.transmissive ? 2 : 1); side++)
-            for (int i = 0; i < LEAF_NWI; i++) inverse_distribution(&m[j].b, leaf_wi(i, side), m[j].name, &tested);
+            for (int i = 0; i < LEAF_NWI; i++)
+                inverse_distribution(&m[j].b, leaf_wi(i, side), m[j].name, &tested);
     cr_assert_eq(tested, 4 * (2 + 2 + 1 + 1 + 1 + 1));
 }

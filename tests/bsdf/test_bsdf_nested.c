@@ -31,17 +31,17 @@ Test(bsdf_nested, dims_and_flags_from_children)
         int dims;
         bool transmissive, delta_only, refracts, pass_through;
     } want[] = {
-        {"tr", 3, false, false, false, true},           /* 1 + lambert 2 */
-        {"tr_rglass", 4, true, false, true, true},      /* 1 + rough_dielectric 3 */
-        {"sc", 3, false, false, false, false},          /* 1 + 2 */
-        {"sc_au", 1, false, true, false, false},        /* 1 + conductor 0: both lobes delta */
-        {"rc", 3, false, false, false, false},          /* 1 + max(2, 2) */
-        {"rc_au", 3, false, false, false, false},       /* 1 + max(2, 0) */
-        {"rc_rp", 4, false, false, false, false},       /* 1 + max(2, 3) */
-        {"mx", 3, false, false, false, false},          /* 1 + max(2, 0) */
-        {"mx_rough", 4, false, false, false, false},    /* 1 + max(2, 3) */
-        {"mx_nest", 4, false, false, false, true},      /* 1 + max(rc 3, tr 3) */
-        {"mx_glass", 4, true, false, true, false},      /* 1 + max(2, 3) */
+        {"tr", 3, false, false, false, true},        /* 1 + lambert 2 */
+        {"tr_rglass", 4, true, false, true, true},   /* 1 + rough_dielectric 3 */
+        {"sc", 3, false, false, false, false},       /* 1 + 2 */
+        {"sc_au", 1, false, true, false, false},     /* 1 + conductor 0: both lobes delta */
+        {"rc", 3, false, false, false, false},       /* 1 + max(2, 2) */
+        {"rc_au", 3, false, false, false, false},    /* 1 + max(2, 0) */
+        {"rc_rp", 4, false, false, false, false},    /* 1 + max(2, 3) */
+        {"mx", 3, false, false, false, false},       /* 1 + max(2, 0) */
+        {"mx_rough", 4, false, false, false, false}, /* 1 + max(2, 3) */
+        {"mx_nest", 4, false, false, false, true},   /* 1 + max(rc 3, tr 3) */
+        {"mx_glass", 4, true, false, true, false},   /* 1 + max(2, 3) */
         {"mx_white_glass", 3, true, false, true, false},
     };
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
@@ -80,15 +80,17 @@ Test(bsdf_nested, sample_matches_pdf_eval_and_consumes_dims)
                                  rs.base.offset, c.b->dims);
                     cr_assert(fabs(vlen(o.wo) - 1) < 1e-9);
                     if (o.delta) {
-                        cr_assert(o.pdf > 0 && o.pdf <= 1 + 1e-12, "%s: delta probability %g", nested_cases[k].name, o.pdf);
+                        cr_assert(o.pdf > 0 && o.pdf <= 1 + 1e-12, "%s: delta probability %g", nested_cases[k].name,
+                                  o.pdf);
                         continue;
                     }
                     double p = bsdf_pdf(&c, wi, o.wo);
                     rgb f = bsdf_eval(&c, wi, o.wo, mode);
                     cr_assert(rel_err(o.pdf, p) < 1e-6, "%s: sampled pdf %g, pdf() %g", nested_cases[k].name, o.pdf, p);
                     rgb w = vscale(f, fabs(o.wo.z) / p);
-                    cr_assert(vlen(vsub(w, o.weight)) <= 1e-6 * fmax(1e-3, vlen(w)), "%s: weight (%g %g %g) vs f cos / pdf (%g %g %g)",
-                              nested_cases[k].name, o.weight.x, o.weight.y, o.weight.z, w.x, w.y, w.z);
+                    cr_assert(vlen(vsub(w, o.weight)) <= 1e-6 * fmax(1e-3, vlen(w)),
+                              "%s: weight (%g %g %g) vs f cos / pdf (%g %g %g)", nested_cases[k].name, o.weight.x,
+                              o.weight.y, o.weight.z, w.x, w.y, w.z);
                 }
         }
     }
@@ -144,10 +146,11 @@ Test(bsdf_nested, inversion_roundtrip)
                 if (e > 1e-6) failed++;
             }
         }
-        cr_log_info("%s: %ld round trips, %ld failed, max |wo - replay| %.2e", nested_cases[k].name, sampled, failed, worst);
+        cr_log_info("%s: %ld round trips, %ld failed, max |wo - replay| %.2e", nested_cases[k].name, sampled, failed,
+                    worst);
         cr_expect(sampled > 5000, "%s: only %ld samples", nested_cases[k].name, sampled);
-        cr_expect(failed <= 1e-3 * sampled, "%s: %ld of %ld round trips failed (worst %g)", nested_cases[k].name, failed,
-                  sampled, worst);
+        cr_expect(failed <= 1e-3 * sampled, "%s: %ld of %ld round trips failed (worst %g)", nested_cases[k].name,
+                  failed, sampled, worst);
     }
     scene_model_free(s);
 }
@@ -271,10 +274,13 @@ Test(bsdf_nested, loader_refuses_dims_over_the_vertex_block)
     snprintf(path, sizeof path, "%s/scene.json", dir);
     FILE *f = fopen(path, "w");
     cr_assert(f);
-    fprintf(f, "{\"primitives\": [{\"type\": \"quad\", \"bsdf\": {\"type\": \"lambert\"}}, {\"type\": \"quad\", \"bsdf\":");
-    for (int i = 0; i < 7; i++) fprintf(f, " {\"type\": \"mixed\", \"bsdf1\": \"x\", \"bsdf0\":");
+    fprintf(
+        f, "{\"primitives\": [{\"type\": \"quad\", \"bsdf\": {\"type\": \"lambert\"}}, {\"type\": \"quad\", \"bsdf\":");
+    for (int i = 0; i < 7; i++)
+        fprintf(f, " {\"type\": \"mixed\", \"bsdf1\": \"x\", \"bsdf0\":");
     fprintf(f, " {\"type\": \"lambert\"}");
-    for (int i = 0; i < 7; i++) fprintf(f, "}");
+    for (int i = 0; i < 7; i++)
+        fprintf(f, "}");
     fprintf(f, "}], \"bsdfs\": [{\"name\": \"x\", \"type\": \"lambert\"}]}");
     fclose(f);
     s = scene_load_model(path, err2, sizeof err2);
@@ -288,12 +294,16 @@ Test(bsdf_nested, loader_refuses_textured_alpha_and_bad_numbers)
 {
     expect_refused("[{\"name\": \"b0\", \"type\": \"transparency\", \"alpha\": \"cutout.png\"}]",
                    "bsdfs[0].alpha: textured alpha is not supported");
-    expect_refused("[{\"name\": \"b0\", \"type\": \"transparency\", \"alpha\": 1.5}]", "bsdfs[0].alpha: expected a number in [0, 1]");
-    expect_refused("[{\"name\": \"b0\", \"type\": \"mixed\", \"ratio\": -0.1}]", "bsdfs[0].ratio: expected a number in [0, 1]");
-    expect_refused("[{\"name\": \"b0\", \"type\": \"smooth_coat\", \"ior\": 0}]", "bsdfs[0].ior: expected a positive number");
+    expect_refused("[{\"name\": \"b0\", \"type\": \"transparency\", \"alpha\": 1.5}]",
+                   "bsdfs[0].alpha: expected a number in [0, 1]");
+    expect_refused("[{\"name\": \"b0\", \"type\": \"mixed\", \"ratio\": -0.1}]",
+                   "bsdfs[0].ratio: expected a number in [0, 1]");
+    expect_refused("[{\"name\": \"b0\", \"type\": \"smooth_coat\", \"ior\": 0}]",
+                   "bsdfs[0].ior: expected a positive number");
     expect_refused("[{\"name\": \"b0\", \"type\": \"rough_coat\", \"distribution\": \"phong\"}]",
                    "bsdfs[0].distribution: expected \"ggx\" or \"beckmann\"");
-    expect_refused("[{\"name\": \"b0\", \"type\": \"mixed\", \"bsdf0\": \"nope\"}]", "bsdfs[0].bsdf0: undefined bsdf \"nope\"");
+    expect_refused("[{\"name\": \"b0\", \"type\": \"mixed\", \"bsdf0\": \"nope\"}]",
+                   "bsdfs[0].bsdf0: undefined bsdf \"nope\"");
 }
 
 /* Tungsten's defaults (SmoothCoatBsdf, RoughCoatBsdf, TransparencyBsdf, MixedBsdf constructors),

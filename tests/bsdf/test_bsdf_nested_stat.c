@@ -75,7 +75,8 @@ Test(stat_bsdf_nested, sampling_matches_pdf_chi2, .timeout = 900)
     for (int k = 0; k < N_NESTED_CASES; k++)
         for (int j = 0; j < 3; j++) {
             double cz = j == 0 ? 0.9 : j == 1 ? 0.5 : (nested_cases[k].below ? -0.15 : 0.15);
-            struct chi_ctx c = {.c = bsdf_ctx_at(nested_find(s, nested_cases[k].name), NULL), .wi = nested_dir(cz, 0.3 + j)};
+            struct chi_ctx c = {.c = bsdf_ctx_at(nested_find(s, nested_cases[k].name), NULL),
+                                .wi = nested_dir(cz, 0.3 + j)};
             struct chi2_result r = run_chi2(&c, 300 + 10 * k + j);
             cr_log_info("%s cos %.2f: %s", nested_cases[k].name, cz, chi2_describe(&r, buf, sizeof buf));
             cr_expect(r.pass, "%s cos %.2f: %s", nested_cases[k].name, cz, chi2_describe(&r, buf, sizeof buf));
@@ -143,7 +144,8 @@ Test(stat_bsdf_nested, white_furnace)
             double m = sum / N, sd = sqrt(fmax(0.0, sum2 / N - m * m) / N);
             cr_log_info("%s cos %.2f: albedo %.5f +- %.5f", names[k], wi.z, m, sd);
             if (k < 3)
-                cr_expect(fabs(m - 1) < 4 * sd + 1e-9, "%s cos %.2f: albedo %g +- %g, expected 1", names[k], wi.z, m, sd);
+                cr_expect(fabs(m - 1) < 4 * sd + 1e-9, "%s cos %.2f: albedo %g +- %g, expected 1", names[k], wi.z, m,
+                          sd);
             else
                 cr_expect(m < 1 + 4 * sd, "%s cos %.2f: albedo %g +- %g above 1", names[k], wi.z, m, sd);
         }

@@ -63,8 +63,8 @@ Test(bsdf_rough, microfacet_normal_map_roundtrip)
                 }
                 cr_assert(w1 >= 0 && w1 < 1 && w2 >= 0 && w2 < 1);
                 vec3 m2 = mf_sample(dists[d], alphas[a], w1, w2);
-                cr_assert(vlen(vsub(m, m2)) < 1e-9, "dist %d alpha %g u=(%.17g,%.17g) -> (%.17g,%.17g)",
-                          d, alphas[a], u1, u2, w1, w2);
+                cr_assert(vlen(vsub(m, m2)) < 1e-9, "dist %d alpha %g u=(%.17g,%.17g) -> (%.17g,%.17g)", d, alphas[a],
+                          u1, u2, w1, w2);
                 cr_assert(fabs(u1 - w1) < 1e-9 || u1 > 1 - 1e-6, "u1 %.17g -> %.17g", u1, w1);
             }
     cr_assert(fails <= 10, "%ld inversions failed", fails);
@@ -95,14 +95,14 @@ static void check_sample_consistency(enum bsdf_type type, bool refraction)
             rough_case_name(rc, name, sizeof name);
             cr_assert(!out.delta && out.pdf > 0 && fabs(vlen(out.wo) - 1) < 1e-9, "%s", name);
             double p = rc->ops->pdf(&rc->c, rc->wi, out.wo);
-            cr_assert(rel_err(p, out.pdf) < 1e-5, "%s: sampled pdf %.10g pdf() %.10g wo=(%g,%g,%g)", name,
-                      out.pdf, p, out.wo.x, out.wo.y, out.wo.z);
+            cr_assert(rel_err(p, out.pdf) < 1e-5, "%s: sampled pdf %.10g pdf() %.10g wo=(%g,%g,%g)", name, out.pdf, p,
+                      out.wo.x, out.wo.y, out.wo.z);
             rgb f = rc->ops->eval(&rc->c, rc->wi, out.wo, rc->mode);
             rgb w = vscale(f, fabs(out.wo.z) / p);
             for (int ch = 0; ch < 3; ch++)
                 cr_assert(fabs(vget(w, ch) - vget(out.weight, ch)) <= 1e-5 * fmax(fabs(vget(w, ch)), 1e-30),
-                          "%s: weight %.10g vs eval cos/pdf %.10g (lobe %d)", name, vget(out.weight, ch),
-                          vget(w, ch), out.lobe);
+                          "%s: weight %.10g vs eval cos/pdf %.10g (lobe %d)", name, vget(out.weight, ch), vget(w, ch),
+                          out.lobe);
             if (type == BSDF_ROUGH_DIELECTRIC) {
                 bool refl = out.wo.z * rc->wi.z > 0;
                 cr_assert_eq(out.lobe, refl ? 0 : 1);
@@ -229,8 +229,10 @@ Test(bsdf_rough, dielectric_refraction_generalized_reciprocity)
         if (!bsdf_sample(&c, wi, &s.base, TRANSPORT_IMPORTANCE, &out) || out.lobe != 1) continue;
         vec3 wo = out.wo;
         double eta_i = wi.z > 0 ? 1 : b.ior, eta_o = wo.z > 0 ? 1 : b.ior;
-        double f_imp = bsdf_eval(&c, wi, wo, TRANSPORT_IMPORTANCE).x, f_rad = bsdf_eval(&c, wi, wo, TRANSPORT_RADIANCE).x;
-        double g_imp = bsdf_eval(&c, wo, wi, TRANSPORT_IMPORTANCE).x, g_rad = bsdf_eval(&c, wo, wi, TRANSPORT_RADIANCE).x;
+        double f_imp = bsdf_eval(&c, wi, wo, TRANSPORT_IMPORTANCE).x,
+               f_rad = bsdf_eval(&c, wi, wo, TRANSPORT_RADIANCE).x;
+        double g_imp = bsdf_eval(&c, wo, wi, TRANSPORT_IMPORTANCE).x,
+               g_rad = bsdf_eval(&c, wo, wi, TRANSPORT_RADIANCE).x;
         if (!(f_imp > 0)) continue;
         tested++;
         cr_assert(rel_err(f_rad, g_imp) < 1e-9, "f_rad(wi,wo) %.12g f_imp(wo,wi) %.12g", f_rad, g_imp);

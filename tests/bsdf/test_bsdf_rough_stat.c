@@ -9,8 +9,8 @@
 
 #include "bsdf/fresnel.h"
 #include "support/chi2.h"
-#include <gsl/gsl_cdf.h>
 #include "support/rough_util.h"
+#include <gsl/gsl_cdf.h>
 #include <stdlib.h>
 
 #define CHI2_N 1000000L
@@ -336,8 +336,10 @@ Test(stat_bsdf_rough, inverted_discrete_matches_forward)
         for (long i = 0; i < 2 * N; i++) {
             double ud, ui, sp;
             inv_draw(&c, &r, &ud, &ui, &sp);
-            if (i % 2 == 0) A[(int)(ud * BINS)]++;
-            else B[(int)(ui * BINS)]++;
+            if (i % 2 == 0)
+                A[(int)(ud * BINS)]++;
+            else
+                B[(int)(ui * BINS)]++;
         }
         double stat, p = homogeneity_p(A, B, BINS, &stat);
         cr_log_info("type %d forward ud vs inverted ud': chi2=%.1f dof=%d p=%.3g (alpha=%.2g)", (int)types[t], stat,

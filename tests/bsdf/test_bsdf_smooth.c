@@ -6,8 +6,8 @@
 #include <criterion/criterion.h>
 
 #include "bsdf/fresnel.h"
-#include "support/bsdf_smooth_util.h"
 #include "sampling/warp.h"
+#include "support/bsdf_smooth_util.h"
 
 static double rel_err(double a, double b) { return fabs(a - b) / fmax(fabs(b), 1e-300); }
 
@@ -32,11 +32,14 @@ static struct sampler *fixed(struct fixed_sampler *f, double u)
 Test(bsdf_smooth, dispatch_and_flags)
 {
     cr_assert_null(bsdf_ops_for(BSDF_NULL));
-    const struct { enum bsdf_type t; const struct bsdf_ops *ops; int dims; bool tr, delta; } want[] = {
-        {BSDF_LAMBERT, &bsdf_lambert_ops, 2, false, false},
-        {BSDF_MIRROR, &bsdf_conductor_ops, 0, false, true},
-        {BSDF_CONDUCTOR, &bsdf_conductor_ops, 0, false, true},
-        {BSDF_DIELECTRIC, &bsdf_dielectric_ops, 1, true, true},
+    const struct {
+        enum bsdf_type t;
+        const struct bsdf_ops *ops;
+        int dims;
+        bool tr, delta;
+    } want[] = {
+        {BSDF_LAMBERT, &bsdf_lambert_ops, 2, false, false},    {BSDF_MIRROR, &bsdf_conductor_ops, 0, false, true},
+        {BSDF_CONDUCTOR, &bsdf_conductor_ops, 0, false, true}, {BSDF_DIELECTRIC, &bsdf_dielectric_ops, 1, true, true},
         {BSDF_PLASTIC, &bsdf_plastic_ops, 3, false, false},
     };
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
@@ -133,7 +136,8 @@ Test(bsdf_smooth, reciprocity)
             vec3 a = warp_cosine_hemisphere(rng_uniform(&r), rng_uniform(&r));
             vec3 b = warp_cosine_hemisphere(rng_uniform(&r), rng_uniform(&r));
             rgb fab = bsdf_eval(&c, a, b, TRANSPORT_RADIANCE), fba = bsdf_eval(&c, b, a, TRANSPORT_RADIANCE);
-            for (int ch = 0; ch < 3; ch++) cr_assert(rel_err(vget(fab, ch), vget(fba, ch)) < 1e-12);
+            for (int ch = 0; ch < 3; ch++)
+                cr_assert(rel_err(vget(fab, ch), vget(fba, ch)) < 1e-12);
             cr_assert(vmax(fab) > 0);
         }
     }
@@ -317,7 +321,8 @@ static void roundtrip_family(const struct bsdf *b, const vec3 *wis, int nwi, enu
 Test(bsdf_smooth, roundtrip_reflective_families)
 {
     vec3 wis[N_WI_UP];
-    for (int i = 0; i < N_WI_UP; i++) wis[i] = wi_up(i);
+    for (int i = 0; i < N_WI_UP; i++)
+        wis[i] = wi_up(i);
     struct bsdf l = make_bsdf(BSDF_LAMBERT), m = make_bsdf(BSDF_MIRROR), k = make_bsdf(BSDF_CONDUCTOR);
     roundtrip_family(&l, wis, N_WI_UP, TRANSPORT_RADIANCE);
     roundtrip_family(&m, wis, N_WI_UP, TRANSPORT_RADIANCE);
@@ -327,7 +332,8 @@ Test(bsdf_smooth, roundtrip_reflective_families)
 Test(bsdf_smooth, roundtrip_plastic)
 {
     vec3 wis[N_WI_UP];
-    for (int i = 0; i < N_WI_UP; i++) wis[i] = wi_up(i);
+    for (int i = 0; i < N_WI_UP; i++)
+        wis[i] = wi_up(i);
     struct bsdf p = make_bsdf(BSDF_PLASTIC), pc = plastic_coloured();
     roundtrip_family(&p, wis, N_WI_UP, TRANSPORT_RADIANCE);
     roundtrip_family(&pc, wis, N_WI_UP, TRANSPORT_IMPORTANCE);

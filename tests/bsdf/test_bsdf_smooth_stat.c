@@ -127,8 +127,8 @@ Test(stat_bsdf_smooth, dielectric_choice_frequencies)
             double p = gsl_cdf_chisq_Q(stat, 1);
             cr_log_info("dielectric side=%d cos=%.2f: F=%.5f observed %.5f chi2=%.3f p=%.3g", side, wi_up_cos[i], F,
                         (double)refl / N_CHI2, stat, p);
-            cr_assert(p > chi2_alpha_sidak(), "side %d wi %d: F=%g observed %g p=%g", side, i, F,
-                      (double)refl / N_CHI2, p);
+            cr_assert(p > chi2_alpha_sidak(), "side %d wi %d: F=%g observed %g p=%g", side, i, F, (double)refl / N_CHI2,
+                      p);
         }
 }
 
@@ -198,10 +198,11 @@ static void uniformity(const struct bsdf *b, vec3 wi, int *tested)
     for (int l = 0; l < 2; l++) {
         if (count[l] < 1000) continue;
         double e = count[l] / 10.0, stat = 0;
-        for (int k = 0; k < 10; k++) stat += sqr(bins[l][k] - e) / e;
+        for (int k = 0; k < 10; k++)
+            stat += sqr(bins[l][k] - e) / e;
         double p = gsl_cdf_chisq_Q(stat, 9);
-        cr_log_info("inverted discrete type %d wi.z=%.2f lobe %d: n=%ld chi2=%.2f p=%.3g", b->type, wi.z, l,
-                    count[l], stat, p);
+        cr_log_info("inverted discrete type %d wi.z=%.2f lobe %d: n=%ld chi2=%.2f p=%.3g", b->type, wi.z, l, count[l],
+                    stat, p);
         cr_assert(p > chi2_alpha_sidak(), "type %d wi.z %g lobe %d: chi2 %g p %g", b->type, wi.z, l, stat, p);
         (*tested)++;
     }

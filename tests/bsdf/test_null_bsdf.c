@@ -10,8 +10,13 @@
 
 static struct vertex at(vec3 p)
 {
-    return (struct vertex){.kind = VK_SURFACE, .p = p, .ng = v3(0, 0, 1), .sh = frame_from_normal(v3(0, 0, 1)),
-                           .front = true, .prim = 0, .tri = 0};
+    return (struct vertex){.kind = VK_SURFACE,
+                           .p = p,
+                           .ng = v3(0, 0, 1),
+                           .sh = frame_from_normal(v3(0, 0, 1)),
+                           .front = true,
+                           .prim = 0,
+                           .tri = 0};
 }
 
 Test(null_bsdf, ends_walks_emits_and_blocks)

@@ -57,7 +57,8 @@ Test(texture_roughness, read_as_tungstens_average_through_the_context, .init = m
     struct scene *s = load_bsdfs(
         "{\"name\": \"a\", \"type\": \"rough_conductor\", \"roughness\": \"r.png\"},"
         "{\"name\": \"b\", \"type\": \"rough_dielectric\", \"roughness\": {\"type\": \"bitmap\", \"file\": \"r.exr\"}},"
-        "{\"name\": \"c\", \"type\": \"rough_plastic\", \"roughness\": {\"type\": \"checker\", \"on_color\": [0.3, 0.9, 0.9],"
+        "{\"name\": \"c\", \"type\": \"rough_plastic\", \"roughness\": {\"type\": \"checker\", \"on_color\": [0.3, "
+        "0.9, 0.9],"
         " \"off_color\": 0.05, \"res_u\": 2, \"res_v\": 1}},"
         "{\"name\": \"d\", \"type\": \"rough_plastic\", \"roughness\": 0.25}");
     const struct bsdf *a = &s->bsdfs[0], *b = &s->bsdfs[1], *c = &s->bsdfs[2], *d = &s->bsdfs[3];
@@ -111,9 +112,10 @@ Test(texture_roughness, rough_bsdfs_sample_evaluate_and_invert_at_textured_point
                 double ct = 0.05 + 0.9 * rng_uniform(&r), ph = 2 * M_PI * rng_uniform(&r);
                 vec3 wi = v3(sqrt(1 - ct * ct) * cos(ph), sqrt(1 - ct * ct) * sin(ph), ct);
                 double u[SAMPLER_BLOCK];
-                for (int j = 0; j < SAMPLER_BLOCK; j++) u[j] = rng_uniform(&r);
+                for (int j = 0; j < SAMPLER_BLOCK; j++)
+                    u[j] = rng_uniform(&r);
                 struct sampler_replay rp;
-                double (*fixed)[STREAM_DIMS] = (double(*)[STREAM_DIMS])w.u;
+                double(*fixed)[STREAM_DIMS] = (double(*)[STREAM_DIMS])w.u;
                 sampler_writer_clear(&w);
                 memcpy(&fixed[STREAM_CAMERA][SAMPLER_BLOCK], u, sizeof u);
                 struct bsdf_sample o1, o2;

@@ -37,7 +37,8 @@ static void roundtrip(enum recon_filter f)
     const int N = 200000;
     double max_raster = 0, max_u = 0, max_p = 0;
     for (int i = 0; i < N; i++) {
-        for (int k = 0; k < 4; k++) U.u[STREAM_CAMERA][k] = rng_uniform(&r);
+        for (int k = 0; k < 4; k++)
+            U.u[STREAM_CAMERA][k] = rng_uniform(&r);
         struct sampler_replay rp;
         sampler_replay_init(&rp, (const double(*)[STREAM_DIMS])U.u);
         sampler_begin(&rp.base, STREAM_CAMERA, 0);
@@ -102,7 +103,8 @@ Test(thinlens, focus_plane_and_centre)
 static void prefill(struct sampler_writer *w, rng *r)
 {
     for (int st = 0; st < STREAM_COUNT; st++)
-        for (int i = 0; i < STREAM_DIMS; i++) w->u[st][i] = rng_uniform(r);
+        for (int i = 0; i < STREAM_DIMS; i++)
+            w->u[st][i] = rng_uniform(r);
 }
 
 /* The inverse camera walk (thesis Alg. 2) returns the lens point and the image position: 20k
@@ -138,17 +140,20 @@ Test(thinlens, inverse_camera_walk)
         for (int k = 0; ok && k < nu; k++) {
             double e = k == 1 ? dist_wrap(W.u[STREAM_CAMERA][k], U.u[STREAM_CAMERA][k])
                               : fabs(W.u[STREAM_CAMERA][k] - U.u[STREAM_CAMERA][k]);
-            if (k < 2) max_u = fmax(max_u, e);
-            else max_img = fmax(max_img, e);
+            if (k < 2)
+                max_u = fmax(max_u, e);
+            else
+                max_img = fmax(max_img, e);
         }
         sampler_replay_init(&rp, (const double(*)[STREAM_DIMS])W.u);
         int m = ok ? walk_camera(&pc, &rp.base, b, lone ? 1 : 5) : 0;
         bool same = m >= n;
-        for (int j = 0; same && j < n; j++) same = vlen(vsub(a[j].p, b[j].p)) <= tol && a[j].prim == b[j].prim;
+        for (int j = 0; same && j < n; j++)
+            same = vlen(vsub(a[j].p, b[j].p)) <= tol && a[j].prim == b[j].prim;
         fail += !ok || !same;
     }
-    fprintf(stderr, "thinlens inverse camera walk: %d of %d fail, max error lens numbers %.3g, image numbers %.3g\n", fail,
-            tried, max_u, max_img);
+    fprintf(stderr, "thinlens inverse camera walk: %d of %d fail, max error lens numbers %.3g, image numbers %.3g\n",
+            fail, tried, max_u, max_img);
     cr_assert(fail * 2000 <= tried, "%d of %d walks not retraced", fail, tried);
     cr_assert(max_u < 1e-9, "%g", max_u);
     cr_assert(max_img < 1e-5, "%g", max_img);

@@ -97,7 +97,8 @@ Test(stat_thinlens, pt_bdpt_and_light_tracing_agree, .timeout = 300)
     int f = stack_compare(&pt, &bd, 2, &pm, &worst), f2 = stack_compare(&pt2, &lt, 2, &pm2, &worst2);
     fprintf(stderr, "thinlens PT %g +- %g vs BDPT %g +- %g: %d failing (mean p %.3g, worst block p %.3g)\n", pt.mean,
             pt.mean_se, bd.mean, bd.mean_se, f, pm, worst);
-    fprintf(stderr, "thinlens length 2: PT %g +- %g vs light tracing %g +- %g: %d failing (mean p %.3g, worst block p %.3g)\n",
+    fprintf(stderr,
+            "thinlens length 2: PT %g +- %g vs light tracing %g +- %g: %d failing (mean p %.3g, worst block p %.3g)\n",
             pt2.mean, pt2.mean_se, lt.mean, lt.mean_se, f2, pm2, worst2);
     cr_assert_eq(f, 0, "PT vs BDPT: %d comparisons fail", f);
     cr_assert_eq(f2, 0, "PT vs light tracing: %d comparisons fail", f2);
@@ -114,8 +115,14 @@ static struct image *chain_render(void *p, uint64_t seed)
 {
     struct chain_run *c = p;
     const struct scene *sc = c->sc;
-    struct mlt_opts mo = {.method = c->m, .p_large = 0.1, .mutations = 64L * sc->cam.width * sc->cam.height,
-                          .seed_paths = 20000, .seed = seed, .threads = 2, .max_length = 4, .small_step = c->step};
+    struct mlt_opts mo = {.method = c->m,
+                          .p_large = 0.1,
+                          .mutations = 64L * sc->cam.width * sc->cam.height,
+                          .seed_paths = 20000,
+                          .seed = seed,
+                          .threads = 2,
+                          .max_length = 4,
+                          .small_step = c->step};
     pss_opts_default(&mo.pss, sc->cam.width, sc->cam.height);
     if (c->step == SMALL_STEP_CONTROLLED) mo.pss.kernel = KERNEL_GAUSSIAN;
     struct mlt_result res;

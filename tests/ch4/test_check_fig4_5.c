@@ -25,8 +25,8 @@ Test(check_fig4_5, replicate_passes_perturbed_fails)
 
 Test(check_fig4_5, ratios_replicate_passes_light_share_moved_fails)
 {
-    check_csv_replicate_and_broken("--key ratio,length --mean value --se se", RBASE, RREPL, "light:mctls/mmlt-large,12", 2,
-                                   3.3);
+    check_csv_replicate_and_broken("--key ratio,length --mean value --se se", RBASE, RREPL, "light:mctls/mmlt-large,12",
+                                   2, 3.3);
 }
 
 #define TBASE "results/baselines/fig4.5/fig4.5-trials.csv"
@@ -38,6 +38,6 @@ Test(check_fig4_5, ratios_replicate_passes_light_share_moved_fails)
  * it fails. */
 Test(check_fig4_5, trials_replicate_passes_count_effect_removed_fails)
 {
-    check_csv_replicate_and_broken("--key length,statistic --mean value --se se", TBASE, TREPL, "12,given_light_ratio_mean",
-                                   2, 0.56);
+    check_csv_replicate_and_broken("--key length,statistic --mean value --se se", TBASE, TREPL,
+                                   "12,given_light_ratio_mean", 2, 0.56);
 }

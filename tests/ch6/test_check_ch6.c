@@ -39,10 +39,9 @@ Test(check_ch6, hybrid_mctls_connections_as_productive_as_mmlt_fails)
 {
     /* 0.210 +- 0.006 in the baseline against MMLT's 0.259 +- 0.011: MCTLS's large steps evaluate
      * all k + 1 connections of a pair, most of them without light */
-    check_csv_replicate_and_broken("--key scene,method,statistic --count seeds --alpha 0.01",
-                                   "results/baselines/hybrid-study/stats.csv",
-                                   "results/baselines/hybrid-study/replicate-seed101.csv", "ajar,mctls,nonzero_per_connection",
-                                   3, 0.259);
+    check_csv_replicate_and_broken(
+        "--key scene,method,statistic --count seeds --alpha 0.01", "results/baselines/hybrid-study/stats.csv",
+        "results/baselines/hybrid-study/replicate-seed101.csv", "ajar,mctls,nonzero_per_connection", 3, 0.259);
 }
 
 Test(check_ch6, mmlt_ratio_mmlt_connections_as_wasteful_as_pssmlt_fails)

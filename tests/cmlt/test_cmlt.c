@@ -36,7 +36,8 @@ Test(cmlt, chart_right_inverse)
     for (int k = 0; k < 200000; k++) {
         int src = 1 + (k & 1);
         double u[4];
-        for (int d = 0; d < 4; d++) u[d] = rng_uniform(&r);
+        for (int d = 0; d < 4; d++)
+            u[d] = rng_uniform(&r);
         struct cmlt_path x;
         if (!cmlt_chart_T(src, u, &x)) continue;
         struct cmlt_eval e;
@@ -46,12 +47,14 @@ Test(cmlt, chart_right_inverse)
             double w[4];
             struct cmlt_path y;
             cr_assert(cmlt_chart_R(c, &x, NULL, w), "R_%d failed on a path with f > 0", c);
-            for (int d = 0; d < 4; d++) cr_assert(w[d] >= 0 && w[d] < 1);
+            for (int d = 0; d < 4; d++)
+                cr_assert(w[d] >= 0 && w[d] < 1);
             cr_assert(cmlt_chart_T(c, w, &y));
             cr_assert(same_path(&x, &y, 1e-9), "T_%d(R_%d(x)) != x: light %d/%d la %.12g/%.12g lb %.12g/%.12g", c, c,
                       x.light, y.light, x.la, y.la, x.lb, y.lb);
             if (c == src)
-                for (int d = 0; d < 4; d++) cr_assert(fabs(w[d] - u[d]) < 1e-9, "R_%d(T_%d(u)) != u", c, c);
+                for (int d = 0; d < 4; d++)
+                    cr_assert(fabs(w[d] - u[d]) < 1e-9, "R_%d(T_%d(u)) != u", c, c);
             checked[c]++;
         }
     }
@@ -68,7 +71,8 @@ Test(cmlt, chart_jacobian)
     for (int k = 0; k < 20000 && n < 2000; k++) {
         int c = 1 + (k & 1);
         double u[4];
-        for (int d = 0; d < 4; d++) u[d] = 0.02 + 0.96 * rng_uniform(&r);
+        for (int d = 0; d < 4; d++)
+            u[d] = 0.02 + 0.96 * rng_uniform(&r);
         struct cmlt_path x;
         if (!cmlt_chart_T(c, u, &x)) continue;
         struct cmlt_eval e;
@@ -79,7 +83,8 @@ Test(cmlt, chart_jacobian)
         for (int d = 0; d < 4 && ok; d++) {
             double up[4], um[4];
             struct cmlt_path a, b;
-            for (int q = 0; q < 4; q++) up[q] = um[q] = u[q];
+            for (int q = 0; q < 4; q++)
+                up[q] = um[q] = u[q];
             up[d] += h;
             um[d] -= h;
             ok = cmlt_chart_T(c, up, &a) && cmlt_chart_T(c, um, &b) && a.light == x.light && b.light == x.light;
@@ -107,7 +112,8 @@ Test(cmlt, chart_jacobian)
             det *= J[i][i];
             for (int q = i + 1; q < 4; q++) {
                 double f = J[q][i] / J[i][i];
-                for (int s = i; s < 4; s++) J[q][s] -= f * J[i][s];
+                for (int s = i; s < 4; s++)
+                    J[q][s] -= f * J[i][s];
             }
         }
         double pdf = cmlt_chart_pdf(c, &e);
@@ -131,7 +137,8 @@ static const int T2[7] = {4, 3, 3, 1, 0, 2, 2};
 static int fiber(int chart, int x)
 {
     int n = 0;
-    for (int u = 0; u < (chart == 1 ? K1 : K2); u++) n += (chart == 1 ? T1[u] : T2[u]) == x;
+    for (int u = 0; u < (chart == 1 ? K1 : K2); u++)
+        n += (chart == 1 ? T1[u] : T2[u]) == x;
     return n;
 }
 static double pdf(int chart, int x) { return (double)fiber(chart, x) / (chart == 1 ? K1 : K2); }
@@ -206,7 +213,8 @@ Test(cmlt, epsm_detailed_balance_exact)
         /* stationarity of f under the kernel */
         for (int y = 0; y < M; y++) {
             double s = 0;
-            for (int x = 0; x < M; x++) s += F[x] * P[x][y];
+            for (int x = 0; x < M; x++)
+                s += F[x] * P[x][y];
             cr_assert(fabs(s - F[y]) < 1e-12);
         }
     }
@@ -253,14 +261,16 @@ Test(stat_cmlt, chart_density_chisq)
             double u[4] = {rng_uniform(&r), rng_uniform(&r), rng_uniform(&r), rng_uniform(&r)};
             struct cmlt_path x;
             cmlt_chart_T(1, u, &x);
-            int c = x.light == CMLT_L1 ? (int)(x.la * 8) * 4 + (int)(x.lb * 4) : 32 + (int)(x.la * 2) * 2 + (int)(x.lb * 2);
+            int c =
+                x.light == CMLT_L1 ? (int)(x.la * 8) * 4 + (int)(x.lb * 4) : 32 + (int)(x.la * 2) * 2 + (int)(x.lb * 2);
             obs[c]++;
         }
         for (int i = 0; i < 8; i++)
             for (int j = 0; j < 4; j++)
-                ex[i * 4 + j] = N * CMLT_A1 / CMLT_K1 * (exp(CMLT_K1 * (i + 1) / 8.0) - exp(CMLT_K1 * i / 8.0)) * 0.25 /
-                                cmlt_phi();
-        for (int i = 0; i < 4; i++) ex[32 + i] = N * CMLT_LE2 * 0.25 / cmlt_phi();
+                ex[i * 4 + j] =
+                    N * CMLT_A1 / CMLT_K1 * (exp(CMLT_K1 * (i + 1) / 8.0) - exp(CMLT_K1 * i / 8.0)) * 0.25 / cmlt_phi();
+        for (int i = 0; i < 4; i++)
+            ex[32 + i] = N * CMLT_LE2 * 0.25 / cmlt_phi();
         double p = chisq_p(obs, ex, 36);
         cr_assert(p > a1, "chart 1 density: chi-square p = %g", p);
     }
@@ -279,7 +289,8 @@ Test(stat_cmlt, chart_density_chisq)
                 double s = 0;
                 for (int a = 0; a < 16; a++)
                     for (int b = 0; b < 16; b++) {
-                        struct cmlt_path x = {G[g][0], G[g][1], CMLT_L1, (i + (a + 0.5) / 16) / 8, (j + (b + 0.5) / 16) / 8};
+                        struct cmlt_path x = {G[g][0], G[g][1], CMLT_L1, (i + (a + 0.5) / 16) / 8,
+                                              (j + (b + 0.5) / 16) / 8};
                         struct cmlt_eval e;
                         cmlt_eval(&x, &e);
                         s += e.p2;
@@ -326,7 +337,8 @@ ParameterizedTest(int *param, stat_cmlt, all_algorithms_converge, .timeout = 600
     disk_cached(ref, sizeof(double) * npx, NULL, "cmlt_reference 32x32 spp 16384 seed 99 threads 2", make_reference,
                 &W);
     double ref_sum = 0;
-    for (size_t i = 0; i < npx; i++) ref_sum += ref[i];
+    for (size_t i = 0; i < npx; i++)
+        ref_sum += ref[i];
     double e[2];
     const uint64_t ns[2] = {250000, 2000000};
     for (int b = 0; b < 2; b++) {

@@ -57,9 +57,8 @@ static void write_variant(const char *out, int mode)
 static int run_check(const char *current)
 {
     char cmd[2048];
-    snprintf(cmd, sizeof cmd,
-             "%s --key algorithm,n --mean rmse_mean --se rmse_se --count seeds %s %s > /dev/null 2>&1", CHECK_STATS_BIN,
-             CMLT_BASELINE, current);
+    snprintf(cmd, sizeof cmd, "%s --key algorithm,n --mean rmse_mean --se rmse_se --count seeds %s %s > /dev/null 2>&1",
+             CHECK_STATS_BIN, CMLT_BASELINE, current);
     int st = system(cmd);
     cr_assert(st != -1 && WIFEXITED(st), "could not run %s", CHECK_STATS_BIN);
     return WEXITSTATUS(st);

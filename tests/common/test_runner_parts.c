@@ -74,7 +74,10 @@ Test(common_table, save_writes_metadata_then_header_even_without_rows)
     rmdir(dir);
 }
 
-static struct csv_file *parse(const char *text, char *err, size_t n) { return csv_parse(xstrdup(text), "t.csv", err, n); }
+static struct csv_file *parse(const char *text, char *err, size_t n)
+{
+    return csv_parse(xstrdup(text), "t.csv", err, n);
+}
 
 /* relmse of method m in c, looked up by name */
 static double relmse_of(const struct csv_file *c, const char *m)
@@ -91,8 +94,8 @@ static double relmse_of(const struct csv_file *c, const char *m)
 Test(common_csv_read, columns_by_name_survive_reordering)
 {
     char err[256];
-    struct csv_file *a = parse("# seconds 1.5\n# b_rse 0.02\nmethod,seed,relmse\nmmlt,1,0.25\npitp,1,0.5\n", err,
-                               sizeof err);
+    struct csv_file *a =
+        parse("# seconds 1.5\n# b_rse 0.02\nmethod,seed,relmse\nmmlt,1,0.25\npitp,1,0.5\n", err, sizeof err);
     struct csv_file *b = parse("relmse,extra,method\n0.5,x,pitp\n0.25,y,mmlt\n# seconds 2\n", err, sizeof err);
     cr_assert(a && b, "%s", err);
     cr_assert_float_eq(relmse_of(a, "pitp"), 0.5, 0);
@@ -140,10 +143,7 @@ Test(common_outdir, makes_parents_and_reports_what_it_cannot_make)
     cr_assert_str_eq(err, want);
 }
 
-Test(common_outdir, require_exits_2_on_a_bad_path, .exit_code = 2)
-{
-    outdir_require("prog", "/dev/null/sub");
-}
+Test(common_outdir, require_exits_2_on_a_bad_path, .exit_code = 2) { outdir_require("prog", "/dev/null/sub"); }
 
 /* A refcache_render_fn that counts its calls and writes a 2x1 image of the count */
 static struct image *render_count(void *ctx, const char *path, char *err, size_t errlen)

@@ -3,9 +3,9 @@
  * kind and require >= 99.9 % to reproduce the point/direction to 1e-7 relative. */
 #include <criterion/criterion.h>
 
-#include "support/emit_fixture.h"
 #include "emitter/emitter_table.h"
 #include "sampling/warp.h"
+#include "support/emit_fixture.h"
 #include <string.h>
 
 #define NRT 100000
@@ -57,7 +57,8 @@ Test(emit, pick_prob_proportional_to_power)
     struct emit_fixture f;
     fx_init(&f, FX_ENV_MAP, true);
     double pw[5] = {0}, tot = 0;
-    for (int i = 0; i < 3; i++) pw[i] = f.prims[i].area * M_PI * luminance(f.prims[i].emission);
+    for (int i = 0; i < 3; i++)
+        pw[i] = f.prims[i].area * M_PI * luminance(f.prims[i].emission);
     /* environment: pi R^2 * integral of luminance over the sphere (sum over texels of L dOmega) */
     double R = env_radius(&f.sc), integ = 0;
     for (int y = 0; y < FX_TEX_H; y++)
@@ -67,7 +68,8 @@ Test(emit, pick_prob_proportional_to_power)
                      (cos(M_PI * y / FX_TEX_H) - cos(M_PI * (y + 1) / FX_TEX_H));
         }
     pw[4] = M_PI * R * R * integ;
-    for (int i = 0; i < 5; i++) tot += pw[i];
+    for (int i = 0; i < 5; i++)
+        tot += pw[i];
     double sum = 0;
     for (int i = 0; i < 5; i++) {
         double p = emitter_pick_prob(&f.sc, i);

@@ -6,20 +6,20 @@
  * cell straddles a discontinuity. */
 #include <criterion/criterion.h>
 
-#include "support/chi2.h"
-#include "support/emit_fixture.h"
 #include "emitter/emitter_table.h"
 #include "sampling/warp.h"
+#include "support/chi2.h"
+#include "support/emit_fixture.h"
 
 #define N 1000000
 
 static struct emit_fixture F;
 static char buf[512];
 
-#define EXPECT_PASS(r) \
-    do { \
-        cr_log_info("%s", chi2_describe(&(r), buf, sizeof buf)); \
-        cr_assert((r).pass, "%s", buf); \
+#define EXPECT_PASS(r)                                                                                                 \
+    do {                                                                                                               \
+        cr_log_info("%s", chi2_describe(&(r), buf, sizeof buf));                                                       \
+        cr_assert((r).pass, "%s", buf);                                                                                \
     } while (0)
 
 static void sampler_at(struct rng_sampler *s, rng *r, int stream)

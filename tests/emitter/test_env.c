@@ -5,11 +5,11 @@
  * PITP must agree with BDPT per block. */
 #include <criterion/criterion.h>
 
-#include "support/agree.h"
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
+#include "support/agree.h"
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
 
@@ -17,8 +17,13 @@
 static struct image *mcmc_run(const struct scene *sc, enum mlt_method m, long mpp, long seed_paths, uint64_t seed,
                               int max_length)
 {
-    struct mlt_opts mo = {.method = m, .p_large = 0.1, .mutations = mpp * sc->cam.width * sc->cam.height,
-                          .seed_paths = seed_paths, .seed = seed, .threads = 2, .max_length = max_length};
+    struct mlt_opts mo = {.method = m,
+                          .p_large = 0.1,
+                          .mutations = mpp * sc->cam.width * sc->cam.height,
+                          .seed_paths = seed_paths,
+                          .seed = seed,
+                          .threads = 2,
+                          .max_length = max_length};
     pss_opts_default(&mo.pss, sc->cam.width, sc->cam.height);
     struct mlt_result res;
     char err[256];
@@ -52,12 +57,13 @@ Test(stat_env, constant_sky_sphere_every_method)
     struct scene *sc = test_scene("scenes/sky-sphere/scene.json");
     double se;
     for (int m = 0; m < 2; m++) {
-        struct render_opts o = {.method = (enum method)m, .spp = 256, .seed = 3 + (uint64_t)m, .threads = 2, .max_length = 4};
+        struct render_opts o = {
+            .method = (enum method)m, .spp = 256, .seed = 3 + (uint64_t)m, .threads = 2, .max_length = 4};
         struct render_stats st;
         struct image *im = render_mc(sc, &o, &st);
         double mean = centre_mean(im, &se);
-        cr_assert(fabs(mean - 0.5) < 4 * se + 1e-12 && fabs(mean - 0.5) < 0.005, "%s: sphere radiance %g +- %g, expected 0.5",
-                  method_name((enum method)m), mean, se);
+        cr_assert(fabs(mean - 0.5) < 4 * se + 1e-12 && fabs(mean - 0.5) < 0.005,
+                  "%s: sphere radiance %g +- %g, expected 0.5", method_name((enum method)m), mean, se);
         if (m == METHOD_PT) cr_assert(fabs(img_get(im, 0, 0).x - 1) < 1e-12, "pt: background is not 1");
         img_destroy(im);
     }
@@ -72,10 +78,11 @@ Test(stat_env, constant_sky_sphere_every_method)
             img_destroy(im);
         }
         double mean = s / 8, run_se = sqrt(fmax(0, s2 / 8 - mean * mean) / 7);
-        fprintf(stderr, "sky sphere %s: %.6f +- %.6f, expected 0.5 (t = %.2f, limit %.2f)\n", (const char *[]){"pssmlt", "mmlt", "pitp"}[m],
-                mean, run_se, (mean - 0.5) / run_se, tmax);
-        cr_assert(fabs(mean - 0.5) < tmax * run_se + 1e-12 && fabs(mean - 0.5) < 0.04, "%s: sphere radiance %.6f +- %.6f, expected 0.5",
-                  (const char *[]){"pssmlt", "mmlt", "pitp"}[m], mean, run_se);
+        fprintf(stderr, "sky sphere %s: %.6f +- %.6f, expected 0.5 (t = %.2f, limit %.2f)\n",
+                (const char *[]){"pssmlt", "mmlt", "pitp"}[m], mean, run_se, (mean - 0.5) / run_se, tmax);
+        cr_assert(fabs(mean - 0.5) < tmax * run_se + 1e-12 && fabs(mean - 0.5) < 0.04,
+                  "%s: sphere radiance %.6f +- %.6f, expected 0.5", (const char *[]){"pssmlt", "mmlt", "pitp"}[m], mean,
+                  run_se);
     }
     scene_free(sc);
 }
@@ -106,15 +113,16 @@ Test(stat_env, textured_sky_all_methods_agree_with_bdpt)
     static struct stack ref, a;
     struct ctx r = {sc, METHOD_BDPT, -1};
     stack_runs(&ref, render_any, &r, 8, 500, 8);
-    const struct ctx cfg[] = {{sc, METHOD_PT, -1}, {sc, METHOD_BDPT, MLT_PSSMLT}, {sc, METHOD_BDPT, MLT_MMLT}, {sc, METHOD_BDPT, MLT_PITP}};
+    const struct ctx cfg[] = {
+        {sc, METHOD_PT, -1}, {sc, METHOD_BDPT, MLT_PSSMLT}, {sc, METHOD_BDPT, MLT_MMLT}, {sc, METHOD_BDPT, MLT_PITP}};
     const char *names[] = {"pt", "pssmlt", "mmlt", "pitp"};
     for (int i = 0; i < 4; i++) {
         struct ctx c = cfg[i];
         stack_runs(&a, render_any, &c, i ? 12 : 8, 600 + 50 * (uint64_t)i, 8);
         double pm, worst;
         int f = stack_compare(&a, &ref, 4, &pm, &worst);
-        fprintf(stderr, "sky-courtyard %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", names[i], a.mean,
-                a.mean_se, ref.mean, ref.mean_se, pm, worst);
+        fprintf(stderr, "sky-courtyard %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", names[i],
+                a.mean, a.mean_se, ref.mean, ref.mean_se, pm, worst);
         cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", names[i], a.mean,
                      a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     }
@@ -135,7 +143,8 @@ Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
     struct render_opts o = {.method = METHOD_PT, .spp = 16, .seed = 1, .threads = 2, .max_length = 16};
     struct render_stats st;
     struct image *im = render_mc(sc, &o, &st);
-    for (int i = 0; i < im->w * im->h * 3; i++) cr_assert(fabs(im->px[i] - 1) < 1e-6, "pt: a pixel reads %.9g", im->px[i]);
+    for (int i = 0; i < im->w * im->h * 3; i++)
+        cr_assert(fabs(im->px[i] - 1) < 1e-6, "pt: a pixel reads %.9g", im->px[i]);
     img_destroy(im);
     double tmax = gsl_cdf_tdist_Qinv((1 - pow(0.99, 1.0 / 4)) / 2, 7);
     const char *names[] = {"bdpt", "pssmlt", "mmlt", "pitp"};
@@ -157,8 +166,8 @@ Test(stat_env, specular_spheres_under_white_sky_are_exactly_white)
         }
         double mean = s / 8, se = sqrt(fmax(0, s2 / 8 - mean * mean) / 7);
         fprintf(stderr, "specular furnace %s: %.6f +- %.6f, expected 1\n", names[m], mean, se);
-        cr_assert(fabs(mean - 1) < tmax * se + 1e-12 && fabs(mean - 1) < 0.02, "%s: image mean %.6f +- %.6f, expected 1",
-                  names[m], mean, se);
+        cr_assert(fabs(mean - 1) < tmax * se + 1e-12 && fabs(mean - 1) < 0.02,
+                  "%s: image mean %.6f +- %.6f, expected 1", names[m], mean, se);
     }
     scene_free(sc);
 }

@@ -12,8 +12,13 @@ Test(mlt, no_emitter_is_named_as_the_cause)
     struct scene *sc = test_scene("tests/data/no-emitter.json");
     enum mlt_method methods[] = {MLT_PSSMLT, MLT_MMLT};
     for (int i = 0; i < 2; i++) {
-        struct mlt_opts o = {.method = methods[i], .p_large = 0.1, .mutations = 1000, .seed_paths = 1000,
-                             .threads = 1, .max_length = 4, .seed = 1};
+        struct mlt_opts o = {.method = methods[i],
+                             .p_large = 0.1,
+                             .mutations = 1000,
+                             .seed_paths = 1000,
+                             .threads = 1,
+                             .max_length = 4,
+                             .seed = 1};
         pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
         struct mlt_result r;
         char err[256] = "";

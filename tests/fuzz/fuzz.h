@@ -28,7 +28,7 @@ void fuzz_check_message(const char *err);
  * w*h*channels little-endian floats. Returns the header's numbers, and the texels only if the
  * header passes texels_check_size and the data are exactly there (malloc'ed); false with a message
  * otherwise. */
-int raw_texels_parse(const uint8_t *data, size_t size, const char *name, int *w, int *h, int *nc, int *bits,
-                     float **px, char *err, size_t errlen);
+int raw_texels_parse(const uint8_t *data, size_t size, const char *name, int *w, int *h, int *nc, int *bits, float **px,
+                     char *err, size_t errlen);
 
 #endif

@@ -6,12 +6,12 @@
  * away almost always. Even: the rest is the options text (up to a NUL) and the payload, written by
  * ckpt_write_file, so the checksum holds and the fuzzer reaches the layout and the payload; bit 1 then
  * makes the reader expect other options. */
+#include "base/util.h"
 #include "fuzz/fuzz.h"
 #include "io/checkpoint.h"
 #include "mcmc/chain.h"
 #include "path/path_checkpoint.h"
 #include "scene/scene.h"
-#include "base/util.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -33,8 +33,8 @@ static void read_mlt(struct ckpt_buf *b, const struct scene *sc)
     struct nonfinite nonfinite = {{0}};
     struct mlt_stats *st = xcalloc(1, sizeof *st);
     struct image *img = img_create(4, 4);
-    struct mlt_thread t = {.ch = ch, .nk = 2, .r = &r, .n = &n, .nonfinite = &nonfinite, .st = st,
-                           .ctrl_fail = ctrl_fail, .img = img};
+    struct mlt_thread t = {
+        .ch = ch, .nk = 2, .r = &r, .n = &n, .nonfinite = &nonfinite, .st = st, .ctrl_fail = ctrl_fail, .img = img};
     if (mlt_thread_load(b, sc, &t))
         for (int i = 0; i < 2; i++) {
             /* a resumed chain's next move: a proposal that is rejected restores what it touched */

@@ -2,9 +2,9 @@
 #define _XOPEN_SOURCE 700
 /* The fuzz targets' shared pieces (fuzz.h): a private directory, file slots, the message check, the
  * raw texel format. */
+#include "base/util.h"
 #include "fuzz/fuzz.h"
 #include "io/texels.h"
-#include "base/util.h"
 #include <ftw.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -61,7 +61,8 @@ void fuzz_check_message(const char *err)
         if ((unsigned char)*p < 32 || *p == 127) bad = true;
     if (bad) {
         fprintf(stderr, "fuzz: the reader's message is not one printable line: \"");
-        for (const char *p = err; *p; p++) fprintf(stderr, (unsigned char)*p < 32 ? "\\x%02x" : "%c", *p);
+        for (const char *p = err; *p; p++)
+            fprintf(stderr, (unsigned char)*p < 32 ? "\\x%02x" : "%c", *p);
         fprintf(stderr, "\"\n");
         abort();
     }

@@ -12,8 +12,14 @@
 
 static void use(const struct texture *t)
 {
-    static const double uv[][2] = {{0, 0}, {0.5, 0.5}, {1, 1}, {-0.25, 7.75}, {1e300, -1e300}, {NAN, 0.5},
-                                   {0.999999999999, 1e-17}, {INFINITY, -INFINITY}};
+    static const double uv[][2] = {{0, 0},
+                                   {0.5, 0.5},
+                                   {1, 1},
+                                   {-0.25, 7.75},
+                                   {1e300, -1e300},
+                                   {NAN, 0.5},
+                                   {0.999999999999, 1e-17},
+                                   {INFINITY, -INFINITY}};
     for (size_t i = 0; i < sizeof uv / sizeof uv[0]; i++) {
         rgb c = texture_lookup(t, uv[i][0], uv[i][1]);
         if (!vfinite(c)) __builtin_trap(); /* finite texels, convex weights */

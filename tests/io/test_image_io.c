@@ -21,7 +21,8 @@ static bool mapped(const char *lib)
     cr_assert(f);
     char line[4096];
     bool found = false;
-    while (!found && fgets(line, sizeof line, f)) found = strstr(line, lib) != NULL;
+    while (!found && fgets(line, sizeof line, f))
+        found = strstr(line, lib) != NULL;
     fclose(f);
     return found;
 }
@@ -46,7 +47,8 @@ Test(image_io, openimageio_opens_on_first_image_write_only)
     cr_assert(back, "%s", err);
     cr_assert(back->w == im->w && back->h == im->h);
     for (size_t i = 0; i < (size_t)im->w * im->h * 3; i++)
-        cr_assert_eq(back->px[i], (double)(float)im->px[i], "pixel value %zu: %g read back as %g", i, im->px[i], back->px[i]);
+        cr_assert_eq(back->px[i], (double)(float)im->px[i], "pixel value %zu: %g read back as %g", i, im->px[i],
+                     back->px[i]);
     unlink(path);
     rmdir(dir);
     img_destroy(back);

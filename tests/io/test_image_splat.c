@@ -10,13 +10,15 @@
 static double total(const struct image *im)
 {
     double s = 0;
-    for (int i = 0; i < im->w * im->h; i++) s += im->px[3 * i];
+    for (int i = 0; i < im->w * im->h; i++)
+        s += im->px[3 * i];
     return s;
 }
 
 static void clear(struct image *im)
 {
-    for (int i = 0; i < im->w * im->h * 3; i++) im->px[i] = 0;
+    for (int i = 0; i < im->w * im->h * 3; i++)
+        im->px[i] = 0;
 }
 
 Test(image_splat, box_fills_the_containing_pixel)

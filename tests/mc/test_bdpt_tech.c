@@ -4,14 +4,15 @@
 
 #include "camera/camera.h"
 #include "mc/render.h"
-#include "scene/scene.h"
 #include "path/scene_ready.h"
+#include "scene/scene.h"
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
 
 static struct image *run(const struct scene *sc, int spp, uint64_t seed, int K, int tech_k, struct render_stats *st)
 {
-    struct render_opts o = {.method = METHOD_BDPT, .spp = spp, .seed = seed, .threads = 2, .max_length = K, .tech_k = tech_k};
+    struct render_opts o = {
+        .method = METHOD_BDPT, .spp = spp, .seed = seed, .threads = 2, .max_length = K, .tech_k = tech_k};
     struct image *im = render_mc(sc, &o, st);
     cr_assert_eq(st->nonfinite, 0);
     cr_assert_not_null(st->tech);
@@ -40,11 +41,13 @@ Test(render, bdpt_technique_images_sum_to_the_image)
         im = run(sc, spp, 7, K, k, &st);
         for (int t = 1; t <= k + 1; t++)
             for (size_t p = 0; p < np; p++)
-                for (int ch = 0; ch < 3; ch++) acc[3 * p + ch] += at(st.tech, t, false, p, ch) / spp;
+                for (int ch = 0; ch < 3; ch++)
+                    acc[3 * p + ch] += at(st.tech, t, false, p, ch) / spp;
         bdpt_tech_free(st.tech);
     }
     double worst = 0;
-    for (size_t i = 0; i < 3 * np; i++) worst = fmax(worst, fabs(acc[i] - im->px[i]) / fmax(fabs(im->px[i]), 1e-6));
+    for (size_t i = 0; i < 3 * np; i++)
+        worst = fmax(worst, fabs(acc[i] - im->px[i]) / fmax(fabs(im->px[i]), 1e-6));
     cr_assert(worst < 1e-9, "the techniques' images differ from the image by up to %g (relative)", worst);
     img_destroy(im);
     free(acc);
@@ -76,7 +79,8 @@ Test(stat_render, bdpt_technique_variance_is_the_spread_across_seeds)
                 double v = at(st.tech, t, false, p, 1) / SPP;
                 m[(t - 1) * np + p] += v;
                 m2[(t - 1) * np + p] += v * v;
-                pred[(t - 1) * np + p] += bdpt_tech_var(at(st.tech, t, false, p, 1), at(st.tech, t, true, p, 1), SPP, N) / S;
+                pred[(t - 1) * np + p] +=
+                    bdpt_tech_var(at(st.tech, t, false, p, 1), at(st.tech, t, true, p, 1), SPP, N) / S;
             }
         }
         bdpt_tech_free(st.tech);

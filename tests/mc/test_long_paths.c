@@ -4,12 +4,12 @@
  * at 32 segments would miss by 3.3 %. */
 #include <criterion/criterion.h>
 
-#include "support/agree.h"
 #include "bsdf/bsdf_json.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include "scene/scene.h"
+#include "support/agree.h"
 #include "support/scenes.h"
 #include "support/tmpdir.h"
 #include <gsl/gsl_cdf.h>
@@ -55,7 +55,8 @@ Test(long_paths, every_method_renders_max_bounces_64, .init = make_dir, .fini = 
         bool mcmc = m >= 2, per_length = m >= 3;
         char cmd[1024];
         snprintf(cmd, sizeof cmd,
-                 BIN_DIR "/render " FURNACE64 " --method %s --spp %d --threads 2 --resolution 8x8 --quiet --out %s/%s%s%s"
+                 BIN_DIR "/render " FURNACE64
+                         " --method %s --spp %d --threads 2 --resolution 8x8 --quiet --out %s/%s%s%s"
                          " > %s/log 2>&1",
                  methods[m], per_length ? 16 : 1, dir, methods[m], mcmc ? " --seed-paths 500" : "",
                  per_length ? " --uniform-lengths" : "", dir);
@@ -83,16 +84,17 @@ Test(long_paths, longer_limit_is_clamped, .init = make_dir, .fini = remove_dir)
     cr_assert_eq(s->max_length, MAX_PATH_LENGTH);
     scene_model_free(s);
     snprintf(log, sizeof log, "%s/log", dir);
-    snprintf(cmd, sizeof cmd, BIN_DIR "/render %s --method pt --spp 1 --resolution 4x4 --quiet --out %s/o 2> %s", scene, dir,
-             log);
+    snprintf(cmd, sizeof cmd, BIN_DIR "/render %s --method pt --spp 1 --resolution 4x4 --quiet --out %s/o 2> %s", scene,
+             dir, log);
     cr_assert_eq(system(cmd), 0);
     FILE *f = fopen(log, "r");
     cr_assert(f);
     int n = 0;
     while (fgets(line, sizeof line, f)) {
         n++;
-        cr_assert(strstr(line, "integrator.max_bounces: warning: 1000 is above the renderer's limit; paths are capped at 64"),
-                  "%s", line);
+        cr_assert(
+            strstr(line, "integrator.max_bounces: warning: 1000 is above the renderer's limit; paths are capped at 64"),
+            "%s", line);
     }
     fclose(f);
     cr_assert_eq(n, 1, "%d lines on stderr", n);
@@ -107,13 +109,23 @@ static struct image *render_furnace(void *p, uint64_t seed)
 {
     const struct furnace_ctx *c = p;
     if (c->method < 2) {
-        struct render_opts o = {.method = c->method ? METHOD_BDPT : METHOD_PT, .spp = c->method ? 4 : 64, .seed = seed,
-                                .threads = 2, .max_length = c->sc->max_length, .min_length = 1};
+        struct render_opts o = {.method = c->method ? METHOD_BDPT : METHOD_PT,
+                                .spp = c->method ? 4 : 64,
+                                .seed = seed,
+                                .threads = 2,
+                                .max_length = c->sc->max_length,
+                                .min_length = 1};
         struct render_stats st;
         return render_mc(c->sc, &o, &st);
     }
-    struct mlt_opts o = {.method = MLT_MMLT, .p_large = 0.1, .mutations = 512L * 16 * 16, .seed_paths = 5000,
-                         .seed = seed, .threads = 2, .max_length = c->sc->max_length, .min_length = 1};
+    struct mlt_opts o = {.method = MLT_MMLT,
+                         .p_large = 0.1,
+                         .mutations = 512L * 16 * 16,
+                         .seed_paths = 5000,
+                         .seed = seed,
+                         .threads = 2,
+                         .max_length = c->sc->max_length,
+                         .min_length = 1};
     pss_opts_default(&o.pss, c->sc->cam.width, c->sc->cam.height);
     struct mlt_result r;
     char err[256];
@@ -137,8 +149,8 @@ Test(stat_long_paths, furnace_64_bounces_exact_answer)
         static struct stack s;
         stack_runs(&s, render_furnace, &c, 4, 100 + 10 * (uint64_t)m, 16);
         double t = fabs(s.mean - exact) / s.mean_se;
-        cr_log_info("furnace-64 %s: %.5f +- %.5f vs exact %.5f (t = %.2f, limit %.2f)", names[m], s.mean, s.mean_se, exact,
-                    t, tmax);
+        cr_log_info("furnace-64 %s: %.5f +- %.5f vs exact %.5f (t = %.2f, limit %.2f)", names[m], s.mean, s.mean_se,
+                    exact, t, tmax);
         cr_assert(t < tmax && fabs(s.mean / exact - 1) < 0.01, "%s: %.5f +- %.5f vs exact %.5f (t = %.2f, limit %.2f)",
                   names[m], s.mean, s.mean_se, exact, t, tmax);
     }

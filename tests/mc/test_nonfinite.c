@@ -48,9 +48,13 @@ static void parse_note(const char *s, long *by_len, const char *what)
     while (*s && *s != ')') {
         int k = 0, used = 0;
         long n = 0;
-        if (sscanf(s, "length %d: %ld%n", &k, &n, &used) == 2) cr_assert(k >= 1 && k <= MAX_PATH_LENGTH, "%s: '%s'", what, s);
-        else cr_assert(sscanf(s, "summed lengths: %ld%n", &n, &used) == 1 && (k = 0) == 0, "%s: breakdown at '%s'", what, s);
-        cr_assert(n > 0 && by_len[k] == 0, "%s: length %d listed as %ld (zero counts are left out, each once)", what, k, n);
+        if (sscanf(s, "length %d: %ld%n", &k, &n, &used) == 2)
+            cr_assert(k >= 1 && k <= MAX_PATH_LENGTH, "%s: '%s'", what, s);
+        else
+            cr_assert(sscanf(s, "summed lengths: %ld%n", &n, &used) == 1 && (k = 0) == 0, "%s: breakdown at '%s'", what,
+                      s);
+        cr_assert(n > 0 && by_len[k] == 0, "%s: length %d listed as %ld (zero counts are left out, each once)", what, k,
+                  n);
         by_len[k] = n;
         s += used;
         if (!strncmp(s, ", ", 2)) s += 2;
@@ -70,7 +74,8 @@ static void read_report(const char *method, struct report *r)
         char *d = strstr(line, " non-finite dropped");
         if (!d || strncmp(line, method, strlen(method))) continue;
         char *num = d;
-        while (num > line && num[-1] != ' ') num--;
+        while (num > line && num[-1] != ' ')
+            num--;
         r->total = strtol(num, NULL, 10);
         snprintf(r->note, sizeof r->note, "%s", d + strlen(" non-finite dropped"));
         r->note[strcspn(r->note, "\n")] = 0;
@@ -132,7 +137,8 @@ static void assert_finite_image(const char *method)
     struct image *im = img_read(p, err, sizeof err);
     cr_assert(im, "%s", err);
     long bad = 0;
-    for (size_t i = 0; i < 3 * (size_t)im->w * im->h; i++) bad += !isfinite(im->px[i]);
+    for (size_t i = 0; i < 3 * (size_t)im->w * im->h; i++)
+        bad += !isfinite(im->px[i]);
     img_destroy(im);
     cr_assert_eq(bad, 0, "%s: %ld non-finite pixel channels", method, bad);
 }
@@ -155,7 +161,8 @@ static void run_all(const char *inject, long *totals)
         struct report r;
         read_report(methods[m], &r);
         long sum = 0;
-        for (int k = 0; k <= MAX_PATH_LENGTH; k++) sum += r.by_len[k];
+        for (int k = 0; k <= MAX_PATH_LENGTH; k++)
+            sum += r.by_len[k];
         cr_assert_eq(sum, r.total, "%s: the breakdown sums to %ld of %ld", methods[m], sum, r.total);
         cr_assert_eq(r.warnings, r.total > 0, "%s: %d warning lines for %ld dropped", methods[m], r.warnings, r.total);
         if (mcmc) check_csv(methods[m], &r);
@@ -176,7 +183,8 @@ Test(nonfinite, injected_values_are_counted_per_length_and_never_splatted)
 {
     long totals[5];
     run_all("PSS_INJECT_NONFINITE=97 ", totals);
-    for (int m = 0; m < 5; m++) cr_assert(totals[m] > 0, "%s: nothing injected was counted", methods[m]);
+    for (int m = 0; m < 5; m++)
+        cr_assert(totals[m] > 0, "%s: nothing injected was counted", methods[m]);
 }
 
 /* The guards at the image: splat_finite, and the MCMC's weighted splats, where a finite colour

@@ -47,13 +47,15 @@ Test(pt_twin, equals_bdpt_machinery_restricted_to_s_le_1, .timeout = 600)
         struct image *a = img_create(W, H), *b = img_create(W, H);
         static double u[STREAM_COUNT][STREAM_DIMS];
         for (int st = 0; st < STREAM_COUNT; st++)
-            for (int k = 0; k < STREAM_DIMS; k++) u[st][k] = NAN;
+            for (int k = 0; k < STREAM_DIMS; k++)
+                u[st][k] = NAN;
         rng r;
         rng_seed(&r, 5, 0);
         const int N = 50000;
         for (int i = 0; i < N; i++) {
             for (int st = STREAM_CAMERA; st <= STREAM_EMITTER; st++)
-                for (int k = 0; k < (pc.max_length + 1) * SAMPLER_BLOCK; k++) u[st][k] = rng_uniform(&r);
+                for (int k = 0; k < (pc.max_length + 1) * SAMPLER_BLOCK; k++)
+                    u[st][k] = rng_uniform(&r);
             struct sampler_replay rp;
             sampler_replay_init(&rp, u);
             pt_sample(&pc, &rp.base, &w, a);

@@ -2,22 +2,22 @@
  * technique alone against the others (each one is an unbiased estimator of its path length). */
 #include <criterion/criterion.h>
 
-#include "support/agree.h"
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "path/scene_ready.h"
+#include "support/agree.h"
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
 
 static struct image *run(const struct scene *sc, enum method m, int spp, uint64_t seed, int K, int s, int t)
 {
-    struct render_opts o = {.method = m, .spp = spp, .seed = seed, .threads = 2, .max_length = K, .only_s = s, .only_t = t};
+    struct render_opts o = {
+        .method = m, .spp = spp, .seed = seed, .threads = 2, .max_length = K, .only_s = s, .only_t = t};
     struct render_stats st;
     struct image *im = render_mc(sc, &o, &st);
     cr_assert_eq(st.nonfinite, 0);
     return im;
 }
-
 
 /* The furnace (scenes/furnace): albedo a = 0.5, radiance Le = 0.5 on every inner wall, so a path of
  * length k carries a^(k-1) Le and the pixel value with lengths <= K is Le (1 - a^K) / (1 - a).
@@ -32,8 +32,8 @@ Test(stat_render, furnace_exact_answer)
         for (uint64_t seed = 1; seed <= 3; seed++) {
             struct image *im = run(sc, (enum method)m, 4, seed, K, 0, 0);
             double v = img_mean_luminance(im);
-            cr_assert(fabs(v / exact - 1) < 0.01, "%s seed %d: %g vs exact %g", method_name((enum method)m),
-                      (int)seed, v, exact);
+            cr_assert(fabs(v / exact - 1) < 0.01, "%s seed %d: %g vs exact %g", method_name((enum method)m), (int)seed,
+                      v, exact);
             img_destroy(im);
         }
     scene_free(sc);
@@ -63,7 +63,8 @@ Test(stat_render, time_budget_passes_are_unbiased_in_furnace)
         /* slack for a loaded machine, where the last pass can take longer than the mean */
         cr_assert(st.seconds < budget * (1 + 2.0 / st.spp) + 0.3, "%s: %g s for a %g s budget", method_name(o.method),
                   st.seconds, budget);
-        cr_assert(fabs(v / exact - 1) < 0.01, "%s: %g vs exact %g after %d passes", method_name(o.method), v, exact, st.spp);
+        cr_assert(fabs(v / exact - 1) < 0.01, "%s: %g vs exact %g after %d passes", method_name(o.method), v, exact,
+                  st.spp);
         img_destroy(im);
     }
     scene_free(sc);
@@ -99,8 +100,8 @@ Test(stat_render, tent_filter_border_pixels_exact_in_furnace)
             double mean = s / n, se = sqrt(fmax(0, s2 / n - mean * mean) / (n - 1));
             double tmax = gsl_cdf_tdist_Qinv((1 - pow(0.99, 1.0 / 4)) / 2, n - 1);
             cr_assert(fabs(mean - exact) < tmax * se + 1e-12 && fabs(mean / exact - 1) < 0.05,
-                      "%s %s: %g +- %g vs exact %g", method_name((enum method)m), corners ? "corners" : "border", mean, se,
-                      exact);
+                      "%s %s: %g +- %g vs exact %g", method_name((enum method)m), corners ? "corners" : "border", mean,
+                      se, exact);
         }
         img_destroy(im);
     }
@@ -157,8 +158,8 @@ static void techniques_alone(const char *path, uint64_t seed)
             stack_runs(&a, render_ctx, &c, 8, seed + 100 + 10 * (uint64_t)s, 16);
             double pm, worst;
             int f = stack_compare(&a, &ref, 5, &pm, &worst);
-            cr_assert_eq(f, 0, "%s, length %d: technique (%d,%d) %g +- %g vs (1,%d) %g +- %g: %d failing (mean p=%g)", path,
-                         k, s, k + 1 - s, a.mean, a.mean_se, k, ref.mean, ref.mean_se, f, pm);
+            cr_assert_eq(f, 0, "%s, length %d: technique (%d,%d) %g +- %g vs (1,%d) %g +- %g: %d failing (mean p=%g)",
+                         path, k, s, k + 1 - s, a.mean, a.mean_se, k, ref.mean, ref.mean_se, f, pm);
         }
     }
     scene_free(sc);
@@ -194,8 +195,10 @@ Test(stat_render, light_tracing_agrees_with_light_sampling_under_shading_normals
         stack_runs(&ls, render_ctx, &b, 8, 600 + 10 * k, 8);
         double pm, worst;
         int f = stack_compare(&lt, &ls, 2, &pm, &worst);
-        cr_assert_eq(f, 0, "length %d: light tracing %g +- %g vs light sampling %g +- %g: %d failing (mean p=%g, worst block p=%g)",
-                     k, lt.mean, lt.mean_se, ls.mean, ls.mean_se, f, pm, worst);
+        cr_assert_eq(
+            f, 0,
+            "length %d: light tracing %g +- %g vs light sampling %g +- %g: %d failing (mean p=%g, worst block p=%g)", k,
+            lt.mean, lt.mean_se, ls.mean, ls.mean_se, f, pm, worst);
     }
     scene_free(sc);
 }

@@ -5,12 +5,12 @@
 #include <criterion/criterion.h>
 #include <criterion/parameterized.h>
 
-#include "support/agree.h"
-#include "support/disk_cache.h"
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
+#include "support/agree.h"
+#include "support/disk_cache.h"
 #include "support/scenes.h"
 
 struct ch6_run {
@@ -20,15 +20,19 @@ struct ch6_run {
     enum mlt_method mlt;
     long per_pixel; /* samples or mutations per pixel */
     long seed_paths;
-    int min_length;      /* --min-length */
-    int subtract_below;  /* > 0: BDPT with all lengths minus an independent BDPT run of lengths < this */
+    int min_length;     /* --min-length */
+    int subtract_below; /* > 0: BDPT with all lengths minus an independent BDPT run of lengths < this */
 };
 
 static struct image *ch6_render(void *p, uint64_t seed)
 {
     const struct ch6_run *c = p;
     if (!c->mcmc) {
-        struct render_opts o = {.method = c->mc, .spp = (int)c->per_pixel, .seed = seed, .threads = 2, .max_length = 8,
+        struct render_opts o = {.method = c->mc,
+                                .spp = (int)c->per_pixel,
+                                .seed = seed,
+                                .threads = 2,
+                                .max_length = 8,
                                 .min_length = c->min_length};
         struct render_stats st;
         struct image *im = render_mc(c->sc, &o, &st);
@@ -41,8 +45,14 @@ static struct image *ch6_render(void *p, uint64_t seed)
         }
         return im;
     }
-    struct mlt_opts o = {.method = c->mlt, .p_large = 0.1, .seed_paths = c->seed_paths, .seed = seed, .threads = 2,
-                         .max_length = 8, .min_length = c->min_length, .mutations = c->per_pixel * c->sc->cam.width * c->sc->cam.height};
+    struct mlt_opts o = {.method = c->mlt,
+                         .p_large = 0.1,
+                         .seed_paths = c->seed_paths,
+                         .seed = seed,
+                         .threads = 2,
+                         .max_length = 8,
+                         .min_length = c->min_length,
+                         .mutations = c->per_pixel * c->sc->cam.width * c->sc->cam.height};
     pss_opts_default(&o.pss, c->sc->cam.width, c->sc->cam.height);
     struct mlt_result r;
     char err[256];
@@ -67,10 +77,11 @@ static void ch6_agree(const char *path, int res, int bdpt_spp, int pt_spp, int p
     char key[96];
     snprintf(key, sizeof key, "bdpt spp %d threads 2 max_length 8", bdpt_spp);
     stack_runs_cached(&ref, ch6_render, &bd, 8, seed, 8, sc, key);
-    const struct ch6_run runs[4] = {{.sc = sc, .mc = METHOD_PT, .per_pixel = pt_spp},
-                                    {.sc = sc, .mcmc = true, .mlt = MLT_PSSMLT, .per_pixel = pss_mpp, .seed_paths = seed_paths},
-                                    {.sc = sc, .mcmc = true, .mlt = MLT_MMLT, .per_pixel = mmlt_mpp, .seed_paths = seed_paths},
-                                    {.sc = sc, .mcmc = true, .mlt = MLT_PITP, .per_pixel = mmlt_mpp, .seed_paths = seed_paths}};
+    const struct ch6_run runs[4] = {
+        {.sc = sc, .mc = METHOD_PT, .per_pixel = pt_spp},
+        {.sc = sc, .mcmc = true, .mlt = MLT_PSSMLT, .per_pixel = pss_mpp, .seed_paths = seed_paths},
+        {.sc = sc, .mcmc = true, .mlt = MLT_MMLT, .per_pixel = mmlt_mpp, .seed_paths = seed_paths},
+        {.sc = sc, .mcmc = true, .mlt = MLT_PITP, .per_pixel = mmlt_mpp, .seed_paths = seed_paths}};
     const char *names[4] = {"pt", "pssmlt", "mmlt", "pitp"};
     double pm, worst;
     stack_runs(&a, ch6_render, (void *)&runs[m], m == 0 ? 8 : 12, seed + 100 * (uint64_t)(m + 1), 8);
@@ -121,7 +132,8 @@ Test(stat_ch6, min_length_leaves_out_exactly_the_shorter_paths, .timeout = 600)
         double pm, worst;
         stack_runs(&a, ch6_render, (void *)&runs[m], m < 2 ? 8 : 12, 9100 + 100 * m, 8);
         int f = stack_compare(&a, &ref, 5, &pm, &worst);
-        cr_assert_eq(f, 0, "%s --min-length 3: %g +- %g vs BDPT difference %g +- %g: %d failing (mean p=%g, worst p=%g)",
+        cr_assert_eq(f, 0,
+                     "%s --min-length 3: %g +- %g vs BDPT difference %g +- %g: %d failing (mean p=%g, worst p=%g)",
                      names[m], a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
     }
     /* and it is not the full image: the direct light is a large share of the Cornell box */

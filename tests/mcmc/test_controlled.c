@@ -4,12 +4,12 @@
  * whose ratio T(v->u) / T(u->v) is replaced by 1. */
 #include <criterion/criterion.h>
 
-#include "support/agree.h"
 #include "camera/camera.h"
 #include "mc/integrator.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
+#include "support/agree.h"
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <stdlib.h>
@@ -32,7 +32,8 @@ Test(controlled, wrapped_gaussian_density_is_normalised)
     for (int j = 0; j < 2; j++) {
         double s = 0;
         const int n = 200000;
-        for (int i = 0; i < n; i++) s += exp(ctrl_log_phi(0.3, (i + 0.5) / n, sig[j])) / n;
+        for (int i = 0; i < n; i++)
+            s += exp(ctrl_log_phi(0.3, (i + 0.5) / n, sig[j])) / n;
         cr_assert(fabs(s - 1) < 1e-6, "sigma %g: integral %.9f", sig[j], s);
         cr_assert(fabs(ctrl_log_phi(0.99, 0.01, sig[j]) - ctrl_log_phi(0.01, 0.99, sig[j])) < 1e-12, "not symmetric");
     }
@@ -78,9 +79,12 @@ Test(controlled, four_points_reduce_to_an_ordinary_step_on_a_diffuse_plane)
         cr_assert_eq(pss_read(&replay, STREAM_CAMERA, 1, DIM_IMAGE_Y), pss_current(&p, STREAM_CAMERA, 1));
         for (int d = 0; d < 2; d++) {
             double ordinary = pss_small_step(&replay, DIM_CONTINUOUS, b->u[d]);
-            cr_assert(wdist(b->up[d], b->u[d]) < 1e-9, "seed %d: u'_1 %.12f != u_1 %.12f", (int)seed, b->up[d], b->u[d]);
-            cr_assert(wdist(b->vp[d], b->v[d]) < 1e-9, "seed %d: v'_1 %.12f != v_1 %.12f", (int)seed, b->vp[d], b->v[d]);
-            cr_assert(wdist(b->v[d], ordinary) < 1e-9, "seed %d: v_1 %.12f, ordinary step %.12f", (int)seed, b->v[d], ordinary);
+            cr_assert(wdist(b->up[d], b->u[d]) < 1e-9, "seed %d: u'_1 %.12f != u_1 %.12f", (int)seed, b->up[d],
+                      b->u[d]);
+            cr_assert(wdist(b->vp[d], b->v[d]) < 1e-9, "seed %d: v'_1 %.12f != v_1 %.12f", (int)seed, b->vp[d],
+                      b->v[d]);
+            cr_assert(wdist(b->v[d], ordinary) < 1e-9, "seed %d: v_1 %.12f, ordinary step %.12f", (int)seed, b->v[d],
+                      ordinary);
         }
         cr_assert(fabs(ratio - 1) < 1e-6, "seed %d: T ratio %.9f", (int)seed, ratio);
         tested++;
@@ -101,9 +105,15 @@ struct ctrl_ctx {
 static struct image *render_ctrl(void *p, uint64_t seed)
 {
     const struct ctrl_ctx *c = p;
-    struct mlt_opts o = {.method = c->method, .p_large = 0.1, .seed_paths = c->seed_paths, .threads = 2, .seed = seed,
-                         .max_length = c->max_length, .small_step = SMALL_STEP_CONTROLLED,
-                         .ctrl_unit_ratio = c->unit_ratio, .mutations = c->mpp * c->sc->cam.width * c->sc->cam.height};
+    struct mlt_opts o = {.method = c->method,
+                         .p_large = 0.1,
+                         .seed_paths = c->seed_paths,
+                         .threads = 2,
+                         .seed = seed,
+                         .max_length = c->max_length,
+                         .small_step = SMALL_STEP_CONTROLLED,
+                         .ctrl_unit_ratio = c->unit_ratio,
+                         .mutations = c->mpp * c->sc->cam.width * c->sc->cam.height};
     pss_opts_default(&o.pss, c->sc->cam.width, c->sc->cam.height);
     o.pss.kernel = KERNEL_GAUSSIAN;
     struct mlt_result r;
@@ -119,15 +129,16 @@ struct bdpt_ctx {
 static struct image *render_bdpt(void *p, uint64_t seed)
 {
     struct bdpt_ctx *c = p;
-    struct render_opts o = {.method = METHOD_BDPT, .spp = c->spp, .seed = seed, .threads = 2, .max_length = c->max_length};
+    struct render_opts o = {
+        .method = METHOD_BDPT, .spp = c->spp, .seed = seed, .threads = 2, .max_length = c->max_length};
     struct render_stats st;
     return render_mc(c->sc, &o, &st);
 }
 
 /* Controlled-step MMLT against BDPT on 8x8 blocks and the image mean (Welch t, alpha 0.01 Sidak
  * over the blocks and the mean): `reps` runs of `mpp` mutations per pixel against 8 BDPT renders. */
-static int method_vs_bdpt(enum mlt_method m, const char *path, int res, int bdpt_spp, long mpp, long seed_paths, int reps,
-                          uint64_t seed, double *pmean, double *worst, double *mean, double *ref_mean)
+static int method_vs_bdpt(enum mlt_method m, const char *path, int res, int bdpt_spp, long mpp, long seed_paths,
+                          int reps, uint64_t seed, double *pmean, double *worst, double *mean, double *ref_mean)
 {
     struct scene *sc = test_scene(path);
     camera_resize(&sc->cam, res, res);
@@ -176,8 +187,8 @@ Test(stat_controlled, furnace_exact_answer)
     static struct stack a;
     stack_runs(&a, render_ctrl, &c, 8, 70, 32);
     double t = fabs(a.mean - exact) / a.mean_se;
-    cr_assert(t < tmax && fabs(a.mean / exact - 1) < 0.01, "%g +- %g vs exact %g (t = %.2f, limit %.2f)", a.mean, a.mean_se,
-              exact, t, tmax);
+    cr_assert(t < tmax && fabs(a.mean / exact - 1) < 0.01, "%g +- %g vs exact %g (t = %.2f, limit %.2f)", a.mean,
+              a.mean_se, exact, t, tmax);
     cr_log_info("furnace: %g +- %g vs exact %g, p = %g\n", a.mean, a.mean_se, exact, 2 * gsl_cdf_tdist_Q(t, 7));
     scene_free(sc);
 }
@@ -232,7 +243,8 @@ static double flat_target_chain(bool unit_ratio, long n, uint64_t seed)
         }
     }
     double chi = 0;
-    for (int i = 0; i < 64; i++) chi += sqr(hist[i] - total / 64) / (total / 64);
+    for (int i = 0; i < 64; i++)
+        chi += sqr(hist[i] - total / 64) / (total / 64);
     scene_free(sc);
     return gsl_cdf_chisq_Q(chi, 63);
 }
@@ -272,7 +284,8 @@ Test(stat_controlled, agrees_with_bdpt_on_every_bsdf_family, .timeout = 600)
 Test(stat_controlled, agrees_with_bdpt_under_shading_normals, .timeout = 300)
 {
     double pm, worst, m, r;
-    int f = method_vs_bdpt(MLT_MMLT, "scenes/smooth-sphere/scene.json", 64, 16, 64, 10000, 12, 8700, &pm, &worst, &m, &r);
+    int f =
+        method_vs_bdpt(MLT_MMLT, "scenes/smooth-sphere/scene.json", 64, 16, 64, 10000, 12, 8700, &pm, &worst, &m, &r);
     cr_assert_eq(f, 0, "controlled %g vs BDPT %g: %d failing (mean p=%g, worst block p=%g)", m, r, f, pm, worst);
     cr_log_info("smooth sphere: mean p = %g, worst block p = %g\n", pm, worst);
 }
@@ -307,7 +320,7 @@ Test(controlled, render_writes_angle_outputs_refuses_kelemen_and_reproduces)
     char dir[] = "/tmp/ctrl-test-XXXXXX", cmd[1024], path[256];
     cr_assert(mkdtemp(dir));
     const char *base = BIN_DIR "/render scenes/cornell-box/scene.json --method mmlt --small-step controlled --spp 4 "
-                       "--resolution 16x16 --seed-paths 2000 --threads 2 --quiet";
+                               "--resolution 16x16 --seed-paths 2000 --threads 2 --quiet";
     for (int r = 0; r < 2; r++) {
         snprintf(cmd, sizeof cmd, "%s --angle-stats --out %s/r%d > /dev/null", base, dir, r);
         cr_assert_eq(system(cmd), 0, "%s", cmd);
@@ -317,7 +330,9 @@ Test(controlled, render_writes_angle_outputs_refuses_kelemen_and_reproduces)
         snprintf(path, sizeof path, "%s/r0%s", dir, ext[i]);
         cr_assert(access(path, R_OK) == 0, "%s missing", path);
     }
-    snprintf(cmd, sizeof cmd, "grep -q '^# small_step controlled' %s/r0.csv && grep -q '^# controlled_failed_reverse' %s/r0.csv", dir, dir);
+    snprintf(cmd, sizeof cmd,
+             "grep -q '^# small_step controlled' %s/r0.csv && grep -q '^# controlled_failed_reverse' %s/r0.csv", dir,
+             dir);
     cr_assert_eq(system(cmd), 0, "statistics CSV lacks the small-step lines");
     /* EXR: the pixels (OpenImageIO stamps the file with the time); CSVs: the rows, not the timings */
     for (int e = 0; e < 2; e++) {
@@ -330,7 +345,9 @@ Test(controlled, render_writes_angle_outputs_refuses_kelemen_and_reproduces)
         img_destroy(ia);
         img_destroy(ib);
     }
-    snprintf(cmd, sizeof cmd, "bash -c 'for f in csv angle.csv; do diff -q <(grep -v \"^#\" %s/r0.$f) <(grep -v \"^#\" %s/r1.$f) || exit 1; done' > /dev/null",
+    snprintf(cmd, sizeof cmd,
+             "bash -c 'for f in csv angle.csv; do diff -q <(grep -v \"^#\" %s/r0.$f) <(grep -v \"^#\" %s/r1.$f) || "
+             "exit 1; done' > /dev/null",
              dir, dir);
     cr_assert_eq(system(cmd), 0, "two runs with the same seed differ in their statistics");
     snprintf(cmd, sizeof cmd, "%s --kernel kelemen --out %s/k > /dev/null 2>&1", base, dir);

@@ -40,15 +40,15 @@ Test(stat_mctls_tries, drawn_trials_agree_with_bdpt_on_cornell_box, .timeout = 6
     const int n = sizeof cfg / sizeof *cfg;
     for (int i = 0; i < n; i++) {
         struct mlt_ctx c = {sc,
-                              {.method = MLT_MMLT,
-                               .p_large = 0.5,
-                               .mutations = 16L * 64 * 64,
-                               .seed_paths = 10000,
-                               .threads = 2,
-                               .max_length = 8,
-                               .large_step = LARGE_MCTLS,
-                               .mctls_tries = cfg[i].tries,
-                               .mctls_count_t0 = cfg[i].t0}};
+                            {.method = MLT_MMLT,
+                             .p_large = 0.5,
+                             .mutations = 16L * 64 * 64,
+                             .seed_paths = 10000,
+                             .threads = 2,
+                             .max_length = 8,
+                             .large_step = LARGE_MCTLS,
+                             .mctls_tries = cfg[i].tries,
+                             .mctls_count_t0 = cfg[i].t0}};
         pss_opts_default(&c.o.pss, 64, 64);
         stack_runs(&a, render_mlt, &c, 12, 5000 + 100 * i, 8);
         double pm, worst;

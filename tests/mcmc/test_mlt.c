@@ -3,22 +3,22 @@
 #include <criterion/criterion.h>
 #include <criterion/parameterized.h>
 
-#include "support/agree.h"
-#include "support/disk_cache.h"
+#include "base/parallel.h"
 #include "camera/camera.h"
 #include "mc/render.h"
 #include "mcmc/mctls.h"
 #include "mcmc/mlt.h"
-#include "sampling/pick.h"
-#include "base/parallel.h"
 #include "path/scene_ready.h"
+#include "sampling/pick.h"
+#include "support/agree.h"
+#include "support/disk_cache.h"
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <signal.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -27,11 +27,10 @@ static const char *const method_names[] = {"pssmlt", "mmlt", "pitp"};
 
 static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, long mutations)
 {
-    *o = (struct mlt_opts){.method = m, .p_large = 0.1, .mutations = mutations, .seed_paths = 20000, .threads = 2,
-                           .max_length = 8};
+    *o = (struct mlt_opts){
+        .method = m, .p_large = 0.1, .mutations = mutations, .seed_paths = 20000, .threads = 2, .max_length = 8};
     pss_opts_default(&o->pss, sc->cam.width, sc->cam.height);
 }
-
 
 static struct image *render_plain(const struct scene *sc, enum method m, int spp, uint64_t seed)
 {
@@ -143,9 +142,16 @@ Test(stat_mlt, furnace_exact_answer)
         stack_runs(&a, render_mlt, &c, 6, 50 + 10 * (uint64_t)i, 32);
         double t = fabs(a.mean - exact) / a.mean_se;
         fprintf(stderr, "furnace %s%s: %g +- %g vs exact %g (%+.3f %%, t = %.2f, limit %.2f)\n", method_names[m],
-                opt == 1 ? " --rap" : opt == 2 ? " --cdc" : "", a.mean, a.mean_se, exact, 100 * (a.mean / exact - 1), t, tmax);
+                opt == 1   ? " --rap"
+                : opt == 2 ? " --cdc"
+                           : "",
+                a.mean, a.mean_se, exact, 100 * (a.mean / exact - 1), t, tmax);
         cr_assert(t < tmax && fabs(a.mean / exact - 1) < 0.01, "%s%s: %g +- %g vs exact %g (t = %.2f, limit %.2f)",
-                  method_names[m], opt == 1 ? " --rap" : opt == 2 ? " --cdc" : "", a.mean, a.mean_se, exact, t, tmax);
+                  method_names[m],
+                  opt == 1   ? " --rap"
+                  : opt == 2 ? " --cdc"
+                             : "",
+                  a.mean, a.mean_se, exact, t, tmax);
     }
     scene_free(sc);
 }
@@ -178,13 +184,15 @@ Test(mlt, statistics_bookkeeping_and_reproducibility)
         for (int k = 0; k < PROPOSAL_KINDS; k++) {
             if (k == PROPOSAL_PITP) continue; /* perturbations come on top of the mutations */
             for (int l = 0; l < STATS_LENGTHS; l++) {
-                for (int c = 0; c < 2; c++) n += r1.stats.cell[k][l][c].attempts;
+                for (int c = 0; c < 2; c++)
+                    n += r1.stats.cell[k][l][c].attempts;
                 n_any += r1.stats.any[k][l].attempts;
             }
             n_total += r1.stats.total[k].attempts;
         }
         /* PITP perturbs before every small step, and nothing else does */
-        cr_assert_eq(r1.stats.total[PROPOSAL_PITP].attempts, m == MLT_PITP ? r1.stats.total[PROPOSAL_SMALL].attempts : 0);
+        cr_assert_eq(r1.stats.total[PROPOSAL_PITP].attempts,
+                     m == MLT_PITP ? r1.stats.total[PROPOSAL_SMALL].attempts : 0);
         cr_assert_eq(n, r1.mutations);
         cr_assert_eq(n_any, r1.mutations);
         cr_assert_eq(n_total, r1.mutations);
@@ -221,7 +229,8 @@ Test(mlt, statistics_bookkeeping_and_reproducibility)
  * alpha 0.01); the same chain accepting with the plain ratio pi(y_j) / pi(x) must fail. */
 static double toy_pi(int u, int t)
 {
-    static const double tab[6][4] = {{1, 2, 0, 4}, {3, 1, 1, 1}, {0.5, 0.5, 6, 0.1}, {2, 2, 2, 2}, {0, 0, 0, 9}, {1, 5, 1, 0.2}};
+    static const double tab[6][4] = {{1, 2, 0, 4}, {3, 1, 1, 1}, {0.5, 0.5, 6, 0.1},
+                                     {2, 2, 2, 2}, {0, 0, 0, 9}, {1, 5, 1, 0.2}};
     return tab[u][t];
 }
 
@@ -247,7 +256,8 @@ static double toy_chain(bool generalised)
         if (it % 10 == 0) hist[u][t]++;
     }
     for (int i = 0; i < 6; i++)
-        for (int j = 0; j < 4; j++) total += toy_pi(i, j);
+        for (int j = 0; j < 4; j++)
+            total += toy_pi(i, j);
     double chi = 0, n = 200000;
     int cells = 0;
     for (int i = 0; i < 6; i++)
@@ -462,11 +472,12 @@ Test(mlt, cpu_time_budget_does_the_same_work_under_load, .timeout = 120)
             n[cpu][loaded] = r.mutations;
             mlt_result_free(&r);
         }
-    fprintf(stderr, "cpu-time budget: %ld mutations alone, %ld under %d spinning processes (wall-clock budget: %ld and %ld)\n",
+    fprintf(stderr,
+            "cpu-time budget: %ld mutations alone, %ld under %d spinning processes (wall-clock budget: %ld and %ld)\n",
             n[1][0], n[1][1], spinners, n[0][0], n[0][1]);
     double ratio = (double)n[1][1] / (double)n[1][0];
-    cr_assert(ratio > 0.7 && ratio < 1.25, "cpu-time budget: %ld mutations alone, %ld under load (ratio %.3f)", n[1][0], n[1][1],
-              ratio);
+    cr_assert(ratio > 0.7 && ratio < 1.25, "cpu-time budget: %ld mutations alone, %ld under load (ratio %.3f)", n[1][0],
+              n[1][1], ratio);
     scene_free(sc);
 }
 
@@ -501,16 +512,20 @@ Test(stat_mlt, seed_pass_standard_error_predicts_the_spread_of_b)
             cr_assert(mlt_render(sc, &o, &r, err, sizeof err), "%s", err);
             b[s] = r.b;
             rse += r.b_rse * r.b / seeds;
-            for (int k = 1; k <= o.max_length; k++) bk[s][k] = r.b_k[k], rse_k[k] += r.b_k_rse[k] * r.b_k[k] / seeds;
+            for (int k = 1; k <= o.max_length; k++)
+                bk[s][k] = r.b_k[k], rse_k[k] += r.b_k_rse[k] * r.b_k[k] / seeds;
             mlt_result_free(&r);
         }
         double mean = 0, var = 0;
-        for (int s = 0; s < seeds; s++) mean += b[s] / seeds;
-        for (int s = 0; s < seeds; s++) var += (b[s] - mean) * (b[s] - mean) / (seeds - 1);
+        for (int s = 0; s < seeds; s++)
+            mean += b[s] / seeds;
+        for (int s = 0; s < seeds; s++)
+            var += (b[s] - mean) * (b[s] - mean) / (seeds - 1);
         double ratio = sqrt(var) / rse;
         means[m] = mean;
         sds[m] = sqrt(var);
-        cr_log_info("%s: sd of b over %d seeds / reported s.e. = %.3f (99 %% interval %.2f-%.2f)", names[m], seeds, ratio, lo, hi);
+        cr_log_info("%s: sd of b over %d seeds / reported s.e. = %.3f (99 %% interval %.2f-%.2f)", names[m], seeds,
+                    ratio, lo, hi);
         cr_expect(ratio > lo && ratio < hi, "%s: sd of b / reported s.e. = %.3f", names[m], ratio);
         if (!m) continue;
         /* per length: the squared ratios' mean over the lengths, 8 x 19 degrees of freedom */
@@ -519,16 +534,19 @@ Test(stat_mlt, seed_pass_standard_error_predicts_the_spread_of_b)
         for (int k = 1; k <= 8; k++) {
             if (!(rse_k[k] > 0)) continue;
             double mk = 0, vk = 0;
-            for (int s = 0; s < seeds; s++) mk += bk[s][k] / seeds;
-            for (int s = 0; s < seeds; s++) vk += (bk[s][k] - mk) * (bk[s][k] - mk) / (seeds - 1);
+            for (int s = 0; s < seeds; s++)
+                mk += bk[s][k] / seeds;
+            for (int s = 0; s < seeds; s++)
+                vk += (bk[s][k] - mk) * (bk[s][k] - mk) / (seeds - 1);
             sum2 += vk / (rse_k[k] * rse_k[k]);
             nk++;
         }
         int dof = nk * (seeds - 1);
         double q = sum2 / nk, qlo = gsl_cdf_chisq_Pinv(0.005, dof) / dof, qhi = gsl_cdf_chisq_Pinv(0.995, dof) / dof;
-        cr_log_info("%s per length: mean squared ratio %.3f over %d lengths (99 %% interval %.2f-%.2f)", names[m], q, nk, qlo,
-                    qhi);
-        cr_expect(nk > 4 && q > qlo && q < qhi, "%s per length: mean squared ratio %.3f over %d lengths", names[m], q, nk);
+        cr_log_info("%s per length: mean squared ratio %.3f over %d lengths (99 %% interval %.2f-%.2f)", names[m], q,
+                    nk, qlo, qhi);
+        cr_expect(nk > 4 && q > qlo && q < qhi, "%s per length: mean squared ratio %.3f over %d lengths", names[m], q,
+                  nk);
     }
     double z = (means[2] - means[1]) / sqrt((sds[1] * sds[1] + sds[2] * sds[2]) / seeds);
     cr_log_info("b: pool %.5g, bdpt %.5g, z = %.2f", means[1], means[2], z);

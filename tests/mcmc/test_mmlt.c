@@ -25,8 +25,10 @@ Test(mmlt, technique_number_maps_back_exhaustively)
     rng_seed(&r, 5, 0);
     for (int k = 1; k <= MAX_PATH_LENGTH; k++)
         for (int t = 1; t <= k + 1; t++) {
-            for (size_t i = 0; i < sizeof ends / sizeof *ends; i++) check_maps_back(t, k, ends[i]);
-            for (int i = 0; i < 64; i++) check_maps_back(t, k, rng_uniform(&r));
+            for (size_t i = 0; i < sizeof ends / sizeof *ends; i++)
+                check_maps_back(t, k, ends[i]);
+            for (int i = 0; i < 64; i++)
+                check_maps_back(t, k, rng_uniform(&r));
         }
 }
 

@@ -3,9 +3,9 @@
  * unchanged beside it. */
 #include <criterion/criterion.h>
 
+#include "camera/camera.h"
 #include "mcmc/mlt_options.h"
 #include "mcmc/mutation.h"
-#include "camera/camera.h"
 #include "path/scene_ready.h"
 #include "support/scenes.h"
 #include <stdlib.h>

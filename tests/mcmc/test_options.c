@@ -13,9 +13,12 @@
 static void change(const struct mlt_option *d, struct mlt_opts *o)
 {
     double v = mlt_option_get(d, o), w;
-    if (d->type == MLT_OPTION_FLAG) w = !v;
-    else if (d->type == MLT_OPTION_CHOICE) w = d->choices[(int)v + 1] ? v + 1 : 0;
-    else w = v != d->lo ? d->lo : d->hi;
+    if (d->type == MLT_OPTION_FLAG)
+        w = !v;
+    else if (d->type == MLT_OPTION_CHOICE)
+        w = d->choices[(int)v + 1] ? v + 1 : 0;
+    else
+        w = v != d->lo ? d->lo : d->hi;
     mlt_option_set(d, o, w);
     cr_assert_neq(mlt_option_get(d, o), v, "%s: no other value", d->key);
 }
@@ -34,8 +37,10 @@ Test(mlt_options, every_number_changing_option_changes_the_identity)
         struct mlt_opts o = base;
         change(d, &o);
         mlt_options_identity(&o, id1, sizeof id1);
-        if (d->numbers) cr_expect_str_neq(id0, id1, "%s changes the numbers but not the identity", d->key);
-        else cr_expect_str_eq(id0, id1, "%s does not change the numbers but changes the identity", d->key);
+        if (d->numbers)
+            cr_expect_str_neq(id0, id1, "%s changes the numbers but not the identity", d->key);
+        else
+            cr_expect_str_eq(id0, id1, "%s does not change the numbers but changes the identity", d->key);
         numbers += d->numbers;
     }
     cr_assert_gt(numbers, 15);
@@ -78,7 +83,8 @@ static int struct_members(const char *path, const char *name, char out[][64], in
             depth += *p == '{' ? 1 : -1;
         } else if (isalpha((unsigned char)*p) || *p == '_') {
             int l = 0;
-            while ((isalnum((unsigned char)p[l]) || p[l] == '_') && l < 63) l++;
+            while ((isalnum((unsigned char)p[l]) || p[l] == '_') && l < 63)
+                l++;
             memcpy(last, p, (size_t)l);
             last[l] = 0;
             p += l - 1;
@@ -91,11 +97,11 @@ static int struct_members(const char *path, const char *name, char out[][64], in
 
 /* Fields that are not options, and why. */
 static const char *const not_options[] = {
-    "method",         /* the method: bin/render's --method, the methods' registry */
-    "pss",            /* its fields below */
-    "progress",       /* the progress bar: no effect on the numbers */
-    "ckpt",           /* the checkpoint's control: where, not what */
-    "pss.s1", "pss.s2", /* Kelemen's step bounds: constants of the kernel (pss_opts_default) */
+    "method",              /* the method: bin/render's --method, the methods' registry */
+    "pss",                 /* its fields below */
+    "progress",            /* the progress bar: no effect on the numbers */
+    "ckpt",                /* the checkpoint's control: where, not what */
+    "pss.s1",    "pss.s2", /* Kelemen's step bounds: constants of the kernel (pss_opts_default) */
     "pss.width", "pss.height", "pss.rap_reference", /* the film's, from the scene and --resolution */
     NULL};
 
@@ -113,7 +119,8 @@ Test(mlt_options, every_field_has_a_descriptor)
     char members[64][64], field[96];
     int n = struct_members("core/mcmc/mlt.h", "mlt_opts", members, 64);
     cr_assert_gt(n, 20);
-    for (int i = 0; i < n; i++) cr_expect(covered(members[i]), "struct mlt_opts.%s has no descriptor (mlt_options.c)", members[i]);
+    for (int i = 0; i < n; i++)
+        cr_expect(covered(members[i]), "struct mlt_opts.%s has no descriptor (mlt_options.c)", members[i]);
     n = struct_members("core/sampler/pss.h", "pss_opts", members, 64);
     cr_assert_gt(n, 8);
     for (int i = 0; i < n; i++) {
@@ -128,6 +135,7 @@ Test(mlt_options, csv_groups_are_complete)
     const struct mlt_option *d[64];
     size_t in_groups = mlt_options_csv(MLT_CSV_BEFORE_COUNTS, d, 64) + mlt_options_csv(MLT_CSV_AFTER_COUNTS, d, 64);
     size_t declared = 0;
-    for (size_t i = 0; i < mlt_options_count; i++) declared += mlt_options[i].csv_group != MLT_CSV_NONE;
+    for (size_t i = 0; i < mlt_options_count; i++)
+        declared += mlt_options[i].csv_group != MLT_CSV_NONE;
     cr_assert_eq(in_groups, declared);
 }

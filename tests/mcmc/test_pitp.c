@@ -4,9 +4,9 @@
  * BDPT is in test_mlt.c and test_env.c beside the other MCMC methods. */
 #include <criterion/criterion.h>
 
-#include "support/isa.h"
 #include "mcmc/pitp.h"
 #include "path/scene_ready.h"
+#include "support/isa.h"
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <stdio.h>
@@ -33,8 +33,10 @@ static bool make_state(const struct path_ctx *pc, struct tstate *s, int k, uint6
 static int path_vertices(const struct mmlt_path *x, const struct vertex **out)
 {
     int n = 0;
-    for (int i = 0; i < x->s; i++) out[n++] = &x->emi[i];
-    for (int i = x->t - 1; i >= 0; i--) out[n++] = &x->cam[i];
+    for (int i = 0; i < x->s; i++)
+        out[n++] = &x->emi[i];
+    for (int i = x->t - 1; i >= 0; i--)
+        out[n++] = &x->cam[i];
     return n;
 }
 
@@ -70,7 +72,8 @@ static int lobe_of(const double (*u)[STREAM_DIMS], int st, const struct vertex *
 }
 
 struct invariance {
-    long perturbations, moved, failed, rejected, reevaluated, changed, target_off, weight_off, numbers_off, numbers, other_lobe;
+    long perturbations, moved, failed, rejected, reevaluated, changed, target_off, weight_off, numbers_off, numbers,
+        other_lobe;
 };
 
 /* Runs 4 consecutive perturbations from each of `nstates` states of lengths 2..7 on scene `path` and checks
@@ -79,9 +82,9 @@ struct invariance {
  * target (relative 1e-2: vertices that agree within the tolerance still move a length-7 target at a
  * sharp glossy lobe by up to 0.7 %, seen on staircase and jewelry in a PGO=0 build; a wrong factor
  * in the re-evaluation is far larger), and a MIS weight of the new technique equal to the ratio the move was
- * sampled from (within 1e-6 + 1e-4 w: the retraced vertices differ in float; an independent evaluation of Eq. 5.21 in the new technique's form);
- * and a full re-inversion of the new path gives the same continuous numbers (1e-4) as the partial
- * one. One function per scene so that a loop over Embree ISAs can call it. */
+ * sampled from (within 1e-6 + 1e-4 w: the retraced vertices differ in float; an independent evaluation of Eq. 5.21 in
+ * the new technique's form); and a full re-inversion of the new path gives the same continuous numbers (1e-4) as the
+ * partial one. One function per scene so that a loop over Embree ISAs can call it. */
 static void pitp_invariance_on_scene(const char *path, int nstates, struct invariance *r)
 {
     struct scene *sc = test_scene(path);
@@ -105,7 +108,8 @@ static void pitp_invariance_on_scene(const char *path, int nstates, struct invar
         for (int rep = 0; rep < 4; rep++) {
             before = s.x;
             double target = luminance(s.c.f) * s.c.w, sum = 0;
-            for (int j = 0; j <= k; j++) sum += s.x.ratios[j];
+            for (int j = 0; j <= k; j++)
+                sum += s.x.ratios[j];
             int j;
             double a;
             struct connection cn;
@@ -133,11 +137,13 @@ static void pitp_invariance_on_scene(const char *path, int nstates, struct invar
             }
             if (fabs(c.w - before.ratios[j] / sum) > 1e-6 + 1e-4 * c.w) r->weight_off++;
             sampler_writer_clear(&wr);
-            if (!invert_camera(&pc, replay.cam, replay.t, 0, &wr.base) || !invert_emitter(&pc, replay.emi, replay.s, 0, &wr.base))
+            if (!invert_camera(&pc, replay.cam, replay.t, 0, &wr.base) ||
+                !invert_emitter(&pc, replay.emi, replay.s, 0, &wr.base))
                 continue;
             static double cur[STREAM_COUNT][STREAM_DIMS];
             for (int st = 0; st < STREAM_COUNT; st++)
-                for (int d = 0; d < STREAM_DIMS; d++) cur[st][d] = s.pss.d[st][d].value;
+                for (int d = 0; d < STREAM_DIMS; d++)
+                    cur[st][d] = s.pss.d[st][d].value;
             for (int st = 0; st < 2; st++)
                 for (int d = 0; d < STREAM_DIMS; d++) {
                     /* deterministic numbers only: not discrete choices, nor the numbers a delta lobe
@@ -158,14 +164,18 @@ static void pitp_invariance_on_scene(const char *path, int nstates, struct invar
             s.c = c;
         }
     }
-    fprintf(stderr, "pitp invariance %s: %ld perturbations, %ld moved (%ld re-evaluated), %ld rejected by f_j/f_i, "
+    fprintf(stderr,
+            "pitp invariance %s: %ld perturbations, %ld moved (%ld re-evaluated), %ld rejected by f_j/f_i, "
             "%ld failed (%.4f %%), %ld changed the path, %ld target, %ld weight, %ld of %ld numbers off (%ld in blocks "
-            "inverted to another lobe, not compared)\n", path, r->perturbations, r->moved, r->reevaluated, r->rejected,
-            r->failed, 100.0 * r->failed / r->perturbations, r->changed, r->target_off, r->weight_off, r->numbers_off,
-            r->numbers, r->other_lobe);
-    cr_assert(r->moved > r->perturbations / 20, "%s: only %ld of %ld perturbations moved", path, r->moved, r->perturbations);
+            "inverted to another lobe, not compared)\n",
+            path, r->perturbations, r->moved, r->reevaluated, r->rejected, r->failed,
+            100.0 * r->failed / r->perturbations, r->changed, r->target_off, r->weight_off, r->numbers_off, r->numbers,
+            r->other_lobe);
+    cr_assert(r->moved > r->perturbations / 20, "%s: only %ld of %ld perturbations moved", path, r->moved,
+              r->perturbations);
     cr_assert(r->changed <= r->moved / 1000, "%s: %ld of %ld moves changed the path", path, r->changed, r->moved);
-    cr_assert(r->target_off <= r->moved / 1000, "%s: %ld of %ld moves changed the target", path, r->target_off, r->moved);
+    cr_assert(r->target_off <= r->moved / 1000, "%s: %ld of %ld moves changed the target", path, r->target_off,
+              r->moved);
     cr_assert(r->weight_off <= r->moved / 1000, "%s: %ld of %ld moves: MIS weight of j is not ratio_j / sum", path,
               r->weight_off, r->moved);
     cr_assert(r->numbers_off <= r->numbers / 1000, "%s: partial vs full inversion: %ld of %ld numbers differ", path,
@@ -181,7 +191,8 @@ static void invariance_under_isa(const char *isa, void *ctx)
     cr_assert(s[0], "no scenes found under scenes/");
     struct invariance r;
     /* 6000 perturbations per scene and ISA: the 0.1 % bound still allows only 6 changed paths */
-    for (; *s; s++) pitp_invariance_on_scene(*s, 1500, &r);
+    for (; *s; s++)
+        pitp_invariance_on_scene(*s, 1500, &r);
 }
 
 /* Hit points differ in their last bits between Embree's kernels (tests/isa.h): the path must stay
@@ -199,14 +210,15 @@ Test(pitp, perturbation_leaves_the_path_unchanged_on_textured_scenes, .timeout =
     const char *scenes[] = {"tests/data/tungsten/bump-map.json", "tests/data/tungsten/texture-roughness.json",
                             "tests/data/tungsten/texture-checker.json"};
     struct invariance r;
-    for (int i = 0; i < 3; i++) pitp_invariance_on_scene(scenes[i], 1500, &r);
+    for (int i = 0; i < 3; i++)
+        pitp_invariance_on_scene(scenes[i], 1500, &r);
 }
 
 /* The chosen technique follows w_j(x) = (p_j / p_i) / sum_l (p_l / p_i) (Eq. 5.22-5.25): for each
  * perturbation, a randomised probability integral transform of j under w (a uniform point of j's
  * interval of w's CDF) is U(0, 1) whatever the state. 50000 perturbations per scene (4 in a row
- * from each of 12500 states with a contribution, lengths 1..6; Cornell box and materials), 20 equal bins, chi-square with 19
- * degrees of freedom, alpha = 0.01 Sidak over the 2 scenes. */
+ * from each of 12500 states with a contribution, lengths 1..6; Cornell box and materials), 20 equal bins, chi-square
+ * with 19 degrees of freedom, alpha = 0.01 Sidak over the 2 scenes. */
 Test(stat_pitp, technique_choice_follows_mis_weights)
 {
     const char *scenes[] = {"scenes/cornell-box/scene.json", "scenes/materials/scene.json"};
@@ -230,16 +242,19 @@ Test(stat_pitp, technique_choice_follows_mis_weights)
             states++;
             for (int rep = 0; rep < 4; rep++) {
                 double sum = 0, lo = 0;
-                for (int j = 0; j <= k; j++) sum += s.x.ratios[j];
+                for (int j = 0; j <= k; j++)
+                    sum += s.x.ratios[j];
                 double w[MAX_PATH_LENGTH + 2];
-                for (int j = 0; j <= k; j++) w[j] = s.x.ratios[j] / sum;
+                for (int j = 0; j <= k; j++)
+                    w[j] = s.x.ratios[j] / sum;
                 int j;
                 double a;
                 struct connection cn;
                 bool c_new;
                 pitp_perturb(&pc, &s.pss, &s.x, &ws, rng_uniform(&r0), &j, &a, &cn, &c_new, &nf);
                 if (c_new) s.c = cn;
-                for (int l = 0; l < j; l++) lo += w[l];
+                for (int l = 0; l < j; l++)
+                    lo += w[l];
                 double v = lo + rng_uniform(&r1) * w[j];
                 int b = (int)(20 * v);
                 bins[b < 0 ? 0 : b > 19 ? 19 : b]++;
@@ -247,11 +262,14 @@ Test(stat_pitp, technique_choice_follows_mis_weights)
             }
         }
         double chi = 0;
-        for (int b = 0; b < 20; b++) chi += sqr(bins[b] - n / 20.0) / (n / 20.0);
+        for (int b = 0; b < 20; b++)
+            chi += sqr(bins[b] - n / 20.0) / (n / 20.0);
         double p = gsl_cdf_chisq_Q(chi, 19);
-        fprintf(stderr, "pitp technique choice %s: chi2 = %.2f (19 dof), p = %.4f over %ld draws\n", scenes[sci], chi, p, n);
+        fprintf(stderr, "pitp technique choice %s: chi2 = %.2f (19 dof), p = %.4f over %ld draws\n", scenes[sci], chi,
+                p, n);
         cr_assert(n == 50000, "%s: only %ld perturbations", scenes[sci], n);
-        cr_assert(p > alpha, "%s: chosen techniques do not follow w_j: chi2 = %.1f, p = %g (%ld draws)", scenes[sci], chi, p, n);
+        cr_assert(p > alpha, "%s: chosen techniques do not follow w_j: chi2 = %.1f, p = %g (%ld draws)", scenes[sci],
+                  chi, p, n);
         scene_free(sc);
     }
 }
@@ -306,7 +324,8 @@ static double worst_flow_p(const struct flows *fl, int *tests)
                 long a = fl->n[k][i][j], n = a + fl->n[k][j][i];
                 if (n < 20) continue;
                 (*tests)++;
-                double lo = gsl_cdf_binomial_P((unsigned)a, 0.5, (unsigned)n), hi = a ? gsl_cdf_binomial_Q((unsigned)a - 1, 0.5, (unsigned)n) : 1;
+                double lo = gsl_cdf_binomial_P((unsigned)a, 0.5, (unsigned)n),
+                       hi = a ? gsl_cdf_binomial_Q((unsigned)a - 1, 0.5, (unsigned)n) : 1;
                 worst = fmin(worst, fmin(1.0, 2 * fmin(lo, hi)));
             }
     return worst;
@@ -337,10 +356,13 @@ Test(stat_pitp, moves_between_two_techniques_balance_and_a_one_way_chain_fails, 
     }
     double alpha = 1 - pow(0.99, 1.0 / total);
     for (int sci = 0; sci < 2; sci++) {
-        fprintf(stderr, "pitp flow balance %s: worst pair p = %.3g over %d pairs (alpha %.2g); one-way chain: %.3g over %d\n",
+        fprintf(stderr,
+                "pitp flow balance %s: worst pair p = %.3g over %d pairs (alpha %.2g); one-way chain: %.3g over %d\n",
                 scenes[sci], worst[sci][0], tests[sci][0], alpha, worst[sci][1], tests[sci][1]);
         cr_assert(tests[sci][0] >= 10, "%s: only %d pairs with enough transitions", scenes[sci], tests[sci][0]);
-        cr_assert(worst[sci][0] > alpha, "%s: flows i -> j and j -> i differ: p = %g (alpha %g)", scenes[sci], worst[sci][0], alpha);
-        cr_assert(worst[sci][1] <= alpha, "%s: a one-way chain passed the balance test (p = %g)", scenes[sci], worst[sci][1]);
+        cr_assert(worst[sci][0] > alpha, "%s: flows i -> j and j -> i differ: p = %g (alpha %g)", scenes[sci],
+                  worst[sci][0], alpha);
+        cr_assert(worst[sci][1] <= alpha, "%s: a one-way chain passed the balance test (p = %g)", scenes[sci],
+                  worst[sci][1]);
     }
 }

@@ -21,8 +21,8 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
     long *moves = mutation_state(c, &mutation_toy);
     double f0 = c->f;
     int tech0 = c->tech;
-    mutation_propose(wk, c, true, &pr);              /* fresh numbers, traced and evaluated */
-    mutation_decide(wk, c, toy_kind, &pr, t_start);  /* acceptance, splats, statistics row */
+    mutation_propose(wk, c, true, &pr);             /* fresh numbers, traced and evaluated */
+    mutation_decide(wk, c, toy_kind, &pr, t_start); /* acceptance, splats, statistics row */
     *moves += c->f != f0 || c->tech != tech0;
 }
 

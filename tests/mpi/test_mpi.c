@@ -56,8 +56,9 @@ static int run_render(int ranks, const char *name, const char *args)
 {
     char cmd[2048], launcher[128] = "";
     if (ranks > 0) snprintf(launcher, sizeof launcher, "mpirun --oversubscribe -np %d ", ranks);
-    snprintf(cmd, sizeof cmd, "timeout " JOB_TIMEOUT " %s" BIN_DIR "/render %s --quiet --out %s/%s >%s/%s.out 2>%s/%s.err",
-             launcher, args, dir, name, dir, name, dir, name);
+    snprintf(cmd, sizeof cmd,
+             "timeout " JOB_TIMEOUT " %s" BIN_DIR "/render %s --quiet --out %s/%s >%s/%s.out 2>%s/%s.err", launcher,
+             args, dir, name, dir, name, dir, name);
     int rc = system(cmd);
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);
 }
@@ -126,7 +127,8 @@ static void same_bits(const char *method, const char *budget, bool mcmc, bool an
         free(err);
     }
     for (int i = 1; i < 3; i++) {
-        cr_expect(same_pixels("single", runs[i].name, "exr"), "%s: %s.exr differs from one process's", method, runs[i].name);
+        cr_expect(same_pixels("single", runs[i].name, "exr"), "%s: %s.exr differs from one process's", method,
+                  runs[i].name);
         if (mcmc) {
             char *a = csv_body("single", "csv"), *b = csv_body(runs[i].name, "csv");
             cr_expect_str_eq(a, b, "%s: %s.csv differs from one process's", method, runs[i].name);
@@ -134,7 +136,8 @@ static void same_bits(const char *method, const char *budget, bool mcmc, bool an
             free(b);
         }
         if (angle) {
-            cr_expect(same_pixels("single", runs[i].name, "angle.exr"), "%s: %s.angle.exr differs", method, runs[i].name);
+            cr_expect(same_pixels("single", runs[i].name, "angle.exr"), "%s: %s.angle.exr differs", method,
+                      runs[i].name);
             char *a = csv_body("single", "angle.csv"), *b = csv_body(runs[i].name, "angle.csv");
             cr_expect_str_eq(a, b, "%s: %s.angle.csv differs", method, runs[i].name);
             free(a);
@@ -144,7 +147,8 @@ static void same_bits(const char *method, const char *budget, bool mcmc, bool an
     /* rank 0 alone prints the summary */
     char *out = output("np3", "out");
     int lines = 0;
-    for (char *p = out; *p; p++) lines += *p == '\n';
+    for (char *p = out; *p; p++)
+        lines += *p == '\n';
     cr_expect_eq(lines, 1, "expected one summary line from 3 ranks, got:\n%s", out);
     cr_expect(strstr(out, "3 ranks x 2 threads"), "summary: %s", out);
     free(out);
@@ -165,7 +169,8 @@ static double mean_value(const char *name)
     cr_assert(im, "%s", err);
     double s = 0;
     size_t n = (size_t)im->w * im->h * 3;
-    for (size_t i = 0; i < n; i++) s += im->px[i];
+    for (size_t i = 0; i < n; i++)
+        s += im->px[i];
     img_destroy(im);
     return s / n;
 }
@@ -179,8 +184,9 @@ Test(mpi, furnace_exact_on_3_ranks)
     const char *cases[][2] = {{"pt", "--time 1"}, {"bdpt", "--spp 4"}, {"mmlt", "--spp 64 --seed-paths 20000"}};
     for (int i = 0; i < 3; i++) {
         char args[512];
-        snprintf(args, sizeof args, "scenes/furnace/scene.json --resolution 64x64 --max-length 6 --threads 1 --method %s %s",
-                 cases[i][0], cases[i][1]);
+        snprintf(args, sizeof args,
+                 "scenes/furnace/scene.json --resolution 64x64 --max-length 6 --threads 1 --method %s %s", cases[i][0],
+                 cases[i][1]);
         int rc = run_render(3, cases[i][0], args);
         char *err = output(cases[i][0], "err");
         cr_assert_eq(rc, 0, "%s: exit %d: %s", cases[i][0], rc, err);
@@ -193,7 +199,8 @@ Test(mpi, furnace_exact_on_3_ranks)
 static int count(const char *s, const char *sub)
 {
     int n = 0;
-    for (const char *p = s; (p = strstr(p, sub)); p++) n++;
+    for (const char *p = s; (p = strstr(p, sub)); p++)
+        n++;
     return n;
 }
 
@@ -216,10 +223,12 @@ Test(mpi, bad_input_one_line_exit_2)
  * bin/ch6_equal (which starts renderer processes) at once. */
 Test(mpi, tools_not_rank_aware_refuse)
 {
-    const char *tools[] = {BIN_DIR "/bench --runs 1 --seconds 0.05", BIN_DIR "/ch6_equal --scene scenes/cornell-box/scene.json"};
+    const char *tools[] = {BIN_DIR "/bench --runs 1 --seconds 0.05",
+                           BIN_DIR "/ch6_equal --scene scenes/cornell-box/scene.json"};
     for (int i = 0; i < 2; i++) {
         char cmd[512], p[128];
-        snprintf(cmd, sizeof cmd, "timeout " JOB_TIMEOUT " mpirun --oversubscribe -np 2 %s >%s/tool.out 2>%s/tool.err", tools[i], dir, dir);
+        snprintf(cmd, sizeof cmd, "timeout " JOB_TIMEOUT " mpirun --oversubscribe -np 2 %s >%s/tool.out 2>%s/tool.err",
+                 tools[i], dir, dir);
         int rc = system(cmd);
         snprintf(p, sizeof p, "%s/tool.err", dir);
         char *err = read_whole_file(p);
@@ -301,7 +310,8 @@ static bool kill_rank_and_wait(pid_t job, pid_t victim, int rank, const char *er
     }
     if (may_finish && WIFEXITED(status) && WEXITSTATUS(status) == 0) return false;
     char *msg = read_whole_file(err);
-    cr_assert(!(WIFEXITED(status) && WEXITSTATUS(status) == 0), "the job succeeded without rank %d (killed too late?)", rank);
+    cr_assert(!(WIFEXITED(status) && WEXITSTATUS(status) == 0), "the job succeeded without rank %d (killed too late?)",
+              rank);
     cr_expect(strstr(msg, "signal 9") || strstr(msg, "Killed"), "mpirun did not say which rank died:\n%s", msg);
     free(msg);
     return true;
@@ -353,7 +363,8 @@ static void resumed_over_ranks(const char *name, const char *args)
         if (i < 3) snprintf(stop, sizeof stop, "timeout -s TERM %.3f ", (0.2 + 0.2 * i) * span + 0.5);
         if (from) snprintf(resume, sizeof resume, "--resume %s/run.ckpt", dir);
         snprintf(cmd, sizeof cmd,
-                 "%smpirun --oversubscribe -np 2 " BIN_DIR "/render %s %s --threads 2 --checkpoint 0.05 %s --quiet --out %s/run "
+                 "%smpirun --oversubscribe -np 2 " BIN_DIR
+                 "/render %s %s --threads 2 --checkpoint 0.05 %s --quiet --out %s/run "
                  ">%s/run.out 2>%s/run.err",
                  stop, box, args, resume, dir, dir, dir);
         int rc = system(cmd);
@@ -390,9 +401,9 @@ static bool newer_than(const char *path, struct timespec t)
 /* SIGKILL of one rank of a checkpointing job, twice, each a tenth of an uninterrupted run's time
  * after that rank has written a checkpoint: mpirun ends the job and says which rank died, each
  * rank's checkpoint file is whole (a kill can tear only a temporary), and 2 ranks resuming from the
- * files that are there, then completing, give the bits of one process of 4 threads. Each rank's work is its own (its seeds, its share of
- * the pixels or chains), so each resumes from its own latest complete file: the set the job
- * resumes from is every rank's last complete checkpoint. */
+ * files that are there, then completing, give the bits of one process of 4 threads. Each rank's work is its own (its
+ * seeds, its share of the pixels or chains), so each resumes from its own latest complete file: the set the job resumes
+ * from is every rank's last complete checkpoint. */
 static void rank_killed_and_resumed(const char *args, int victim_rank)
 {
     char a[1024], ck[2][256], out[256], err[256], prefix[256], resume[300] = "";
@@ -421,8 +432,10 @@ static void rank_killed_and_resumed(const char *args, int victim_rank)
             argv[argc++] = "mpirun", argv[argc++] = "--oversubscribe", argv[argc++] = "-np", argv[argc++] = "2";
             argv[argc++] = BIN_DIR "/render";
             char words[2048];
-            snprintf(words, sizeof words, "%s %s --threads 2 --checkpoint 0.05 --quiet --out %s %s", box, args, prefix, resume);
-            for (char *t = strtok(words, " "); t && argc < 63; t = strtok(NULL, " ")) argv[argc++] = t;
+            snprintf(words, sizeof words, "%s %s --threads 2 --checkpoint 0.05 --quiet --out %s %s", box, args, prefix,
+                     resume);
+            for (char *t = strtok(words, " "); t && argc < 63; t = strtok(NULL, " "))
+                argv[argc++] = t;
             argv[argc] = NULL;
             execvp("mpirun", argv);
             _exit(127);
@@ -431,16 +444,18 @@ static void rank_killed_and_resumed(const char *args, int victim_rank)
         /* the kill comes a tenth of the run after the victim has written a checkpoint in this job,
          * so that it makes progress whatever MPI's start-up costs (the other rank may be done) */
         double t1 = seconds_now();
-        while (!newer_than(ck[victim_rank], started) && seconds_now() - t1 < 30) usleep(5000);
+        while (!newer_than(ck[victim_rank], started) && seconds_now() - t1 < 30)
+            usleep(5000);
         usleep((useconds_t)(1e6 * 0.1 * span));
         /* a resumed job has only what is left to do: on a fast machine it may end before the
          * second kill lands, and then its image is the resumed result (a fresh-clone CI run) */
         if (!kill_rank_and_wait(job, victim, victim_rank, err, kill_no > 0)) {
-            fprintf(stderr, "mpi: %s: the resumed job finished before kill %d landed; its image is compared\n", args, kill_no + 1);
+            fprintf(stderr, "mpi: %s: the resumed job finished before kill %d landed; its image is compared\n", args,
+                    kill_no + 1);
             snprintf(a, sizeof a, "%s/kr.exr", dir);
             cr_assert(access(a, F_OK) == 0, "%s: the resumed job succeeded without an image", args);
-            cr_expect(same_pixels("ref", "kr", "exr"), "%s: killed and resumed 2 x 2 differs from one process of 4 threads",
-                      args);
+            cr_expect(same_pixels("ref", "kr", "exr"),
+                      "%s: killed and resumed 2 x 2 differs from one process of 4 threads", args);
             return;
         }
         for (int r = 0; r < 2; r++)
@@ -453,7 +468,8 @@ static void rank_killed_and_resumed(const char *args, int victim_rank)
     char *e = output("kr", "err");
     cr_assert_eq(rc, 0, "%s: final resume: %s", args, e);
     free(e);
-    cr_expect(same_pixels("ref", "kr", "exr"), "%s: killed and resumed 2 x 2 differs from one process of 4 threads", args);
+    cr_expect(same_pixels("ref", "kr", "exr"), "%s: killed and resumed 2 x 2 differs from one process of 4 threads",
+              args);
 }
 
 Test(mpi, sigkill_of_one_rank_resumes_bit_identical)

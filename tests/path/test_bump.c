@@ -190,7 +190,8 @@ Test(bump, mesh_tangents_follow_tungstens_triangle_formula, .init = mk_tmp, .fin
         struct scene *sc = bump_scene("\"ru.exr\"", "{\"type\": \"mesh\", \"file\": \"m.obj\", \"bsdf\": \"b\"}");
         struct vertex v = hit_at(sc, v3(0.05, 1, -0.02), v3(0, -1, 0));
         check_orthonormal(&v.sh);
-        cr_assert(near3(v.sh.n, vnorm(v3(tilt[k], 1, 0)), 1e-6), "uv %d: n (%g %g %g)", k, v.sh.n.x, v.sh.n.y, v.sh.n.z);
+        cr_assert(near3(v.sh.n, vnorm(v3(tilt[k], 1, 0)), 1e-6), "uv %d: n (%g %g %g)", k, v.sh.n.x, v.sh.n.y,
+                  v.sh.n.z);
         scene_free(sc);
     }
 }
@@ -211,7 +212,8 @@ Test(bump, sphere_uses_tungstens_tangent, .init = mk_tmp, .fini = rm_tmp)
 static void prefill(struct sampler_writer *w, rng *r)
 {
     for (int st = 0; st < STREAM_COUNT; st++)
-        for (int i = 0; i < STREAM_DIMS; i++) w->u[st][i] = rng_uniform(r);
+        for (int i = 0; i < STREAM_DIMS; i++)
+            w->u[st][i] = rng_uniform(r);
 }
 
 /* 20000 camera and 20000 emitter walks of up to 6 segments per scene: invert, replay, and the walk
@@ -241,10 +243,12 @@ static void check_retrace(const char *path)
             sampler_replay_init(&rep, (const double(*)[STREAM_DIMS])w.u);
             int m = !ok ? 0 : kind == 0 ? walk_camera(&pc, &rep.base, b, 7) : walk_emitter(&pc, &rep.base, b, 7);
             bool same = ok && m >= n;
-            for (int j = 0; same && j < n; j++) same = a[j].prim == b[j].prim && vlen(vsub(a[j].p, b[j].p)) <= tol;
+            for (int j = 0; same && j < n; j++)
+                same = a[j].prim == b[j].prim && vlen(vsub(a[j].p, b[j].p)) <= tol;
             if (!same) fail++;
         }
-        fprintf(stderr, "bump: %s %s walks: %d of %d did not retrace\n", path, kind ? "emitter" : "camera", fail, tried);
+        fprintf(stderr, "bump: %s %s walks: %d of %d did not retrace\n", path, kind ? "emitter" : "camera", fail,
+                tried);
         cr_expect(tried > 2000, "%s: only %d walks of >= 3 vertices", path, tried);
         cr_expect(fail <= tried / 2000, "%s: %d of %d walks did not retrace", path, fail, tried);
     }

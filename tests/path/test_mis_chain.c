@@ -36,7 +36,8 @@ Test(path, mis_ratio_across_specular_chains_is_the_unfolded_paths)
         sampler_independent_init(&ind, 5, (uint64_t)i);
         int n = walk_camera(&pc, &ind.base, z, 6);
         int mirrors = 0;
-        while (2 + mirrors < n && is_mirror(&z[2 + mirrors])) mirrors++;
+        while (2 + mirrors < n && is_mirror(&z[2 + mirrors]))
+            mirrors++;
         int t = 3 + mirrors;
         if (mirrors < 1 || mirrors > 2 || n < t || !z[1].bc.b || z[1].bc.b->type != BSDF_LAMBERT) continue;
         const struct vertex *light = &z[t - 1];
@@ -45,7 +46,8 @@ Test(path, mis_ratio_across_specular_chains_is_the_unfolded_paths)
         cr_assert(connect_st(&pc, y, 0, z, t, t - 1, &c, ratios), "a camera path that hits the light contributes");
         int k = t - 1;
         double L = 0;
-        for (int j = 1; j < t - 1; j++) L += vlen(vsub(z[j + 1].p, z[j].p));
+        for (int j = 1; j < t - 1; j++)
+            L += vlen(vsub(z[j + 1].p, z[j].p));
         vec3 first = vnorm(vsub(z[2].p, z[1].p)), last = vnorm(vsub(light->p, z[t - 2].p));
         double cos_f = fabs(vdot(z[1].ng, first)), cos_l = fabs(vdot(light->ng, last));
         vec3 d_cam = vsub(z[1].p, z[0].p);
@@ -54,7 +56,8 @@ Test(path, mis_ratio_across_specular_chains_is_the_unfolded_paths)
         double pk = emitter_pick_prob(sc, light->prim) * emitter_pdf_pos(sc, light->prim, light->p) * (cos_l / M_PI) *
                     cos_f / (L * L);
         cr_assert_float_eq(ratios[0], 1.0, 1e-12);
-        for (int j = 1; j < k; j++) cr_assert_eq(ratios[j], 0.0, "technique %d joins a mirror vertex", j);
+        for (int j = 1; j < k; j++)
+            cr_assert_eq(ratios[j], 0.0, "technique %d joins a mirror vertex", j);
         cr_assert(fabs(ratios[k] / (pk / p0) - 1) < 1e-3, "%d mirrors: p_k/p_0 = %g, unfolded %g", mirrors, ratios[k],
                   pk / p0);
         found[mirrors]++;

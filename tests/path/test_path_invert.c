@@ -4,9 +4,9 @@
 #include <criterion/criterion.h>
 #include <string.h>
 
-#include "support/isa.h"
 #include "path/path.h"
 #include "path/scene_ready.h"
+#include "support/isa.h"
 #include "support/scenes.h"
 
 /* Fills every slot with fresh numbers: blocks the inversion cannot determine (a direction that
@@ -14,7 +14,8 @@
 static void prefill(struct sampler_writer *w, rng *r)
 {
     for (int st = 0; st < STREAM_COUNT; st++)
-        for (int i = 0; i < STREAM_DIMS; i++) w->u[st][i] = rng_uniform(r);
+        for (int i = 0; i < STREAM_DIMS; i++)
+            w->u[st][i] = rng_uniform(r);
 }
 
 static double scene_size(const struct scene *sc) { return fmax(1.0, vlen(vsub(sc->bbox_max, sc->bbox_min))); }
@@ -74,7 +75,8 @@ static void check_scene(const char *isa, const char *path)
             if (n > 3 && m > 2) {
                 suffixes++;
                 int st = kind == 0 ? STREAM_CAMERA : STREAM_EMITTER;
-                for (int d = 2 * SAMPLER_BLOCK; d < STREAM_DIMS; d++) w.u[st][d] = rng_uniform(&r);
+                for (int d = 2 * SAMPLER_BLOCK; d < STREAM_DIMS; d++)
+                    w.u[st][d] = rng_uniform(&r);
                 memcpy(c, a, sizeof c);
                 memcpy(c, b, 3 * sizeof c[0]);
                 ok = invert(&pc, kind, c, n, 2, &w.base);
@@ -83,12 +85,12 @@ static void check_scene(const char *isa, const char *path)
             }
         }
         const char *what = kind ? "emitter" : "camera";
-        cr_log_info("isa %s, %s: %s walks %d of %d did not retrace, suffix inversions %d of %d", isa, path, what,
-                    fail, tried, fail_suffix, suffixes);
+        cr_log_info("isa %s, %s: %s walks %d of %d did not retrace, suffix inversions %d of %d", isa, path, what, fail,
+                    tried, fail_suffix, suffixes);
         cr_expect(tried > N / 10, "%s: only %d walks of >= 2 vertices", path, tried);
         cr_expect(fail <= tried / 2000, "isa %s, %s: %s walks: %d of %d did not retrace", isa, path, what, fail, tried);
-        cr_expect(fail_suffix <= suffixes / 2000,
-                  "isa %s, %s: %s suffix inversions: %d of %d failed", isa, path, what, fail_suffix, suffixes);
+        cr_expect(fail_suffix <= suffixes / 2000, "isa %s, %s: %s suffix inversions: %d of %d failed", isa, path, what,
+                  fail_suffix, suffixes);
     }
     scene_free(sc);
 }
@@ -96,7 +98,8 @@ static void check_scene(const char *isa, const char *path)
 static void check_all(const char *isa, void *ctx)
 {
     (void)ctx;
-    for (const char **s = test_all_scenes(); *s; s++) check_scene(isa, *s);
+    for (const char **s = test_all_scenes(); *s; s++)
+        check_scene(isa, *s);
 }
 
 Test(path, inverse_walks_retrace_on_every_scene)

@@ -38,10 +38,12 @@ static void check_scene(const char *path, int bsdf_type)
             if (n < 2) continue;
             tried++;
             bool leaf = false;
-            for (int k = 1; k < n; k++) leaf |= a[k].bc.b && (int)a[k].bc.b->type == bsdf_type;
+            for (int k = 1; k < n; k++)
+                leaf |= a[k].bc.b && (int)a[k].bc.b->type == bsdf_type;
             through += leaf;
             for (int st = 0; st < STREAM_COUNT; st++)
-                for (int d = 0; d < STREAM_DIMS; d++) w.u[st][d] = rng_uniform(&r);
+                for (int d = 0; d < STREAM_DIMS; d++)
+                    w.u[st][d] = rng_uniform(&r);
             bool ok = kind ? invert_emitter(&pc, a, n, 0, &w.base) : invert_camera(&pc, a, n, 0, &w.base);
             sampler_replay_init(&rep, (const double(*)[STREAM_DIMS])w.u);
             int m = !ok ? 0 : kind ? walk_emitter(&pc, &rep.base, b, 8) : walk_camera(&pc, &rep.base, b, 9);

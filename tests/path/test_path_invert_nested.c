@@ -13,7 +13,8 @@
 static void prefill(struct sampler_writer *w, rng *r)
 {
     for (int st = 0; st < STREAM_COUNT; st++)
-        for (int i = 0; i < STREAM_DIMS; i++) w->u[st][i] = rng_uniform(r);
+        for (int i = 0; i < STREAM_DIMS; i++)
+            w->u[st][i] = rng_uniform(r);
 }
 
 static bool same_prefix(const struct vertex *a, int na, const struct vertex *b, int nb, double tol)

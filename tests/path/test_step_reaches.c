@@ -67,5 +67,6 @@ static void check_scene(const char *path)
 Test(path, step_reaches_agrees_with_the_step_on_every_scene, .timeout = 300)
 {
     cr_assert(test_all_scenes()[0], "no scenes found under scenes/");
-    for (const char **s = test_all_scenes(); *s; s++) check_scene(*s);
+    for (const char **s = test_all_scenes(); *s; s++)
+        check_scene(*s);
 }

@@ -4,8 +4,8 @@
 #include <gsl/gsl_cdf.h>
 
 #include "base/vecmath.h"
-#include "support/chi2.h"
 #include "sampler/pss.h"
+#include "support/chi2.h"
 #include <math.h>
 #include <string.h>
 
@@ -71,7 +71,8 @@ Test(pss, kelemen_step_distribution)
     }
     double chi2 = 0, e = (double)N / (2 * B);
     for (int s = 0; s < 2; s++)
-        for (int b = 0; b < B; b++) chi2 += sqr(count[s][b] - e) / e;
+        for (int b = 0; b < B; b++)
+            chi2 += sqr(count[s][b] - e) / e;
     double pv = gsl_cdf_chisq_Q(chi2, 2 * B - 1);
     cr_assert(pv > chi2_alpha_sidak(), "Kelemen steps: chi2 %g, p %g", chi2, pv);
 }

@@ -53,7 +53,8 @@ Test(accel_isa, kernels_round_differently)
 {
     const char *const *isa = accel_isas();
     const char *lo = isa[0], *hi = NULL;
-    for (; *isa; isa++) hi = *isa;
+    for (; *isa; isa++)
+        hi = *isa;
     struct scene *sc[2];
     cr_assert(accel_set_isa(lo));
     sc[0] = test_scene("scenes/materials/scene.json");

@@ -92,7 +92,8 @@ static void *cast_three(void *sc)
 {
     const struct scene *s = sc;
     struct hit h;
-    for (int i = 0; i < 3; i++) accel_intersect(s->accel, v3(0, 1, 0), v3(0, -1, 0), 0, INFINITY, &h);
+    for (int i = 0; i < 3; i++)
+        accel_intersect(s->accel, v3(0, 1, 0), v3(0, -1, 0), 0, INFINITY, &h);
     return NULL;
 }
 
@@ -103,8 +104,8 @@ Test(loader, ray_counts_count_the_calling_threads_queries)
     cr_assert(s, "%s", err);
     struct ray_counts a = accel_ray_counts();
     struct hit h;
-    cr_assert(accel_intersect(s->accel, v3(0, 1, 0), v3(0, -1, 0), 0, INFINITY, &h));  /* floor */
-    cr_assert(!accel_intersect(s->accel, v3(0, 1, 3), v3(0, 0, 1), 0, INFINITY, &h));  /* out the open front */
+    cr_assert(accel_intersect(s->accel, v3(0, 1, 0), v3(0, -1, 0), 0, INFINITY, &h)); /* floor */
+    cr_assert(!accel_intersect(s->accel, v3(0, 1, 3), v3(0, 0, 1), 0, INFINITY, &h)); /* out the open front */
     cr_assert(accel_occluded(s->accel, v3(0, 1, 0), v3(0, -1, 0), 0, INFINITY));
     pthread_t th;
     cr_assert(pthread_create(&th, NULL, cast_three, s) == 0);
@@ -240,8 +241,10 @@ Test(loader, obj_mesh, .init = mk_tmp, .fini = rm_tmp)
     cr_assert_eq(p->ntris, 3);
     cr_assert(fabs(p->area - (4 + 2)) < 1e-9, "area %g", p->area);
     cr_assert(p->n && p->uv);
-    for (int i = 0; i < p->nverts; i++) cr_assert(near3(p->n[i], v3(0, 0, 1), EPS));
-    for (int t = 0; t < 3; t++) cr_assert(vdot(tri_cross(p, t), v3(0, 0, 1)) > 0);
+    for (int i = 0; i < p->nverts; i++)
+        cr_assert(near3(p->n[i], v3(0, 0, 1), EPS));
+    for (int t = 0; t < 3; t++)
+        cr_assert(vdot(tri_cross(p, t), v3(0, 0, 1)) > 0);
     const int *last = p->tri + 6;
     cr_assert(near3(p->p[last[0]], v3(0, 0, 1), EPS) && near3(p->p[last[2]], v3(0, 2, 1), EPS));
     cr_assert(fabs(p->uv[2 * last[1]] - 1) < EPS);
@@ -268,14 +271,16 @@ Test(loader, wo3_mesh_drops_degenerate, .init = mk_tmp, .fini = rm_tmp)
     w += 8;
     float v[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 0, -1}, {2, 0, 0}};
     for (int i = 0; i < 4; i++) {
-        for (int k = 0; k < 3; k++) put_f32(&w, v[i][k]);
+        for (int k = 0; k < 3; k++)
+            put_f32(&w, v[i][k]);
         put_f32(&w, 0), put_f32(&w, 1), put_f32(&w, 0), put_f32(&w, v[i][0]), put_f32(&w, -v[i][2]);
     }
     memcpy(w, &nt, 8);
     w += 8;
     unsigned tris[2][3] = {{0, 1, 2}, {0, 1, 3}}; /* the second is collinear */
     for (int t = 0; t < 2; t++) {
-        for (int k = 0; k < 3; k++) put_u32(&w, tris[t][k]);
+        for (int k = 0; k < 3; k++)
+            put_u32(&w, tris[t][k]);
         put_u32(&w, 0);
     }
     cr_assert_eq((size_t)(w - buf), sizeof buf);
@@ -336,7 +341,8 @@ static const struct bad_case bad_cases[] = {
     {"max_bounces_zero.json", ": integrator.max_bounces: expected an integer in [1, "},
     {"min_ge_max.json", ": integrator.min_bounces: must be less than max_bounces"},
     {"max_bounces_huge.json", ": integrator.max_bounces: expected an integer in [1, 65536]"},
-    {"min_bounces_above_limit.json", ": integrator.min_bounces: must be less than 64 (the renderer's path length limit)"},
+    {"min_bounces_above_limit.json",
+     ": integrator.min_bounces: must be less than 64 (the renderer's path length limit)"},
     {"resolution_too_many_pixels.json", ": camera.resolution: 10000x10000 is 100000000 pixels, above the limit"},
     {"texture_too_large.json", "texture_too_large.png: 16384x8193 texels, above the limit of 134217728"},
     {"albedo_negative.json", ": bsdfs[0].albedo: expected non-negative values"},
@@ -358,11 +364,14 @@ static const struct bad_case bad_cases[] = {
     {"prim_no_type.json", ": primitives[0].type: missing required field"},
     {"rotation_huge.json", ": primitives[3].transform.rotation[1]: expected an angle within +-1e6 degrees"},
     /* Tungsten types the harness knows but does not render: named, with the reason */
-    {"refused_bsdf_hair.json", ": bsdfs[0].type: bsdf type \"hair\" is not supported: fibre BCSDFs need curve primitives"},
+    {"refused_bsdf_hair.json",
+     ": bsdfs[0].type: bsdf type \"hair\" is not supported: fibre BCSDFs need curve primitives"},
     {"refused_prim_curves.json", ": primitives[0].type: primitive type \"curves\" is not supported: hair curves"},
     {"refused_prim_instances.json", ": primitives[0].type: primitive type \"instances\" is not supported"},
-    {"refused_texture_blade.json", ": bsdfs[0].albedo.type: texture type \"blade\" is not supported: procedural aperture"},
-    {"refused_camera_cubemap.json", ": camera.type: camera type \"cubemap\" is not supported: only pinhole and thinlens"},
+    {"refused_texture_blade.json",
+     ": bsdfs[0].albedo.type: texture type \"blade\" is not supported: procedural aperture"},
+    {"refused_camera_cubemap.json",
+     ": camera.type: camera type \"cubemap\" is not supported: only pinhole and thinlens"},
 };
 
 Test(loader, bad_inputs)
@@ -396,7 +405,8 @@ Test(loader, textures_and_environment, .init = mk_tmp, .fini = rm_tmp)
     img_destroy(im);
     struct scene *s = load_tmp_scene(
         "{\"type\": \"quad\", \"bsdf\": {\"type\": \"lambert\", \"albedo\": \"t.exr\"}},"
-        "{\"type\": \"quad\", \"bsdf\": {\"type\": \"mirror\", \"albedo\": {\"type\": \"bitmap\", \"file\": \"t.exr\"}}},"
+        "{\"type\": \"quad\", \"bsdf\": {\"type\": \"mirror\", \"albedo\": {\"type\": \"bitmap\", \"file\": "
+        "\"t.exr\"}}},"
         "{\"type\": \"infinite_sphere\", \"emission\": \"t.exr\", \"transform\": {\"rotation\": [0, 90, 0]}}");
     const struct texture *t = s->bsdfs[s->prims[0].bsdf].albedo_tex;
     cr_assert(t && t->w == 2 && t->h == 2);
@@ -412,7 +422,8 @@ Test(loader, textures_and_environment, .init = mk_tmp, .fini = rm_tmp)
     cr_assert(near3(x, v3(0, 0, 1), 1e-12));
     mat4 id = mat4_mul(&e->env_to_world, &e->env_to_local);
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) cr_assert(fabs(id.m[i][j] - (i == j)) < 1e-12);
+        for (int j = 0; j < 4; j++)
+            cr_assert(fabs(id.m[i][j] - (i == j)) < 1e-12);
     scene_model_free(s);
 }
 
@@ -434,7 +445,10 @@ Test(loader, textured_hits_read_the_texel_under_them, .init = mk_tmp, .fini = rm
     snprintf(path, sizeof path, "%s/scene.json", tmpdir);
     struct scene *s = scene_load(path, err, sizeof err);
     cr_assert(s, "%s", err);
-    static const struct { double x, z; rgb texel; } cases[] = {
+    static const struct {
+        double x, z;
+        rgb texel;
+    } cases[] = {
         {-0.25, 0.25, {1, 0, 0}},  /* (a, b) = uv = (0.25, 0.75): top left */
         {0.25, -0.25, {1, 1, 1}},  /* (0.75, 0.25): bottom right */
         {-0.25, -0.25, {0, 0, 1}}, /* (0.25, 0.25): bottom left */

@@ -3,8 +3,8 @@
  * (here the albedo, read through bsdf_ctx_at) gets them through texture_lookup. */
 #include <criterion/criterion.h>
 
-#include "bsdf/bsdf.h"
 #include "base/rng.h"
+#include "bsdf/bsdf.h"
 #include "bsdf/bsdf_json.h"
 #include "scene/scene.h"
 #include "support/tmpdir.h"

@@ -52,8 +52,10 @@ static const struct {
     {"{\"name\": \"a\", \"type\": \"lambert\", \"albedo\": {\"type\": \"wood\"}}",
      ": bsdfs[0].albedo.type: texture type \"wood\" is not supported (expected bitmap, checker or constant)"},
     {"{\"name\": \"a\", \"type\": \"lambert\", \"albedo\": {\"type\": \"blade\"}}",
-     ": bsdfs[0].albedo.type: texture type \"blade\" is not supported: procedural aperture textures are not implemented"},
-    {"{\"name\": \"a\", \"type\": \"lambert\", \"albedo\": {\"res_u\": 4}}", ": bsdfs[0].albedo.type: missing required field"},
+     ": bsdfs[0].albedo.type: texture type \"blade\" is not supported: procedural aperture textures are not "
+     "implemented"},
+    {"{\"name\": \"a\", \"type\": \"lambert\", \"albedo\": {\"res_u\": 4}}",
+     ": bsdfs[0].albedo.type: missing required field"},
     {"{\"name\": \"a\", \"type\": \"rough_conductor\", \"roughness\": \"no-such.png\"}",
      ": bsdfs[0].roughness: cannot load texture"},
     {"{\"name\": \"a\", \"type\": \"rough_dielectric\", \"roughness\": true}",
@@ -62,10 +64,12 @@ static const struct {
      ": bsdfs[0].roughness.res_u: expected an integer in [1, 1073741824]"},
     {"{\"name\": \"a\", \"type\": \"lambert\", \"bump\": true}",
      ": bsdfs[0].bump: expected a number, an image file name or a texture object"},
-    {"{\"name\": \"a\", \"type\": \"lambert\", \"bump\": {\"type\": \"bitmap\"}}", ": bsdfs[0].bump.file: missing required field"},
+    {"{\"name\": \"a\", \"type\": \"lambert\", \"bump\": {\"type\": \"bitmap\"}}",
+     ": bsdfs[0].bump.file: missing required field"},
     {"{\"name\": \"a\", \"type\": \"rough_conductor\", \"bump\": {\"type\": \"checker\", \"res_v\": 0}}",
      ": bsdfs[0].bump.res_v: expected an integer in [1, 1073741824]"},
-    {"{\"name\": \"a\", \"type\": \"lambert\", \"bump\": [1, 2]}", ": bsdfs[0].bump: expected a number or an array of 3 numbers"},
+    {"{\"name\": \"a\", \"type\": \"lambert\", \"bump\": [1, 2]}",
+     ": bsdfs[0].bump: expected a number or an array of 3 numbers"},
 };
 
 Test(texture_loader, bad_values_give_one_line_naming_the_json_path, .init = mk_tmp, .fini = rm_tmp)
@@ -108,7 +112,8 @@ Test(texture_loader, environment_takes_a_bitmap_or_a_constant, .init = mk_tmp, .
     char path[512], err[1024] = "";
     write_scene(lambert, "{\"type\": \"checker\"}", path, sizeof path);
     cr_assert_null(scene_load_model(path, err, sizeof err));
-    cr_assert(strstr(err, ": primitives[1].emission: an infinite_sphere's emission texture must be a bitmap"), "%s", err);
+    cr_assert(strstr(err, ": primitives[1].emission: an infinite_sphere's emission texture must be a bitmap"), "%s",
+              err);
     write_scene(lambert, "{\"type\": \"constant\", \"value\": [0.5, 1, 2]}", path, sizeof path);
     struct scene *s = scene_load_model(path, err, sizeof err);
     cr_assert(s, "%s", err);

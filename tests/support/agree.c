@@ -21,7 +21,8 @@ void stack_runs(struct stack *out, render_fn render, void *ctx, int reps, uint64
             for (int bx = 0; bx < W; bx++) {
                 double a = 0;
                 for (int y = 0; y < blk; y++)
-                    for (int x = 0; x < blk; x++) a += luminance(img_get(im, bx * blk + x, by * blk + y));
+                    for (int x = 0; x < blk; x++)
+                        a += luminance(img_get(im, bx * blk + x, by * blk + y));
                 a /= blk * blk;
                 sum[by * W + bx] += a;
                 sum2[by * W + bx] += a * a;
@@ -36,9 +37,11 @@ void stack_runs(struct stack *out, render_fn render, void *ctx, int reps, uint64
         out->v[i] = fmax(0, (sum2[i] - reps * out->m[i] * out->m[i]) / (reps - 1)) / reps;
     }
     double mm = 0, vv = 0;
-    for (int r = 0; r < reps; r++) mm += tot[r];
+    for (int r = 0; r < reps; r++)
+        mm += tot[r];
     mm /= reps;
-    for (int r = 0; r < reps; r++) vv += sqr(tot[r] - mm);
+    for (int r = 0; r < reps; r++)
+        vv += sqr(tot[r] - mm);
     out->mean = mm;
     out->mean_se = sqrt(vv / (reps - 1) / reps);
 }

@@ -13,7 +13,7 @@
 struct stack {
     int w, h, reps;
     double m[AGREE_MAX_BLOCKS], v[AGREE_MAX_BLOCKS]; /* block means and variances of the mean */
-    double mean, mean_se;                          /* image mean luminance */
+    double mean, mean_se;                            /* image mean luminance */
 };
 
 /* Renders `reps` replicates with seeds seed0, seed0 + 1, ... and accumulates their blk x blk blocks. */

@@ -6,10 +6,9 @@
 #include "base/rng.h"
 #include "bsdf/bsdf.h"
 #include "bsdf/bsdf_smooth.h"
-#include "support/rng_sampler.h"
 #include "sampler/sampler.h"
+#include "support/rng_sampler.h"
 #include <string.h>
-
 
 /* Unit direction with the given cos(theta) and phi. */
 static inline vec3 dir_cos_phi(double c, double phi)
@@ -51,7 +50,8 @@ static inline int roundtrip_once(const struct bsdf_ctx *c, vec3 wi, struct sampl
     if (!ops->sample(c, wi, s, mode, out)) return 1;
     if (s->offset != ops->dims) return 4;
     int base = RT_VERTEX * SAMPLER_BLOCK;
-    for (int i = 0; i < SAMPLER_BLOCK; i++) w->u[STREAM_CAMERA][base + i] = NAN;
+    for (int i = 0; i < SAMPLER_BLOCK; i++)
+        w->u[STREAM_CAMERA][base + i] = NAN;
     sampler_begin(&w->base, STREAM_CAMERA, RT_VERTEX);
     if (!ops->invert(c, wi, out->wo, &w->base)) return 2;
     if (w->base.offset != ops->dims) return 4;

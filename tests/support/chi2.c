@@ -25,8 +25,7 @@ static int cmp_exp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-struct chi2_result chi2_test_2d(chi2_sample2d sample, chi2_pdf2d pdf, void *ctx, int nx, int ny,
-                                long n, uint64_t seed)
+struct chi2_result chi2_test_2d(chi2_sample2d sample, chi2_pdf2d pdf, void *ctx, int nx, int ny, long n, uint64_t seed)
 {
     struct chi2_result res = {0};
     int ncell = nx * ny;
@@ -78,8 +77,10 @@ struct chi2_result chi2_test_2d(chi2_sample2d sample, chi2_pdf2d pdf, void *ctx,
         bins++;
     }
     if (pe > 0 || po > 0) {
-        if (pe > 0) stat += sqr(po - pe) / pe;
-        else res.zero_pdf_hits += (long)po;
+        if (pe > 0)
+            stat += sqr(po - pe) / pe;
+        else
+            res.zero_pdf_hits += (long)po;
         bins++;
     }
     res.stat = stat;
@@ -127,8 +128,8 @@ static double dir_pdf(void *p, double u, double v)
     return 4 * M_PI * c->pdf(c->ctx, uv_to_dir(u, v));
 }
 
-struct chi2_result chi2_test_dir(chi2_sample_dir sample, chi2_pdf_dir pdf, void *ctx, int ntheta,
-                                 int nphi, long n, uint64_t seed)
+struct chi2_result chi2_test_dir(chi2_sample_dir sample, chi2_pdf_dir pdf, void *ctx, int ntheta, int nphi, long n,
+                                 uint64_t seed)
 {
     struct dir_ctx c = {sample, pdf, ctx};
     return chi2_test_2d(dir_sample, dir_pdf, &c, ntheta, nphi, n, seed);
@@ -136,7 +137,7 @@ struct chi2_result chi2_test_dir(chi2_sample_dir sample, chi2_pdf_dir pdf, void 
 
 const char *chi2_describe(const struct chi2_result *r, char *buf, int len)
 {
-    snprintf(buf, (size_t)len, "chi2=%.1f dof=%d p=%.3g (alpha=%.2g) mass=%.4f other=%ld zero-pdf hits=%ld",
-             r->stat, r->dof, r->pvalue, chi2_alpha_sidak(), r->mass, r->other, r->zero_pdf_hits);
+    snprintf(buf, (size_t)len, "chi2=%.1f dof=%d p=%.3g (alpha=%.2g) mass=%.4f other=%ld zero-pdf hits=%ld", r->stat,
+             r->dof, r->pvalue, chi2_alpha_sidak(), r->mass, r->other, r->zero_pdf_hits);
     return buf;
 }

@@ -30,16 +30,15 @@ typedef double (*chi2_pdf_dir)(void *ctx, vec3 d);
 struct chi2_result {
     double stat, pvalue;
     int dof;
-    long zero_pdf_hits;   /* samples in cells whose density integrates to 0 */
-    double mass;          /* integral of the density over the domain */
-    long other;           /* samples in the "other" cell */
-    bool pass;            /* pvalue > Sidak-corrected alpha and no zero-pdf hits */
+    long zero_pdf_hits; /* samples in cells whose density integrates to 0 */
+    double mass;        /* integral of the density over the domain */
+    long other;         /* samples in the "other" cell */
+    bool pass;          /* pvalue > Sidak-corrected alpha and no zero-pdf hits */
 };
 
-struct chi2_result chi2_test_2d(chi2_sample2d sample, chi2_pdf2d pdf, void *ctx, int nx, int ny,
-                                long n, uint64_t seed);
-struct chi2_result chi2_test_dir(chi2_sample_dir sample, chi2_pdf_dir pdf, void *ctx, int ntheta,
-                                 int nphi, long n, uint64_t seed);
+struct chi2_result chi2_test_2d(chi2_sample2d sample, chi2_pdf2d pdf, void *ctx, int nx, int ny, long n, uint64_t seed);
+struct chi2_result chi2_test_dir(chi2_sample_dir sample, chi2_pdf_dir pdf, void *ctx, int ntheta, int nphi, long n,
+                                 uint64_t seed);
 double chi2_alpha_sidak(void);
 /* One line describing the result, for assertion messages. */
 const char *chi2_describe(const struct chi2_result *r, char *buf, int len);

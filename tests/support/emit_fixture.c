@@ -1,8 +1,8 @@
 /* In-memory test scenes for emitters and camera (see emit_fixture.h). */
 #include "support/emit_fixture.h"
-#include <criterion/criterion.h>
 #include "bsdf/bsdf_json.h"
 #include "scene/scene.h"
+#include <criterion/criterion.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -36,7 +36,8 @@ void fx_init(struct emit_fixture *f, enum fx_env env, bool rotate_env)
     m->kind = PRIM_MESH;
     vec3 mp[6] = {v3(0, 0, 0), v3(1, 0, 0), v3(0, 0, 1), v3(2, 0, 0), v3(5, 0, 0), v3(2, 1, 2)};
     memcpy(f->mesh_p, mp, sizeof mp);
-    for (int i = 0; i < 6; i++) f->mesh_tri[i] = i;
+    for (int i = 0; i < 6; i++)
+        f->mesh_tri[i] = i;
     m->p = f->mesh_p;
     m->tri = f->mesh_tri;
     m->nverts = 6;

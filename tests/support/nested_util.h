@@ -58,7 +58,8 @@ static const char nested_bsdfs_json[] =
     " {\"name\": \"sc_rcu\", \"type\": \"smooth_coat\", \"ior\": 1.5, \"substrate\": \"rcu\"},"
     " {\"name\": \"sc_au\", \"type\": \"smooth_coat\", \"ior\": 1.5, \"substrate\": \"au\"},"
     " {\"name\": \"rc\", \"type\": \"rough_coat\", \"ior\": 1.5, \"roughness\": 0.15, \"substrate\": \"red\"},"
-    " {\"name\": \"rc_au\", \"type\": \"rough_coat\", \"ior\": 1.5, \"distribution\": \"beckmann\", \"roughness\": 0.25,"
+    " {\"name\": \"rc_au\", \"type\": \"rough_coat\", \"ior\": 1.5, \"distribution\": \"beckmann\", \"roughness\": "
+    "0.25,"
     "  \"substrate\": \"au\"},"
     " {\"name\": \"rc_rp\", \"type\": \"rough_coat\", \"ior\": 1.3, \"roughness\": 0.3, \"thickness\": 0.2,"
     "  \"sigma_a\": [1, 0.2, 0.5], \"substrate\": \"rplastic\"},"
@@ -79,9 +80,11 @@ static const struct {
     const char *name;
     bool below;
 } nested_cases[] = {
-    {"tr", false},      {"tr_rglass", true}, {"sc", false},       {"sc_rcu", false}, {"sc_au", false},
-    {"rc", false},      {"rc_au", false},    {"rc_rp", false},    {"mx", false},     {"mx_rough", false},
-    {"mx_nest", false}, {"mx_glass", true},  {"mx_white", false}, {"mx_white_glass", true},
+    {"tr", false},       {"tr_rglass", true},      {"sc", false},
+    {"sc_rcu", false},   {"sc_au", false},         {"rc", false},
+    {"rc_au", false},    {"rc_rp", false},         {"mx", false},
+    {"mx_rough", false}, {"mx_nest", false},       {"mx_glass", true},
+    {"mx_white", false}, {"mx_white_glass", true},
 };
 #define N_NESTED_CASES (int)(sizeof nested_cases / sizeof nested_cases[0])
 

@@ -6,11 +6,10 @@
 #include "base/rng.h"
 #include "bsdf/bsdf.h"
 #include "bsdf/microfacet.h"
-#include "support/rng_sampler.h"
 #include "sampler/sampler.h"
+#include "support/rng_sampler.h"
 #include <stdio.h>
 #include <string.h>
-
 
 /* One test configuration: material plus incident direction and transport mode. */
 struct rough_case {
@@ -82,9 +81,9 @@ static inline int rough_cases(enum bsdf_type type, struct rough_case *out)
 
 static inline const char *rough_case_name(const struct rough_case *k, char *buf, int len)
 {
-    snprintf(buf, (size_t)len, "type=%d dist=%s alpha=%g wi=(%.3f,%.3f,%.3f) mode=%s refr=%d",
-             (int)k->b.type, k->b.dist == MF_GGX ? "ggx" : "beckmann", k->b.roughness, k->wi.x, k->wi.y,
-             k->wi.z, k->mode == TRANSPORT_RADIANCE ? "radiance" : "importance", (int)k->b.enable_refraction);
+    snprintf(buf, (size_t)len, "type=%d dist=%s alpha=%g wi=(%.3f,%.3f,%.3f) mode=%s refr=%d", (int)k->b.type,
+             k->b.dist == MF_GGX ? "ggx" : "beckmann", k->b.roughness, k->wi.x, k->wi.y, k->wi.z,
+             k->mode == TRANSPORT_RADIANCE ? "radiance" : "importance", (int)k->b.enable_refraction);
     return buf;
 }
 

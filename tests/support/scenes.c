@@ -21,7 +21,8 @@ const char **test_all_scenes(void)
     if (!done) {
         glob("scenes/*/scene.json", 0, NULL, &g);
         size_t n = g.gl_pathc < 63 ? g.gl_pathc : 63;
-        for (size_t i = 0; i < n; i++) list[i] = g.gl_pathv[i];
+        for (size_t i = 0; i < n; i++)
+            list[i] = g.gl_pathv[i];
         list[n] = NULL;
         done = 1;
     }

@@ -1,8 +1,8 @@
 /* The chi-square harness itself: accepts a correct sampler, rejects a subtly wrong one. */
 #include <criterion/criterion.h>
 
-#include "support/chi2.h"
 #include "sampling/warp.h"
+#include "support/chi2.h"
 
 static bool cos_sample(void *ctx, rng *r, vec3 *d)
 {

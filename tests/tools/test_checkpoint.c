@@ -8,11 +8,11 @@
 #include "io/checkpoint.h"
 #include "io/image.h"
 #include "support/tmpdir.h"
+#include <dirent.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <dirent.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -47,7 +47,8 @@ static pid_t start(const char *args, const char *extra)
     char *argv[64];
     int argc = 0;
     argv[argc++] = BIN_DIR "/render";
-    for (char *t = strtok(line, " "); t && argc < 63; t = strtok(NULL, " ")) argv[argc++] = t;
+    for (char *t = strtok(line, " "); t && argc < 63; t = strtok(NULL, " "))
+        argv[argc++] = t;
     argv[argc] = NULL;
     pid_t pid = fork();
     cr_assert(pid >= 0);
@@ -153,7 +154,8 @@ static double reference_run(const char *args)
     char ref[2048], old[256];
     path_of(old, sizeof old, "run.ckpt");
     unlink(old);
-    while (find_temporary(old, sizeof old)) unlink(old);
+    while (find_temporary(old, sizeof old))
+        unlink(old);
     snprintf(ref, sizeof ref, "%s --out %s/ref", args, dir);
     double t0 = now();
     cr_assert_eq(finish(start(ref, "")), 0);
@@ -179,8 +181,8 @@ static void complete_and_compare(const char *run, const char *resume, bool mcmc)
  * completed. Checkpoints every 50 ms; the kill moments are drawn from a fixed-seed generator over
  * 10-50 % of the uninterrupted run's duration. A start that finishes before its kill (a resumed run
  * has less left to do, and a loaded machine stretches the start-up) ends that run, and its
- * checkpoint is removed so that the next start begins afresh; starts go on, up to three per wanted kill, until `kills` kills have landed in
- * a running render. After every kill the checkpoint is absent or whole. Returns how many starts
+ * checkpoint is removed so that the next start begins afresh; starts go on, up to three per wanted kill, until `kills`
+ * kills have landed in a running render. After every kill the checkpoint is absent or whole. Returns how many starts
  * were killed while running; *resumed counts the starts that continued from a checkpoint. */
 static int kill_and_resume(const char *args, bool mcmc, int kills, uint64_t seed, int *resumed, int *starts)
 {
@@ -223,11 +225,13 @@ static void kills_of(const char *args, bool mcmc, int kills, uint64_t seed)
 {
     int resumed, starts, killed = kill_and_resume(args, mcmc, kills, seed, &resumed, &starts);
     kill_points += killed;
-    cr_log_info("%s: %d kills landed in a running render in %d starts, %d resumes from a checkpoint (%d kill points in this test)",
+    cr_log_info("%s: %d kills landed in a running render in %d starts, %d resumes from a checkpoint (%d kill points in "
+                "this test)",
                 args, killed, starts, resumed, kill_points);
     /* timing decides where the kills land: all must hit a running render within three starts per
      * kill, and one resume must start from a checkpoint */
-    cr_assert_eq(killed, kills, "%s: only %d of %d kills hit a running render in %d starts", args, killed, kills, 3 * kills);
+    cr_assert_eq(killed, kills, "%s: only %d of %d kills hit a running render in %d starts", args, killed, kills,
+                 3 * kills);
     cr_assert_gt(resumed, 0, "%s", args);
 }
 
@@ -293,7 +297,8 @@ static void kills_during_writes(const char *args, bool mcmc)
                 usleep(2000);
                 ended = waitpid(pid, &st, WNOHANG) == pid; /* a loaded or fast machine: the run was done first */
             }
-            cr_assert(ended || find_temporary(tmp, sizeof tmp) == want, "%s: checkpoint writes stopped (phase %d)", args, phase);
+            cr_assert(ended || find_temporary(tmp, sizeof tmp) == want, "%s: checkpoint writes stopped (phase %d)",
+                      args, phase);
         }
         if (!ended) {
             usleep(30000); /* well inside the 150 ms pause */
@@ -370,7 +375,8 @@ Test(checkpoint, ctrl_c_leaves_a_resumable_checkpoint, .timeout = 300)
 static int lines(const char *s)
 {
     int n = 0;
-    for (; *s; s++) n += *s == '\n';
+    for (; *s; s++)
+        n += *s == '\n';
     return n;
 }
 
@@ -428,7 +434,8 @@ Test(checkpoint, refuses_other_options_scene_and_damaged_files, .timeout = 300)
 Test(checkpoint, file_round_trip_and_build_check)
 {
     struct ckpt_buf p = {0}, q;
-    for (int i = 0; i < 1000; i++) CKPT_PUT(&p, i);
+    for (int i = 0; i < 1000; i++)
+        CKPT_PUT(&p, i);
     char path[256], err[512];
     path_of(path, sizeof path, "x.ckpt");
     struct ckpt_id id = {42, 7, "method=pt spp=1"}, other = id;
@@ -436,7 +443,8 @@ Test(checkpoint, file_round_trip_and_build_check)
     cr_assert(ckpt_read_file(path, &id, &q, err, sizeof err), "%s", err);
     cr_assert(q.len == p.len && !memcmp(q.p, p.p, p.len));
     int v;
-    for (int i = 0; i < 1000; i++) cr_assert(CKPT_GET(&q, v) && v == i);
+    for (int i = 0; i < 1000; i++)
+        cr_assert(CKPT_GET(&q, v) && v == i);
     cr_assert(!CKPT_GET(&q, v) && q.short_read, "a read past the end is reported");
     ckpt_buf_free(&q);
     other.build = 43;

@@ -72,7 +72,8 @@ static int run(const char *cmd, struct run how, char *err, size_t n)
     }
     size_t got = 0;
     ssize_t k;
-    while ((k = read(fd[0], err + got, n - 1 - got)) > 0) got += (size_t)k;
+    while ((k = read(fd[0], err + got, n - 1 - got)) > 0)
+        got += (size_t)k;
     err[got] = 0;
     close(fd[0]);
     int st;
@@ -125,10 +126,10 @@ static void fails_cleanly(const char *good, const char *cmd, struct run how, con
     cr_expect_eq(st, 1, "status %d, stderr: %s", st, err);
     size_t len = strlen(err);
     char *last = len ? err + len - 1 : err; /* the last line's start */
-    while (last > err && last[-1] != '\n') last--;
+    while (last > err && last[-1] != '\n')
+        last--;
     cr_expect(len && err[len - 1] == '\n' && (how.chatty || last == err), "not one line on stderr: '%s'", err);
-    cr_expect(strstr(last, path) && strstr(last, "left as it was"),
-              "the last line does not name %s: '%s'", path, err);
+    cr_expect(strstr(last, path) && strstr(last, "left as it was"), "the last line does not name %s: '%s'", path, err);
     cr_expect(strstr(err, "cannot") == strstr(last, "cannot"), "more than one error line: '%s'", err);
     expect_same(name, before, n0);
     if (also) expect_same(also, other, n2);
@@ -147,7 +148,8 @@ static void fails_cleanly(const char *good, const char *cmd, struct run how, con
 
 Test(disk_full, render_exr_under_a_file_size_limit)
 {
-    fails_cleanly(RENDER " --method pt --spp 4", RENDER " --method pt --spp 4", (struct run){.limit = 512}, "a.exr", NULL);
+    fails_cleanly(RENDER " --method pt --spp 4", RENDER " --method pt --spp 4", (struct run){.limit = 512}, "a.exr",
+                  NULL);
 }
 
 Test(disk_full, render_png_csv_angle_and_technique_outputs)
@@ -169,7 +171,8 @@ Test(disk_full, checkpoint_at_ctrl_c)
                   "a.exr");
 }
 
-#define FIG45 BIN_DIR "/fig4_5 --scene scenes/cornell-box/scene.json --mutations 2000 --max-length 4 --threads 1 --out DIR"
+#define FIG45                                                                                                          \
+    BIN_DIR "/fig4_5 --scene scenes/cornell-box/scene.json --mutations 2000 --max-length 4 --threads 1 --out DIR"
 
 Test(disk_full, experiment_csv)
 {

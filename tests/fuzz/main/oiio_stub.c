@@ -1,9 +1,9 @@
 /* The fuzz build's stand-in for core/io/oiio_load.c: images are fuzz.h's raw texel files, so that
  * the scene target's textures reach the loader's texture code without OpenImageIO, whose
  * uninstrumented decoders are not what is fuzzed here. Writing is refused. */
+#include "base/util.h"
 #include "fuzz/fuzz.h"
 #include "io/oiio.h"
-#include "base/util.h"
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -22,8 +22,7 @@ bool oiio_write(const char *path, int w, int h, int nchan, const float *px, char
     return false;
 }
 
-bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err,
-                        size_t errlen)
+bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px, int *bits, char *err, size_t errlen)
 {
     char *text = NULL;
     size_t n = 0;
@@ -34,7 +33,8 @@ bool oiio_read_channels(const char *path, int *w, int *h, int *nchan, float **px
     }
     FILE *m = open_memstream(&text, &n);
     int c;
-    while ((c = fgetc(f)) != EOF) fputc(c, m);
+    while ((c = fgetc(f)) != EOF)
+        fputc(c, m);
     fclose(f);
     fclose(m);
     int b = 0;
