@@ -234,6 +234,53 @@ static void add_tech(void *ctx, int thread)
     bdpt_tech_accumulate(m->out, m->per_thread[thread]);
 }
 
+/* The threads' images, technique sums and counts merged over threads and ranks into the result
+ * and st; the job's buffers freed. */
+static struct image *finish(struct job *j, const struct render_opts *o, int spp, struct render_stats *st)
+{
+    const struct scene *sc = j->sc;
+    int W = sc->cam.width, H = sc->cam.height, T = j->o->threads;
+    free(j->resume);
+    struct image *out = img_create(W, H);
+    struct thread_results tr = {.threads = T, .img = j->img, .scale = 1.0 / spp};
+    struct tech_merge tm = {NULL, j->tech};
+    st->tech = NULL;
+    if (j->tech) {
+        st->tech = bdpt_tech_create(o->tech_k, W, H, sc->cam.filter == FILTER_TENT);
+        tr.extra[tr.nextra++] = (struct dist_buf){st->tech->sum, bdpt_tech_bytes(st->tech)};
+        tr.add = add_tech;
+        tm.out = st->tech;
+        tr.ctx = &tm;
+    }
+    merge_thread_results(&tr, out);
+    if (j->tech)
+        for (int i = 0; i < T; i++)
+            bdpt_tech_free(j->tech[i]);
+    free(j->tech);
+    /* over the job's threads: integers, exact in any order */
+    struct {
+        long samples, interrupted, resume_bad;
+        struct nonfinite nf;
+    } counts = {0, interrupted(), atomic_load(&j->resume_bad), {{0}}};
+    for (int i = 0; i < T; i++) {
+        nonfinite_add(&counts.nf, &j->nf[i]);
+        counts.samples += j->samples[i];
+        img_destroy(j->img[i]);
+    }
+    dist_sum_longs((long *)&counts, sizeof counts / sizeof(long));
+    st->nonfinite_len = counts.nf;
+    st->nonfinite = nonfinite_total(&counts.nf);
+    st->samples = counts.samples;
+    st->resume_failed = counts.resume_bad > 0;
+    st->seconds = budget_seconds(o->cpu_time, T) - j->t0;
+    st->spp = spp;
+    st->partial = counts.interrupted > 0;
+    free(j->img);
+    free(j->nf);
+    free(j->samples);
+    return out;
+}
+
 struct image *render_mc(const struct scene *sc, const struct render_opts *o, struct render_stats *st)
 {
     int W = sc->cam.width, H = sc->cam.height, T = o->threads < 1 ? 1 : o->threads;
@@ -299,43 +346,5 @@ struct image *render_mc(const struct scene *sc, const struct render_opts *o, str
         if (interrupted()) mc_save(&j); /* Ctrl-C: every thread stored where it stopped */
         ckpt_sync_destroy(&j.sync);
     }
-    free(j.resume);
-    struct image *out = img_create(W, H);
-    struct thread_results tr = {.threads = T, .img = j.img, .scale = 1.0 / spp};
-    struct tech_merge tm = {NULL, j.tech};
-    st->tech = NULL;
-    if (j.tech) {
-        st->tech = bdpt_tech_create(o->tech_k, W, H, sc->cam.filter == FILTER_TENT);
-        tr.extra[tr.nextra++] = (struct dist_buf){st->tech->sum, bdpt_tech_bytes(st->tech)};
-        tr.add = add_tech;
-        tm.out = st->tech;
-        tr.ctx = &tm;
-    }
-    merge_thread_results(&tr, out);
-    if (j.tech)
-        for (int i = 0; i < T; i++)
-            bdpt_tech_free(j.tech[i]);
-    free(j.tech);
-    /* over the job's threads: integers, exact in any order */
-    struct {
-        long samples, interrupted, resume_bad;
-        struct nonfinite nf;
-    } counts = {0, interrupted(), atomic_load(&j.resume_bad), {{0}}};
-    for (int i = 0; i < T; i++) {
-        nonfinite_add(&counts.nf, &j.nf[i]);
-        counts.samples += j.samples[i];
-        img_destroy(j.img[i]);
-    }
-    dist_sum_longs((long *)&counts, sizeof counts / sizeof(long));
-    st->nonfinite_len = counts.nf;
-    st->nonfinite = nonfinite_total(&counts.nf);
-    st->samples = counts.samples;
-    st->resume_failed = counts.resume_bad > 0;
-    st->seconds = budget_seconds(o->cpu_time, T) - j.t0;
-    st->spp = spp;
-    st->partial = counts.interrupted > 0;
-    free(j.img);
-    free(j.nf);
-    free(j.samples);
-    return out;
+    return finish(&j, o, spp, st);
 }
