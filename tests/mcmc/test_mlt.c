@@ -442,12 +442,15 @@ static void spin_stop(const pid_t *pid, int n)
 
 /* --cpu-time: a budget of CPU seconds per thread does the same work whether or not other processes
  * compete for the cores. One MMLT thread for 1.5 CPU seconds, alone and beside one spinning process
- * per core; the mutations under load must be within -30 % / +25 % of those alone. A CPU second is
+ * per core; the mutations under load must be within a factor 0.7 of those alone, either way. A CPU second is
  * not a fixed amount of work: on a 2-vCPU machine whose vCPUs share a core, a spinning sibling
  * slows the render's instructions, and runs gave 0.86 and 0.95 of the work alone, against 0.28
  * and 0.29 on the wall clock (reported beside it, not asserted); under the sanitizers, beside the
  * test runner's other job and two more rendering processes, 0.76. The bound still fails a
- * wall-clock budget by a factor of two. */
+ * wall-clock budget by a factor of two. The bound is symmetric because "alone" is not alone under
+ * `make test`: the runner's other job competes for the cores then too, and a CI run gave 1.258 times the
+ * work alone under load (the other job had finished) — the old +25 % bound failed it, while a
+ * wall-clock budget can only lose work under load, so the upper side never told the two apart. */
 Test(mlt, cpu_time_budget_does_the_same_work_under_load, .timeout = 120)
 {
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
@@ -476,8 +479,8 @@ Test(mlt, cpu_time_budget_does_the_same_work_under_load, .timeout = 120)
             "cpu-time budget: %ld mutations alone, %ld under %d spinning processes (wall-clock budget: %ld and %ld)\n",
             n[1][0], n[1][1], spinners, n[0][0], n[0][1]);
     double ratio = (double)n[1][1] / (double)n[1][0];
-    cr_assert(ratio > 0.7 && ratio < 1.25, "cpu-time budget: %ld mutations alone, %ld under load (ratio %.3f)", n[1][0],
-              n[1][1], ratio);
+    cr_assert(ratio > 0.7 && ratio < 1 / 0.7, "cpu-time budget: %ld mutations alone, %ld under load (ratio %.3f)",
+              n[1][0], n[1][1], ratio);
     scene_free(sc);
 }
 
