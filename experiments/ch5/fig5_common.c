@@ -5,11 +5,11 @@
 #include "camera/camera.h"
 #include "common/csv_meta.h"
 #include "common/opts.h"
+#include "common/outdir.h"
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 const char *const fig5_kind_name[3] = {"mmlt", "controlled", "root"};
@@ -32,7 +32,7 @@ void fig5_parse(int argc, char **argv, struct fig5_cfg *c, const char *about)
     c->width = res[0], c->height = res[1];
     c->seed_paths = c->fig.paper ? 1000000 : 100000;
     c->max_length = 8;
-    mkdir(c->fig.out, 0777);
+    outdir_require(c->prog, c->fig.out); /* before any work: a bad --out is one line and status 2 */
 }
 
 void fig5_meta_head(FILE *f, const struct fig5_cfg *c, const char *title)

@@ -10,11 +10,11 @@ FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=undefined
 FUZZ_CFLAGS := -std=c11 -g -O1 -fno-omit-frame-pointer $(FUZZ_SAN) -fsanitize=fuzzer-no-link $(WARN) -pthread
 FUZZ_CPPFLAGS := -Icore -Iexperiments -Itests -I$(BUILD) -D_DEFAULT_SOURCE -MMD -MP
 # The core without the OpenImageIO module's loader (main/oiio_stub.c stands in), without MPI and Embree
-# (no target casts a ray; accel.c's CPU feature names are GCC's); the
+# (no target casts a ray, main/accel_stub.c stands in for its queries; accel.c's CPU feature names are GCC's); the
 # statistics CSV reader of check_stats; the targets and their shared support (the replay suite is
 # the test runner's).
 FUZZ_SRC := $(filter-out core/io/oiio_load.c core/base/dist_mpi.c core/scene/accel.c,$(wildcard core/*/*.c)) \
-  experiments/tools/stats_csv.c tests/fuzz/main/oiio_stub.c \
+  experiments/tools/stats_csv.c tests/fuzz/main/oiio_stub.c tests/fuzz/main/accel_stub.c \
   $(filter-out tests/fuzz/test_%,$(wildcard tests/fuzz/*.c))
 FUZZ_OBJ := $(patsubst %,$(FUZZ_BUILD)/%.o,$(FUZZ_SRC))
 FUZZ_BINS := $(patsubst %,$(FUZZ_BUILD)/fuzz-%,$(FUZZ_TARGETS))
