@@ -121,7 +121,7 @@ $$($(1)_LIB): $$(patsubst %,$$(BUILD)/%.o,$$($(1)_LIB_SRC))
 # Kept after linking: make would otherwise delete them as intermediates of the first build, and
 # the next build would recompile and relink (and, with PGO, retrain).
 .SECONDARY: $$(patsubst %,$$(BUILD)/%.o,$$($(1)_MAINS) $$($(1)_LIB_SRC))
-$$(patsubst %,$$(BIN)/%,$(2)): $$(BIN)/%: $$(BUILD)/experiments/$(1)/%.c.o $$($(1)_LIB) $$(EXP_COMMON_LIB) $$(LIBCORE) $$(LINK_MODE_FILE) | $$(OIIO_MODULE)
+$$(patsubst %,$$(BIN)/%,$(2)): $$(BIN)/%: $$(BUILD)/experiments/$(1)/%.c.o $$($(1)_LIB) $$($(1)_USES) $$(EXP_COMMON_LIB) $$(LIBCORE) $$(LINK_MODE_FILE) | $$(OIIO_MODULE)
 	@mkdir -p $$(dir $$@)
 	$$(CC) $$(LDFLAGS) $$(filter %.o %.a,$$^) $$(LDLIBS) -o $$@
 tools: $$(patsubst %,$$(BIN)/%,$(2))

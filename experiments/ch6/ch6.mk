@@ -1,6 +1,8 @@
 # Thesis chapter 6 (equal-time PSSMLT vs MMLT vs PITP), the MMLT paper's §5 ratio and the hybrid-MCTLS
-# study: tools, scene assets, figures and tables. Every run goes through bin/render, so a method that
-# bin/render accepts (pitp once merged) needs no change here.
+# study: tools, scene assets, figures and tables. Every run is bin/render's command line, run
+# in-process (experiments/tools/render_run.h, linked from the tools' library): a method bin/render
+# accepts needs no change here.
+ch6_USES := $(BUILD)/experiments/tools/libtools.a
 $(eval $(call TOOLS,ch6,ch6_assets ch6_equal ch6_tech fig6_1))
 
 # tests/ch6/test_ch6_stats.c links the analysis code.

@@ -1,7 +1,8 @@
 /* bin/ch6_equal: equal-time comparisons of MCMC methods on one scene (thesis chapter 6, Figures
  * 6.2-6.7; the MMLT paper's §5 non-zero ratio; the hybrid-MCTLS study). Every run is a bin/render
- * process, so any method bin/render accepts can be listed; a method it does not accept (probed with
- * `bin/render --method M --help`) is skipped and named in the outputs.
+ * command line run in-process (tools/render_run.h; --render: by another program), so any method
+ * bin/render accepts can be listed; a method it does not accept (probed with `render --method M
+ * --help` in a child) is skipped and named in the outputs.
  *
  * For each seed 1..N, budget t0, 2 t0, ..., T seconds and method, in that order (interleaved): a
  * separate render with that seed and a --cpu-time budget (--wall-clock: --time) (the core has no snapshot facility; the
@@ -31,6 +32,7 @@
 #include "common/opts.h"
 #include "common/outdir.h"
 #include "io/image.h"
+#include "tools/render_run.h"
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -111,7 +113,8 @@ static void make_budgets(struct ch6_equal *e, double t0)
     if (fabs(e->budgets[e->nb - 1] - e->T) > 1e-9 * e->T && e->nb < CH6_MAX_BUDGETS) e->budgets[e->nb++] = e->T;
 }
 
-/* The label (default: the scene's folder name) and the renderer (default: bin/render beside us). */
+/* The label (default: the scene's folder name) and the renderer: in-process (tools/render_run.h),
+ * or the program --render names. */
 static void names(struct ch6_equal *e, char *sname, size_t n)
 {
     if (!e->name) {
@@ -122,14 +125,12 @@ static void names(struct ch6_equal *e, char *sname, size_t n)
         e->name = sl ? sl + 1 : sname;
     }
     if (!*e->render) {
-        char self[2048];
-        ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
-        if (len <= 0) die(DIE_RUNTIME, e->prog, "cannot find my own path; give --render");
-        self[len] = 0;
-        *strrchr(self, '/') = 0;
-        snprintf(e->render, sizeof e->render, "%s/render", self);
+        snprintf(e->render, sizeof e->render, "render");
+        e->renderer = (struct proc_prog){.main = render_run};
+        return;
     }
     if (access(e->render, X_OK)) opts_fail(e->prog, "--render: '%s' is not executable", e->render);
+    e->renderer = (struct proc_prog){.path = e->render};
 }
 
 /* The command line into e; returns the --methods text. */
@@ -177,7 +178,8 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
          .def = "16"},
         OPT_THREADS(e->threads, .hi = 1024, .help = "threads per run", .def = "2"),
         {"--render", OPT_STRING, OPT_DST(render), .arg = "PATH",
-         .help = "the renderer (default: bin/render beside this tool)"},
+         .help = "run the renders as this program (bin/render's options) instead of in-process: an MPI launcher "
+                 "(scripts/mpirun-render.sh) or another build"},
         {"--wall-clock", OPT_FLAG, OPT_DST(e->wall),
          .help =
              "budgets in wall-clock seconds (bin/render --time); default CPU seconds per thread (--cpu-time), which "

@@ -5,6 +5,7 @@
 #define CH6_EQUAL_H
 
 #include "ch6/ch6_claims.h"
+#include "common/proc.h"
 #include <stdbool.h>
 
 #define CH6_MAX_METHODS 16
@@ -29,11 +30,12 @@ struct ch6_run {
 struct ch6_equal {
     /* the command line */
     const char *prog, *scene, *out, *name, *refpath, *res, *source, *command, *scale;
-    char render[4096], extra_s[1024];
+    char render[4096], extra_s[1024]; /* render: --render, or "render" (in-process) */
     int seeds, refspp, blk, threads, minlen, spp, first_seed;
     double T, ckpt_every;
     bool reuse, wall;
     /* derived */
+    struct proc_prog renderer; /* how a run executes (common/proc.h) */
     char *extra_argv[CH6_MAX_ARGS], extra_buf[1024];
     int extra_c;
     struct ch6_method ms[CH6_MAX_METHODS];

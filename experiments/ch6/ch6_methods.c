@@ -14,17 +14,17 @@ static void split_args(char *s, char **argv, int *argc, int cap)
         if (*argc < cap) argv[(*argc)++] = tok;
 }
 
-/* bin/render [method args] --help exits 0 when it accepts them */
-static bool probe(const char *render, const struct ch6_method *m)
+/* render [method args] --help exits 0 when it accepts them (in a child: --help exits) */
+static bool probe(const struct ch6_equal *e, const struct ch6_method *m)
 {
     char *pv[CH6_MAX_ARGS + 4];
     int pc = 0;
-    pv[pc++] = (char *)render;
+    pv[pc++] = (char *)e->render;
     for (int k = 0; k < m->argc; k++)
         pv[pc++] = m->argv[k];
     pv[pc++] = "--help";
     pv[pc] = NULL;
-    return proc_run(pv, NULL) == 0;
+    return proc_probe(&e->renderer, pv) == 0;
 }
 
 void ch6_methods_parse(struct ch6_equal *e, const char *methods)
@@ -45,7 +45,7 @@ void ch6_methods_parse(struct ch6_equal *e, const char *methods)
         }
         snprintf(m->name, sizeof m->name, "%s", item);
         if (!*m->name || m->argc == 0) opts_fail(e->prog, "--methods: empty item in '%s'", methods);
-        m->available = probe(e->render, m);
+        m->available = probe(e, m);
         if (!m->available)
             fprintf(stderr, "%s: %s: %s does not accept '%s'; skipped\n", e->prog, m->name, e->render,
                     eq ? eq + 1 : item);

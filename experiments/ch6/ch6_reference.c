@@ -1,11 +1,13 @@
 /* bin/ch6_equal's BDPT reference (ch6_equal.h): cached by common/refcache.h's rule, keyed by the
- * scene file's content and the settings that change its pixels (samples per pixel, seed, shortest
- * length, resolution), rendered by bin/render like the runs. */
+ * scene's content (its file, meshes and textures: ckpt_scene_hash) and the settings that change its
+ * pixels (samples per pixel, seed, shortest length, resolution), rendered like the runs. */
 #include "ch6/ch6_equal.h"
 #include "common/die.h"
 #include "common/proc.h"
 #include "common/refcache.h"
 #include "io/image.h"
+#include "path/scene_ready.h"
+#include "scene/scene_hash.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -13,7 +15,7 @@
 
 #define REF_SEED "12345"
 
-/* refcache_render_fn: bin/render --method bdpt into path. Rendered under another name and renamed
+/* refcache_render_fn: render --method bdpt into path. Rendered under another name and renamed
  * when complete: an interrupted render writes a partial image, which must never pass for the
  * cached reference. */
 static struct image *render_reference(void *ctx, const char *path, char *err, size_t errlen)
@@ -27,7 +29,7 @@ static struct image *render_reference(void *ctx, const char *path, char *err, si
                     "--threads", e->thr,           "--quiet",  "--min-length", e->minlen_s, "--out", part};
     int c = 15;
     if (e->res) rv[c++] = "--resolution", rv[c++] = (char *)e->res;
-    if (proc_render_resumable(e->prog, rv, c, part, e->ckpt_every, NULL) != 0)
+    if (proc_render_resumable(e->prog, &e->renderer, rv, c, part, e->ckpt_every, NULL) != 0)
         die(DIE_RUNTIME, e->prog, "the reference render failed: %s", path);
     snprintf(exr, sizeof exr, "%s.exr", part);
     if (rename(exr, path) != 0) die(DIE_RUNTIME, e->prog, "cannot rename the reference into place: %s", path);
@@ -49,8 +51,10 @@ void ch6_reference(struct ch6_equal *e)
         snprintf(settings, sizeof settings, "bdpt spp=%d seed=%s min_length=%d resolution=%s", e->refspp, REF_SEED,
                  e->minlen, e->res ? e->res : "native");
         struct refcache rc = {.path = e->refpath, .settings = settings};
-        rc.scene_hash = refcache_file_hash(e->scene, err, sizeof err);
-        if (!rc.scene_hash) die(DIE_USAGE, e->prog, "%s", err);
+        struct scene *sc = scene_load(e->scene, err, sizeof err);
+        if (!sc) die(DIE_USAGE, e->prog, "%s", err);
+        rc.scene_hash = ckpt_scene_hash(sc);
+        scene_free(sc);
         e->ref = refcache_get(&rc, render_reference, e, err, sizeof err);
         if (!e->ref) die(DIE_RUNTIME, e->prog, "%s", err);
     }

@@ -1,5 +1,5 @@
 /* bin/ch6_equal's runs (ch6_equal.h): for each seed, budget and method (interleaved, common/runner.h)
- * one bin/render subprocess, checkpointed and resumable (common/proc.h); its image against the
+ * one bin/render command line, run in-process, checkpointed and resumable (common/proc.h); its image against the
  * reference and its statistics CSV read by column name and metadata key (common/csv_read.h). */
 #include "base/util.h"
 #include "ch6/ch6_equal.h"
@@ -130,7 +130,7 @@ static void render_run(struct ch6_equal *e, const struct ch6_method *m, const ch
         e->reuse ? !access(exr, R_OK) && !access(csvp, R_OK) : e->ckpt_every > 0 && run_complete(exr, csvp, e->scene);
     fprintf(stderr, "%s: %s %s seed %d, %g %s%s\n", e->prog, e->name, m->name, seed, budget,
             e->spp > 0 ? "mutations per pixel" : "s", keep ? " (kept from an earlier run)" : "");
-    if (!keep && proc_render_resumable(e->prog, rv, c, prefix, e->ckpt_every, log) != 0)
+    if (!keep && proc_render_resumable(e->prog, &e->renderer, rv, c, prefix, e->ckpt_every, log) != 0)
         die(DIE_RUNTIME, e->prog, "a render failed; see %s", log);
     if (keep && e->ckpt_every > 0) {
         /* an interrupt between the render's end and our removal of its checkpoint leaves one

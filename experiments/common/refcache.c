@@ -9,21 +9,6 @@
 #include <string.h>
 #include <unistd.h>
 
-uint64_t refcache_file_hash(const char *path, char *err, size_t errlen)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "cannot read %s", path);
-        return 0;
-    }
-    uint64_t h = hash64(0, "refcache", 8);
-    char buf[65536];
-    for (size_t n; (n = fread(buf, 1, sizeof buf, f)) > 0;)
-        h = hash64(h, buf, n);
-    fclose(f);
-    return h;
-}
-
 void refcache_key(const struct refcache *rc, char *key, size_t n)
 {
     snprintf(key, n, "reference-v1 scene=%016llx %s\n", (unsigned long long)rc->scene_hash, rc->settings);

@@ -5,13 +5,12 @@
  * only after the image, so an interrupted render never leaves a key over a stale image.
  *
  *   struct refcache rc = {.path = "results/reference/ajar-bdpt-native-min3-256.exr",
- *                         .scene_hash = refcache_file_hash("scenes/ajar/scene.json"),
+ *                         .scene_hash = ckpt_scene_hash(sc),
  *                         .settings = "bdpt spp=256 seed=12345 min_length=3 resolution=native"};
  *   struct image *ref = refcache_get(&rc, render_it, ctx, err, sizeof err);
  *
- * scene_hash: refcache_file_hash of the scene file (its text: what a tool that renders through a
- * subprocess knows), or scene/scene_hash.h's ckpt_scene_hash of the loaded scene (which covers its
- * meshes and textures too: what an in-process tool should use). */
+ * scene_hash: scene/scene_hash.h's ckpt_scene_hash of the loaded scene, which covers its meshes and
+ * textures too (a checkpoint's scene identity is the same hash). */
 #ifndef REFCACHE_H
 #define REFCACHE_H
 
@@ -31,8 +30,6 @@ struct refcache {
  * and rename it into place); returns the image, or NULL with a message in err. */
 typedef struct image *(*refcache_render_fn)(void *ctx, const char *path, char *err, size_t errlen);
 
-/* A hash of a file's bytes (0 with a message in err when it cannot be read). */
-uint64_t refcache_file_hash(const char *path, char *err, size_t errlen);
 /* The key text of rc, one line ending in '\n'. */
 void refcache_key(const struct refcache *rc, char *key, size_t n);
 /* The key file's path (PATH with .key for .exr, else PATH.key). */

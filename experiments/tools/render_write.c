@@ -1,0 +1,127 @@
+/* bin/render's outputs beyond the image (render_write.h): PREFIX.csv, PREFIX.angle.*, PREFIX.tech.*. */
+#include "tools/render_write.h"
+#include "common/csv_meta.h"
+#include "mc/bdpt_tech.h"
+#include "mc/render.h"
+#include "io/image.h"
+#include "base/dist.h"
+#include "base/util.h"
+#include "tools/mlt_cli.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The metadata lines every CSV of a run opens with: "# render SCENE --method M EXTRA", the commit
+ * and the seed. */
+static void meta_head(FILE *f, const struct render_args *a, const char *extra)
+{
+    csv_meta(f, "render", "%s --method %s%s", a->scene, a->method, extra);
+    csv_meta_commit(f);
+    csv_meta(f, "seed", "%llu", (unsigned long long)a->mlt.seed);
+}
+
+/* PREFIX.angle.exr (mean angle change per pixel, radians) and PREFIX.angle.csv (per length). */
+bool render_write_angle(const struct render_args *a, const struct mlt_result *r, char *err, size_t errlen)
+{
+    char path[4096], extra[64], *buf = NULL;
+    size_t len = 0;
+    struct image *im = angle_acc_image(r->angle);
+    snprintf(path, sizeof path, "%s.angle.exr", a->out);
+    bool ok = img_write_exr(im, 1.0, path, err, errlen);
+    img_destroy(im);
+    FILE *f = open_memstream(&buf, &len);
+    snprintf(extra, sizeof extra, " --small-step %s", render_small_step_name(a->mlt.small_step));
+    meta_head(f, a, extra);
+    csv_meta(f, "skipped_steps", "%ld", r->angle->skipped);
+    angle_acc_write_csv(f, r->angle);
+    fclose(f);
+    snprintf(path, sizeof path, "%s.angle.csv", a->out);
+    ok = ok && write_text_atomic(path, buf, err, errlen);
+    free(buf);
+    return ok;
+}
+
+/* The header of PREFIX.tech.csv: the run's metadata lines, then `# NAME COUNT` (mutations or spp)
+ * and `# seconds`. Caller frees. */
+static char *tech_head(const struct render_args *a, const char *name, long count, double seconds)
+{
+    char extra[64], *head = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&head, &len);
+    snprintf(extra, sizeof extra, " --technique-images %d", a->mlt.technique_k);
+    meta_head(f, a, extra);
+    csv_meta(f, name, "%ld", count);
+    csv_meta(f, "seconds", "%.3f", seconds);
+    fclose(f);
+    return head;
+}
+
+/* The per-technique images and PREFIX.tech.csv of pssmlt and mmlt (core/stats/tech_image.h). */
+bool render_write_tech(const struct render_args *a, const struct mlt_result *r, char *err, size_t errlen)
+{
+    char *head = tech_head(a, "mutations", r->mutations, r->seconds);
+    bool ok = tech_acc_write(r->tech, a->out, head, err, errlen);
+    free(head);
+    return ok;
+}
+
+/* BDPT's (core/mc/bdpt_tech.h). */
+bool render_write_bdpt_tech(const struct render_args *a, const struct render_stats *st, const struct image *img, char *err,
+                            size_t errlen)
+{
+    char *head = tech_head(a, "spp", st->spp, st->seconds);
+    bool ok = bdpt_tech_write(st->tech, st->spp, img, a->out, head, err, errlen);
+    free(head);
+    return ok;
+}
+
+bool render_write_csv(const struct render_args *a, const struct mlt_result *r, char *err, size_t errlen)
+{
+    const struct mlt_opts *m = &a->mlt;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    meta_head(f, a, "");
+    csv_meta(f, "threads", "%d", m->threads);
+    csv_meta(f, "max_length", "%d", m->max_length);
+    if (dist_size() > 1) csv_meta(f, "ranks", "%d", dist_size()); /* threads are per rank */
+    mlt_cli_csv(f, m, MLT_CSV_BEFORE_COUNTS);                     /* the options (core/mcmc/mlt_options.c) */
+    if (m->small_step != SMALL_STEP_PSS) {
+        csv_meta(f, "controlled_failed_forward", "%ld", r->ctrl_fail_forward);
+        csv_meta(f, "controlled_failed_reverse", "%ld", r->ctrl_fail_reverse);
+    }
+    mlt_cli_csv(f, m, MLT_CSV_AFTER_COUNTS);
+    if (r->partial) csv_meta(f, NULL, "PARTIAL: interrupted after %ld mutations", r->mutations);
+    csv_meta(f, "mutations", "%ld", r->mutations);
+    csv_meta(f, "seconds", "%.3f", r->seconds);
+    csv_meta(f, "clock", "%s", m->cpu_time ? "cpu seconds per thread" : "wall");
+    csv_meta(f, "seed_seconds", "%.3f", r->seed_seconds);
+    csv_meta(f, "mutations_per_second", "%.0f", r->mutations / r->seconds);
+    csv_meta(f, "nonfinite", "%ld", r->nonfinite);
+    fputs("# nonfinite_by_length ", f); /* lengths 0..max_length; 0: sums over lengths (path/splat.h) */
+    for (int k = 0; k <= m->max_length; k++)
+        fprintf(f, k ? ",%ld" : "%ld", r->stats.nonfinite.len[k]);
+    fputc('\n', f);
+    if (m->method == MLT_PITP) {
+        const struct accept_cell *pc = &r->stats.total[PROPOSAL_PITP];
+        csv_meta(f, "pitp_perturbations", "%ld", pc->attempts);
+        csv_meta(f, "pitp_failures", "%ld", pc->failed);
+        csv_meta(f, "pitp_failure_fraction", "%.9g", pc->attempts ? (double)pc->failed / pc->attempts : 0.0);
+    }
+    /* MMLT paper §5: PSSMLT evaluates every connection of a sample, MMLT one per proposal */
+    csv_meta(f, "connections_evaluated", "%ld", r->stats.conn_tried);
+    csv_meta(f, "connections_nonzero", "%ld", r->stats.conn_nonzero);
+    csv_meta(f, "b", "%.9g", r->b);
+    csv_meta(f, "b_rse", "%.6g", r->b_rse);
+    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++)
+        csv_meta(f, NULL, "b_%d %.9g", k, r->b_k[k]);
+    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++)
+        csv_meta(f, NULL, "b_rse_%d %.6g", k, r->b_k_rse[k]);
+    stats_write_csv(f, a->method, &r->stats, true);
+    fclose(f);
+    char path[4096];
+    snprintf(path, sizeof path, "%s.csv", a->out);
+    bool ok = write_text_atomic(path, buf, err, errlen);
+    free(buf);
+    return ok;
+}
