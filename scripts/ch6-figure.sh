@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
 # Chapter-6 figures from a bin/ch6_equal folder (make fig6.2 ... fig6.7).
-# usage: ch6-figure.sh insets|full DIR OUT.png X,Y,W,H X,Y,W,H
+# usage: ch6-figure.sh insets|full DIR OUT.png [X,Y,W,H X,Y,W,H]
 #   insets: top row the reference with the two rectangles (red, yellow) and every method's image;
 #           below, the first and the second inset of each (nearest-pixel enlargement), labelled.
 #   full:   the reference and every method's full image side by side, labelled.
+#   The insets default to DIR/summary.csv's `# insets` line (bin/ch6_equal --insets, or its scale's).
 # The methods are those of DIR/summary.csv (in its order; a skipped method has no row there).
 set -euo pipefail
-[ $# -eq 5 ] || { echo "usage: ch6-figure.sh insets|full DIR OUT.png X,Y,W,H X,Y,W,H" >&2; exit 2; }
+[ $# -eq 3 ] || [ $# -eq 5 ] || { echo "usage: ch6-figure.sh insets|full DIR OUT.png [X,Y,W,H X,Y,W,H]" >&2; exit 2; }
 mode=$1 dir=$2 out=$3
 [ -f "$dir/summary.csv" ] && [ -f "$dir/reference.png" ] || { echo "ch6-figure: $dir has no summary.csv or reference.png (run bin/ch6_equal)" >&2; exit 2; }
+if [ $# -eq 3 ]; then
+  read -r -a insets < <(sed -n 's/^# insets //p' "$dir/summary.csv")
+  [ "$mode" = full ] || [ ${#insets[@]} -eq 2 ] || { echo "ch6-figure: $dir/summary.csv has no '# insets' line; give X,Y,W,H X,Y,W,H" >&2; exit 2; }
+  set -- "$1" "$2" "$3" "${insets[@]}"
+fi
 here=$(cd "$(dirname "$0")" && pwd)
 methods=$(awk -F, "$(cat "$here/csv-col.awk")"'!/^#/ && !seen[get("method")]++ { print get("method") }' "$dir/summary.csv")
 read -r W H < <(oiiotool --info "$dir/reference.png" | awk '{for (i = 1; i < NF; i++) if ($(i + 1) == "x") {sub(",", "", $(i + 2)); print $i, $(i + 2); exit}}')

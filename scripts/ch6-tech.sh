@@ -9,11 +9,23 @@
 #                                 own contribution images are its counts times a constant);
 #   OUTDIR/technique-images.png   seed 1: rows MMLT contribution, MMLT samples, PSSMLT contribution,
 #                                 PSSMLT samples; one column per technique, labelled (s, t).
-# usage: ch6-tech.sh BINDIR SCENE K SEEDS OUTDIR [bin/render options...]   (BINDIR holds render, ch6_tech)
+# usage: ch6-tech.sh BINDIR SCENE K SEEDS OUTDIR [--scale quick|full|paper] [bin/render options...]
+#   (BINDIR holds render, ch6_tech). The scales, this figure's only table of them: each run renders
+#   8 s (quick, full) or 120 s (paper); without --scale the options must give the budget.
 set -euo pipefail
-[ $# -ge 5 ] || { echo "usage: ch6-tech.sh BINDIR SCENE K SEEDS OUTDIR [bin/render options...]" >&2; exit 2; }
+usage="usage: ch6-tech.sh BINDIR SCENE K SEEDS OUTDIR [--scale quick|full|paper] [bin/render options...]"
+[ $# -ge 5 ] || { echo "$usage" >&2; exit 2; }
 render=$1/render tool=$1/ch6_tech scene=$2 k=$3 seeds=$4 out=$5
 shift 5
+if [ "${1:-}" = --scale ]; then
+  case "${2:-}" in
+    quick | full) budget=(--time 8) ;;
+    paper) budget=(--time 120) ;;
+    *) echo "ch6-tech: --scale must be quick, full or paper, got '${2:-}'" >&2; exit 2 ;;
+  esac
+  shift 2
+  set -- "${budget[@]}" "$@"
+fi
 [ -x "$render" ] && [ -x "$tool" ] && [ -f "$scene" ] || { echo "ch6-tech: $render or $tool is not executable, or $scene not found" >&2; exit 2; }
 [[ $k =~ ^[1-9][0-9]*$ && $seeds =~ ^[1-9][0-9]*$ ]] && [ "$seeds" -ge 2 ] ||
   { echo "ch6-tech: K must be a positive integer and SEEDS an integer >= 2 (standard errors), got '$k' '$seeds'" >&2; exit 2; }

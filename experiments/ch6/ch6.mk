@@ -30,34 +30,21 @@ ch6-assets: deps $(BIN)/ch6_assets
 	$(BIN)/ch6_assets --wood scenes/staircase/wood.png
 
 # ---- equal-time figures (thesis Figures 6.2-6.7) ----
-# The scales (quick, full, paper: budgets, seeds, shortest path length, reference samples, seed
-# paths, checkpoints) are bin/ch6_equal's own table (`scales` in experiments/ch6/ch6_equal.c, also
-# in its --help): make passes --scale only. Budgets are separate runs with one seed each (no
-# snapshots); the BDPT reference is cached in results/reference/ (common/refcache.h: re-rendered
-# when the scene file or the reference's settings change). The method list defaults to
-# pssmlt,mmlt,pitp; a method bin/render does not know is skipped and named in the table. At full
-# every render checkpoints each minute, so an interrupted `make` continues where it stopped. The
-# resolutions and insets below are the scenes' (full: twice the quick resolution).
+# Every setting of a scale (budgets, seeds, shortest path length, reference samples, seed paths,
+# checkpoints, each scene's resolution and insets) is bin/ch6_equal's own table
+# (experiments/ch6/ch6_scales.c, also in its --help): make passes the scene and --scale only; the
+# insets reach scripts/ch6-figure.sh through summary.csv's `# insets` line. Budgets are separate
+# runs with one seed each (no snapshots); the BDPT reference is cached in results/reference/
+# (common/refcache.h: re-rendered when the scene or the reference's settings change). The method
+# list defaults to pssmlt,mmlt,pitp; a method bin/render does not know is skipped and named in the
+# table. At full every render checkpoints each minute, so an interrupted `make` continues where it
+# stopped.
 CH6_METHODS ?= pssmlt,mmlt,pitp
 CH6_OUT := results/ch6-$(SCALE)
-# scene folder, extra tool options (the claims' source and command for claims.csv, which bin/ch6_equal
-# writes with its verdicts), and the two insets (x,y,w,h in pixels) of each scene
+# the claims' source and command for claims.csv, which bin/ch6_equal writes with its verdicts
 CH6_living-room_ARGS := --source 'thesis Figs. 6.2 and 6.5' --command 'make fig6.2 SCALE=$(SCALE)'
 CH6_staircase_ARGS := --source 'thesis Figs. 6.3 and 6.6' --command 'make fig6.3 SCALE=$(SCALE)'
 CH6_ajar_ARGS := --source 'thesis Figs. 6.4 and 6.7' --command 'make fig6.4 SCALE=$(SCALE)'
-ifeq ($(SCALE),full)
-  CH6_living-room_ARGS += --resolution 512x288
-  CH6_staircase_ARGS += --resolution 288x512
-  CH6_ajar_ARGS += --resolution 512x288
-  CH6_living-room_INSETS := 24,100,128,72 100,200,128,72
-  CH6_staircase_INSETS := 112,0,72,128 110,260,72,128
-  CH6_ajar_INSETS := 320,140,128,72 80,120,128,72
-else
-  CH6_ajar_ARGS += --resolution 256x144
-  CH6_living-room_INSETS := 12,50,64,36 50,100,64,36
-  CH6_staircase_INSETS := 56,0,36,64 55,130,36,64
-  CH6_ajar_INSETS := 160,70,64,36 40,60,64,36
-endif
 
 # The tools are order-only: every commit relinks them (version.h), which must not rerun minutes of
 # renders; a changed scene does. `make ch6-clean` reruns everything.
@@ -68,7 +55,7 @@ $(CH6_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/ren
 .PHONY: fig6.2 fig6.3 fig6.4 fig6.5 fig6.6 fig6.7 ch6-clean
 define CH6_FIG
 $(1): deps $(CH6_OUT)/$(2)/summary.csv
-	bash scripts/ch6-figure.sh $(3) $(CH6_OUT)/$(2) $(CH6_OUT)/$(2)/$(1).png $(CH6_$(2)_INSETS)
+	bash scripts/ch6-figure.sh $(3) $(CH6_OUT)/$(2) $(CH6_OUT)/$(2)/$(1).png
 	@echo "$(CH6_OUT)/$(2)/$(1).png; table $(CH6_OUT)/$(2)/$(2).md, error vs time $(CH6_OUT)/$(2)/error-vs-time.png"
 	@cat $(CH6_OUT)/$(2)/$(2).md $(CH6_OUT)/$(2)/claims.md
 endef
@@ -90,17 +77,16 @@ CH6_CHECK_OPTS := --spp 16 --seeds 8 --min-length 3 --reference-spp 256 --render
 CH6_CHECK_OPTS_fig6.2 := $(CH6_CHECK_OPTS)
 CH6_CHECK_OPTS_fig6.3 := $(CH6_CHECK_OPTS)
 CH6_CHECK_OPTS_fig6.4 := $(CH6_CHECK_OPTS) --resolution 256x144
-# $(call CH6_CHECK,TARGET,SCENE): check-TARGET and ch6-baseline-TARGET, bin/ch6_equal with the
-# options CH6_CHECK_OPTS_TARGET (the hybrid study below uses it too)
+# $(call CH6_CHECK,TARGET,SCENE): check-TARGET through the top Makefile's CHECK (bin/ch6_equal with
+# the options CH6_CHECK_OPTS_TARGET, seeds from 101; stats.csv), and ch6-baseline-TARGET, the same
+# from seed 1 into results/baselines/TARGET/stats.csv (the hybrid study below uses it too)
 define CH6_CHECK
-.PHONY: check-$(1)
-check-$(1): deps $$(BIN)/ch6_equal $$(BIN)/render $$(CHECK_STATS)
-	$$(BIN)/ch6_equal --scene scenes/$(2)/scene.json --out results/check-$(1) --first-seed 101 $$(CH6_CHECK_OPTS_$(1)) >/dev/null
-	$$(CHECK_STATS) --key scene,method,statistic --count seeds --alpha 0.01 --out results/check-$(1)/check.md \
-	  results/baselines/$(1)/stats.csv results/check-$(1)/stats.csv
-CHECK_TARGETS += check-$(1)
+CHECK_$(1) := --key scene,method,statistic --count seeds --alpha 0.01
+CHECK_$(1)_CSV := stats.csv
+CHECK_$(1)_RUN := $$(BIN)/ch6_equal --scene scenes/$(2)/scene.json --out results/check-$(1) --first-seed 101 $$(CH6_CHECK_OPTS_$(1)) >/dev/null
+$$(eval $$(call CHECK,$(1),ch6_equal))
 .PHONY: ch6-baseline-$(1)
-ch6-baseline-$(1): deps $$(BIN)/ch6_equal $$(BIN)/render
+ch6-baseline-$(1): deps $$(BIN)/ch6_equal
 	$$(BIN)/ch6_equal --scene scenes/$(2)/scene.json --out results/ch6-baseline/$(1) --first-seed 1 $$(CH6_CHECK_OPTS_$(1)) >/dev/null
 	mkdir -p results/baselines/$(1)
 	mv results/ch6-baseline/$(1)/stats.csv results/baselines/$(1)/stats.csv
@@ -122,16 +108,11 @@ ch6-clean:
 # MMLT paper §5 / Fig. 5: per-technique images of contribution and of sample count for one path
 # length, MMLT vs PSSMLT (scripts/ch6-tech.sh, bin/render --technique-images, bin/ch6_tech): ajar at
 # 256x144 as fig6.4, length k = 4, paths of length >= 3, p_large = 0.1, 4 seeds per method, 8 s
-# each (paper scale: 120 s). Rerun when the scene changes, or by make ch6-clean.
+# each (paper scale: 120 s: the script's own table). Rerun when the scene changes, or by make ch6-clean.
 TECH_K := 4
-ifeq ($(SCALE),paper)
-  TECH_TIME := 120
-else
-  TECH_TIME := 8
-endif
 TECH_OUT := results/mmlt-ratio/technique-k$(TECH_K)-$(SCALE)
 $(TECH_OUT)/tech.md: scenes/ajar/scene.json | deps $(BIN)/render $(BIN)/ch6_tech
-	bash scripts/ch6-tech.sh $(BIN) scenes/ajar/scene.json $(TECH_K) 4 $(TECH_OUT) --resolution 256x144 --min-length 3 --p-large 0.1 --time $(TECH_TIME)
+	bash scripts/ch6-tech.sh $(BIN) scenes/ajar/scene.json $(TECH_K) 4 $(TECH_OUT) --scale $(SCALE) --resolution 256x144 --min-length 3 --p-large 0.1
 
 # The paper's own setting besides: direct lighting included (paths of length >= 2), on ajar (the
 # door scene's counterpart), the three methods at the scale's budget and seeds; no reference (only
@@ -160,17 +141,12 @@ mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary
 
 # ---- thesis §4.3 / §7.1: MMLT large steps vs MCTLS vs hybrid, with small steps (p_large = 0.1) ----
 # Equal time per run, 8 seeds, on ajar and living-room at 128x72 (all path lengths), against cached
-# 256-spp (paper: 16384) BDPT references.
-ifeq ($(SCALE),paper)
-  HYB_OPTS := --time 120 --seeds 8 --reference-spp 16384 --render-args "--p-large 0.1 --seed-paths 1000000"
-else
-  HYB_OPTS := --time 3 --seeds 8 --reference-spp 256 --render-args "--p-large 0.1"
-endif
+# 256-spp (paper: 16384) BDPT references: bin/ch6_equal's scales (--study hybrid).
 HYB_METHODS := mmlt=--method mmlt,mctls=--method mmlt --large-step mctls,hybrid4=--method mmlt --large-step hybrid --hybrid-length 4,hybrid6=--method mmlt --large-step hybrid --hybrid-length 6,hybrid8=--method mmlt --large-step hybrid --hybrid-length 8
 HYB_OUT := results/hybrid-study-$(SCALE)
 
 $(HYB_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(HYB_OUT)/$* --methods '$(HYB_METHODS)' $(HYB_OPTS) --resolution 128x72
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(HYB_OUT)/$* --methods '$(HYB_METHODS)' --study hybrid --scale $(SCALE)
 
 .PHONY: hybrid-study
 hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.csv

@@ -21,9 +21,9 @@
  * OUT/NAME.md (the table and the claims), OUT/reference.png and OUT/<method>.png (first seed, budget
  * T); all atomically.
  *
- * This file is the orchestration: the options and scales, then the parts of ch6_equal.h in order
- * (methods, reference, runs, tables, report). --scale quick|full|paper applies that scale's row of
- * `scales` below as if its options were given first on the command line (later options override
+ * This file is the orchestration: the options, then the parts of ch6_equal.h in order (scales,
+ * methods, reference, runs, tables, report). --scale quick|full|paper applies that scale's rows of
+ * ch6_scales.c as if their options were given first on the command line (later options override
  * them); any other --scale is only a name for claims.csv. */
 #include "ch6/ch6_equal.h"
 #include "base/dist.h"
@@ -39,69 +39,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-
-/* The scales of the make targets, per study (ch6.mk passes --study and --scale only; --help lists
- * them). equal-time, make fig6.2 ... fig6.7: quick: budgets 0.5, 1, 2, 4 s per run, 4 seeds, a
- * 256-spp reference; full: one budget of 60 CPU seconds per thread, 8 seeds, a 4096-spp
- * reference, 1M seed paths, checkpoints each minute (an interrupted make continues); paper: 300 s
- * from 18.75 s, 8 seeds, a 40 000-spp reference and 1M seed paths (the thesis's normalisation);
- * all: paths of length >= 3 only, as the thesis (no direct lighting). ratio, make mmlt-ratio (the
- * MMLT paper's §5 setting, without a reference; the target adds --min-length 2 --reference-spp 0):
- * one budget of 4 s, 60 s or 300 s, 4 or 8 seeds, ajar at 256x144 (full: 512x288). */
-#define MAX_SCALE_ARGS 16
-static const struct {
-    const char *study, *scale;
-    const char *args[MAX_SCALE_ARGS];
-} scales[] = {
-    {"equal-time",
-     "quick",
-     {"--time", "4", "--t0", "0.5", "--seeds", "4", "--min-length", "3", "--reference-spp", "256", "--render-args",
-      "--p-large 0.1"}},
-    {"equal-time",
-     "full",
-     {"--time", "60", "--seeds", "8", "--min-length", "3", "--reference-spp", "4096", "--checkpoint", "60",
-      "--render-args", "--p-large 0.1 --seed-paths 1000000"}},
-    {"equal-time",
-     "paper",
-     {"--time", "300", "--t0", "18.75", "--seeds", "8", "--min-length", "3", "--reference-spp", "40000",
-      "--render-args", "--p-large 0.1 --seed-paths 1000000"}},
-    {"ratio", "quick", {"--time", "4", "--seeds", "4", "--resolution", "256x144", "--render-args", "--p-large 0.1"}},
-    {"ratio",
-     "full",
-     {"--time", "60", "--seeds", "8", "--resolution", "512x288", "--checkpoint", "60", "--render-args",
-      "--p-large 0.1 --seed-paths 1000000"}},
-    {"ratio",
-     "paper",
-     {"--time", "300", "--seeds", "8", "--resolution", "256x144", "--render-args",
-      "--p-large 0.1 --seed-paths 1000000"}},
-};
-
-/* argv with the (--study, --scale) row's options inserted after argv[0] (argv itself when no row
- * matches); the options are found by walking argv as opts_parse will. */
-static char **with_scale(const struct opts_spec *spec, int *argc, char **argv)
-{
-    const char *scale = NULL, *study = "equal-time";
-    for (int i = 1; i < *argc; i++) {
-        const struct opt *o = opts_find(spec, argv[i]);
-        if (!o || o->type == OPT_FLAG) continue;
-        if (!strcmp(o->name, "--scale") && i + 1 < *argc) scale = argv[i + 1];
-        if (!strcmp(o->name, "--study") && i + 1 < *argc) study = argv[i + 1];
-        i++;
-    }
-    for (size_t k = 0; scale && k < sizeof scales / sizeof *scales; k++) {
-        if (strcmp(study, scales[k].study) || strcmp(scale, scales[k].scale)) continue;
-        int n = 0;
-        while (n < MAX_SCALE_ARGS && scales[k].args[n])
-            n++;
-        char **v = xmalloc(sizeof(char *) * (size_t)(*argc + n + 1));
-        v[0] = argv[0];
-        memcpy(v + 1, scales[k].args, sizeof(char *) * (size_t)n);
-        memcpy(v + 1 + n, argv + 1, sizeof(char *) * (size_t)*argc); /* argv[1..argc], NULL included */
-        *argc += n;
-        return v;
-    }
-    return argv;
-}
 
 /* Budgets t0, 2 t0, ... up to T (T last even when not a doubling); with --spp one budget. */
 static void make_budgets(struct ch6_equal *e, double t0)
@@ -136,7 +73,7 @@ static void names(struct ch6_equal *e, char *sname, size_t n)
 /* The command line into e; returns the --methods text. */
 static const char *parse(struct ch6_equal *e, int argc, char **argv)
 {
-    static const char *const studies[] = {"equal-time", "ratio", NULL};
+    static const char *const studies[] = {"equal-time", "ratio", "hybrid", NULL};
     const char *methods, *extra, *render = NULL, *res = NULL;
     double t0 = -1;
     int study;
@@ -189,20 +126,24 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
         {"--command", OPT_STRING, OPT_DST(e->command), .arg = "TEXT", .def = "bin/ch6_equal",
          .help = "the command that reproduces this run, for claims.csv"},
         {"--scale", OPT_STRING, OPT_DST(e->scale), .arg = "NAME", .def = "custom",
-         .help = "quick, full or paper: the study's budgets, seeds, lengths and reference at that scale, as if given "
-                 "first (options given override them; ch6_equal.c's table `scales`); any other NAME only names the "
-                 "scale in claims.csv"},
+         .help = "quick, full or paper: the study's budgets, seeds, lengths, reference, resolution and insets at that "
+                 "scale for this scene, as if given first (options given override them; the table of ch6_scales.c); "
+                 "any other NAME only names the scale in claims.csv"},
         {"--study", OPT_CHOICE, OPT_DST(study), .choices = studies, .def = "equal-time",
-         .help = "whose scales --scale applies: equal-time (make fig6.2-6.7) or ratio (make mmlt-ratio)"},
+         .help = "whose scales --scale applies: equal-time (make fig6.2-6.7), ratio (make mmlt-ratio) or hybrid (make "
+                 "hybrid-study)"},
         {"--checkpoint", OPT_DOUBLE, OPT_DST(e->ckpt_every), .arg = "S", .lo = 0, .hi = 1e6, .def = "0",
          .help = "every render (reference too) checkpoints every S seconds, and a rerun after an interruption keeps "
                  "the completed runs and resumes the interrupted one (0: off)"},
+        {"--insets", OPT_STRING, OPT_DST(e->insets), .arg = "'X,Y,W,H X,Y,W,H'",
+         .help = "the figure's two inset rectangles in pixels, recorded in summary.csv for scripts/ch6-figure.sh "
+                 "(default: the scale's, for the chapter-6 scenes)"},
         {"--reuse", OPT_FLAG, OPT_DST(e->reuse),
          .help = "keep the run files already in OUT/runs (same names) instead of rendering"},
         {0}};
     const struct opts_spec spec = {
         .prog = e->prog, .usage = "usage: ch6_equal --scene FILE --out DIR [options]\n", .opts = opts};
-    char **args = with_scale(&spec, &argc, argv);
+    char **args = ch6_with_scale(&spec, &argc, argv);
     opts_parse(&spec, argc, args);
     if (args != argv) free(args);
     e->res = res;

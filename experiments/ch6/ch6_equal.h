@@ -29,7 +29,7 @@ struct ch6_run {
 
 struct ch6_equal {
     /* the command line */
-    const char *prog, *scene, *out, *name, *refpath, *res, *source, *command, *scale;
+    const char *prog, *scene, *out, *name, *refpath, *res, *source, *command, *scale, *insets;
     char render[4096], extra_s[1024]; /* render: --render, or "render" (in-process) */
     int seeds, refspp, blk, threads, minlen, spp, first_seed;
     double T, ckpt_every;
@@ -53,6 +53,11 @@ struct ch6_equal {
     double sum[CH6_MAX_METHODS][Q_COUNT][2];
 };
 
+struct opts_spec;
+/* ch6_scales.c: argv with the rows of the (--study, --scale, scene) options inserted after argv[0]
+ * (argv itself when none match; the caller frees another); the options are found by walking argv as
+ * opts_parse will. */
+char **ch6_with_scale(const struct opts_spec *spec, int *argc, char **argv);
 /* ch6_methods.c: the --methods list parsed into e->ms and probed (bin/render M --help), the
  * --render-args split. */
 void ch6_methods_parse(struct ch6_equal *e, const char *methods);

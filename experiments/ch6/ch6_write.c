@@ -128,6 +128,7 @@ static void write_summary(struct ch6_equal *e)
     struct table t;
     FILE *f = table_open(&t, summary_cols);
     csv_meta(f, NULL, "mean +- standard error over %d seeds", e->seeds);
+    if (e->insets) csv_meta(f, "insets", "%s", e->insets); /* for scripts/ch6-figure.sh */
     for (int mi = 0; mi < e->nm; mi++)
         for (int bi = 0; e->ms[mi].available && bi < e->nb; bi++) {
             struct summary_row row = {e->name, e->ms[mi].name, e->budgets[bi], e->seeds, {0}, {0}};

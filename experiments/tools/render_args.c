@@ -141,7 +141,6 @@ void render_args_parse(int argc, char **argv, struct render_args *a)
     mlt_cli_warn_unused(&spec, a->method, argc, argv);
 }
 
-
 /* What the MCMC methods take from the shared options and the scene. */
 void render_args_mlt_setup(struct mlt_opts *m, const struct render_args *a, const struct scene *sc)
 {

@@ -237,8 +237,9 @@ int render_run(int argc, char **argv)
         rc = 2;
     else {
         interrupt_install();
-        rc = strcmp(a.method, "pt") && strcmp(a.method, "bdpt") ? run_mcmc(&a, sc, &k.ctl, &ok, &partial, err, sizeof err)
-                                                               : run_mc(&a, sc, &k.ctl, &ok, &partial, err, sizeof err);
+        rc = strcmp(a.method, "pt") && strcmp(a.method, "bdpt")
+                 ? run_mcmc(&a, sc, &k.ctl, &ok, &partial, err, sizeof err)
+                 : run_mc(&a, sc, &k.ctl, &ok, &partial, err, sizeof err);
     }
     ckpt_buf_free(&k.resume);
     scene_free(sc);

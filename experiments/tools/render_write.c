@@ -1,11 +1,11 @@
 /* bin/render's outputs beyond the image (render_write.h): PREFIX.csv, PREFIX.angle.*, PREFIX.tech.*. */
 #include "tools/render_write.h"
-#include "common/csv_meta.h"
-#include "mc/bdpt_tech.h"
-#include "mc/render.h"
-#include "io/image.h"
 #include "base/dist.h"
 #include "base/util.h"
+#include "common/csv_meta.h"
+#include "io/image.h"
+#include "mc/bdpt_tech.h"
+#include "mc/render.h"
 #include "tools/mlt_cli.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -66,8 +66,8 @@ bool render_write_tech(const struct render_args *a, const struct mlt_result *r, 
 }
 
 /* BDPT's (core/mc/bdpt_tech.h). */
-bool render_write_bdpt_tech(const struct render_args *a, const struct render_stats *st, const struct image *img, char *err,
-                            size_t errlen)
+bool render_write_bdpt_tech(const struct render_args *a, const struct render_stats *st, const struct image *img,
+                            char *err, size_t errlen)
 {
     char *head = tech_head(a, "spp", st->spp, st->seconds);
     bool ok = bdpt_tech_write(st->tech, st->spp, img, a->out, head, err, errlen);
