@@ -229,8 +229,7 @@ int render_run(int argc, char **argv)
     struct scene *sc = load(&a, &rc);
     if (!sc) return rc;
     render_args_mlt_setup(&a.mlt, &a, sc);
-    static struct ckpt_setup k; /* large; a run at a time */
-    memset(&k, 0, sizeof k);
+    struct ckpt_setup k = {0};
     char err[1024];
     bool ok = false, partial = false;
     if (!arm_checkpoint(&a, sc, &k))

@@ -220,7 +220,7 @@ Test(mpi, bad_input_one_line_exit_2)
 }
 
 /* A tool that does not split its work refuses mpirun with one line: bin/bench at its first render,
- * bin/ch6_equal (which starts renderer processes) at once. */
+ * bin/ch6_equal (one process running its renders in turn) at once. */
 Test(mpi, tools_not_rank_aware_refuse)
 {
     const char *tools[] = {BIN_DIR "/bench --runs 1 --seconds 0.05",
