@@ -18,6 +18,7 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "ch4/ch4_common.h"
+#include "ch4/ch4_tables.h"
 #include "ch4/fig4_5_trials.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
@@ -201,14 +202,76 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     return claims_finish(&cl, out, err, errlen);
 }
 
+/* A row of OUT/fig4.5.csv: one variant's large steps of one length. */
+struct accept_row {
+    const char *method;
+    int length;
+    long attempts;
+    double mean_accept, se, accepted_fraction, seconds;
+};
+static const struct column accept_cols[] = {COL_STRING(struct accept_row, "method", method),
+                                            COL_INT(struct accept_row, "length", "%d", length),
+                                            COL_LONG(struct accept_row, "attempts", "%ld", attempts),
+                                            COL_DOUBLE(struct accept_row, "mean_accept", "%.9g", mean_accept),
+                                            COL_DOUBLE(struct accept_row, "stderr", "%.9g", se),
+                                            COL_DOUBLE(struct accept_row, "accepted_fraction", "%.9g", accepted_fraction),
+                                            COL_DOUBLE(struct accept_row, "seconds", "%.4f", seconds),
+                                            {0}};
+/* A row of OUT/fig4.5-ratios.csv. */
+struct ratio_row {
+    const char *ratio;
+    int length;
+    double value, se;
+};
+static const struct column ratio_cols[] = {COL_STRING(struct ratio_row, "ratio", ratio),
+                                           COL_INT(struct ratio_row, "length", "%d", length),
+                                           COL_DOUBLE(struct ratio_row, "value", "%.6g", value),
+                                           COL_DOUBLE(struct ratio_row, "se", "%.3g", se),
+                                           {0}};
+
+/* Variant m's chain over all lengths: its rows of OUT/fig4.5.csv, its acceptances into tab. */
+static bool run_variant(const struct opts_accept *a, const struct scene *sc, int m, struct table *out,
+                        struct accept_table *tab, char *err, size_t errlen)
+{
+    int K = a->max_length;
+    const struct variant *va = &variants[m];
+    struct mlt_opts o = {.method = MLT_MMLT,
+                         .p_large = 1,
+                         .mutations = a->mutations,
+                         .seed_paths = a->fig.paper ? 1000000 : 100000,
+                         .seed = a->fig.seed,
+                         .threads = a->fig.threads,
+                         .max_length = K,
+                         .progress = isatty(2),
+                         .large_step = va->step,
+                         .mctls_tries = va->tries,
+                         .mctls_count_t0 = va->t0,
+                         .uniform_lengths = true,
+                         .time_proposals = true};
+    pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+    fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", va->name, a->mutations, K);
+    struct mlt_result r;
+    if (!mlt_render(sc, &o, &r, err, errlen)) return false;
+    enum proposal_kind kind = va->step == LARGE_MMLT ? PROPOSAL_LARGE : PROPOSAL_MCTLS;
+    for (int k = 1; k <= K; k++) {
+        /* both technique outcomes together: the figure plots all large steps of a length */
+        const struct accept_cell *c = &r.stats.any[kind][k];
+        if (!c->attempts) continue;
+        table_row(out, &(struct accept_row){va->name, k, c->attempts, cell_mean(c), cell_stderr(c),
+                                            (double)c->accepted / c->attempts, c->seconds});
+        tab->mean[m][k] = cell_mean(c), tab->se[m][k] = cell_stderr(c);
+        tab->nonzero[m][k] = (double)c->nonzero / c->attempts, tab->attempts[m][k] = c->attempts;
+    }
+    mlt_result_free(&r);
+    return true;
+}
+
 /* Every variant's chain over all lengths: OUT/fig4.5.csv, and its acceptances into tab. */
 static bool run_variants(const struct opts_accept *a, const struct scene *sc, struct accept_table *tab, char *err,
                          size_t errlen)
 {
-    int K = a->max_length;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
+    struct ch4_tables tb;
+    FILE *f = ch4_tables_open_one(&tb, "fig4.5.csv", accept_cols);
     csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets",
                   a->fig.scene, a->fig.scale);
     csv_meta(f, NULL,
@@ -217,65 +280,40 @@ static bool run_variants(const struct opts_accept *a, const struct scene *sc, st
     csv_meta(f, "seed", "%llu", (unsigned long long)a->fig.seed);
     csv_meta(f, "threads", "%d", a->fig.threads);
     csv_meta(f, "mutations_per_method", "%ld", a->mutations);
-    fprintf(f, "method,length,attempts,mean_accept,stderr,accepted_fraction,seconds\n");
-    for (int m = 0; m < NV; m++) {
-        const struct variant *va = &variants[m];
-        struct mlt_opts o = {.method = MLT_MMLT,
-                             .p_large = 1,
-                             .mutations = a->mutations,
-                             .seed_paths = a->fig.paper ? 1000000 : 100000,
-                             .seed = a->fig.seed,
-                             .threads = a->fig.threads,
-                             .max_length = K,
-                             .progress = isatty(2),
-                             .large_step = va->step,
-                             .mctls_tries = va->tries,
-                             .mctls_count_t0 = va->t0,
-                             .uniform_lengths = true,
-                             .time_proposals = true};
-        pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
-        fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", va->name, a->mutations, K);
-        struct mlt_result r;
-        if (!mlt_render(sc, &o, &r, err, errlen)) {
-            fclose(f);
-            free(buf);
+    table_header(&tb.t[0]);
+    for (int m = 0; m < NV; m++)
+        if (!run_variant(a, sc, m, &tb.t[0], tab, err, errlen)) {
+            text_out_free(&tb.t[0].out);
             return false;
         }
-        enum proposal_kind kind = va->step == LARGE_MMLT ? PROPOSAL_LARGE : PROPOSAL_MCTLS;
+    return ch4_tables_save(&tb, "fig4_5", a->fig.out, err, errlen);
+}
+
+/* The ratio rows of OUT/fig4.5-ratios.csv whose shape the figure is about. */
+static void write_ratio_rows(int K, const struct accept_table *tab, struct table *out)
+{
+    const int pairs[][2] = {
+        {V_MCTLS, V_MMLT}, {V_MCTLS, V_TRIES1_T0}, {V_TRIES1, V_MMLT}, {V_TRIES2, V_MMLT}, {V_TRIES4, V_MMLT}};
+    char name[128];
+    for (size_t p = 0; p < sizeof pairs / sizeof *pairs; p++)
         for (int k = 1; k <= K; k++) {
-            /* both technique outcomes together: the figure plots all large steps of a length */
-            const struct accept_cell *c = &r.stats.any[kind][k];
-            if (!c->attempts) continue;
-            fprintf(f, "%s,%d,%ld,%.9g,%.9g,%.9g,%.4f\n", va->name, k, c->attempts, cell_mean(c), cell_stderr(c),
-                    (double)c->accepted / c->attempts, c->seconds);
-            tab->mean[m][k] = cell_mean(c), tab->se[m][k] = cell_stderr(c);
-            tab->nonzero[m][k] = (double)c->nonzero / c->attempts, tab->attempts[m][k] = c->attempts;
+            if (!(tab->mean[pairs[p][0]][k] > 0 && tab->mean[pairs[p][1]][k] > 0)) continue;
+            struct ratio_row row = {.ratio = name, .length = k};
+            ratio_of(tab, pairs[p][0], pairs[p][1], k, &row.value, &row.se);
+            snprintf(name, sizeof name, "%s/%s", variants[pairs[p][0]].name, variants[pairs[p][1]].name);
+            table_row(out, &row);
         }
-        mlt_result_free(&r);
-    }
-    fclose(f);
-    return ch4_write_texts("fig4_5", a->fig.out, 1, (const char *[]){"fig4.5.csv"}, &buf, err, errlen);
 }
 
 /* OUT/fig4.5-ratios.csv: the ratios whose shape the figure is about, with first-order standard errors. */
 static bool write_ratios(const struct opts_accept *a, const struct accept_table *tab, char *err, size_t errlen)
 {
     int K = a->max_length;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
+    struct ch4_tables tb;
+    FILE *f = ch4_tables_open_one(&tb, "fig4.5-ratios.csv", ratio_cols);
     csv_meta_head(f, "fig4.5: acceptance ratios per length (first-order standard errors from the batch-means errors)",
                   a->fig.scene, a->fig.scale);
-    fprintf(f, "ratio,length,value,se\n");
-    const int pairs[][2] = {
-        {V_MCTLS, V_MMLT}, {V_MCTLS, V_TRIES1_T0}, {V_TRIES1, V_MMLT}, {V_TRIES2, V_MMLT}, {V_TRIES4, V_MMLT}};
-    for (size_t p = 0; p < sizeof pairs / sizeof *pairs; p++)
-        for (int k = 1; k <= K; k++) {
-            if (!(tab->mean[pairs[p][0]][k] > 0 && tab->mean[pairs[p][1]][k] > 0)) continue;
-            double r, rse;
-            ratio_of(tab, pairs[p][0], pairs[p][1], k, &r, &rse);
-            fprintf(f, "%s/%s,%d,%.6g,%.3g\n", variants[pairs[p][0]].name, variants[pairs[p][1]].name, k, r, rse);
-        }
+    write_ratio_rows(K, tab, &tb.t[0]);
     /* How many techniques carry light for a pair of subpaths that has any: a large step's proposal
      * is independent of the state, so both shares are binomial; an MMLT large step has a
      * contribution with probability E[n] / (k + 1) and MCTLS's trials with P(n > 0), so
@@ -285,16 +323,15 @@ static bool write_ratios(const struct opts_accept *a, const struct accept_table 
         if (!(p0 > 0 && p1 > 0)) continue;
         double v = (k + 1) * p0 / p1;
         double rse = sqrt((1 - p0) / (p0 * tab->attempts[V_MMLT][k]) + (1 - p1) / (p1 * tab->attempts[V_MCTLS][k]));
-        fprintf(f, "contributing-techniques,%d,%.6g,%.3g\n", k, v, v * rse);
+        table_row(&tb.t[0], &(struct ratio_row){"contributing-techniques", k, v, v * rse});
     }
     for (int k = 1; k <= K; k++) {
         if (!(tab->nonzero[V_MMLT][k] > 0 && tab->nonzero[V_MCTLS][k] > 0)) continue;
-        double r, rse;
-        light_ratio(tab, k, &r, &rse);
-        fprintf(f, "light:mctls/mmlt-large,%d,%.6g,%.3g\n", k, r, rse);
+        struct ratio_row row = {.ratio = "light:mctls/mmlt-large", .length = k};
+        light_ratio(tab, k, &row.value, &row.se);
+        table_row(&tb.t[0], &row);
     }
-    fclose(f);
-    return ch4_write_texts("fig4_5", a->fig.out, 1, (const char *[]){"fig4.5-ratios.csv"}, &buf, err, errlen);
+    return ch4_tables_save(&tb, "fig4_5", a->fig.out, err, errlen);
 }
 
 /* The prediction from independent trials, four times the chains' proposals per length:
@@ -309,17 +346,14 @@ static bool run_trials(const struct opts_accept *a, const struct scene *sc, stru
         snprintf(err, errlen, "%ld mutations over %d lengths leave too few trials", a->mutations, K);
         return false;
     }
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
+    struct ch4_tables tb;
+    FILE *f = ch4_tables_open_one(&tb, "fig4.5-trials.csv", fig45_trials_cols);
     csv_meta_head(f, "fig4.5: acceptance per length predicted from independent pairs of subpaths (jackknife errors)",
                   a->fig.scene, a->fig.scale);
     csv_meta(f, "seed", "%llu", (unsigned long long)a->fig.seed);
     csv_meta(f, "pairs_per_length", "%ld", trial_pairs);
-    fprintf(f, "length,statistic,value,se\n");
-    fig45_trials_csv(f, tr);
-    fclose(f);
-    return ch4_write_texts("fig4_5", a->fig.out, 1, (const char *[]){"fig4.5-trials.csv"}, &buf, err, errlen);
+    fig45_trials_rows(&tb.t[0], tr);
+    return ch4_tables_save(&tb, "fig4_5", a->fig.out, err, errlen);
 }
 
 int main(int argc, char **argv)
