@@ -161,12 +161,10 @@ struct profile_row {
     int lag;
     double rho_x, rho_x_se, rho_y, rho_y_se;
 };
-static const struct column stat_cols[] = {COL_STRING(struct ch4_stat_row, "variant", config),
-                                          COL_STRING(struct ch4_stat_row, "quantity", quantity),
-                                          COL_INT(struct ch4_stat_row, "seeds", "%d", seeds),
-                                          COL_DOUBLE(struct ch4_stat_row, "mean", "%.6g", mean),
-                                          COL_DOUBLE(struct ch4_stat_row, "se", "%.6g", se),
-                                          {0}};
+static const struct column stat_cols[] = {
+    COL_STRING(struct ch4_stat_row, "variant", config), COL_STRING(struct ch4_stat_row, "quantity", quantity),
+    COL_INT(struct ch4_stat_row, "seeds", "%d", seeds), COL_DOUBLE(struct ch4_stat_row, "mean", "%.6g", mean),
+    COL_DOUBLE(struct ch4_stat_row, "se", "%.6g", se),  {0}};
 static const struct column profile_cols[] = {COL_STRING(struct profile_row, "variant", variant),
                                              COL_INT(struct profile_row, "lag", "%d", lag),
                                              COL_DOUBLE(struct profile_row, "rho_x", "%.6g", rho_x),

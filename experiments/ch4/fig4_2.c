@@ -271,7 +271,8 @@ static void write_rows(const struct fig42 *t, struct table *runs, struct table *
     }
     for (int c = 0; c < NGLOSSY; c++) {
         for (int s = 0; s < seeds; s++)
-            run_row(runs, gnames[c], gres[c], t->fo.seed + s, (const double *[NQ]){[Q_ACCEPT] = &t->gacc[c * seeds + s]});
+            run_row(runs, gnames[c], gres[c], t->fo.seed + s,
+                    (const double *[NQ]){[Q_ACCEPT] = &t->gacc[c * seeds + s]});
         struct ch4_stat_row row = {.config = gnames[c], .quantity = "small_accept", .resolution = gres[c]};
         ch4_stat_row_of(&row, t->gacc + c * seeds, seeds);
         table_row(stats, &row);

@@ -148,19 +148,18 @@ static const struct column run_cols[] = {COL_STRING(struct run_row, "method", me
                                          COL_DOUBLE(struct run_row, "small_accept", "%.6g", small_accept),
                                          COL_DOUBLE(struct run_row, "seconds", "%.3f", seconds),
                                          {0}};
-static const struct column stat_cols[] = {COL_STRING(struct ch4_stat_row, "method", config),
-                                          COL_STRING(struct ch4_stat_row, "quantity", quantity),
-                                          COL_INT(struct ch4_stat_row, "seeds", "%d", seeds),
-                                          COL_DOUBLE(struct ch4_stat_row, "mean", "%.6g", mean),
-                                          COL_DOUBLE(struct ch4_stat_row, "se", "%.6g", se),
-                                          {0}};
+static const struct column stat_cols[] = {
+    COL_STRING(struct ch4_stat_row, "method", config),  COL_STRING(struct ch4_stat_row, "quantity", quantity),
+    COL_INT(struct ch4_stat_row, "seeds", "%d", seeds), COL_DOUBLE(struct ch4_stat_row, "mean", "%.6g", mean),
+    COL_DOUBLE(struct ch4_stat_row, "se", "%.6g", se),  {0}};
 
 /* The metadata lines of both tables. */
 static void write_meta(FILE *f, const void *ctx)
 {
     const struct fig43 *t = ctx;
     const struct opts_figure *fo = &t->fo;
-    csv_meta_head(f, "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
+    csv_meta_head(f,
+                  "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
                   fo->scene, fo->scale);
     csv_meta(f, "resolution", "%dx%d", t->sc->cam.width, t->sc->cam.height);
     csv_meta(f, "spp", "%d", t->spp);

@@ -209,14 +209,15 @@ struct accept_row {
     long attempts;
     double mean_accept, se, accepted_fraction, seconds;
 };
-static const struct column accept_cols[] = {COL_STRING(struct accept_row, "method", method),
-                                            COL_INT(struct accept_row, "length", "%d", length),
-                                            COL_LONG(struct accept_row, "attempts", "%ld", attempts),
-                                            COL_DOUBLE(struct accept_row, "mean_accept", "%.9g", mean_accept),
-                                            COL_DOUBLE(struct accept_row, "stderr", "%.9g", se),
-                                            COL_DOUBLE(struct accept_row, "accepted_fraction", "%.9g", accepted_fraction),
-                                            COL_DOUBLE(struct accept_row, "seconds", "%.4f", seconds),
-                                            {0}};
+static const struct column accept_cols[] = {
+    COL_STRING(struct accept_row, "method", method),
+    COL_INT(struct accept_row, "length", "%d", length),
+    COL_LONG(struct accept_row, "attempts", "%ld", attempts),
+    COL_DOUBLE(struct accept_row, "mean_accept", "%.9g", mean_accept),
+    COL_DOUBLE(struct accept_row, "stderr", "%.9g", se),
+    COL_DOUBLE(struct accept_row, "accepted_fraction", "%.9g", accepted_fraction),
+    COL_DOUBLE(struct accept_row, "seconds", "%.4f", seconds),
+    {0}};
 /* A row of OUT/fig4.5-ratios.csv. */
 struct ratio_row {
     const char *ratio;

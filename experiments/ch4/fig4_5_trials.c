@@ -173,10 +173,10 @@ bool fig45_trials(const struct scene *sc, int K, long pairs, uint64_t seed, int 
 }
 
 const struct column fig45_trials_cols[] = {COL_INT(struct trial_row, "length", "%d", length),
-                                          COL_STRING(struct trial_row, "statistic", statistic),
-                                          COL_DOUBLE(struct trial_row, "value", "%.6g", value),
-                                          COL_DOUBLE(struct trial_row, "se", "%.3g", se),
-                                          {0}};
+                                           COL_STRING(struct trial_row, "statistic", statistic),
+                                           COL_DOUBLE(struct trial_row, "value", "%.6g", value),
+                                           COL_DOUBLE(struct trial_row, "se", "%.3g", se),
+                                           {0}};
 
 void fig45_trials_rows(struct table *tab, const struct trials_table *t)
 {

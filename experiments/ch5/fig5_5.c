@@ -122,24 +122,20 @@ struct region_row {
     double mean, se;
     int seeds;
 };
-static const struct column region_cols[] = {COL_STRING(struct region_row, "kind", kind),
-                                            COL_STRING(struct region_row, "region", region),
-                                            COL_DOUBLE(struct region_row, "mean", "%.9g", mean),
-                                            COL_DOUBLE(struct region_row, "stderr", "%.9g", se),
-                                            COL_INT(struct region_row, "seeds", "%d", seeds),
-                                            {0}};
+static const struct column region_cols[] = {
+    COL_STRING(struct region_row, "kind", kind),         COL_STRING(struct region_row, "region", region),
+    COL_DOUBLE(struct region_row, "mean", "%.9g", mean), COL_DOUBLE(struct region_row, "stderr", "%.9g", se),
+    COL_INT(struct region_row, "seeds", "%d", seeds),    {0}};
 struct length_row {
     const char *kind;
     int length;
     long steps;
     double mean_dpsi, se;
 };
-static const struct column length_cols[] = {COL_STRING(struct length_row, "kind", kind),
-                                            COL_INT(struct length_row, "length", "%d", length),
-                                            COL_LONG(struct length_row, "steps", "%ld", steps),
-                                            COL_DOUBLE(struct length_row, "mean_dpsi", "%.9g", mean_dpsi),
-                                            COL_DOUBLE(struct length_row, "stderr", "%.9g", se),
-                                            {0}};
+static const struct column length_cols[] = {
+    COL_STRING(struct length_row, "kind", kind),         COL_INT(struct length_row, "length", "%d", length),
+    COL_LONG(struct length_row, "steps", "%ld", steps),  COL_DOUBLE(struct length_row, "mean_dpsi", "%.9g", mean_dpsi),
+    COL_DOUBLE(struct length_row, "stderr", "%.9g", se), {0}};
 
 /* OUT/fig5.5.csv (per kind and region); the edge / elsewhere ratio per kind into ratio_mean,
  * ratio_se. */
@@ -148,7 +144,8 @@ static void write_regions(const struct fig5_cfg *c, const struct meas *m, double
     struct table t;
     FILE *f = table_open(&t, region_cols);
     if (f) {
-        fig5_meta_head(f, c, "fig5.5: mean angle change per pixel, MMLT vs controlled small steps, Gaussian sigma 1/64");
+        fig5_meta_head(f, c,
+                       "fig5.5: mean angle change per pixel, MMLT vs controlled small steps, Gaussian sigma 1/64");
         csv_meta(f, "p_large", "%g", c->p_large);
         fig5_meta_runs(f, c);
     }

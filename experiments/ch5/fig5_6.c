@@ -71,18 +71,18 @@ struct kind_row {
     int seeds;
     double accept_small, mutations_per_second, corrlen, corrlen_se, blur8, blur8_se;
 };
-static const struct column kind_cols[] = {COL_STRING(struct kind_row, "kind", kind),
-                                          COL_DOUBLE(struct kind_row, "relmse", "%.9g", relmse),
-                                          COL_DOUBLE(struct kind_row, "stderr", "%.9g", relmse_se),
-                                          COL_INT(struct kind_row, "seeds", "%d", seeds),
-                                          COL_DOUBLE(struct kind_row, "accept_small", "%.6f", accept_small),
-                                          COL_DOUBLE(struct kind_row, "mutations_per_second", "%.0f",
-                                                     mutations_per_second),
-                                          COL_DOUBLE(struct kind_row, "corrlen", "%.6g", corrlen),
-                                          COL_DOUBLE(struct kind_row, "corrlen_se", "%.3g", corrlen_se),
-                                          COL_DOUBLE(struct kind_row, "blur8", "%.6g", blur8),
-                                          COL_DOUBLE(struct kind_row, "blur8_se", "%.3g", blur8_se),
-                                          {0}};
+static const struct column kind_cols[] = {
+    COL_STRING(struct kind_row, "kind", kind),
+    COL_DOUBLE(struct kind_row, "relmse", "%.9g", relmse),
+    COL_DOUBLE(struct kind_row, "stderr", "%.9g", relmse_se),
+    COL_INT(struct kind_row, "seeds", "%d", seeds),
+    COL_DOUBLE(struct kind_row, "accept_small", "%.6f", accept_small),
+    COL_DOUBLE(struct kind_row, "mutations_per_second", "%.0f", mutations_per_second),
+    COL_DOUBLE(struct kind_row, "corrlen", "%.6g", corrlen),
+    COL_DOUBLE(struct kind_row, "corrlen_se", "%.3g", corrlen_se),
+    COL_DOUBLE(struct kind_row, "blur8", "%.6g", blur8),
+    COL_DOUBLE(struct kind_row, "blur8_se", "%.3g", blur8_se),
+    {0}};
 
 /* OUT/NAME.png and .exr of a run. */
 static void write_image(const struct fig5_cfg *c, const struct image *img, const char *name)

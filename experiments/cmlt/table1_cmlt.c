@@ -209,7 +209,8 @@ static struct image *get_reference(const struct opts *o, struct cmlt_ref_result 
     snprintf(path, sizeof path, "%s/reference.png", o->out);
     save_or_die(img_write_png(im, 1.0, path, err, sizeof err), err);
     struct text_out kt;
-    if (text_out_open(&kt)) fprintf(kt.f, "%s%.17g %.17g %.17g %.17g\n", key, res->b[0], res->b[1], res->b[2], res->noise_rmse);
+    if (text_out_open(&kt))
+        fprintf(kt.f, "%s%.17g %.17g %.17g %.17g\n", key, res->b[0], res->b[1], res->b[2], res->noise_rmse);
     save_or_die(text_out_save(&kt, keypath, err, sizeof err), err);
     return im;
 }

@@ -57,8 +57,7 @@ int main(int argc, char **argv)
     if (argc != 4) die(DIE_USAGE, "scan", "usage: scan N_MILLIONS SEEDS REF_SPP");
     n_steps = (uint64_t)(atof(argv[1]) * 1e6);
     int seeds = atoi(argv[2]), spp = atoi(argv[3]);
-    if (n_steps < 1024 || seeds < 2 || 2 * seeds > MAX_JOBS || spp < 1)
-        die(DIE_USAGE, "scan", "bad arguments");
+    if (n_steps < 1024 || seeds < 2 || 2 * seeds > MAX_JOBS || spp < 1) die(DIE_USAGE, "scan", "bad arguments");
     ref = xmalloc(sizeof(double) * 3 * W * W);
     struct cmlt_ref_result rr;
     cmlt_reference(W, W, spp, 0xC3117ull, 2, ref, &rr, NULL);
