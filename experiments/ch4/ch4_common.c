@@ -92,3 +92,9 @@ void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim,
     }
     claims_row(cl, source, claim, stat, names[m], mean[m], se[m], zs, md, &v);
 }
+
+void ch4_stat_row_of(struct ch4_stat_row *row, const double *x, int seeds)
+{
+    row->seeds = seeds;
+    mean_se(x, seeds, &row->mean, &row->se);
+}

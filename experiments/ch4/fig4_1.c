@@ -11,12 +11,12 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
-#include "ch4/ch4_tables.h"
 #include "ch4/wall_noise.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "path/scene_ready.h"
 #include "stats/noise_corr.h"
 #include <math.h>
@@ -237,14 +237,14 @@ static bool write_tables(const struct fig41 *t, char *err, size_t errlen)
 {
     struct column run_cols[NQ + 4] = {COL_STRING(struct run_row, "variant", variant),
                                       COL_LONG(struct run_row, "seed", "%lu", seed)};
-    ch4_columns(run_cols + 2, NQ, qn, COL_D, offsetof(struct run_row, q), sizeof(double), "%.6g");
+    table_columns(run_cols + 2, NQ, qn, COL_D, offsetof(struct run_row, q), sizeof(double), "%.6g");
     run_cols[NQ + 2] = (struct column)COL_DOUBLE(struct run_row, "error_var", "%.6g", error_var);
     run_cols[NQ + 3] = (struct column){0};
-    struct ch4_tables tb;
-    ch4_tables_open(&tb, 3, (const char *[]){"fig4.1-runs.csv", "fig4.1.csv", "fig4.1-profiles.csv"},
-                    (const struct column *[]){run_cols, stat_cols, profile_cols}, write_meta, t);
+    struct table_set tb;
+    table_set_open(&tb, 3, (const char *[]){"fig4.1-runs.csv", "fig4.1.csv", "fig4.1-profiles.csv"},
+                   (const struct column *[]){run_cols, stat_cols, profile_cols}, write_meta, t);
     write_rows(t, &tb.t[0], &tb.t[1], &tb.t[2]);
-    return ch4_tables_save(&tb, prog, t->fo.out, err, errlen);
+    return table_set_save(&tb, prog, t->fo.out, err, errlen);
 }
 
 int main(int argc, char **argv)

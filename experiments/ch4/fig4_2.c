@@ -16,12 +16,12 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
-#include "ch4/ch4_tables.h"
 #include "ch4/wall_noise.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "path/scene_ready.h"
 #include <math.h>
 #include <stddef.h>
@@ -285,13 +285,13 @@ static bool write_tables(const struct fig42 *t, char *err, size_t errlen)
     struct column run_cols[NQ + 4] = {COL_STRING(struct run_row, "config", config),
                                       COL_INT(struct run_row, "resolution", "%d", resolution),
                                       COL_LONG(struct run_row, "seed", "%lu", seed)};
-    ch4_columns(run_cols + 3, NQ, qn, COL_STR, offsetof(struct run_row, q), sizeof(const char *), "%s");
+    table_columns(run_cols + 3, NQ, qn, COL_STR, offsetof(struct run_row, q), sizeof(const char *), "%s");
     run_cols[NQ + 3] = (struct column){0};
-    struct ch4_tables tb;
-    ch4_tables_open(&tb, 2, (const char *[]){"fig4.2-runs.csv", "fig4.2.csv"},
-                    (const struct column *[]){run_cols, stat_cols}, write_meta, t);
+    struct table_set tb;
+    table_set_open(&tb, 2, (const char *[]){"fig4.2-runs.csv", "fig4.2.csv"},
+                   (const struct column *[]){run_cols, stat_cols}, write_meta, t);
     write_rows(t, &tb.t[0], &tb.t[1]);
-    return ch4_tables_save(&tb, prog, t->fo.out, err, errlen);
+    return table_set_save(&tb, prog, t->fo.out, err, errlen);
 }
 
 int main(int argc, char **argv)

@@ -12,11 +12,11 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "ch4/ch4_common.h"
-#include "ch4/ch4_tables.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include <math.h>
@@ -194,9 +194,9 @@ static void write_stats_rows(const struct fig43 *t, int m, struct table *stats)
 /* OUT/fig4.3-runs.csv and OUT/fig4.3.csv, with the same metadata. */
 static bool write_tables(const struct fig43 *t, char *err, size_t errlen)
 {
-    struct ch4_tables tb;
-    ch4_tables_open(&tb, 2, (const char *[]){"fig4.3-runs.csv", "fig4.3.csv"},
-                    (const struct column *[]){run_cols, stat_cols}, write_meta, t);
+    struct table_set tb;
+    table_set_open(&tb, 2, (const char *[]){"fig4.3-runs.csv", "fig4.3.csv"},
+                   (const struct column *[]){run_cols, stat_cols}, write_meta, t);
     for (int m = 0; m < NMETH; m++) {
         for (int s = 0; s < t->seeds; s++) {
             int k = m * t->seeds + s;
@@ -205,7 +205,7 @@ static bool write_tables(const struct fig43 *t, char *err, size_t errlen)
         }
         write_stats_rows(t, m, &tb.t[1]);
     }
-    return ch4_tables_save(&tb, prog, t->fo.out, err, errlen);
+    return table_set_save(&tb, prog, t->fo.out, err, errlen);
 }
 
 int main(int argc, char **argv)

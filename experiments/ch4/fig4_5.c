@@ -18,12 +18,12 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "ch4/ch4_common.h"
-#include "ch4/ch4_tables.h"
 #include "ch4/fig4_5_trials.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include <math.h>
@@ -271,8 +271,8 @@ static bool run_variant(const struct opts_accept *a, const struct scene *sc, int
 static bool run_variants(const struct opts_accept *a, const struct scene *sc, struct accept_table *tab, char *err,
                          size_t errlen)
 {
-    struct ch4_tables tb;
-    FILE *f = ch4_tables_open_one(&tb, "fig4.5.csv", accept_cols);
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.5.csv", accept_cols);
     csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets",
                   a->fig.scene, a->fig.scale);
     csv_meta(f, NULL,
@@ -287,7 +287,7 @@ static bool run_variants(const struct opts_accept *a, const struct scene *sc, st
             text_out_free(&tb.t[0].out);
             return false;
         }
-    return ch4_tables_save(&tb, "fig4_5", a->fig.out, err, errlen);
+    return table_set_save(&tb, "fig4_5", a->fig.out, err, errlen);
 }
 
 /* The ratio rows of OUT/fig4.5-ratios.csv whose shape the figure is about. */
@@ -310,8 +310,8 @@ static void write_ratio_rows(int K, const struct accept_table *tab, struct table
 static bool write_ratios(const struct opts_accept *a, const struct accept_table *tab, char *err, size_t errlen)
 {
     int K = a->max_length;
-    struct ch4_tables tb;
-    FILE *f = ch4_tables_open_one(&tb, "fig4.5-ratios.csv", ratio_cols);
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.5-ratios.csv", ratio_cols);
     csv_meta_head(f, "fig4.5: acceptance ratios per length (first-order standard errors from the batch-means errors)",
                   a->fig.scene, a->fig.scale);
     write_ratio_rows(K, tab, &tb.t[0]);
@@ -332,7 +332,7 @@ static bool write_ratios(const struct opts_accept *a, const struct accept_table 
         light_ratio(tab, k, &row.value, &row.se);
         table_row(&tb.t[0], &row);
     }
-    return ch4_tables_save(&tb, "fig4_5", a->fig.out, err, errlen);
+    return table_set_save(&tb, "fig4_5", a->fig.out, err, errlen);
 }
 
 /* The prediction from independent trials, four times the chains' proposals per length:
@@ -347,14 +347,14 @@ static bool run_trials(const struct opts_accept *a, const struct scene *sc, stru
         snprintf(err, errlen, "%ld mutations over %d lengths leave too few trials", a->mutations, K);
         return false;
     }
-    struct ch4_tables tb;
-    FILE *f = ch4_tables_open_one(&tb, "fig4.5-trials.csv", fig45_trials_cols);
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.5-trials.csv", fig45_trials_cols);
     csv_meta_head(f, "fig4.5: acceptance per length predicted from independent pairs of subpaths (jackknife errors)",
                   a->fig.scene, a->fig.scale);
     csv_meta(f, "seed", "%llu", (unsigned long long)a->fig.seed);
     csv_meta(f, "pairs_per_length", "%ld", trial_pairs);
     fig45_trials_rows(&tb.t[0], tr);
-    return ch4_tables_save(&tb, "fig4_5", a->fig.out, err, errlen);
+    return table_set_save(&tb, "fig4_5", a->fig.out, err, errlen);
 }
 
 int main(int argc, char **argv)

@@ -11,11 +11,11 @@
 #include "base/parallel.h"
 #include "base/util.h"
 #include "ch4/ch4_common.h"
-#include "ch4/ch4_tables.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
@@ -194,8 +194,8 @@ static const struct column method_cols[] = {COL_STRING(struct method_row, "metho
 static bool write_runs(const struct fig46 *t, char *err, size_t errlen)
 {
     const struct opts_figure *fo = &t->fo;
-    struct ch4_tables tb;
-    FILE *f = ch4_tables_open_one(&tb, "fig4.6-runs.csv", run_cols);
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.6-runs.csv", run_cols);
     csv_meta_head(
         f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps), one row per run",
         fo->scene, fo->scale);
@@ -207,15 +207,15 @@ static bool write_runs(const struct fig46 *t, char *err, size_t errlen)
     for (int m = 0; m < METHODS; m++)
         for (int s = 0; s < t->seeds; s++)
             table_row(&tb.t[0], &(struct run_row){names[m], (long)(fo->seed + (uint64_t)s), t->R[m][s]});
-    return ch4_tables_save(&tb, "fig4_6", fo->out, err, errlen);
+    return table_set_save(&tb, "fig4_6", fo->out, err, errlen);
 }
 
 /* OUT/fig4.6.csv: mean and standard error over the seeds per method. */
 static bool write_methods(const struct fig46 *t, char *err, size_t errlen)
 {
     const struct opts_figure *fo = &t->fo;
-    struct ch4_tables tb;
-    FILE *f = ch4_tables_open_one(&tb, "fig4.6.csv", method_cols);
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.6.csv", method_cols);
     csv_meta_head(f, "fig4.6: mean and standard error over seeds per method", fo->scene, fo->scale);
     csv_meta(f, "seeds", "%d", t->seeds);
     csv_meta(f, "budget", "%s, %d threads", t->budget, fo->threads);
@@ -225,7 +225,7 @@ static bool write_methods(const struct fig46 *t, char *err, size_t errlen)
         table_row(&tb.t[0], &(struct method_row){names[m], t->seeds, mean[0], se[0], mean[1], se[1],
                                                  mean[1] / t->mean[0][1], t->rays[m], mean[2], se[2]});
     }
-    return ch4_tables_save(&tb, "fig4_6", fo->out, err, errlen);
+    return table_set_save(&tb, "fig4_6", fo->out, err, errlen);
 }
 
 /* Thesis §4.3: MCTLS is accepted more often, costs about 5x per step, and the two cancel. */

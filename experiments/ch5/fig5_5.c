@@ -141,8 +141,8 @@ static const struct column length_cols[] = {
  * ratio_se. */
 static void write_regions(const struct fig5_cfg *c, const struct meas *m, double *ratio_mean, double *ratio_se)
 {
-    struct table t;
-    FILE *f = table_open(&t, region_cols);
+    struct table_set ts;
+    FILE *f = table_set_open_one(&ts, "fig5.5.csv", region_cols);
     if (f) {
         fig5_meta_head(f, c,
                        "fig5.5: mean angle change per pixel, MMLT vs controlled small steps, Gaussian sigma 1/64");
@@ -153,17 +153,17 @@ static void write_regions(const struct fig5_cfg *c, const struct meas *m, double
         for (int g = 0; g < REGIONS; g++) {
             struct region_row row = {fig5_kind_name[kind], region_name[g], .seeds = c->seeds};
             mean_se(m->reg + ((size_t)kind * REGIONS + g) * c->seeds, c->seeds, &row.mean, &row.se);
-            table_row(&t, &row);
+            table_row(&ts.t[0], &row);
             if (g == R_RATIO) ratio_mean[kind] = row.mean, ratio_se[kind] = row.se;
         }
-    fig5_save_table(c, "fig5.5.csv", &t);
+    fig5_save_tables(c, &ts);
 }
 
 /* OUT/fig5.5-lengths.csv (per kind and path length, over the seeds that saw the length). */
 static void write_lengths(const struct fig5_cfg *c, const struct meas *m)
 {
-    struct table t;
-    table_open(&t, length_cols);
+    struct table_set ts;
+    table_set_open_one(&ts, "fig5.5-lengths.csv", length_cols);
     for (int kind = 0; kind < NK; kind++)
         for (int k = 2; k <= c->max_length; k++) {
             double x[1000];
@@ -173,9 +173,9 @@ static void write_lengths(const struct fig5_cfg *c, const struct meas *m)
             if (n < 2) continue;
             struct length_row row = {.kind = fig5_kind_name[kind], .length = k, .steps = m->len_steps[kind][k]};
             mean_se(x, n, &row.mean_dpsi, &row.se);
-            table_row(&t, &row);
+            table_row(&ts.t[0], &row);
         }
-    fig5_save_table(c, "fig5.5-lengths.csv", &t);
+    fig5_save_tables(c, &ts);
 }
 
 int main(int argc, char **argv)

@@ -127,8 +127,8 @@ int main(int argc, char **argv)
     char err[1024], path[4096];
     snprintf(path, sizeof path, "%s/reference.png", c.fig.out);
     if (!img_write_png(ref, 1.0, path, err, sizeof err)) die(DIE_RUNTIME, c.prog, "%s", err);
-    struct table t;
-    FILE *f = table_open(&t, kind_cols);
+    struct table_set ts;
+    FILE *f = table_set_open_one(&ts, "fig5.6.csv", kind_cols);
     if (f) {
         char title[256];
         snprintf(title, sizeof title,
@@ -141,9 +141,9 @@ int main(int argc, char **argv)
     double mean[2][NQ], se[2][NQ];
     double *x = xmalloc(sizeof *x * NQ * (size_t)c.seeds);
     for (int kind = 0; kind < 2; kind++)
-        run_kind(sc, &c, ref, kind, x, mean[kind], se[kind], &t);
+        run_kind(sc, &c, ref, kind, x, mean[kind], se[kind], &ts.t[0]);
     free(x);
-    fig5_save_table(&c, "fig5.6.csv", &t);
+    fig5_save_tables(&c, &ts);
     write_claims(&c, mean, se);
     img_destroy(ref);
     scene_free(sc);

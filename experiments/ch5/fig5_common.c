@@ -92,10 +92,8 @@ bool fig5_write_linear_png(const struct image *im, double white, const char *pat
     return ok;
 }
 
-void fig5_save_table(const struct fig5_cfg *c, const char *name, struct table *t)
+void fig5_save_tables(const struct fig5_cfg *c, struct table_set *ts)
 {
-    char path[4096], err[1024];
-    snprintf(path, sizeof path, "%s/%s", c->fig.out, name);
-    if (!table_save(t, path, err, sizeof err)) die(DIE_RUNTIME, c->prog, "%s", err);
-    fprintf(stderr, "%s: wrote %s\n", c->prog, path);
+    char err[4200];
+    if (!table_set_save(ts, c->prog, c->fig.out, err, sizeof err)) die(DIE_RUNTIME, c->prog, "%s", err);
 }

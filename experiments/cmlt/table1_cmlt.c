@@ -15,18 +15,16 @@
 #include "common/die.h"
 #include "common/opts.h"
 #include "common/outdir.h"
-#include "common/table.h"
+#include "common/table_set.h"
 #include "common/text_out.h"
 #include "io/image.h"
 #include <errno.h>
 #include <math.h>
 #include <pthread.h>
 #include <signal.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -486,9 +484,17 @@ static void write_markdown(const struct opts *o, const struct summary *sm, doubl
             o->ref_spp, noise_rmse, sm->wall, o->threads, sm->partial ? " **PARTIAL: interrupted.**" : "");
 }
 
-/* The metadata line every table opens with: the run's settings. */
-static void write_meta(FILE *f, const struct opts *o, const struct summary *sm)
+/* What the tables' metadata line says: the run's settings (table_set_open's ctx). */
+struct run_info {
+    const struct opts *o;
+    const struct summary *sm;
+};
+
+/* The metadata line every table opens with. */
+static void write_meta(FILE *f, const void *ctx)
 {
+    const struct opts *o = ((const struct run_info *)ctx)->o;
+    const struct summary *sm = ((const struct run_info *)ctx)->sm;
     csv_meta(f, "table1_cmlt",
              "commit=%s seed=%llu scale=%s seeds=%d threads=%d res=%d ref_spp=%d p_large=%g swap_every=%d seed_frac=%g "
              "seconds=%.1f%s",
@@ -501,20 +507,15 @@ static void write_meta(FILE *f, const struct opts *o, const struct summary *sm)
 static void write_tables(const struct pool *p, struct summary *sm, double noise_rmse, struct text_out *md)
 {
     const struct opts *o = p->o;
-    static const char *const names[NTABLES] = {"table1.csv", "table1_stats.csv", "table1_seeds.csv"};
-    const struct column *const cols[NTABLES] = {mean_cols, stats_cols, seed_cols};
-    struct table t[NTABLES];
-    for (int i = 0; i < NTABLES; i++)
-        if (table_open(&t[i], cols[i])) write_meta(t[i].out.f, o, sm);
+    struct table_set ts;
+    table_set_open(&ts, NTABLES, (const char *[]){"table1.csv", "table1_stats.csv", "table1_seeds.csv"},
+                   (const struct column *[]){mean_cols, stats_cols, seed_cols}, write_meta, &(struct run_info){o, sm});
     for (int a = 0; a < CMLT_NALGO; a++)
         for (int b = 0; b < o->nbudgets; b++)
-            analyse_cell(p, a, b, sm, t);
+            analyse_cell(p, a, b, sm, ts.t);
     if (text_out_open(md)) write_markdown(o, sm, noise_rmse, md->f);
     char path[1024], err[1100];
-    for (int i = 0; i < NTABLES; i++) {
-        snprintf(path, sizeof path, "%s/%s", o->out, names[i]);
-        save_or_die(table_save(&t[i], path, err, sizeof err), err);
-    }
+    save_or_die(table_set_save(&ts, "table1_cmlt", o->out, err, sizeof err), err);
     snprintf(path, sizeof path, "%s/table1.md", o->out);
     save_or_die(text_out_commit(md, path, err, sizeof err), err);
 }
