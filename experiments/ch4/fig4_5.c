@@ -111,16 +111,11 @@ static void claims_predicted(struct claims *cl, const struct accept_table *t, co
     }
 }
 
-/* Thesis §4.3 on Figure 4.5. The errors are one run's batch-means errors, so "seeds_needed" counts
- * runs of this budget. */
-static char *claims(const struct accept_table *t, const struct trials_table *tr, const char *out, const char *scale,
-                    char *err, size_t errlen)
+/* Thesis §4.3's statements on Figure 4.5: MCTLS above MMLT at every length, up to 5x at the
+ * longest, about 1x for short paths; MMLT large steps consistently low. */
+static void claims_thesis(struct claims *cl, const struct accept_table *t)
 {
-    struct claims cl;
-    char command[64], zs[256], md[512];
-    snprintf(command, sizeof command, "make fig4.5 SCALE=%s", scale);
-    claims_begin(&cl, scale, command, "Claims of thesis §4.3 on Fig. 4.5, lengths 2-%d (batch-means errors of one run)",
-                 t->K);
+    char zs[256], md[512];
     /* MCTLS above MMLT at every length: the smallest z over the lengths decides */
     const bool both[2] = {true, true};
     struct verdict worst = {"holds", INFINITY, -1, 0};
@@ -132,28 +127,37 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     }
     snprintf(zs, sizeof zs, "mmlt-large=%.2f@%d", worst.zmin, at);
     snprintf(md, sizeof md, "MMLT large steps at each length; smallest z = %.1f at length %d", worst.zmin, at);
-    claims_row(&cl, "thesis §4.3", "MCTLS is accepted more often than MMLT large steps at every length",
+    claims_row(cl, "thesis §4.3", "MCTLS is accepted more often than MMLT large steps at every length",
                "mean acceptance per length", "mctls", t->mean[1][at], t->se[1][at], zs, md, &worst);
     double r, rse;
     ratio_at(t, t->K, &r, &rse);
     struct verdict v = verdict_similar(r, rse, 5, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% at length %d (z = %.1f)", t->K, v.zmin);
-    claims_row(&cl, "thesis §4.3", "MCTLS is up to five times more likely to be accepted at the longest length",
+    claims_row(cl, "thesis §4.3", "MCTLS is up to five times more likely to be accepted at the longest length",
                "acceptance ratio MCTLS / MMLT", "mctls", r, rse, zs, md, &v);
     ratio_at(t, 2, &r, &rse);
     v = verdict_similar(r, rse, 1, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "1x=%.2f", v.zmin);
     snprintf(md, sizeof md, "1 within ±25 %% at length 2 (z = %.1f)", v.zmin);
-    claims_row(&cl, "thesis §4.3", "MCTLS is rejected about as often as MMLT large steps for short paths",
+    claims_row(cl, "thesis §4.3", "MCTLS is rejected about as often as MMLT large steps for short paths",
                "acceptance ratio MCTLS / MMLT at length 2", "mctls", r, rse, zs, md, &v);
     v = verdict_similar(t->mean[0][t->K], t->se[0][t->K], t->mean[0][2], t->se[0][2], 0.25, 1);
     snprintf(zs, sizeof zs, "length2=%.2f", v.zmin);
     snprintf(md, sizeof md, "length 2: %.4g ± %.2g, within ±25 %% (z = %.1f)", t->mean[0][2], t->se[0][2], v.zmin);
     char stat[96];
     snprintf(stat, sizeof stat, "MMLT large-step acceptance at length %d", t->K);
-    claims_row(&cl, "thesis §4.3", "MMLT large steps are consistently low over all path lengths", stat, "mmlt-large",
+    claims_row(cl, "thesis §4.3", "MMLT large steps are consistently low over all path lengths", stat, "mmlt-large",
                t->mean[0][t->K], t->se[0][t->K], zs, md, &v);
+}
+
+/* The harness's checks of the drawn trials and the caption's reason (more trials for longer paths,
+ * more proposals with light). */
+static void claims_trials(struct claims *cl, const struct accept_table *t)
+{
+    char zs[256], md[512], stat[96];
+    double r, rse;
+    struct verdict v;
     /* one drawn trial is an MMLT large step (a check of the drawn trials): the acceptance averaged
      * over lengths 2..K (equal mutations per length) within ±5 % */
     double m1, s1, m0, s0;
@@ -163,14 +167,14 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     snprintf(zs, sizeof zs, "mmlt-large5%%=%.2f", v.zmin);
     snprintf(md, sizeof md, "MMLT large steps %.4g ± %.2g within ±5 %% (z = %.1f)", m0, s0, v.zmin);
     snprintf(stat, sizeof stat, "large-step acceptance, mean over lengths 2-%d", t->K);
-    claims_row(&cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1, s1,
+    claims_row(cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1, s1,
                zs, md, &v);
     /* the thesis's count: its MMLT large steps draw among k + 2 techniques, t = 0 always failing */
     ratio_of(t, V_MCTLS, V_TRIES1_T0, t->K, &r, &rse);
     v = verdict_similar(r, rse, 5, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% at length %d (z = %.1f)", t->K, v.zmin);
-    claims_row(&cl, "thesis §4.3",
+    claims_row(cl, "thesis §4.3",
                "up to five times at the longest length, counting k + 2 techniques as the thesis does",
                "acceptance ratio MCTLS / MMLT large steps among k + 2", "mctls", r, rse, zs, md, &v);
     /* the caption's reason: longer paths give more trials. With a fixed number of trials (4) the
@@ -182,7 +186,7 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     snprintf(zs, sizeof zs, "length3=%.2f", v.zmin);
     snprintf(md, sizeof md, "length 3: %.3g ± %.2g, within ±25 %% (z = %.1f)", r3, rse3, v.zmin);
     snprintf(stat, sizeof stat, "acceptance ratio, 4 drawn trials / MMLT, at length %d", t->K);
-    claims_row(&cl, "thesis Fig. 4.5 caption",
+    claims_row(cl, "thesis Fig. 4.5 caption",
                "MCTLS gains with length because longer paths give more trials: at a fixed number of trials the gain "
                "stays flat",
                stat, "mctls-tries4", r, rse, zs, md, &v);
@@ -196,8 +200,22 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     snprintf(zs, sizeof zs, "length3=%.2f", lz[1]);
     snprintf(md, sizeof md, "length 3: %.3g ± %.2g (z = %.1f)", r3, rse3, lz[1]);
     snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
-    claims_row(&cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
+    claims_row(cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
                "mctls", r, rse, zs, md, &v);
+}
+
+/* Thesis §4.3 on Figure 4.5. The errors are one run's batch-means errors, so "seeds_needed" counts
+ * runs of this budget. */
+static char *claims(const struct accept_table *t, const struct trials_table *tr, const char *out, const char *scale,
+                    char *err, size_t errlen)
+{
+    struct claims cl;
+    char command[64];
+    snprintf(command, sizeof command, "make fig4.5 SCALE=%s", scale);
+    claims_begin(&cl, scale, command, "Claims of thesis §4.3 on Fig. 4.5, lengths 2-%d (batch-means errors of one run)",
+                 t->K);
+    claims_thesis(&cl, t);
+    claims_trials(&cl, t);
     claims_predicted(&cl, t, tr);
     return claims_finish(&cl, out, err, errlen);
 }
