@@ -273,30 +273,32 @@ ifneq ($($(1)_TABLE),)
 endif
 endef
 
-# $(call CHECK,TARGET,TOOL,SEED[,ARGS]): `make check-TARGET` reruns the quick experiment with its own
-# seed (and the tool options ARGS) into results/check-TARGET/ (CHECK_TARGET_RUN: another command
-# for that) and tests every statistic of its CSV TARGET.csv (CHECK_TARGET_CSV: another name)
-# against the baseline's file of the same name in results/baselines/TARGET/ with bin/check_stats and
-# the options CHECK_TARGET (key, mean, standard error, count and alpha: check_stats --help); the
-# verdicts go to check.md. Further comparisons: each name N of CHECK_TARGET_ALSO compares the CSV
+# $(call CHECK,TARGET,TOOL,SEED[,ARGS]): `make check-TARGET` reruns the quick experiment
+# (CHECK_TARGET_SCALE: another scale) with its own seed and the tool options ARGS into
+# results/check-TARGET/ (CHECK_TARGET_RUN: another command for that) and tests every statistic of
+# its CSV TARGET.csv (CHECK_TARGET_CSV: another name) against the baseline's file of the same name
+# (CHECK_TARGET_BASE: another) in results/baselines/TARGET/ with bin/check_stats and the options
+# CHECK_TARGET (key, mean, standard error, count and alpha: check_stats --help); the verdicts go to
+# check.md. Further comparisons: each name N of CHECK_TARGET_ALSO compares the CSV
 # CHECK_TARGET_N_CSV (default TARGET.csv) with the options CHECK_TARGET_N into check-N.md; then all
 # comparisons run and any failure fails the check at the end; without CHECK_TARGET, check.md is
 # the others' verdicts in alphabetical order of their names. Set the variables before the call.
 define CHECK
 .PHONY: check-$(1)
 check-$(1): deps $$(BIN)/$(2) $$(CHECK_STATS)
-	$(or $(CHECK_$(1)_RUN),$$(BIN)/$(2) --scale quick --seed $(3) --out results/check-$(1)$(if $(4), $(4)))
+	$(or $(CHECK_$(1)_RUN),$$(BIN)/$(2) --scale $(or $(CHECK_$(1)_SCALE),quick) --seed $(3) --out results/check-$(1)$(if $(4), $(4)))
 ifeq ($(CHECK_$(1)_ALSO),)
-	$$(call CHECK_CMP,$(1),$$(CHECK_$(1)),check.md,$(or $(CHECK_$(1)_CSV),$(1).csv))
+	$$(call CHECK_CMP,$(1),$$(CHECK_$(1)),check.md,$(or $(CHECK_$(1)_CSV),$(1).csv),$(CHECK_$(1)_BASE))
 else
 	status=0; $$(strip $$(call CHECK_CMPS,$(1))) exit $$$$status
 endif
 CHECK_TARGETS += check-$(1)
 endef
-# $(call CHECK_CMP,TARGET,OPTIONS,VERDICTS,CSV): one comparison of CHECK.
-CHECK_CMP = $(CHECK_STATS) $(2) --out results/check-$(1)/$(3) results/baselines/$(1)/$(4) results/check-$(1)/$(4)
+# $(call CHECK_CMP,TARGET,OPTIONS,VERDICTS,CSV[,BASELINE]): one comparison of CHECK (the baseline's
+# file named BASELINE, default CSV).
+CHECK_CMP = $(CHECK_STATS) $(2) --out results/check-$(1)/$(3) results/baselines/$(1)/$(or $(5),$(4)) results/check-$(1)/$(4)
 # Every comparison of TARGET for one shell line, each followed by `|| status=1;`.
-CHECK_CMPS = $(if $(CHECK_$(1)),$(call CHECK_CMP,$(1),$(CHECK_$(1)),check.md,$(or $(CHECK_$(1)_CSV),$(1).csv)) || status=1;) \
+CHECK_CMPS = $(if $(CHECK_$(1)),$(call CHECK_CMP,$(1),$(CHECK_$(1)),check.md,$(or $(CHECK_$(1)_CSV),$(1).csv),$(CHECK_$(1)_BASE)) || status=1;) \
   $(foreach n,$(CHECK_$(1)_ALSO),$(call CHECK_CMP,$(1),$(CHECK_$(1)_$(n)),check-$(n).md,$(or $(CHECK_$(1)_$(n)_CSV),$(1).csv)) || status=1;) \
   $(if $(CHECK_$(1)),,cat $(foreach n,$(sort $(CHECK_$(1)_ALSO)),results/check-$(1)/check-$(n).md) > results/check-$(1)/check.md;)
 

@@ -1,59 +1,18 @@
 /* Shared pieces of the chapter-4 figure tools (ch4_common.h). */
 #include "ch4/ch4_common.h"
-#include "base/parallel.h"
-#include "base/util.h"
 #include "common/csv_meta.h"
-#include "common/refcache.h"
-#include "scene/scene_hash.h"
+#include "common/reference.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-
-/* What ch4_reference's render needs (refcache_render_fn's ctx). */
-struct ref_job {
-    const struct scene *sc;
-    enum method method;
-    int spp, threads;
-    const char *prog;
-};
-
-/* refcache_render_fn: the reference at a fixed seed, written to path atomically. */
-static struct image *render_reference(void *ctx, const char *path, char *err, size_t errlen)
-{
-    const struct ref_job *j = ctx;
-    fprintf(stderr, "%s: rendering the %s reference (%d spp, %dx%d) into %s\n", j->prog, method_name(j->method), j->spp,
-            j->sc->cam.width, j->sc->cam.height, path);
-    struct render_opts o = {.method = j->method,
-                            .spp = j->spp,
-                            .seed = 12345,
-                            .threads = j->threads,
-                            .max_length = j->sc->max_length,
-                            .progress = isatty(2)};
-    struct render_stats st;
-    struct image *ref = render_mc(j->sc, &o, &st);
-    if (!img_write_exr(ref, 1, path, err, errlen)) {
-        img_destroy(ref);
-        return NULL;
-    }
-    return ref;
-}
 
 struct image *ch4_reference(const struct scene *sc, enum method method, int spp, const char *path, int threads,
                             const char *prog, char *err, size_t errlen)
 {
-    char settings[256];
-    snprintf(settings, sizeof settings, "%s spp=%d seed=12345 max_length=%d resolution=%dx%d", method_name(method), spp,
-             sc->max_length, sc->cam.width, sc->cam.height);
-    struct refcache rc = {.path = path, .scene_hash = ckpt_scene_hash(sc), .settings = settings};
-    struct image *ref = refcache_load(&rc);
-    if (ref) {
-        fprintf(stderr, "%s: using cached reference %s\n", prog, path);
-        return ref;
-    }
-    struct ref_job j = {sc, method, spp, threads, prog};
-    return refcache_get(&rc, render_reference, &j, err, errlen);
+    struct reference_spec spec = {
+        .path = path, .method = method, .spp = spp, .seed = 12345, .max_length = sc->max_length, .threads = threads};
+    return reference_render_cached(prog, sc, &spec, err, errlen);
 }
 
 bool ch4_write_pair(const struct image *im, const char *dir, const char *name, char *err, size_t errlen)
@@ -103,24 +62,6 @@ double ch4_pixel_noise_var(const struct image *ref)
     return n ? s / n / 2 : 0;
 }
 
-bool ch4_write_texts(const char *prog, const char *dir, int n, const char *const *names, char **texts, char *err,
-                     size_t errlen)
-{
-    bool ok = true;
-    char path[4096];
-    for (int i = 0; i < n; i++) {
-        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-        ok = ok && write_text_atomic(path, texts[i], err, errlen);
-        free(texts[i]);
-    }
-    if (!ok) return false;
-    fprintf(stderr, "%s: wrote", prog);
-    for (int i = 0; i < n; i++)
-        fprintf(stderr, "%s %s/%s", i ? "," : "", dir, names[i]);
-    fputc('\n', stderr);
-    return true;
-}
-
 bool ch4_show_claims(char *md)
 {
     if (md) fputs(md, stderr);
@@ -150,4 +91,10 @@ void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim,
         snprintf(md + b, sizeof md - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", names[i], mean[i], se[i], z[i]);
     }
     claims_row(cl, source, claim, stat, names[m], mean[m], se[m], zs, md, &v);
+}
+
+void ch4_stat_row_of(struct ch4_stat_row *row, const double *x, int seeds)
+{
+    row->seeds = seeds;
+    mean_se(x, seeds, &row->mean, &row->se);
 }

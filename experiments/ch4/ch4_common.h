@@ -35,10 +35,15 @@ double ch4_pixel_noise_var(const struct image *ref);
  * the verdict is verdict_extreme's over the seeds, the row lists every other method's mean and z. */
 void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim, const char *stat,
                        const char *const *names, const double *x, int n, const bool *have, int m, int sign, int seeds);
-/* Writes texts[i] to DIR/names[i] atomically, then frees the texts; on success says which files on
- * stderr ("PROG: wrote ..."). False with a message at the first failure. */
-bool ch4_write_texts(const char *prog, const char *dir, int n, const char *const *names, char **texts, char *err,
-                     size_t errlen);
+/* The statistics row the figures share (fig4_1, fig4_2, fig4_3): one quantity of one configuration
+ * over the seeds (the resolution column is fig4_2's only). */
+struct ch4_stat_row {
+    const char *config, *quantity;
+    int resolution, seeds;
+    double mean, se;
+};
+/* Fills row's mean and se from the seeds values at x (verdict.h's mean_se). */
+void ch4_stat_row_of(struct ch4_stat_row *row, const double *x, int seeds);
 /* A tool's claims table (claims_finish's Markdown) to stderr, freed; false when it is NULL (the
  * message is then in the tool's err). */
 bool ch4_show_claims(char *md);

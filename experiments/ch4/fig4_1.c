@@ -16,9 +16,11 @@
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "path/scene_ready.h"
 #include "stats/noise_corr.h"
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -147,40 +149,84 @@ static bool run(struct fig41 *t, char *err, size_t errlen)
     return true;
 }
 
-/* The rows of the three tables: per run (fr), mean and se per quantity (fs), autocorrelation
- * profiles (fp). */
-static void write_rows(const struct fig41 *t, FILE *fr, FILE *fs, FILE *fp)
+/* A row of OUT/fig4.1-runs.csv (the seed as unsigned: COL_LONG's "%lu") and of
+ * OUT/fig4.1-profiles.csv. */
+struct run_row {
+    const char *variant;
+    long seed;
+    double q[NQ], error_var;
+};
+struct profile_row {
+    const char *variant;
+    int lag;
+    double rho_x, rho_x_se, rho_y, rho_y_se;
+};
+static const struct column stat_cols[] = {
+    COL_STRING(struct ch4_stat_row, "variant", config), COL_STRING(struct ch4_stat_row, "quantity", quantity),
+    COL_INT(struct ch4_stat_row, "seeds", "%d", seeds), COL_DOUBLE(struct ch4_stat_row, "mean", "%.6g", mean),
+    COL_DOUBLE(struct ch4_stat_row, "se", "%.6g", se),  {0}};
+static const struct column profile_cols[] = {COL_STRING(struct profile_row, "variant", variant),
+                                             COL_INT(struct profile_row, "lag", "%d", lag),
+                                             COL_DOUBLE(struct profile_row, "rho_x", "%.6g", rho_x),
+                                             COL_DOUBLE(struct profile_row, "rho_x_se", "%.6g", rho_x_se),
+                                             COL_DOUBLE(struct profile_row, "rho_y", "%.6g", rho_y),
+                                             COL_DOUBLE(struct profile_row, "rho_y_se", "%.6g", rho_y_se),
+                                             {0}};
+
+/* The metadata lines of all three tables. */
+static void write_meta(FILE *f, const void *ctx)
+{
+    const struct fig41 *t = ctx;
+    const struct opts_figure *fo = &t->fo;
+    csv_meta_head(f, "fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)",
+                  fo->scene, fo->scale);
+    csv_meta(f, "resolution", "%dx%d", t->res[0], t->res[1]);
+    csv_meta(f, "mutations_per_pixel", "%g", t->mpp);
+    csv_meta(f, "p_large", "%g", t->p_large);
+    csv_meta(f, "kernel", "kelemen s1 1/1024 s2 1/64");
+    ch4_meta_runs(f, fo->seed, t->seeds, fo->threads);
+    csv_meta(f, "reference", "%s (PT %d spp); its pixel-noise variance %.4g", t->refpath, t->refspp, t->ref_var);
+    csv_meta(f, NULL,
+             "error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
+             " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)");
+}
+
+/* Variant v's profile row at lag d: mean and standard error over the seeds of rho_x and rho_y. */
+static void profile_row(const struct fig41 *t, int v, int d, double *tmp, struct profile_row *row)
 {
     int L = t->maxlag + 1, seeds = t->seeds;
-    fprintf(fr, "variant,seed");
-    for (int i = 0; i < NQ; i++)
-        fprintf(fr, ",%s", qn[i]);
-    fprintf(fr, ",error_var\n");
-    fprintf(fs, "variant,quantity,seeds,mean,se\n");
-    fprintf(fp, "variant,lag,rho_x,rho_x_se,rho_y,rho_y_se\n");
+    *row = (struct profile_row){.variant = names[v], .lag = d};
+    for (int s = 0; s < seeds; s++)
+        tmp[s] = t->rx[(size_t)(v * seeds + s) * L + d];
+    mean_se(tmp, seeds, &row->rho_x, &row->rho_x_se);
+    for (int s = 0; s < seeds; s++)
+        tmp[s] = t->ry[(size_t)(v * seeds + s) * L + d];
+    mean_se(tmp, seeds, &row->rho_y, &row->rho_y_se);
+}
+
+/* The rows of the three tables: per run (runs), mean and se per quantity (stats), autocorrelation
+ * profiles (profiles). */
+static void write_rows(const struct fig41 *t, struct table *runs, struct table *stats, struct table *profiles)
+{
+    int seeds = t->seeds;
     double *tmp = xmalloc(seeds * sizeof *tmp);
     for (int v = 0; v < NVAR; v++) {
         for (int s = 0; s < seeds; s++) {
             int k = v * seeds + s;
-            fprintf(fr, "%s,%llu", names[v], (unsigned long long)(t->fo.seed + s));
+            struct run_row row = {names[v], (long)(t->fo.seed + s), .error_var = t->evar[k]};
             for (int i = 0; i < NQ; i++)
-                fprintf(fr, ",%.6g", t->q[i][k]);
-            fprintf(fr, ",%.6g\n", t->evar[k]);
+                row.q[i] = t->q[i][k];
+            table_row(runs, &row);
         }
         for (int i = 0; i < NQ; i++) {
-            double mean, se;
-            mean_se(t->q[i] + v * seeds, seeds, &mean, &se);
-            fprintf(fs, "%s,%s,%d,%.6g,%.6g\n", names[v], qn[i], seeds, mean, se);
+            struct ch4_stat_row row = {.config = names[v], .quantity = qn[i]};
+            ch4_stat_row_of(&row, t->q[i] + v * seeds, seeds);
+            table_row(stats, &row);
         }
-        for (int d = 0; d < L; d++) {
-            double mx, sx, my, sy;
-            for (int s = 0; s < seeds; s++)
-                tmp[s] = t->rx[(size_t)(v * seeds + s) * L + d];
-            mean_se(tmp, seeds, &mx, &sx);
-            for (int s = 0; s < seeds; s++)
-                tmp[s] = t->ry[(size_t)(v * seeds + s) * L + d];
-            mean_se(tmp, seeds, &my, &sy);
-            fprintf(fp, "%s,%d,%.6g,%.6g,%.6g,%.6g\n", names[v], d, mx, sx, my, sy);
+        for (int d = 0; d <= t->maxlag; d++) {
+            struct profile_row row;
+            profile_row(t, v, d, tmp, &row);
+            table_row(profiles, &row);
         }
     }
     free(tmp);
@@ -189,30 +235,16 @@ static void write_rows(const struct fig41 *t, FILE *fr, FILE *fs, FILE *fp)
 /* OUT/fig4.1-runs.csv, fig4.1.csv and fig4.1-profiles.csv, with the same metadata. */
 static bool write_tables(const struct fig41 *t, char *err, size_t errlen)
 {
-    const struct opts_figure *fo = &t->fo;
-    char *rb = NULL, *sb = NULL, *pb = NULL;
-    size_t rl = 0, sl = 0, pl = 0;
-    FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl), *fp = open_memstream(&pb, &pl);
-    FILE *all[3] = {fr, fs, fp};
-    for (int i = 0; i < 3; i++) {
-        csv_meta_head(all[i],
-                      "fig4.1: PSSMLT small steps on a 16:9 diffuse wall, isotropic (iso) vs resolution-aware (rap)",
-                      fo->scene, fo->scale);
-        csv_meta(all[i], "resolution", "%dx%d", t->res[0], t->res[1]);
-        csv_meta(all[i], "mutations_per_pixel", "%g", t->mpp);
-        csv_meta(all[i], "p_large", "%g", t->p_large);
-        csv_meta(all[i], "kernel", "kelemen s1 1/1024 s2 1/64");
-        ch4_meta_runs(all[i], fo->seed, t->seeds, fo->threads);
-        csv_meta(all[i], "reference", "%s (PT %d spp); its pixel-noise variance %.4g", t->refpath, t->refspp,
-                 t->ref_var);
-        csv_meta(all[i], NULL,
-                 "error e = lum(s*I - R), s = mean lum R / mean lum I; rho = normalised autocorrelation of e;"
-                 " l_x, l_y = lag where rho(d) / rho(1) falls below 1/e (pixels); rho1 = rho(1)");
-    }
-    write_rows(t, fr, fs, fp);
-    fclose(fr), fclose(fs), fclose(fp);
-    const char *names[3] = {"fig4.1-runs.csv", "fig4.1.csv", "fig4.1-profiles.csv"};
-    return ch4_write_texts(prog, fo->out, 3, names, (char *[]){rb, sb, pb}, err, errlen);
+    struct column run_cols[NQ + 4] = {COL_STRING(struct run_row, "variant", variant),
+                                      COL_LONG(struct run_row, "seed", "%lu", seed)};
+    table_columns(run_cols + 2, NQ, qn, COL_D, offsetof(struct run_row, q), sizeof(double), "%.6g");
+    run_cols[NQ + 2] = (struct column)COL_DOUBLE(struct run_row, "error_var", "%.6g", error_var);
+    run_cols[NQ + 3] = (struct column){0};
+    struct table_set tb;
+    table_set_open(&tb, 3, (const char *[]){"fig4.1-runs.csv", "fig4.1.csv", "fig4.1-profiles.csv"},
+                   (const struct column *[]){run_cols, stat_cols, profile_cols}, write_meta, t);
+    write_rows(t, &tb.t[0], &tb.t[1], &tb.t[2]);
+    return table_set_save(&tb, prog, t->fo.out, err, errlen);
 }
 
 int main(int argc, char **argv)

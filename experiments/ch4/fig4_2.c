@@ -21,8 +21,10 @@
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "path/scene_ready.h"
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -182,10 +184,7 @@ static bool run_wall(struct fig42 *t, struct scene *sc, char *err, size_t errlen
 static bool run_glossy(struct fig42 *t, char *err, size_t errlen)
 {
     struct scene *gsc = scene_load(t->glossy_scene, err, errlen);
-    if (!gsc) {
-        fprintf(stderr, "%s\n", err);
-        exit(2);
-    }
+    if (!gsc) die(DIE_USAGE, prog, "%s", err);
     t->gacc = xcalloc((size_t)NGLOSSY * t->seeds, sizeof *t->gacc);
     bool ok = true;
     for (int c = 0; c < NGLOSSY && ok; c++) {
@@ -201,68 +200,98 @@ static bool run_glossy(struct fig42 *t, char *err, size_t errlen)
     return ok;
 }
 
-/* The rows of OUT/fig4.2-runs.csv (fr) and OUT/fig4.2.csv (fs). */
-static void write_rows(const struct fig42 *t, FILE *fr, FILE *fs)
+/* A row of OUT/fig4.2-runs.csv: the quantities as text, since a glossy run has small_accept only
+ * (the other cells empty); the seed as unsigned (COL_LONG's "%lu"). */
+struct run_row {
+    const char *config;
+    int resolution;
+    long seed;
+    const char *q[NQ];
+};
+static const struct column stat_cols[] = {COL_STRING(struct ch4_stat_row, "config", config),
+                                          COL_INT(struct ch4_stat_row, "resolution", "%d", resolution),
+                                          COL_STRING(struct ch4_stat_row, "quantity", quantity),
+                                          COL_INT(struct ch4_stat_row, "seeds", "%d", seeds),
+                                          COL_DOUBLE(struct ch4_stat_row, "mean", "%.6g", mean),
+                                          COL_DOUBLE(struct ch4_stat_row, "se", "%.6g", se),
+                                          {0}};
+
+/* The metadata lines of both tables. */
+static void write_meta(FILE *f, const void *ctx)
+{
+    const struct fig42 *t = ctx;
+    const struct opts_figure *fo = &t->fo;
+    csv_meta_head(f,
+                  "fig4.2: PSSMLT small steps on a square diffuse wall at 1024, 512, 256 and with"
+                  " --rap-resolution (reference 1024 px) at 256",
+                  fo->scene, fo->scale);
+    csv_meta(f, "mutations_per_pixel", "%g", t->mpp);
+    csv_meta(f, "p_large", "%g", t->p_large);
+    csv_meta(f, "kernel", "kelemen s1 1/1024 s2 1/64");
+    ch4_meta_runs(f, fo->seed, t->seeds, fo->threads);
+    csv_meta(f, "reference", "PT %d spp", t->refspp);
+    for (int c = 0; c < NCONF; c++)
+        csv_meta(f, NULL, "%s: reference pixel-noise variance %.4g, error variance %.4g", names[c], t->refvar[c],
+                 t->errvar[c]);
+    csv_meta(f, NULL,
+             "l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
+             " l = their mean; rho1 = mean lag-1 autocorrelation");
+    csv_meta(f, "glossy", "%s, %ld mutations per run (glossy-*: small_accept only)", t->glossy_scene, t->gmut);
+}
+
+/* One run's row: quantity i from x[i] (NULL: an empty cell). */
+static void run_row(struct table *runs, const char *config, int resolution, uint64_t seed, const double *const *x)
+{
+    char cell[NQ][32];
+    struct run_row row = {.config = config, .resolution = resolution, .seed = (long)seed};
+    for (int i = 0; i < NQ; i++) {
+        cell[i][0] = 0;
+        if (x[i]) snprintf(cell[i], sizeof cell[i], "%.6g", *x[i]);
+        row.q[i] = cell[i];
+    }
+    table_row(runs, &row);
+}
+
+/* The rows of OUT/fig4.2-runs.csv (runs) and OUT/fig4.2.csv (stats). */
+static void write_rows(const struct fig42 *t, struct table *runs, struct table *stats)
 {
     int seeds = t->seeds;
-    fprintf(fr, "config,resolution,seed");
-    for (int i = 0; i < NQ; i++)
-        fprintf(fr, ",%s", qn[i]);
-    fprintf(fr, "\n");
-    fprintf(fs, "config,resolution,quantity,seeds,mean,se\n");
     for (int c = 0; c < NCONF; c++) {
         for (int s = 0; s < seeds; s++) {
-            fprintf(fr, "%s,%d,%llu", names[c], res[c], (unsigned long long)(t->fo.seed + s));
+            const double *x[NQ];
             for (int i = 0; i < NQ; i++)
-                fprintf(fr, ",%.6g", t->q[i][c * seeds + s]);
-            fprintf(fr, "\n");
+                x[i] = &t->q[i][c * seeds + s];
+            run_row(runs, names[c], res[c], t->fo.seed + s, x);
         }
         for (int i = 0; i < NQ; i++) {
-            double mean, se;
-            mean_se(t->q[i] + c * seeds, seeds, &mean, &se);
-            fprintf(fs, "%s,%d,%s,%d,%.6g,%.6g\n", names[c], res[c], qn[i], seeds, mean, se);
+            struct ch4_stat_row row = {.config = names[c], .quantity = qn[i], .resolution = res[c]};
+            ch4_stat_row_of(&row, t->q[i] + c * seeds, seeds);
+            table_row(stats, &row);
         }
     }
     for (int c = 0; c < NGLOSSY; c++) {
         for (int s = 0; s < seeds; s++)
-            fprintf(fr, "%s,%d,%llu,,,,,,%.6g\n", gnames[c], gres[c], (unsigned long long)(t->fo.seed + s),
-                    t->gacc[c * seeds + s]);
-        double mean, se;
-        mean_se(t->gacc + c * seeds, seeds, &mean, &se);
-        fprintf(fs, "%s,%d,small_accept,%d,%.6g,%.6g\n", gnames[c], gres[c], seeds, mean, se);
+            run_row(runs, gnames[c], gres[c], t->fo.seed + s,
+                    (const double *[NQ]){[Q_ACCEPT] = &t->gacc[c * seeds + s]});
+        struct ch4_stat_row row = {.config = gnames[c], .quantity = "small_accept", .resolution = gres[c]};
+        ch4_stat_row_of(&row, t->gacc + c * seeds, seeds);
+        table_row(stats, &row);
     }
 }
 
 /* OUT/fig4.2-runs.csv and OUT/fig4.2.csv, with the same metadata. */
 static bool write_tables(const struct fig42 *t, char *err, size_t errlen)
 {
-    const struct opts_figure *fo = &t->fo;
-    char *rb = NULL, *sb = NULL;
-    size_t rl = 0, sl = 0;
-    FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
-    FILE *all[2] = {fr, fs};
-    for (int i = 0; i < 2; i++) {
-        csv_meta_head(all[i],
-                      "fig4.2: PSSMLT small steps on a square diffuse wall at 1024, 512, 256 and with"
-                      " --rap-resolution (reference 1024 px) at 256",
-                      fo->scene, fo->scale);
-        csv_meta(all[i], "mutations_per_pixel", "%g", t->mpp);
-        csv_meta(all[i], "p_large", "%g", t->p_large);
-        csv_meta(all[i], "kernel", "kelemen s1 1/1024 s2 1/64");
-        ch4_meta_runs(all[i], fo->seed, t->seeds, fo->threads);
-        csv_meta(all[i], "reference", "PT %d spp", t->refspp);
-        for (int c = 0; c < NCONF; c++)
-            csv_meta(all[i], NULL, "%s: reference pixel-noise variance %.4g, error variance %.4g", names[c],
-                     t->refvar[c], t->errvar[c]);
-        csv_meta(all[i], NULL,
-                 "l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
-                 " l = their mean; rho1 = mean lag-1 autocorrelation");
-        csv_meta(all[i], "glossy", "%s, %ld mutations per run (glossy-*: small_accept only)", t->glossy_scene, t->gmut);
-    }
-    write_rows(t, fr, fs);
-    fclose(fr), fclose(fs);
-    const char *names[2] = {"fig4.2-runs.csv", "fig4.2.csv"};
-    return ch4_write_texts(prog, fo->out, 2, names, (char *[]){rb, sb}, err, errlen);
+    struct column run_cols[NQ + 4] = {COL_STRING(struct run_row, "config", config),
+                                      COL_INT(struct run_row, "resolution", "%d", resolution),
+                                      COL_LONG(struct run_row, "seed", "%lu", seed)};
+    table_columns(run_cols + 3, NQ, qn, COL_STR, offsetof(struct run_row, q), sizeof(const char *), "%s");
+    run_cols[NQ + 3] = (struct column){0};
+    struct table_set tb;
+    table_set_open(&tb, 2, (const char *[]){"fig4.2-runs.csv", "fig4.2.csv"},
+                   (const struct column *[]){run_cols, stat_cols}, write_meta, t);
+    write_rows(t, &tb.t[0], &tb.t[1]);
+    return table_set_save(&tb, prog, t->fo.out, err, errlen);
 }
 
 int main(int argc, char **argv)

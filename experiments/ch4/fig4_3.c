@@ -16,6 +16,7 @@
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include <math.h>
@@ -44,15 +45,11 @@ struct fig43 {
 
 static bool write_stats(const struct mlt_stats *st, const char *method, const char *dir, char *err, size_t n)
 {
-    char *buf = NULL, path[4096];
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    stats_write_csv(f, method, st, true);
-    fclose(f);
+    char path[4096];
+    struct text_out t;
+    if (text_out_open(&t)) stats_write_csv(t.f, method, st, true);
     snprintf(path, sizeof path, "%s/%s-stats.csv", dir, method);
-    bool ok = write_text_atomic(path, buf, err, n);
-    free(buf);
-    return ok;
+    return text_out_save(&t, path, err, n);
 }
 
 /* Thesis §4.2 on Figure 4.3, at equal samples per pixel. */
@@ -139,61 +136,76 @@ static bool run_one(struct fig43 *t, int m, int s, char *err, size_t errlen)
     return ok;
 }
 
-/* The rows of OUT/fig4.3-runs.csv (fr) and OUT/fig4.3.csv (fs). */
-static void write_rows(const struct fig43 *t, FILE *fr, FILE *fs)
+/* A row of OUT/fig4.3-runs.csv (the seed as unsigned: COL_LONG's "%lu"). */
+struct run_row {
+    const char *method;
+    long seed;
+    double relmse, small_accept, seconds;
+};
+static const struct column run_cols[] = {COL_STRING(struct run_row, "method", method),
+                                         COL_LONG(struct run_row, "seed", "%lu", seed),
+                                         COL_DOUBLE(struct run_row, "relmse", "%.6g", relmse),
+                                         COL_DOUBLE(struct run_row, "small_accept", "%.6g", small_accept),
+                                         COL_DOUBLE(struct run_row, "seconds", "%.3f", seconds),
+                                         {0}};
+static const struct column stat_cols[] = {
+    COL_STRING(struct ch4_stat_row, "method", config),  COL_STRING(struct ch4_stat_row, "quantity", quantity),
+    COL_INT(struct ch4_stat_row, "seeds", "%d", seeds), COL_DOUBLE(struct ch4_stat_row, "mean", "%.6g", mean),
+    COL_DOUBLE(struct ch4_stat_row, "se", "%.6g", se),  {0}};
+
+/* The metadata lines of both tables. */
+static void write_meta(FILE *f, const void *ctx)
 {
-    int seeds = t->seeds, spp = t->spp, refspp = t->refspp;
-    fprintf(fr, "method,seed,relmse,small_accept,seconds\n");
-    fprintf(fs, "method,quantity,seeds,mean,se\n");
-    for (int m = 0; m < NMETH; m++) {
-        for (int s = 0; s < seeds; s++) {
-            int k = m * seeds + s;
-            fprintf(fr, "%s,%llu,%.6g,%.6g,%.3f\n", names[m], (unsigned long long)(t->fo.seed + s), t->rel[k],
-                    t->acc[k], t->sec[k]);
-        }
-        double mean, se;
-        mean_se(t->rel + m * seeds, seeds, &mean, &se);
-        fprintf(fs, "%s,relmse,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
-        if (m > 0) {
-            mean_se(t->acc + m * seeds, seeds, &mean, &se);
-            fprintf(fs, "%s,small_accept,%d,%.6g,%.6g\n", names[m], seeds, mean, se);
-        }
-        if (m == 0) {
-            /* relMSE(BDPT, R) = V (1/spp + 1/refspp) for BDPT's per-sample variance term V: the
-             * reference's own share V / refspp is part of every method's relMSE */
-            mean_se(t->rel, seeds, &mean, &se);
-            fprintf(fs, "reference,relmse_own,%d,%.6g,%.6g\n", seeds, mean * spp / (spp + refspp),
-                    se * spp / (spp + refspp));
-        }
+    const struct fig43 *t = ctx;
+    const struct opts_figure *fo = &t->fo;
+    csv_meta_head(f,
+                  "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
+                  fo->scene, fo->scale);
+    csv_meta(f, "resolution", "%dx%d", t->sc->cam.width, t->sc->cam.height);
+    csv_meta(f, "spp", "%d", t->spp);
+    csv_meta(f, "p_large", "%g", t->p_large);
+    ch4_meta_runs(f, fo->seed, t->seeds, fo->threads);
+    csv_meta(f, "reference", "%s (BDPT %d spp)", t->refpath, t->refspp);
+    csv_meta(f, NULL,
+             "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
+             "min(1, a) of small steps");
+}
+
+/* Method m's rows of OUT/fig4.3.csv (stats). */
+static void write_stats_rows(const struct fig43 *t, int m, struct table *stats)
+{
+    int seeds = t->seeds;
+    struct ch4_stat_row row = {.config = names[m], .quantity = "relmse"};
+    ch4_stat_row_of(&row, t->rel + m * seeds, seeds);
+    table_row(stats, &row);
+    if (m > 0) {
+        row.quantity = "small_accept";
+        ch4_stat_row_of(&row, t->acc + m * seeds, seeds);
+        table_row(stats, &row);
+    } else {
+        /* relMSE(BDPT, R) = V (1/spp + 1/refspp) for BDPT's per-sample variance term V: the
+         * reference's own share V / refspp is part of every method's relMSE */
+        int spp = t->spp, sum = t->spp + t->refspp;
+        row = (struct ch4_stat_row){"reference", "relmse_own", 0, seeds, row.mean * spp / sum, row.se * spp / sum};
+        table_row(stats, &row);
     }
 }
 
 /* OUT/fig4.3-runs.csv and OUT/fig4.3.csv, with the same metadata. */
 static bool write_tables(const struct fig43 *t, char *err, size_t errlen)
 {
-    const struct opts_figure *fo = &t->fo;
-    char *rb = NULL, *sb = NULL;
-    size_t rl = 0, sl = 0;
-    FILE *fr = open_memstream(&rb, &rl), *fs = open_memstream(&sb, &sl);
-    FILE *all[2] = {fr, fs};
-    for (int i = 0; i < 2; i++) {
-        csv_meta_head(
-            all[i],
-            "fig4.3: BDPT vs PSSMLT vs PSSMLT with constrained discrete choices (--cdc), equal samples per pixel",
-            fo->scene, fo->scale);
-        csv_meta(all[i], "resolution", "%dx%d", t->sc->cam.width, t->sc->cam.height);
-        csv_meta(all[i], "spp", "%d", t->spp);
-        csv_meta(all[i], "p_large", "%g", t->p_large);
-        ch4_meta_runs(all[i], fo->seed, t->seeds, fo->threads);
-        csv_meta(all[i], "reference", "%s (BDPT %d spp)", t->refpath, t->refspp);
-        csv_meta(all[i], NULL,
-                 "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01); small_accept = mean "
-                 "min(1, a) of small steps");
+    struct table_set tb;
+    table_set_open(&tb, 2, (const char *[]){"fig4.3-runs.csv", "fig4.3.csv"},
+                   (const struct column *[]){run_cols, stat_cols}, write_meta, t);
+    for (int m = 0; m < NMETH; m++) {
+        for (int s = 0; s < t->seeds; s++) {
+            int k = m * t->seeds + s;
+            struct run_row row = {names[m], (long)(t->fo.seed + s), t->rel[k], t->acc[k], t->sec[k]};
+            table_row(&tb.t[0], &row);
+        }
+        write_stats_rows(t, m, &tb.t[1]);
     }
-    write_rows(t, fr, fs);
-    fclose(fr), fclose(fs);
-    const char *names[2] = {"fig4.3-runs.csv", "fig4.3.csv"};
-    return ch4_write_texts(prog, fo->out, 2, names, (char *[]){rb, sb}, err, errlen);
+    return table_set_save(&tb, prog, t->fo.out, err, errlen);
 }
 
 int main(int argc, char **argv)

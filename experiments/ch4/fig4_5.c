@@ -23,6 +23,7 @@
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include <math.h>
@@ -110,16 +111,11 @@ static void claims_predicted(struct claims *cl, const struct accept_table *t, co
     }
 }
 
-/* Thesis §4.3 on Figure 4.5. The errors are one run's batch-means errors, so "seeds_needed" counts
- * runs of this budget. */
-static char *claims(const struct accept_table *t, const struct trials_table *tr, const char *out, const char *scale,
-                    char *err, size_t errlen)
+/* Thesis §4.3's statements on Figure 4.5: MCTLS above MMLT at every length, up to 5x at the
+ * longest, about 1x for short paths; MMLT large steps consistently low. */
+static void claims_thesis(struct claims *cl, const struct accept_table *t)
 {
-    struct claims cl;
-    char command[64], zs[256], md[512];
-    snprintf(command, sizeof command, "make fig4.5 SCALE=%s", scale);
-    claims_begin(&cl, scale, command, "Claims of thesis §4.3 on Fig. 4.5, lengths 2-%d (batch-means errors of one run)",
-                 t->K);
+    char zs[256], md[512];
     /* MCTLS above MMLT at every length: the smallest z over the lengths decides */
     const bool both[2] = {true, true};
     struct verdict worst = {"holds", INFINITY, -1, 0};
@@ -131,28 +127,37 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     }
     snprintf(zs, sizeof zs, "mmlt-large=%.2f@%d", worst.zmin, at);
     snprintf(md, sizeof md, "MMLT large steps at each length; smallest z = %.1f at length %d", worst.zmin, at);
-    claims_row(&cl, "thesis §4.3", "MCTLS is accepted more often than MMLT large steps at every length",
+    claims_row(cl, "thesis §4.3", "MCTLS is accepted more often than MMLT large steps at every length",
                "mean acceptance per length", "mctls", t->mean[1][at], t->se[1][at], zs, md, &worst);
     double r, rse;
     ratio_at(t, t->K, &r, &rse);
     struct verdict v = verdict_similar(r, rse, 5, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% at length %d (z = %.1f)", t->K, v.zmin);
-    claims_row(&cl, "thesis §4.3", "MCTLS is up to five times more likely to be accepted at the longest length",
+    claims_row(cl, "thesis §4.3", "MCTLS is up to five times more likely to be accepted at the longest length",
                "acceptance ratio MCTLS / MMLT", "mctls", r, rse, zs, md, &v);
     ratio_at(t, 2, &r, &rse);
     v = verdict_similar(r, rse, 1, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "1x=%.2f", v.zmin);
     snprintf(md, sizeof md, "1 within ±25 %% at length 2 (z = %.1f)", v.zmin);
-    claims_row(&cl, "thesis §4.3", "MCTLS is rejected about as often as MMLT large steps for short paths",
+    claims_row(cl, "thesis §4.3", "MCTLS is rejected about as often as MMLT large steps for short paths",
                "acceptance ratio MCTLS / MMLT at length 2", "mctls", r, rse, zs, md, &v);
     v = verdict_similar(t->mean[0][t->K], t->se[0][t->K], t->mean[0][2], t->se[0][2], 0.25, 1);
     snprintf(zs, sizeof zs, "length2=%.2f", v.zmin);
     snprintf(md, sizeof md, "length 2: %.4g ± %.2g, within ±25 %% (z = %.1f)", t->mean[0][2], t->se[0][2], v.zmin);
     char stat[96];
     snprintf(stat, sizeof stat, "MMLT large-step acceptance at length %d", t->K);
-    claims_row(&cl, "thesis §4.3", "MMLT large steps are consistently low over all path lengths", stat, "mmlt-large",
+    claims_row(cl, "thesis §4.3", "MMLT large steps are consistently low over all path lengths", stat, "mmlt-large",
                t->mean[0][t->K], t->se[0][t->K], zs, md, &v);
+}
+
+/* The harness's checks of the drawn trials and the caption's reason (more trials for longer paths,
+ * more proposals with light). */
+static void claims_trials(struct claims *cl, const struct accept_table *t)
+{
+    char zs[256], md[512], stat[96];
+    double r, rse;
+    struct verdict v;
     /* one drawn trial is an MMLT large step (a check of the drawn trials): the acceptance averaged
      * over lengths 2..K (equal mutations per length) within ±5 % */
     double m1, s1, m0, s0;
@@ -162,14 +167,14 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     snprintf(zs, sizeof zs, "mmlt-large5%%=%.2f", v.zmin);
     snprintf(md, sizeof md, "MMLT large steps %.4g ± %.2g within ±5 %% (z = %.1f)", m0, s0, v.zmin);
     snprintf(stat, sizeof stat, "large-step acceptance, mean over lengths 2-%d", t->K);
-    claims_row(&cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1, s1,
+    claims_row(cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1, s1,
                zs, md, &v);
     /* the thesis's count: its MMLT large steps draw among k + 2 techniques, t = 0 always failing */
     ratio_of(t, V_MCTLS, V_TRIES1_T0, t->K, &r, &rse);
     v = verdict_similar(r, rse, 5, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% at length %d (z = %.1f)", t->K, v.zmin);
-    claims_row(&cl, "thesis §4.3",
+    claims_row(cl, "thesis §4.3",
                "up to five times at the longest length, counting k + 2 techniques as the thesis does",
                "acceptance ratio MCTLS / MMLT large steps among k + 2", "mctls", r, rse, zs, md, &v);
     /* the caption's reason: longer paths give more trials. With a fixed number of trials (4) the
@@ -181,7 +186,7 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     snprintf(zs, sizeof zs, "length3=%.2f", v.zmin);
     snprintf(md, sizeof md, "length 3: %.3g ± %.2g, within ±25 %% (z = %.1f)", r3, rse3, v.zmin);
     snprintf(stat, sizeof stat, "acceptance ratio, 4 drawn trials / MMLT, at length %d", t->K);
-    claims_row(&cl, "thesis Fig. 4.5 caption",
+    claims_row(cl, "thesis Fig. 4.5 caption",
                "MCTLS gains with length because longer paths give more trials: at a fixed number of trials the gain "
                "stays flat",
                stat, "mctls-tries4", r, rse, zs, md, &v);
@@ -195,20 +200,97 @@ static char *claims(const struct accept_table *t, const struct trials_table *tr,
     snprintf(zs, sizeof zs, "length3=%.2f", lz[1]);
     snprintf(md, sizeof md, "length 3: %.3g ± %.2g (z = %.1f)", r3, rse3, lz[1]);
     snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
-    claims_row(&cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
+    claims_row(cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
                "mctls", r, rse, zs, md, &v);
+}
+
+/* Thesis §4.3 on Figure 4.5. The errors are one run's batch-means errors, so "seeds_needed" counts
+ * runs of this budget. */
+static char *claims(const struct accept_table *t, const struct trials_table *tr, const char *out, const char *scale,
+                    char *err, size_t errlen)
+{
+    struct claims cl;
+    char command[64];
+    snprintf(command, sizeof command, "make fig4.5 SCALE=%s", scale);
+    claims_begin(&cl, scale, command, "Claims of thesis §4.3 on Fig. 4.5, lengths 2-%d (batch-means errors of one run)",
+                 t->K);
+    claims_thesis(&cl, t);
+    claims_trials(&cl, t);
     claims_predicted(&cl, t, tr);
     return claims_finish(&cl, out, err, errlen);
+}
+
+/* A row of OUT/fig4.5.csv: one variant's large steps of one length. */
+struct accept_row {
+    const char *method;
+    int length;
+    long attempts;
+    double mean_accept, se, accepted_fraction, seconds;
+};
+static const struct column accept_cols[] = {
+    COL_STRING(struct accept_row, "method", method),
+    COL_INT(struct accept_row, "length", "%d", length),
+    COL_LONG(struct accept_row, "attempts", "%ld", attempts),
+    COL_DOUBLE(struct accept_row, "mean_accept", "%.9g", mean_accept),
+    COL_DOUBLE(struct accept_row, "stderr", "%.9g", se),
+    COL_DOUBLE(struct accept_row, "accepted_fraction", "%.9g", accepted_fraction),
+    COL_DOUBLE(struct accept_row, "seconds", "%.4f", seconds),
+    {0}};
+/* A row of OUT/fig4.5-ratios.csv. */
+struct ratio_row {
+    const char *ratio;
+    int length;
+    double value, se;
+};
+static const struct column ratio_cols[] = {COL_STRING(struct ratio_row, "ratio", ratio),
+                                           COL_INT(struct ratio_row, "length", "%d", length),
+                                           COL_DOUBLE(struct ratio_row, "value", "%.6g", value),
+                                           COL_DOUBLE(struct ratio_row, "se", "%.3g", se),
+                                           {0}};
+
+/* Variant m's chain over all lengths: its rows of OUT/fig4.5.csv, its acceptances into tab. */
+static bool run_variant(const struct opts_accept *a, const struct scene *sc, int m, struct table *out,
+                        struct accept_table *tab, char *err, size_t errlen)
+{
+    int K = a->max_length;
+    const struct variant *va = &variants[m];
+    struct mlt_opts o = {.method = MLT_MMLT,
+                         .p_large = 1,
+                         .mutations = a->mutations,
+                         .seed_paths = a->fig.paper ? 1000000 : 100000,
+                         .seed = a->fig.seed,
+                         .threads = a->fig.threads,
+                         .max_length = K,
+                         .progress = isatty(2),
+                         .large_step = va->step,
+                         .mctls_tries = va->tries,
+                         .mctls_count_t0 = va->t0,
+                         .uniform_lengths = true,
+                         .time_proposals = true};
+    pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+    fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", va->name, a->mutations, K);
+    struct mlt_result r;
+    if (!mlt_render(sc, &o, &r, err, errlen)) return false;
+    enum proposal_kind kind = va->step == LARGE_MMLT ? PROPOSAL_LARGE : PROPOSAL_MCTLS;
+    for (int k = 1; k <= K; k++) {
+        /* both technique outcomes together: the figure plots all large steps of a length */
+        const struct accept_cell *c = &r.stats.any[kind][k];
+        if (!c->attempts) continue;
+        table_row(out, &(struct accept_row){va->name, k, c->attempts, cell_mean(c), cell_stderr(c),
+                                            (double)c->accepted / c->attempts, c->seconds});
+        tab->mean[m][k] = cell_mean(c), tab->se[m][k] = cell_stderr(c);
+        tab->nonzero[m][k] = (double)c->nonzero / c->attempts, tab->attempts[m][k] = c->attempts;
+    }
+    mlt_result_free(&r);
+    return true;
 }
 
 /* Every variant's chain over all lengths: OUT/fig4.5.csv, and its acceptances into tab. */
 static bool run_variants(const struct opts_accept *a, const struct scene *sc, struct accept_table *tab, char *err,
                          size_t errlen)
 {
-    int K = a->max_length;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.5.csv", accept_cols);
     csv_meta_head(f, "fig4.5: MMLT large steps vs MCTLS, p_large = 1, no small steps, uniform length budgets",
                   a->fig.scene, a->fig.scale);
     csv_meta(f, NULL,
@@ -217,65 +299,40 @@ static bool run_variants(const struct opts_accept *a, const struct scene *sc, st
     csv_meta(f, "seed", "%llu", (unsigned long long)a->fig.seed);
     csv_meta(f, "threads", "%d", a->fig.threads);
     csv_meta(f, "mutations_per_method", "%ld", a->mutations);
-    fprintf(f, "method,length,attempts,mean_accept,stderr,accepted_fraction,seconds\n");
-    for (int m = 0; m < NV; m++) {
-        const struct variant *va = &variants[m];
-        struct mlt_opts o = {.method = MLT_MMLT,
-                             .p_large = 1,
-                             .mutations = a->mutations,
-                             .seed_paths = a->fig.paper ? 1000000 : 100000,
-                             .seed = a->fig.seed,
-                             .threads = a->fig.threads,
-                             .max_length = K,
-                             .progress = isatty(2),
-                             .large_step = va->step,
-                             .mctls_tries = va->tries,
-                             .mctls_count_t0 = va->t0,
-                             .uniform_lengths = true,
-                             .time_proposals = true};
-        pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
-        fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", va->name, a->mutations, K);
-        struct mlt_result r;
-        if (!mlt_render(sc, &o, &r, err, errlen)) {
-            fclose(f);
-            free(buf);
+    table_header(&tb.t[0]);
+    for (int m = 0; m < NV; m++)
+        if (!run_variant(a, sc, m, &tb.t[0], tab, err, errlen)) {
+            text_out_free(&tb.t[0].out);
             return false;
         }
-        enum proposal_kind kind = va->step == LARGE_MMLT ? PROPOSAL_LARGE : PROPOSAL_MCTLS;
+    return table_set_save(&tb, "fig4_5", a->fig.out, err, errlen);
+}
+
+/* The ratio rows of OUT/fig4.5-ratios.csv whose shape the figure is about. */
+static void write_ratio_rows(int K, const struct accept_table *tab, struct table *out)
+{
+    const int pairs[][2] = {
+        {V_MCTLS, V_MMLT}, {V_MCTLS, V_TRIES1_T0}, {V_TRIES1, V_MMLT}, {V_TRIES2, V_MMLT}, {V_TRIES4, V_MMLT}};
+    char name[128];
+    for (size_t p = 0; p < sizeof pairs / sizeof *pairs; p++)
         for (int k = 1; k <= K; k++) {
-            /* both technique outcomes together: the figure plots all large steps of a length */
-            const struct accept_cell *c = &r.stats.any[kind][k];
-            if (!c->attempts) continue;
-            fprintf(f, "%s,%d,%ld,%.9g,%.9g,%.9g,%.4f\n", va->name, k, c->attempts, cell_mean(c), cell_stderr(c),
-                    (double)c->accepted / c->attempts, c->seconds);
-            tab->mean[m][k] = cell_mean(c), tab->se[m][k] = cell_stderr(c);
-            tab->nonzero[m][k] = (double)c->nonzero / c->attempts, tab->attempts[m][k] = c->attempts;
+            if (!(tab->mean[pairs[p][0]][k] > 0 && tab->mean[pairs[p][1]][k] > 0)) continue;
+            struct ratio_row row = {.ratio = name, .length = k};
+            ratio_of(tab, pairs[p][0], pairs[p][1], k, &row.value, &row.se);
+            snprintf(name, sizeof name, "%s/%s", variants[pairs[p][0]].name, variants[pairs[p][1]].name);
+            table_row(out, &row);
         }
-        mlt_result_free(&r);
-    }
-    fclose(f);
-    return ch4_write_texts("fig4_5", a->fig.out, 1, (const char *[]){"fig4.5.csv"}, &buf, err, errlen);
 }
 
 /* OUT/fig4.5-ratios.csv: the ratios whose shape the figure is about, with first-order standard errors. */
 static bool write_ratios(const struct opts_accept *a, const struct accept_table *tab, char *err, size_t errlen)
 {
     int K = a->max_length;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.5-ratios.csv", ratio_cols);
     csv_meta_head(f, "fig4.5: acceptance ratios per length (first-order standard errors from the batch-means errors)",
                   a->fig.scene, a->fig.scale);
-    fprintf(f, "ratio,length,value,se\n");
-    const int pairs[][2] = {
-        {V_MCTLS, V_MMLT}, {V_MCTLS, V_TRIES1_T0}, {V_TRIES1, V_MMLT}, {V_TRIES2, V_MMLT}, {V_TRIES4, V_MMLT}};
-    for (size_t p = 0; p < sizeof pairs / sizeof *pairs; p++)
-        for (int k = 1; k <= K; k++) {
-            if (!(tab->mean[pairs[p][0]][k] > 0 && tab->mean[pairs[p][1]][k] > 0)) continue;
-            double r, rse;
-            ratio_of(tab, pairs[p][0], pairs[p][1], k, &r, &rse);
-            fprintf(f, "%s/%s,%d,%.6g,%.3g\n", variants[pairs[p][0]].name, variants[pairs[p][1]].name, k, r, rse);
-        }
+    write_ratio_rows(K, tab, &tb.t[0]);
     /* How many techniques carry light for a pair of subpaths that has any: a large step's proposal
      * is independent of the state, so both shares are binomial; an MMLT large step has a
      * contribution with probability E[n] / (k + 1) and MCTLS's trials with P(n > 0), so
@@ -285,16 +342,15 @@ static bool write_ratios(const struct opts_accept *a, const struct accept_table 
         if (!(p0 > 0 && p1 > 0)) continue;
         double v = (k + 1) * p0 / p1;
         double rse = sqrt((1 - p0) / (p0 * tab->attempts[V_MMLT][k]) + (1 - p1) / (p1 * tab->attempts[V_MCTLS][k]));
-        fprintf(f, "contributing-techniques,%d,%.6g,%.3g\n", k, v, v * rse);
+        table_row(&tb.t[0], &(struct ratio_row){"contributing-techniques", k, v, v * rse});
     }
     for (int k = 1; k <= K; k++) {
         if (!(tab->nonzero[V_MMLT][k] > 0 && tab->nonzero[V_MCTLS][k] > 0)) continue;
-        double r, rse;
-        light_ratio(tab, k, &r, &rse);
-        fprintf(f, "light:mctls/mmlt-large,%d,%.6g,%.3g\n", k, r, rse);
+        struct ratio_row row = {.ratio = "light:mctls/mmlt-large", .length = k};
+        light_ratio(tab, k, &row.value, &row.se);
+        table_row(&tb.t[0], &row);
     }
-    fclose(f);
-    return ch4_write_texts("fig4_5", a->fig.out, 1, (const char *[]){"fig4.5-ratios.csv"}, &buf, err, errlen);
+    return table_set_save(&tb, "fig4_5", a->fig.out, err, errlen);
 }
 
 /* The prediction from independent trials, four times the chains' proposals per length:
@@ -309,17 +365,14 @@ static bool run_trials(const struct opts_accept *a, const struct scene *sc, stru
         snprintf(err, errlen, "%ld mutations over %d lengths leave too few trials", a->mutations, K);
         return false;
     }
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.5-trials.csv", fig45_trials_cols);
     csv_meta_head(f, "fig4.5: acceptance per length predicted from independent pairs of subpaths (jackknife errors)",
                   a->fig.scene, a->fig.scale);
     csv_meta(f, "seed", "%llu", (unsigned long long)a->fig.seed);
     csv_meta(f, "pairs_per_length", "%ld", trial_pairs);
-    fprintf(f, "length,statistic,value,se\n");
-    fig45_trials_csv(f, tr);
-    fclose(f);
-    return ch4_write_texts("fig4_5", a->fig.out, 1, (const char *[]){"fig4.5-trials.csv"}, &buf, err, errlen);
+    fig45_trials_rows(&tb.t[0], tr);
+    return table_set_save(&tb, "fig4_5", a->fig.out, err, errlen);
 }
 
 int main(int argc, char **argv)

@@ -172,9 +172,15 @@ bool fig45_trials(const struct scene *sc, int K, long pairs, uint64_t seed, int 
     return true;
 }
 
-void fig45_trials_csv(FILE *f, const struct trials_table *t)
+const struct column fig45_trials_cols[] = {COL_INT(struct trial_row, "length", "%d", length),
+                                           COL_STRING(struct trial_row, "statistic", statistic),
+                                           COL_DOUBLE(struct trial_row, "value", "%.6g", value),
+                                           COL_DOUBLE(struct trial_row, "se", "%.3g", se),
+                                           {0}};
+
+void fig45_trials_rows(struct table *tab, const struct trials_table *t)
 {
     for (int k = 2; k <= t->K; k++)
         for (int s = 0; s < TS_COUNT; s++)
-            fprintf(f, "%d,%s,%.6g,%.3g\n", k, trial_stat_names[s], t->value[s][k], t->se[s][k]);
+            table_row(tab, &(struct trial_row){k, trial_stat_names[s], t->value[s][k], t->se[s][k]});
 }

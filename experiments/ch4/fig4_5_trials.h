@@ -6,6 +6,7 @@
 #ifndef FIG4_5_TRIALS_H
 #define FIG4_5_TRIALS_H
 
+#include "common/table.h"
 #include "sampler/sampler.h"
 #include "scene/scene.h"
 #include <stdbool.h>
@@ -36,7 +37,13 @@ struct trials_table {
  * (mcmc/mctls.h), into t; false when K is out of range. */
 bool fig45_trials(const struct scene *sc, int K, long pairs, uint64_t seed, int threads, bool progress,
                   struct trials_table *t);
-/* The CSV rows length,statistic,value,se (no header). */
-void fig45_trials_csv(FILE *f, const struct trials_table *t);
+/* The table's rows, in the columns length,statistic,value,se (fig45_trials_cols). */
+struct trial_row {
+    int length;
+    const char *statistic;
+    double value, se;
+};
+extern const struct column fig45_trials_cols[];
+void fig45_trials_rows(struct table *tab, const struct trials_table *t);
 
 #endif

@@ -15,6 +15,7 @@
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
@@ -158,13 +159,43 @@ static void analyse(struct fig46 *t)
         }
 }
 
-/* OUT/fig4.6-runs.csv and OUT/fig4.6.csv. */
-static bool write_tables(const struct fig46 *t, char *err, size_t errlen)
+/* A row of OUT/fig4.6-runs.csv (the seed as unsigned: COL_LONG's "%lu") and of OUT/fig4.6.csv. */
+struct run_row {
+    const char *method;
+    long seed;
+    struct run run;
+};
+static const struct column run_cols[] = {COL_STRING(struct run_row, "method", method),
+                                         COL_LONG(struct run_row, "seed", "%lu", seed),
+                                         COL_DOUBLE(struct run_row, "seconds", "%.3f", run.seconds),
+                                         COL_LONG(struct run_row, "mutations", "%ld", run.mutations),
+                                         COL_DOUBLE(struct run_row, "relmse", "%.6g", run.relmse),
+                                         COL_DOUBLE(struct run_row, "us_per_proposal", "%.6g", run.us_per_proposal),
+                                         COL_DOUBLE(struct run_row, "acceptance", "%.6g", run.accept),
+                                         {0}};
+struct method_row {
+    const char *method;
+    int seeds;
+    double relmse, relmse_se, us, us_se, cost, rays, acc, acc_se;
+};
+static const struct column method_cols[] = {COL_STRING(struct method_row, "method", method),
+                                            COL_INT(struct method_row, "seeds", "%d", seeds),
+                                            COL_DOUBLE(struct method_row, "relmse", "%.6g", relmse),
+                                            COL_DOUBLE(struct method_row, "relmse_se", "%.3g", relmse_se),
+                                            COL_DOUBLE(struct method_row, "us_per_proposal", "%.6g", us),
+                                            COL_DOUBLE(struct method_row, "us_per_proposal_se", "%.3g", us_se),
+                                            COL_DOUBLE(struct method_row, "cost_vs_mmlt", "%.4g", cost),
+                                            COL_DOUBLE(struct method_row, "rays_per_proposal", "%.4g", rays),
+                                            COL_DOUBLE(struct method_row, "acceptance", "%.6g", acc),
+                                            COL_DOUBLE(struct method_row, "acceptance_se", "%.3g", acc_se),
+                                            {0}};
+
+/* OUT/fig4.6-runs.csv: one row per run. */
+static bool write_runs(const struct fig46 *t, char *err, size_t errlen)
 {
     const struct opts_figure *fo = &t->fo;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.6-runs.csv", run_cols);
     csv_meta_head(
         f, "fig4.6: equal-time MMLT large steps vs MCTLS vs hybrid (p_large = 1, no small steps), one row per run",
         fo->scene, fo->scale);
@@ -173,36 +204,28 @@ static bool write_tables(const struct fig46 *t, char *err, size_t errlen)
     csv_meta(f, "reference", "%s (%d spp BDPT)", t->refpath, t->refspp);
     csv_meta(f, "hybrid_length", "%d", t->hybrid);
     csv_meta(f, NULL, "relmse = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01)");
-    fprintf(f, "method,seed,seconds,mutations,relmse,us_per_proposal,acceptance\n");
     for (int m = 0; m < METHODS; m++)
-        for (int s = 0; s < t->seeds; s++) {
-            const struct run *r = &t->R[m][s];
-            fprintf(f, "%s,%llu,%.3f,%ld,%.6g,%.6g,%.6g\n", names[m], (unsigned long long)(fo->seed + (uint64_t)s),
-                    r->seconds, r->mutations, r->relmse, r->us_per_proposal, r->accept);
-        }
-    fclose(f);
-    char path[4096];
-    snprintf(path, sizeof path, "%s/fig4.6-runs.csv", fo->out);
-    bool ok = write_text_atomic(path, buf, err, errlen);
-    free(buf);
+        for (int s = 0; s < t->seeds; s++)
+            table_row(&tb.t[0], &(struct run_row){names[m], (long)(fo->seed + (uint64_t)s), t->R[m][s]});
+    return table_set_save(&tb, "fig4_6", fo->out, err, errlen);
+}
 
-    buf = NULL;
-    f = open_memstream(&buf, &len);
+/* OUT/fig4.6.csv: mean and standard error over the seeds per method. */
+static bool write_methods(const struct fig46 *t, char *err, size_t errlen)
+{
+    const struct opts_figure *fo = &t->fo;
+    struct table_set tb;
+    FILE *f = table_set_open_one(&tb, "fig4.6.csv", method_cols);
     csv_meta_head(f, "fig4.6: mean and standard error over seeds per method", fo->scene, fo->scale);
     csv_meta(f, "seeds", "%d", t->seeds);
     csv_meta(f, "budget", "%s, %d threads", t->budget, fo->threads);
     csv_meta(f, NULL, "rays_per_proposal: a one-thread run of 20000 proposals less one of none");
-    fprintf(
-        f, "method,seeds,relmse,relmse_se,us_per_proposal,us_per_proposal_se,cost_vs_mmlt,rays_per_proposal,acceptance,"
-           "acceptance_se\n");
-    for (int m = 0; m < METHODS; m++)
-        fprintf(f, "%s,%d,%.6g,%.3g,%.6g,%.3g,%.4g,%.4g,%.6g,%.3g\n", names[m], t->seeds, t->mean[m][0], t->se[m][0],
-                t->mean[m][1], t->se[m][1], t->mean[m][1] / t->mean[0][1], t->rays[m], t->mean[m][2], t->se[m][2]);
-    fclose(f);
-    snprintf(path, sizeof path, "%s/fig4.6.csv", fo->out);
-    ok = ok && write_text_atomic(path, buf, err, errlen);
-    free(buf);
-    return ok;
+    for (int m = 0; m < METHODS; m++) {
+        const double *mean = t->mean[m], *se = t->se[m];
+        table_row(&tb.t[0], &(struct method_row){names[m], t->seeds, mean[0], se[0], mean[1], se[1],
+                                                 mean[1] / t->mean[0][1], t->rays[m], mean[2], se[2]});
+    }
+    return table_set_save(&tb, "fig4_6", fo->out, err, errlen);
 }
 
 /* Thesis §4.3: MCTLS is accepted more often, costs about 5x per step, and the two cancel. */
@@ -248,7 +271,7 @@ int main(int argc, char **argv)
     t.ref = ch4_reference(t.sc, METHOD_BDPT, t.refspp, t.refpath, t.fo.threads, "fig4_6", err, sizeof err);
     bool ok = t.ref && ch4_write_pair(t.ref, t.fo.out, "reference", err, sizeof err) && run(&t, err, sizeof err);
     if (ok) analyse(&t);
-    ok = ok && write_tables(&t, err, sizeof err);
+    ok = ok && write_runs(&t, err, sizeof err) && write_methods(&t, err, sizeof err);
     ok = ok && ch4_show_claims(claims(&t, err, sizeof err));
     img_destroy(t.ref);
     scene_free(t.sc);

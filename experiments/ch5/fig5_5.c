@@ -15,6 +15,7 @@
 #include "ch5/fig5_common.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "path/scene_ready.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -74,10 +75,7 @@ static void write_edges(const struct fig5_cfg *c, const bool *mask)
     for (int i = 0; i < W * H; i++)
         if (mask[i]) img_add(mi, i % W, i / W, v3s(1));
     snprintf(path, sizeof path, "%s/edges.png", c->fig.out);
-    if (!fig5_write_linear_png(mi, 1, path, err, sizeof err)) {
-        fprintf(stderr, "%s\n", err);
-        exit(1);
-    }
+    if (!fig5_write_linear_png(mi, 1, path, err, sizeof err)) die(DIE_RUNTIME, c->prog, "%s", err);
     img_destroy(mi);
 }
 
@@ -114,49 +112,70 @@ static void run_kind(const struct fig5_cfg *c, struct scene *sc, const bool *mas
     snprintf(path, sizeof path, "%s/%s.angle.exr", c->fig.out, fig5_kind_name[kind]);
     bool ok = img_write_exr(avg, 1.0, path, err, sizeof err);
     snprintf(path, sizeof path, "%s/%s.angle.png", c->fig.out, fig5_kind_name[kind]);
-    if (!ok || !fig5_write_linear_png(avg, 0.5, path, err, sizeof err)) {
-        fprintf(stderr, "%s\n", err);
-        exit(1);
-    }
+    if (!ok || !fig5_write_linear_png(avg, 0.5, path, err, sizeof err)) die(DIE_RUNTIME, c->prog, "%s", err);
     img_destroy(avg);
 }
 
-/* OUT/fig5.5.csv (per kind and region) and OUT/fig5.5-lengths.csv (per kind and path length);
- * the edge / elsewhere ratio per kind into ratio_mean, ratio_se. */
-static void write_tables(const struct fig5_cfg *c, const struct meas *m, double *ratio_mean, double *ratio_se)
+/* A row of OUT/fig5.5.csv and of OUT/fig5.5-lengths.csv. */
+struct region_row {
+    const char *kind, *region;
+    double mean, se;
+    int seeds;
+};
+static const struct column region_cols[] = {
+    COL_STRING(struct region_row, "kind", kind),         COL_STRING(struct region_row, "region", region),
+    COL_DOUBLE(struct region_row, "mean", "%.9g", mean), COL_DOUBLE(struct region_row, "stderr", "%.9g", se),
+    COL_INT(struct region_row, "seeds", "%d", seeds),    {0}};
+struct length_row {
+    const char *kind;
+    int length;
+    long steps;
+    double mean_dpsi, se;
+};
+static const struct column length_cols[] = {
+    COL_STRING(struct length_row, "kind", kind),         COL_INT(struct length_row, "length", "%d", length),
+    COL_LONG(struct length_row, "steps", "%ld", steps),  COL_DOUBLE(struct length_row, "mean_dpsi", "%.9g", mean_dpsi),
+    COL_DOUBLE(struct length_row, "stderr", "%.9g", se), {0}};
+
+/* OUT/fig5.5.csv (per kind and region); the edge / elsewhere ratio per kind into ratio_mean,
+ * ratio_se. */
+static void write_regions(const struct fig5_cfg *c, const struct meas *m, double *ratio_mean, double *ratio_se)
 {
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    fig5_meta_head(f, c, "fig5.5: mean angle change per pixel, MMLT vs controlled small steps, Gaussian sigma 1/64");
-    csv_meta(f, "p_large", "%g", c->p_large);
-    fig5_meta_runs(f, c);
-    fprintf(f, "kind,region,mean,stderr,seeds\n");
+    struct table_set ts;
+    FILE *f = table_set_open_one(&ts, "fig5.5.csv", region_cols);
+    if (f) {
+        fig5_meta_head(f, c,
+                       "fig5.5: mean angle change per pixel, MMLT vs controlled small steps, Gaussian sigma 1/64");
+        csv_meta(f, "p_large", "%g", c->p_large);
+        fig5_meta_runs(f, c);
+    }
     for (int kind = 0; kind < NK; kind++)
         for (int g = 0; g < REGIONS; g++) {
-            double mean, se;
-            mean_se(m->reg + ((size_t)kind * REGIONS + g) * c->seeds, c->seeds, &mean, &se);
-            fprintf(f, "%s,%s,%.9g,%.9g,%d\n", fig5_kind_name[kind], region_name[g], mean, se, c->seeds);
-            if (g == R_RATIO) ratio_mean[kind] = mean, ratio_se[kind] = se;
+            struct region_row row = {fig5_kind_name[kind], region_name[g], .seeds = c->seeds};
+            mean_se(m->reg + ((size_t)kind * REGIONS + g) * c->seeds, c->seeds, &row.mean, &row.se);
+            table_row(&ts.t[0], &row);
+            if (g == R_RATIO) ratio_mean[kind] = row.mean, ratio_se[kind] = row.se;
         }
-    fclose(f);
-    fig5_write_text(c, "fig5.5.csv", buf);
-    free(buf);
-    f = open_memstream(&buf, &len);
-    fprintf(f, "kind,length,steps,mean_dpsi,stderr\n");
+    fig5_save_tables(c, &ts);
+}
+
+/* OUT/fig5.5-lengths.csv (per kind and path length, over the seeds that saw the length). */
+static void write_lengths(const struct fig5_cfg *c, const struct meas *m)
+{
+    struct table_set ts;
+    table_set_open_one(&ts, "fig5.5-lengths.csv", length_cols);
     for (int kind = 0; kind < NK; kind++)
         for (int k = 2; k <= c->max_length; k++) {
-            double x[1000], mean, se;
+            double x[1000];
             int n = 0;
             for (int s = 0; s < c->seeds; s++)
                 if (!isnan(m->len_mean[kind * c->seeds + s][k])) x[n++] = m->len_mean[kind * c->seeds + s][k];
             if (n < 2) continue;
-            mean_se(x, n, &mean, &se);
-            fprintf(f, "%s,%d,%ld,%.9g,%.9g\n", fig5_kind_name[kind], k, m->len_steps[kind][k], mean, se);
+            struct length_row row = {.kind = fig5_kind_name[kind], .length = k, .steps = m->len_steps[kind][k]};
+            mean_se(x, n, &row.mean_dpsi, &row.se);
+            table_row(&ts.t[0], &row);
         }
-    fclose(f);
-    fig5_write_text(c, "fig5.5-lengths.csv", buf);
-    free(buf);
+    fig5_save_tables(c, &ts);
 }
 
 int main(int argc, char **argv)
@@ -172,7 +191,8 @@ int main(int argc, char **argv)
     for (int kind = 0; kind < NK; kind++)
         run_kind(&c, sc, mask, kind, &m);
     double ratio_mean[NK], ratio_se[NK];
-    write_tables(&c, &m, ratio_mean, ratio_se);
+    write_regions(&c, &m, ratio_mean, ratio_se);
+    write_lengths(&c, &m);
     write_claims(&c, ratio_mean, ratio_se);
     free(m.reg);
     free(m.len_mean);

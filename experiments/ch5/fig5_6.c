@@ -11,52 +11,28 @@
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/die.h"
-#include "common/refcache.h"
+#include "common/reference.h"
 #include "mc/render.h"
 #include "path/scene_ready.h"
-#include "scene/scene_hash.h"
 #include "stats/noise_corr.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* What the reference's render needs (refcache_render_fn's ctx). */
-struct ref_job {
-    const struct scene *sc;
-    const struct fig5_cfg *c;
-    int spp;
-};
-
-/* refcache_render_fn: the BDPT reference at seed 777, written to path. */
-static struct image *render_reference(void *ctx, const char *path, char *err, size_t errlen)
-{
-    const struct ref_job *j = ctx;
-    fprintf(stderr, "fig5_6: rendering the BDPT reference (%d spp) into %s\n", j->spp, path);
-    struct render_opts o = {.method = METHOD_BDPT,
-                            .spp = j->spp,
-                            .seed = 777,
-                            .threads = j->c->fig.threads,
-                            .max_length = j->c->max_length};
-    struct render_stats st;
-    struct image *ref = render_mc(j->sc, &o, &st);
-    if (!img_write_exr(ref, 1.0, path, err, errlen)) {
-        img_destroy(ref);
-        return NULL;
-    }
-    return ref;
-}
-
 /* The BDPT reference, rendered once per size and kept under results/reference/ by
- * common/refcache.h's rule (keyed by the scene's content and the render's settings). */
+ * common/reference.h's rule (keyed by the scene's content and the render's settings). */
 static struct image *reference(const struct scene *sc, const struct fig5_cfg *c, int spp)
 {
-    char path[4096], err[4200], settings[256];
+    char path[4096], err[4200];
     snprintf(path, sizeof path, "results/reference/jewelry-bdpt-%d-%dx%d.exr", spp, c->width, c->height);
-    snprintf(settings, sizeof settings, "bdpt spp=%d seed=777 max_length=%d resolution=%dx%d", spp, c->max_length,
-             c->width, c->height);
-    struct refcache rc = {.path = path, .scene_hash = ckpt_scene_hash(sc), .settings = settings};
-    struct image *ref = refcache_get(&rc, render_reference, &(struct ref_job){sc, c, spp}, err, sizeof err);
-    if (!ref) die(DIE_RUNTIME, "fig5_6", "%s", err);
+    struct reference_spec spec = {.path = path,
+                                  .method = METHOD_BDPT,
+                                  .spp = spp,
+                                  .seed = 777,
+                                  .max_length = c->max_length,
+                                  .threads = c->fig.threads};
+    struct image *ref = reference_render_cached(c->prog, sc, &spec, err, sizeof err);
+    if (!ref) die(DIE_RUNTIME, c->prog, "%s", err);
     return ref;
 }
 
@@ -88,6 +64,59 @@ static void write_claims(const struct fig5_cfg *c, double mean[2][NQ], double se
     claims_finish_print(&cl, c->fig.out);
 }
 
+/* A row of OUT/fig5.6.csv: one small-step kind over the seeds. */
+struct kind_row {
+    const char *kind;
+    double relmse, relmse_se;
+    int seeds;
+    double accept_small, mutations_per_second, corrlen, corrlen_se, blur8, blur8_se;
+};
+static const struct column kind_cols[] = {
+    COL_STRING(struct kind_row, "kind", kind),
+    COL_DOUBLE(struct kind_row, "relmse", "%.9g", relmse),
+    COL_DOUBLE(struct kind_row, "stderr", "%.9g", relmse_se),
+    COL_INT(struct kind_row, "seeds", "%d", seeds),
+    COL_DOUBLE(struct kind_row, "accept_small", "%.6f", accept_small),
+    COL_DOUBLE(struct kind_row, "mutations_per_second", "%.0f", mutations_per_second),
+    COL_DOUBLE(struct kind_row, "corrlen", "%.6g", corrlen),
+    COL_DOUBLE(struct kind_row, "corrlen_se", "%.3g", corrlen_se),
+    COL_DOUBLE(struct kind_row, "blur8", "%.6g", blur8),
+    COL_DOUBLE(struct kind_row, "blur8_se", "%.3g", blur8_se),
+    {0}};
+
+/* OUT/NAME.png and .exr of a run. */
+static void write_image(const struct fig5_cfg *c, const struct image *img, const char *name)
+{
+    char err[1024], path[4096];
+    snprintf(path, sizeof path, "%s/%s.png", c->fig.out, name);
+    if (!img_write_png(img, 1.0, path, err, sizeof err)) die(DIE_RUNTIME, c->prog, "%s", err);
+    snprintf(path, sizeof path, "%s/%s.exr", c->fig.out, name);
+    if (!img_write_exr(img, 1.0, path, err, sizeof err)) die(DIE_RUNTIME, c->prog, "%s", err);
+}
+
+/* One small-step kind over the seeds against ref: its row of OUT/fig5.6.csv, its means and
+ * standard errors (x: room for NQ values per seed), the first seed's image. */
+static void run_kind(const struct scene *sc, const struct fig5_cfg *c, const struct image *ref, int kind, double *x,
+                     double mean[NQ], double se[NQ], struct table *t)
+{
+    double acc = 0, rate = 0;
+    for (int i = 0; i < c->seeds; i++) {
+        struct mlt_result r;
+        fig5_run(sc, c, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, c->fig.seed + (uint64_t)i, false, &r);
+        x[i] = img_relmse(r.img, ref, 0.01);
+        x[c->seeds + i] = error_corr_length(r.img, ref);
+        x[2 * c->seeds + i] = error_blur_share(r.img, ref, 0.01, 8);
+        acc += cell_mean(&r.stats.total[PROPOSAL_SMALL]) / c->seeds;
+        rate += r.mutations / r.seconds / c->seeds;
+        if (i == 0) write_image(c, r.img, fig5_kind_name[kind]);
+        mlt_result_free(&r);
+    }
+    for (int q = 0; q < NQ; q++)
+        mean_se(x + (size_t)q * c->seeds, c->seeds, &mean[q], &se[q]);
+    table_row(t, &(struct kind_row){fig5_kind_name[kind], mean[Q_RELMSE], se[Q_RELMSE], c->seeds, acc, rate,
+                                    mean[Q_CORRLEN], se[Q_CORRLEN], mean[Q_BLUR8], se[Q_BLUR8]});
+}
+
 int main(int argc, char **argv)
 {
     struct fig5_cfg c = {.prog = "fig5_6", .fig.out = "results/fig5.6", .p_large = 0.01};
@@ -97,46 +126,24 @@ int main(int argc, char **argv)
     struct image *ref = reference(sc, &c, spp);
     char err[1024], path[4096];
     snprintf(path, sizeof path, "%s/reference.png", c.fig.out);
-    if (!img_write_png(ref, 1.0, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    char title[256];
-    snprintf(title, sizeof title,
-             "fig5.6: relMSE against BDPT, MMLT vs controlled small steps, p_large %g, Gaussian sigma 1/64", c.p_large);
-    fig5_meta_head(f, &c, title);
-    csv_meta(f, "reference_spp", "%d", spp);
-    fig5_meta_runs(f, &c);
-    fprintf(f, "kind,relmse,stderr,seeds,accept_small,mutations_per_second,corrlen,corrlen_se,blur8,blur8_se\n");
+    if (!img_write_png(ref, 1.0, path, err, sizeof err)) die(DIE_RUNTIME, c.prog, "%s", err);
+    struct table_set ts;
+    FILE *f = table_set_open_one(&ts, "fig5.6.csv", kind_cols);
+    if (f) {
+        char title[256];
+        snprintf(title, sizeof title,
+                 "fig5.6: relMSE against BDPT, MMLT vs controlled small steps, p_large %g, Gaussian sigma 1/64",
+                 c.p_large);
+        fig5_meta_head(f, &c, title);
+        csv_meta(f, "reference_spp", "%d", spp);
+        fig5_meta_runs(f, &c);
+    }
     double mean[2][NQ], se[2][NQ];
     double *x = xmalloc(sizeof *x * NQ * (size_t)c.seeds);
-    for (int kind = 0; kind < 2; kind++) {
-        double acc = 0, rate = 0;
-        for (int i = 0; i < c.seeds; i++) {
-            struct mlt_result r;
-            fig5_run(sc, &c, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, c.fig.seed + (uint64_t)i, false, &r);
-            x[i] = img_relmse(r.img, ref, 0.01);
-            x[c.seeds + i] = error_corr_length(r.img, ref);
-            x[2 * c.seeds + i] = error_blur_share(r.img, ref, 0.01, 8);
-            acc += cell_mean(&r.stats.total[PROPOSAL_SMALL]) / c.seeds;
-            rate += r.mutations / r.seconds / c.seeds;
-            if (i == 0) {
-                snprintf(path, sizeof path, "%s/%s.png", c.fig.out, fig5_kind_name[kind]);
-                if (!img_write_png(r.img, 1.0, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
-                snprintf(path, sizeof path, "%s/%s.exr", c.fig.out, fig5_kind_name[kind]);
-                if (!img_write_exr(r.img, 1.0, path, err, sizeof err)) return fprintf(stderr, "%s\n", err), 1;
-            }
-            mlt_result_free(&r);
-        }
-        for (int q = 0; q < NQ; q++)
-            mean_se(x + (size_t)q * c.seeds, c.seeds, &mean[kind][q], &se[kind][q]);
-        fprintf(f, "%s,%.9g,%.9g,%d,%.6f,%.0f,%.6g,%.3g,%.6g,%.3g\n", fig5_kind_name[kind], mean[kind][0], se[kind][0],
-                c.seeds, acc, rate, mean[kind][1], se[kind][1], mean[kind][2], se[kind][2]);
-    }
+    for (int kind = 0; kind < 2; kind++)
+        run_kind(sc, &c, ref, kind, x, mean[kind], se[kind], &ts.t[0]);
     free(x);
-    fclose(f);
-    fig5_write_text(&c, "fig5.6.csv", buf);
-    free(buf);
+    fig5_save_tables(&c, &ts);
     write_claims(&c, mean, se);
     img_destroy(ref);
     scene_free(sc);

@@ -4,6 +4,7 @@
 #include "base/util.h"
 #include "camera/camera.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "common/outdir.h"
 #include <limits.h>
@@ -73,10 +74,7 @@ void fig5_run(const struct scene *sc, const struct fig5_cfg *c, enum small_step 
     char err[1024];
     fprintf(stderr, "%s: %s small steps, seed %llu, %ld mutations\n", c->prog, fig5_kind_name[kind],
             (unsigned long long)seed, o.mutations);
-    if (!mlt_render(sc, &o, r, err, sizeof err)) {
-        fprintf(stderr, "%s\n", err);
-        exit(1);
-    }
+    if (!mlt_render(sc, &o, r, err, sizeof err)) die(DIE_RUNTIME, c->prog, "%s", err);
 }
 
 bool fig5_write_linear_png(const struct image *im, double white, const char *path, char *err, size_t errlen)
@@ -94,13 +92,8 @@ bool fig5_write_linear_png(const struct image *im, double white, const char *pat
     return ok;
 }
 
-void fig5_write_text(const struct fig5_cfg *c, const char *name, const char *text)
+void fig5_save_tables(const struct fig5_cfg *c, struct table_set *ts)
 {
-    char path[4096], err[1024];
-    snprintf(path, sizeof path, "%s/%s", c->fig.out, name);
-    if (!write_text_atomic(path, text, err, sizeof err)) {
-        fprintf(stderr, "%s\n", err);
-        exit(1);
-    }
-    fprintf(stderr, "%s: wrote %s\n", c->prog, path);
+    char err[4200];
+    if (!table_set_save(ts, c->prog, c->fig.out, err, sizeof err)) die(DIE_RUNTIME, c->prog, "%s", err);
 }

@@ -4,6 +4,7 @@
 #define FIG5_COMMON_H
 
 #include "common/opts.h"
+#include "common/table_set.h"
 #include "mcmc/mlt.h"
 #include <stdio.h>
 
@@ -32,7 +33,8 @@ extern const char *const fig5_kind_name[3];
 /* An 8-bit PNG whose grey level is linear in v / white, clamped (the thesis's "black = 0,
  * white >= 0.5 rad"); the image's first channel is used. Atomic, like every image write. */
 bool fig5_write_linear_png(const struct image *im, double white, const char *path, char *err, size_t errlen);
-/* Writes text to DIR/NAME atomically; exits on failure. */
-void fig5_write_text(const struct fig5_cfg *c, const char *name, const char *text);
+/* Writes the tables into OUT atomically and says so on stderr (common/table_set.h); a failure is
+ * the error line "PROG: ..." and exit status 1. */
+void fig5_save_tables(const struct fig5_cfg *c, struct table_set *ts);
 
 #endif

@@ -12,18 +12,19 @@
 #include "cmlt/cmlt_reference.h"
 #include "cmlt/cmlt_scene.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
 #include "common/outdir.h"
+#include "common/table_set.h"
+#include "common/text_out.h"
 #include "io/image.h"
 #include <errno.h>
 #include <math.h>
 #include <pthread.h>
 #include <signal.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -104,36 +105,10 @@ static void parse(int argc, char **argv, struct opts *o)
 
 /* ---- small output helpers ---------------------------------------------------------------- */
 
-struct text {
-    char *buf;
-    size_t len, cap;
-};
-
-static void tprintf(struct text *t, const char *fmt, ...)
+/* The error line of a failed write: "table1_cmlt: ..." and exit status 1. */
+static void save_or_die(bool ok, const char *err)
 {
-    va_list ap;
-    for (;;) {
-        va_start(ap, fmt);
-        int n = vsnprintf(t->buf + t->len, t->cap - t->len, fmt, ap);
-        va_end(ap);
-        ASSERT(n >= 0);
-        if (t->len + (size_t)n < t->cap) {
-            t->len += (size_t)n;
-            return;
-        }
-        t->cap = 2 * (t->cap + (size_t)n + 64);
-        t->buf = xrealloc(t->buf, t->cap);
-    }
-}
-
-static void write_text(const char *path, struct text *t)
-{
-    char err[512];
-    if (!t->buf) tprintf(t, "%s", "");
-    if (!write_text_atomic(path, t->buf, err, sizeof err)) {
-        fprintf(stderr, "table1_cmlt: %s\n", err);
-        exit(1);
-    }
+    if (!ok) die(DIE_RUNTIME, "table1_cmlt", "%s", err);
 }
 
 static double now(void)
@@ -228,19 +203,13 @@ static struct image *get_reference(const struct opts *o, struct cmlt_ref_result 
     progress_bar("reference", &rt.progress, (uint64_t)o->res * o->res * sq * sq, &rt.finished, t0);
     pthread_join(t, NULL);
     *res = rt.res;
-    if (!img_write_exr(im, 1.0, path, err, sizeof err)) {
-        fprintf(stderr, "table1_cmlt: %s\n", err);
-        exit(1);
-    }
+    save_or_die(img_write_exr(im, 1.0, path, err, sizeof err), err);
     snprintf(path, sizeof path, "%s/reference.png", o->out);
-    if (!img_write_png(im, 1.0, path, err, sizeof err)) {
-        fprintf(stderr, "table1_cmlt: %s\n", err);
-        exit(1);
-    }
-    struct text kt = {0};
-    tprintf(&kt, "%s%.17g %.17g %.17g %.17g\n", key, res->b[0], res->b[1], res->b[2], res->noise_rmse);
-    write_text(keypath, &kt);
-    free(kt.buf);
+    save_or_die(img_write_png(im, 1.0, path, err, sizeof err), err);
+    struct text_out kt;
+    if (text_out_open(&kt))
+        fprintf(kt.f, "%s%.17g %.17g %.17g %.17g\n", key, res->b[0], res->b[1], res->b[2], res->noise_rmse);
+    save_or_die(text_out_save(&kt, keypath, err, sizeof err), err);
     return im;
 }
 
@@ -403,11 +372,63 @@ struct summary {
     int partial;
 };
 
-/* The rows of one (algorithm, budget): every seed's into `seeds`, the mean into `csv` and `stats`. */
-static void analyse_cell(const struct pool *p, int a, int b, struct summary *sm, struct text *csv, struct text *stats,
-                         struct text *seeds)
+/* The run's three CSV tables (table1.csv, table1_stats.csv, table1_seeds.csv): the budget n as
+ * unsigned (COL_LONG's "%lu"). */
+struct mean_row {
+    const char *algorithm;
+    long n;
+    int seeds;
+    double rmse, rmse_se, steps_per_s, acceptance, swap_acceptance;
+};
+struct seed_row {
+    const char *algorithm;
+    long n;
+    int seed;
+    double rmse, b, b1, b2, acceptance, swap_acceptance, seconds;
+};
+static const struct column mean_cols[] = {COL_STRING(struct mean_row, "algorithm", algorithm),
+                                          COL_LONG(struct mean_row, "n", "%lu", n),
+                                          COL_DOUBLE(struct mean_row, "rmse", "%.6e", rmse),
+                                          {0}};
+static const struct column stats_cols[] = {COL_STRING(struct mean_row, "algorithm", algorithm),
+                                           COL_LONG(struct mean_row, "n", "%lu", n),
+                                           COL_INT(struct mean_row, "seeds", "%d", seeds),
+                                           COL_DOUBLE(struct mean_row, "rmse_mean", "%.6e", rmse),
+                                           COL_DOUBLE(struct mean_row, "rmse_se", "%.6e", rmse_se),
+                                           COL_DOUBLE(struct mean_row, "steps_per_s", "%.4g", steps_per_s),
+                                           COL_DOUBLE(struct mean_row, "acceptance", "%.4f", acceptance),
+                                           COL_DOUBLE(struct mean_row, "swap_acceptance", "%.4f", swap_acceptance),
+                                           {0}};
+static const struct column seed_cols[] = {COL_STRING(struct seed_row, "algorithm", algorithm),
+                                          COL_LONG(struct seed_row, "n", "%lu", n),
+                                          COL_INT(struct seed_row, "seed", "%d", seed),
+                                          COL_DOUBLE(struct seed_row, "rmse", "%.6e", rmse),
+                                          COL_DOUBLE(struct seed_row, "b", "%.6g", b),
+                                          COL_DOUBLE(struct seed_row, "b1", "%.6g", b1),
+                                          COL_DOUBLE(struct seed_row, "b2", "%.6g", b2),
+                                          COL_DOUBLE(struct seed_row, "acceptance", "%.4f", acceptance),
+                                          COL_DOUBLE(struct seed_row, "swap_acceptance", "%.4f", swap_acceptance),
+                                          COL_DOUBLE(struct seed_row, "seconds", "%.2f", seconds),
+                                          {0}};
+enum { T_CSV, T_STATS, T_SEEDS, NTABLES };
+
+/* Every seed's row of one (algorithm, budget), in seed order. */
+static void seed_rows(const struct pool *p, int a, int b, struct table *seeds)
 {
-    const struct opts *o = p->o;
+    for (int s = 0; s < p->o->seeds; s++)
+        for (int j = 0; j < p->njobs; j++) {
+            const struct job *J = &p->jobs[j];
+            if (J->algo != a || J->bidx != b || J->seed_idx != s) continue;
+            const struct cmlt_stats *st = &J->st;
+            table_row(seeds, &(struct seed_row){cmlt_algo_names[a], (long)J->n, s, J->rmse, st->b[0], st->b[1],
+                                                st->b[2], st->steps ? st->acc_sum / st->steps : 0,
+                                                st->swaps ? st->swap_acc_sum / st->swaps : 0, st->seconds});
+        }
+}
+
+/* The rows of one (algorithm, budget): every seed's into T_SEEDS, the mean into T_CSV and T_STATS. */
+static void analyse_cell(const struct pool *p, int a, int b, struct summary *sm, struct table *t)
+{
     double s1 = 0, s2 = 0, steps = 0, secs = 0, acc = 0, swaps = 0, swacc = 0;
     int m = 0;
     for (int j = 0; j < p->njobs; j++) {
@@ -422,82 +443,81 @@ static void analyse_cell(const struct pool *p, int a, int b, struct summary *sm,
         swacc += J->st.swap_acc_sum;
         m++;
     }
-    for (int s = 0; s < o->seeds; s++)
-        for (int j = 0; j < p->njobs; j++) {
-            const struct job *J = &p->jobs[j];
-            if (J->algo != a || J->bidx != b || J->seed_idx != s) continue;
-            tprintf(seeds, "%s,%llu,%d,%.6e,%.6g,%.6g,%.6g,%.4f,%.4f,%.2f\n", cmlt_algo_names[a],
-                    (unsigned long long)J->n, s, J->rmse, J->st.b[0], J->st.b[1], J->st.b[2],
-                    J->st.steps ? J->st.acc_sum / J->st.steps : 0, J->st.swaps ? J->st.swap_acc_sum / J->st.swaps : 0,
-                    J->st.seconds);
-        }
+    seed_rows(p, a, b, &t[T_SEEDS]);
     sm->mean[b][a] = s1 / m;
     sm->se[b][a] = m > 1 ? sqrt(fmax(0.0, (s2 - s1 * s1 / m) / (m - 1)) / m) : 0;
-    tprintf(csv, "%s,%llu,%.6e\n", cmlt_algo_names[a], (unsigned long long)o->budgets[b], sm->mean[b][a]);
-    tprintf(stats, "%s,%llu,%d,%.6e,%.6e,%.4g,%.4f,%.4f\n", cmlt_algo_names[a], (unsigned long long)o->budgets[b], m,
-            sm->mean[b][a], sm->se[b][a], secs > 0 ? steps / secs : 0, steps > 0 ? acc / steps : 0,
-            swaps > 0 ? swacc / swaps : 0);
+    struct mean_row row = {cmlt_algo_names[a],
+                           (long)p->o->budgets[b],
+                           m,
+                           sm->mean[b][a],
+                           sm->se[b][a],
+                           secs > 0 ? steps / secs : 0,
+                           steps > 0 ? acc / steps : 0,
+                           swaps > 0 ? swacc / swaps : 0};
+    table_row(&t[T_CSV], &row);
+    table_row(&t[T_STATS], &row);
 }
 
 /* table1.md: ours (mean ± standard error over seeds) next to the paper's Table 1. */
-static void write_markdown(const struct opts *o, const struct summary *sm, double noise_rmse, struct text *md)
+static void write_markdown(const struct opts *o, const struct summary *sm, double noise_rmse, FILE *md)
 {
     static const double paper[2][CMLT_NALGO] = {{8.287e-2, 4.073e-2, 4.106e-2, 3.663e-2, 3.924e-2, 3.502e-2},
                                                 {3.212e-2, 1.488e-2, 1.587e-2, 1.405e-2, 1.467e-2, 1.374e-2}};
     char nb[32];
-    tprintf(md,
+    fprintf(md,
             "RMSE against the reference (mean ± standard error over %d seeds; same total samples n per "
             "algorithm), next to the paper's Table 1 (their toy, one run).\n\n| algorithm |",
             o->seeds);
     for (int b = 0; b < o->nbudgets; b++)
-        tprintf(md, " n = %s |", fmt_n(o->budgets[b], nb, sizeof nb));
-    tprintf(md, " paper n = 16M | paper n = 128M |\n| --- |");
+        fprintf(md, " n = %s |", fmt_n(o->budgets[b], nb, sizeof nb));
+    fprintf(md, " paper n = 16M | paper n = 128M |\n| --- |");
     for (int b = 0; b < o->nbudgets; b++)
-        tprintf(md, " ---: |");
-    tprintf(md, " ---: | ---: |\n");
+        fprintf(md, " ---: |");
+    fprintf(md, " ---: | ---: |\n");
     for (int a = 0; a < CMLT_NALGO; a++) {
-        tprintf(md, "| %s |", cmlt_algo_names[a]);
+        fprintf(md, "| %s |", cmlt_algo_names[a]);
         for (int b = 0; b < o->nbudgets; b++)
-            tprintf(md, " %.3e ± %.1e |", sm->mean[b][a], sm->se[b][a]);
-        tprintf(md, " %.3e | %.3e |\n", paper[0][a], paper[1][a]);
+            fprintf(md, " %.3e ± %.1e |", sm->mean[b][a], sm->se[b][a]);
+        fprintf(md, " %.3e | %.3e |\n", paper[0][a], paper[1][a]);
     }
-    tprintf(md, "\nReference: %d spp stratified MC, own noise RMSE ≈ %.2e. Wall time %.1f s on %d threads.%s\n",
+    fprintf(md, "\nReference: %d spp stratified MC, own noise RMSE ≈ %.2e. Wall time %.1f s on %d threads.%s\n",
             o->ref_spp, noise_rmse, sm->wall, o->threads, sm->partial ? " **PARTIAL: interrupted.**" : "");
 }
 
-/* table1.csv, table1_stats.csv, table1_seeds.csv and table1.md (returned in md; exits 1 when a
- * write fails). */
-static void write_tables(const struct pool *p, struct summary *sm, double noise_rmse, struct text *md)
+/* What the tables' metadata line says: the run's settings (table_set_open's ctx). */
+struct run_info {
+    const struct opts *o;
+    const struct summary *sm;
+};
+
+/* The metadata line every table opens with. */
+static void write_meta(FILE *f, const void *ctx)
 {
-    const struct opts *o = p->o;
-    struct text csv = {0}, stats = {0}, seeds = {0};
-    char meta[512];
-    FILE *mf = fmemopen(meta, sizeof meta, "w");
-    csv_meta(mf, "table1_cmlt",
+    const struct opts *o = ((const struct run_info *)ctx)->o;
+    const struct summary *sm = ((const struct run_info *)ctx)->sm;
+    csv_meta(f, "table1_cmlt",
              "commit=%s seed=%llu scale=%s seeds=%d threads=%d res=%d ref_spp=%d p_large=%g swap_every=%d seed_frac=%g "
              "seconds=%.1f%s",
              o->commit, (unsigned long long)o->seed, o->scale, o->seeds, o->threads, o->res, o->ref_spp, o->p_large,
              o->swap_every, o->seed_frac, sm->wall, sm->partial ? " PARTIAL (interrupted)" : "");
-    fclose(mf);
-    tprintf(&csv, "%salgorithm,n,rmse\n", meta);
-    tprintf(&stats, "%salgorithm,n,seeds,rmse_mean,rmse_se,steps_per_s,acceptance,swap_acceptance\n", meta);
-    tprintf(&seeds, "%salgorithm,n,seed,rmse,b,b1,b2,acceptance,swap_acceptance,seconds\n", meta);
+}
+
+/* table1.csv, table1_stats.csv, table1_seeds.csv and table1.md (md: its text stays in md->buf
+ * until text_out_free; a failed write is the error line and exit status 1). */
+static void write_tables(const struct pool *p, struct summary *sm, double noise_rmse, struct text_out *md)
+{
+    const struct opts *o = p->o;
+    struct table_set ts;
+    table_set_open(&ts, NTABLES, (const char *[]){"table1.csv", "table1_stats.csv", "table1_seeds.csv"},
+                   (const struct column *[]){mean_cols, stats_cols, seed_cols}, write_meta, &(struct run_info){o, sm});
     for (int a = 0; a < CMLT_NALGO; a++)
         for (int b = 0; b < o->nbudgets; b++)
-            analyse_cell(p, a, b, sm, &csv, &stats, &seeds);
-    write_markdown(o, sm, noise_rmse, md);
-    char path[1024];
-    snprintf(path, sizeof path, "%s/table1_seeds.csv", o->out);
-    write_text(path, &seeds);
-    snprintf(path, sizeof path, "%s/table1_stats.csv", o->out);
-    write_text(path, &stats);
+            analyse_cell(p, a, b, sm, ts.t);
+    if (text_out_open(md)) write_markdown(o, sm, noise_rmse, md->f);
+    char path[1024], err[1100];
+    save_or_die(table_set_save(&ts, "table1_cmlt", o->out, err, sizeof err), err);
     snprintf(path, sizeof path, "%s/table1.md", o->out);
-    write_text(path, md);
-    snprintf(path, sizeof path, "%s/table1.csv", o->out);
-    write_text(path, &csv);
-    free(csv.buf);
-    free(stats.buf);
-    free(seeds.buf);
+    save_or_die(text_out_commit(md, path, err, sizeof err), err);
 }
 
 /* <algo>_<n>.exr and .png of the first seed. */
@@ -539,7 +559,7 @@ int main(int argc, char **argv)
     make_pool(&p);
     run_pool(&p, "chains");
     struct summary sm = {.partial = g_stop != 0, .wall = now() - t_start};
-    struct text md = {0};
+    struct text_out md;
     write_tables(&p, &sm, rr.noise_rmse, &md);
 
     char command[64], scale[64], err[512];
@@ -554,14 +574,11 @@ int main(int argc, char **argv)
                                 .mean = sm.mean,
                                 .se = sm.se};
     char *claims = cmlt_write_claims(&ci, err, sizeof err);
-    if (!claims || !write_images(&p, err, sizeof err)) {
-        fprintf(stderr, "table1_cmlt: %s\n", err);
-        return 1;
-    }
+    if (!claims || !write_images(&p, err, sizeof err)) die(DIE_RUNTIME, "table1_cmlt", "%s", err);
     fputs(md.buf, stderr);
     fputs(claims, stderr);
     free(claims);
-    free(md.buf);
+    text_out_free(&md);
     free_pool(&p);
     img_destroy(ref);
     return sm.partial ? 130 : 0;

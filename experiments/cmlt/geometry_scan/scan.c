@@ -6,6 +6,7 @@
 #include "base/util.h"
 #include "cmlt/cmlt_mcmc.h"
 #include "cmlt/cmlt_reference.h"
+#include "common/die.h"
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -53,11 +54,10 @@ static void *work(void *arg)
 
 int main(int argc, char **argv)
 {
-    if (argc != 4) return fprintf(stderr, "usage: scan N_MILLIONS SEEDS REF_SPP\n"), 2;
+    if (argc != 4) die(DIE_USAGE, "scan", "usage: scan N_MILLIONS SEEDS REF_SPP");
     n_steps = (uint64_t)(atof(argv[1]) * 1e6);
     int seeds = atoi(argv[2]), spp = atoi(argv[3]);
-    if (n_steps < 1024 || seeds < 2 || 2 * seeds > MAX_JOBS || spp < 1)
-        return fprintf(stderr, "scan: bad arguments\n"), 2;
+    if (n_steps < 1024 || seeds < 2 || 2 * seeds > MAX_JOBS || spp < 1) die(DIE_USAGE, "scan", "bad arguments");
     ref = xmalloc(sizeof(double) * 3 * W * W);
     struct cmlt_ref_result rr;
     cmlt_reference(W, W, spp, 0xC3117ull, 2, ref, &rr, NULL);
