@@ -3,6 +3,7 @@
 #include "base/dist.h"
 #include "base/util.h"
 #include "common/csv_meta.h"
+#include "common/text_out.h"
 #include "io/image.h"
 #include "mc/bdpt_tech.h"
 #include "mc/render.h"
@@ -23,37 +24,36 @@ static void meta_head(FILE *f, const struct render_args *a, const char *extra)
 /* PREFIX.angle.exr (mean angle change per pixel, radians) and PREFIX.angle.csv (per length). */
 bool render_write_angle(const struct render_args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
-    char path[4096], extra[64], *buf = NULL;
-    size_t len = 0;
+    char path[4096], extra[64];
     struct image *im = angle_acc_image(r->angle);
     snprintf(path, sizeof path, "%s.angle.exr", a->out);
     bool ok = img_write_exr(im, 1.0, path, err, errlen);
     img_destroy(im);
-    FILE *f = open_memstream(&buf, &len);
+    struct text_out t;
+    FILE *f = text_out_open(&t);
     snprintf(extra, sizeof extra, " --small-step %s", render_small_step_name(a->mlt.small_step));
     meta_head(f, a, extra);
     csv_meta(f, "skipped_steps", "%ld", r->angle->skipped);
     angle_acc_write_csv(f, r->angle);
-    fclose(f);
     snprintf(path, sizeof path, "%s.angle.csv", a->out);
-    ok = ok && write_text_atomic(path, buf, err, errlen);
-    free(buf);
-    return ok;
+    if (ok) return text_out_save(&t, path, err, errlen);
+    text_out_free(&t);
+    return false;
 }
 
 /* The header of PREFIX.tech.csv: the run's metadata lines, then `# NAME COUNT` (mutations or spp)
  * and `# seconds`. Caller frees. */
 static char *tech_head(const struct render_args *a, const char *name, long count, double seconds)
 {
-    char extra[64], *head = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&head, &len);
+    char extra[64];
+    struct text_out t;
+    FILE *f = text_out_open(&t);
     snprintf(extra, sizeof extra, " --technique-images %d", a->mlt.technique_k);
     meta_head(f, a, extra);
     csv_meta(f, name, "%ld", count);
     csv_meta(f, "seconds", "%.3f", seconds);
     fclose(f);
-    return head;
+    return t.buf;
 }
 
 /* The per-technique images and PREFIX.tech.csv of pssmlt and mmlt (core/stats/tech_image.h). */
@@ -78,9 +78,8 @@ bool render_write_bdpt_tech(const struct render_args *a, const struct render_sta
 bool render_write_csv(const struct render_args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
     const struct mlt_opts *m = &a->mlt;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
+    struct text_out t;
+    FILE *f = text_out_open(&t);
     meta_head(f, a, "");
     csv_meta(f, "threads", "%d", m->threads);
     csv_meta(f, "max_length", "%d", m->max_length);
@@ -118,10 +117,7 @@ bool render_write_csv(const struct render_args *a, const struct mlt_result *r, c
     for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++)
         csv_meta(f, NULL, "b_rse_%d %.6g", k, r->b_k_rse[k]);
     stats_write_csv(f, a->method, &r->stats, true);
-    fclose(f);
     char path[4096];
     snprintf(path, sizeof path, "%s.csv", a->out);
-    bool ok = write_text_atomic(path, buf, err, errlen);
-    free(buf);
-    return ok;
+    return text_out_save(&t, path, err, errlen);
 }
