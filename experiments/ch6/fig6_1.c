@@ -15,8 +15,9 @@
 #include "base/util.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
+#include "common/die.h"
 #include "common/opts.h"
-#include "common/table.h"
+#include "common/table_set.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
 #include <math.h>
@@ -131,16 +132,91 @@ static const struct column pitp_cols[] = {COL_INT(struct pitp_row, "length", "%d
                                           COL_DOUBLE(struct pitp_row, "mean_dtech", "%.9g", dtech),
                                           {0}};
 
-static bool save(struct table *t, const char *dir, const char *name)
+/* The metadata lines of both tables. */
+static void write_meta(FILE *f, const void *ctx)
 {
-    char path[4096], err[4200];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (!table_save(t, path, err, sizeof err)) {
-        fprintf(stderr, "%s\n", err);
-        return false;
+    const struct opts_accept *a = ctx;
+    csv_meta_head(f, "fig6.1: small-step acceptance, MMLT vs PITP, p_large = 0.1, uniform length budgets", a->fig.scene,
+                  a->fig.scale);
+    csv_meta(f, "seed", "%llu", (unsigned long long)a->fig.seed);
+    csv_meta(f, "threads", "%d", a->fig.threads);
+    csv_meta(f, "mutations_per_method", "%ld", a->mutations);
+    csv_meta(f, "short_pass_mutations_per_method", "%ld (lengths 1..%d)", 3 * a->mutations / 2, SHORT_MAX);
+    csv_meta(f, "seed_paths", "%ld", a->fig.paper ? 1000000L : 100000L);
+}
+
+static const char *const names[2] = {"mmlt", "pitp"};
+
+/* Method m's RUNS independent runs (seeds seed * 1000 + r, each with its own seed pass), each
+ * merged into run[r] and all: a chain that rarely changes technique keeps its acceptance level for
+ * longer than a batch, so the batch-means error (plotted, as the thesis does) understates the
+ * run-to-run scatter, which run_se (over the runs' means) measures for check-fig6.1. Each run is
+ * the main pass, then the short one (its own seed and seed pass; a length's chain does not depend
+ * on the longest length, so the two merge). False with a message in err. */
+static bool run_method(const struct scene *sc, const struct opts_accept *a, int m, struct mlt_stats *all,
+                       struct mlt_stats run[RUNS], char *err, size_t errlen)
+{
+    stats_clear(all);
+    for (int rr = 0; rr < RUNS; rr++) {
+        stats_clear(&run[rr]);
+        for (int pass = 0; pass < 2 && (pass == 0 || a->max_length > SHORT_MAX); pass++) {
+            int kmax = pass ? SHORT_MAX : a->max_length;
+            struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT,
+                                 .p_large = 0.1,
+                                 .mutations = (pass ? 3 * a->mutations / 2 : a->mutations) / RUNS,
+                                 .seed_paths = a->fig.paper ? 1000000 : 100000,
+                                 .seed = a->fig.seed * 1000 + (uint64_t)rr + (pass ? 500 : 0),
+                                 .threads = a->fig.threads,
+                                 .max_length = kmax,
+                                 .progress = isatty(2),
+                                 .large_step = LARGE_MMLT,
+                                 .uniform_lengths = true};
+            pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+            fprintf(stderr, "fig6.1: %s run %d of %d, %ld mutations over lengths 1..%d\n", names[m], rr + 1, RUNS,
+                    o.mutations, kmax);
+            struct mlt_result r;
+            if (!mlt_render(sc, &o, &r, err, errlen)) return false;
+            stats_merge(&run[rr], &r.stats);
+            stats_merge(all, &r.stats);
+            mlt_result_free(&r);
+        }
     }
-    fprintf(stderr, "fig6.1: wrote %s\n", path);
     return true;
+}
+
+/* Method m's rows of both tables, and its cells for the claims. Cells of fewer than MIN_ATTEMPTS
+ * proposals are left out: their errors rest on a few batches, and near the threshold a cell would
+ * be there at one seed and not at the next (MMLT's technique changes at lengths 2-3 on ajar:
+ * 0.3-14k proposals). */
+static void method_rows(int m, const struct mlt_stats *all, const struct mlt_stats run[RUNS], struct cells *cells,
+                        struct table_set *ts)
+{
+    for (int k = 1; k <= cells->K; k++) {
+        for (int ch = 0; ch < 2; ch++) {
+            const struct accept_cell *c = &all->cell[PROPOSAL_SMALL][k][ch];
+            double s1 = 0, s2 = 0;
+            int n = 0;
+            for (int rr = 0; rr < RUNS; rr++) {
+                const struct accept_cell *q = &run[rr].cell[PROPOSAL_SMALL][k][ch];
+                if (!q->attempts) continue;
+                s1 += cell_mean(q);
+                s2 += cell_mean(q) * cell_mean(q);
+                n++;
+            }
+            if (c->attempts < MIN_ATTEMPTS || c->nbatches < 2 || n < 2) continue;
+            double rm = s1 / n, run_se = sqrt(fmax(0, (s2 - n * rm * rm) / (n - 1)) / n);
+            cells->mean[m][k][ch] = rm;
+            cells->se[m][k][ch] = run_se;
+            cells->have[m][k][ch] = true;
+            table_row(&ts->t[0], &(struct accept_row){names[m], k, ch ? "yes" : "no", c->attempts, cell_mean(c),
+                                                      cell_stderr(c), (double)c->accepted / c->attempts, n, run_se});
+        }
+        const struct accept_cell *p = &all->any[PROPOSAL_PITP][k];
+        if (m && p->attempts)
+            table_row(&ts->t[1],
+                      &(struct pitp_row){k, p->attempts, (double)all->cell[PROPOSAL_PITP][k][1].attempts / p->attempts,
+                                         p->failed, (double)p->failed / p->attempts, p->sum_dtech / p->attempts});
+    }
 }
 
 int main(int argc, char **argv)
@@ -148,100 +224,21 @@ int main(int argc, char **argv)
     struct opts_accept a;
     struct scene *sc =
         opts_accept_parse(&a, "fig6_1", "scenes/ajar/scene.json", "results/fig6.1", "8000000", "100000000", argc, argv);
-    bool paper = a.fig.paper;
-    long mutations = a.mutations;
-    int K = a.max_length, threads = a.fig.threads;
-    uint64_t seed = a.fig.seed;
-    char err[1024];
-    struct table tf, tp;
-    FILE *f = table_open(&tf, accept_cols), *pf = table_open(&tp, pitp_cols);
-    const char *head = "fig6.1: small-step acceptance, MMLT vs PITP, p_large = 0.1, uniform length budgets";
-    for (int q = 0; q < 2; q++) {
-        FILE *g = q ? pf : f;
-        csv_meta_head(g, head, a.fig.scene, a.fig.scale);
-        csv_meta(g, "seed", "%llu", (unsigned long long)seed);
-        csv_meta(g, "threads", "%d", threads);
-        csv_meta(g, "mutations_per_method", "%ld", mutations);
-        csv_meta(g, "short_pass_mutations_per_method", "%ld (lengths 1..%d)", 3 * mutations / 2, SHORT_MAX);
-        csv_meta(g, "seed_paths", "%ld", paper ? 1000000L : 100000L);
-    }
-    const char *names[2] = {"mmlt", "pitp"};
+    char err[4200];
+    struct table_set ts;
+    table_set_open(&ts, 2, (const char *[]){"fig6.1.csv", "fig6.1-pitp.csv"},
+                   (const struct column *[]){accept_cols, pitp_cols}, write_meta, &a);
     static struct cells cells;
-    cells.K = K;
+    static struct mlt_stats all, run[RUNS];
+    cells.K = a.max_length;
     for (int m = 0; m < 2; m++) {
-        /* R independent runs (seeds seed * 1000 + r, each with its own seed pass), merged: a chain
-         * that rarely changes technique keeps its acceptance level for longer than a batch, so the
-         * batch-means error (plotted, as the thesis does) understates the run-to-run scatter, which
-         * run_se (over the runs' means) measures for check-fig6.1. */
-        static struct mlt_stats all, run[RUNS];
-        stats_clear(&all);
-        for (int rr = 0; rr < RUNS; rr++) {
-            stats_clear(&run[rr]);
-            /* the main pass, then the short one (its own seed and seed pass; a length's chain does
-             * not depend on the longest length, so the two merge) */
-            for (int pass = 0; pass < 2 && (pass == 0 || K > SHORT_MAX); pass++) {
-                int kmax = pass ? SHORT_MAX : K;
-                struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT,
-                                     .p_large = 0.1,
-                                     .mutations = (pass ? 3 * mutations / 2 : mutations) / RUNS,
-                                     .seed_paths = paper ? 1000000 : 100000,
-                                     .seed = seed * 1000 + (uint64_t)rr + (pass ? 500 : 0),
-                                     .threads = threads,
-                                     .max_length = kmax,
-                                     .progress = isatty(2),
-                                     .large_step = LARGE_MMLT,
-                                     .uniform_lengths = true};
-                pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
-                fprintf(stderr, "fig6.1: %s run %d of %d, %ld mutations over lengths 1..%d\n", names[m], rr + 1, RUNS,
-                        o.mutations, kmax);
-                struct mlt_result r;
-                if (!mlt_render(sc, &o, &r, err, sizeof err)) {
-                    fprintf(stderr, "%s\n", err);
-                    return 1;
-                }
-                stats_merge(&run[rr], &r.stats);
-                stats_merge(&all, &r.stats);
-                mlt_result_free(&r);
-            }
-        }
-        for (int k = 1; k <= K; k++) {
-            for (int ch = 0; ch < 2; ch++) {
-                const struct accept_cell *c = &all.cell[PROPOSAL_SMALL][k][ch];
-                double s1 = 0, s2 = 0;
-                int n = 0;
-                for (int rr = 0; rr < RUNS; rr++) {
-                    const struct accept_cell *q = &run[rr].cell[PROPOSAL_SMALL][k][ch];
-                    if (!q->attempts) continue;
-                    s1 += cell_mean(q);
-                    s2 += cell_mean(q) * cell_mean(q);
-                    n++;
-                }
-                /* Cells of fewer than MIN_ATTEMPTS proposals are left out: their errors rest on a
-                 * few batches, and near the threshold a cell would be there at one seed and not at
-                 * the next (MMLT's technique changes at lengths 2-3 on ajar: 0.3-14k proposals) */
-                if (c->attempts < MIN_ATTEMPTS || c->nbatches < 2 || n < 2) continue;
-                double rm = s1 / n, run_se = sqrt(fmax(0, (s2 - n * rm * rm) / (n - 1)) / n);
-                cells.mean[m][k][ch] = rm;
-                cells.se[m][k][ch] = run_se;
-                cells.have[m][k][ch] = true;
-                table_row(&tf, &(struct accept_row){names[m], k, ch ? "yes" : "no", c->attempts, cell_mean(c),
-                                                    cell_stderr(c), (double)c->accepted / c->attempts, n, run_se});
-            }
-            const struct accept_cell *p = &all.any[PROPOSAL_PITP][k];
-            if (m && p->attempts)
-                table_row(&tp, &(struct pitp_row){
-                                   k, p->attempts, (double)all.cell[PROPOSAL_PITP][k][1].attempts / p->attempts,
-                                   p->failed, (double)p->failed / p->attempts, p->sum_dtech / p->attempts});
-        }
+        if (!run_method(sc, &a, m, &all, run, err, sizeof err)) die(DIE_RUNTIME, "fig6_1", "%s", err);
+        method_rows(m, &all, run, &cells, &ts);
     }
-    bool ok = save(&tf, a.fig.out, "fig6.1.csv") && save(&tp, a.fig.out, "fig6.1-pitp.csv");
-    char *md = ok ? claims(&cells, a.fig.out, a.fig.scale, err, sizeof err) : NULL;
-    if (ok && !md) {
-        fprintf(stderr, "%s\n", err);
-        ok = false;
-    }
+    if (!table_set_save(&ts, "fig6_1", a.fig.out, err, sizeof err)) die(DIE_RUNTIME, "fig6_1", "%s", err);
+    char *md = claims(&cells, a.fig.out, a.fig.scale, err, sizeof err);
+    if (!md) die(DIE_RUNTIME, "fig6_1", "%s", err);
     free(md);
-    text_out_free(&tp.out); /* not saved when the first write failed */
     scene_free(sc);
-    return ok ? 0 : 1;
+    return 0;
 }
