@@ -51,17 +51,22 @@ table { border-collapse: collapse; font-size: 13px; } td, th { border: 1px solid
 HEAD
 echo "<p>Generated $(date -u '+%Y-%m-%d %H:%M UTC') from commit $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown), scale $scale (the chapter-6 figures and mmlt-ratio at that scale; every other figure as last run: each ledger row names its own scale), on a shared 2-core machine.</p>"
 # The claims ledger: every row of every claims.csv the figures wrote (their verdicts come from the
-# runs, experiments/common/verdict.c), first.
+# runs, experiments/common/verdict.c), first; columns read by name (scripts/csv-col.awk). Above it,
+# the coverage of the sources' claims (results/claims-catalogue.csv) by the rows with exactly their ID.
 ledger=$(ls results/fig*/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv results/mmlt-ratio/"$scale"/*/claims.csv 2>/dev/null || true)
+csvcol=$(cat "$(dirname "$0")/csv-col.awk")
 echo "<section id=\"ledger\"><h2>Claims ledger</h2>"
 if [ -z "$ledger" ]; then echo "<p class=\"missing\">No figure with claims has been run yet (make fig4.6, make fig6.2 ...).</p>"
 else
-  echo "<table><tr><th>source</th><th>claim</th><th>statistic</th><th>value ± s.e.</th><th>z (deciding)</th><th>verdict</th><th>scale</th><th>command</th></tr>"
+  # shellcheck disable=SC2086  # the ledger is a list of paths without spaces
+  bash "$(dirname "$0")/claims-coverage.sh" --html results/claims-catalogue.csv $ledger
+  echo "<table><tr><th>id</th><th>source</th><th>claim</th><th>statistic</th><th>value ± s.e.</th><th>z (deciding)</th><th>verdict</th><th>scale</th><th>command</th></tr>"
   for f in $ledger; do
-    awk -F, '!/^#/ && $1 != "source" && NF >= 12 {
-        need = ($9 == "undecided" && $10 > 0) ? sprintf(" (%d seeds would decide it)", $10) : ""
-        printf "<tr class=\"ledger-row\" data-claims=\"%s\"><td>%s</td><td>%s</td><td>%s</td><td>%s %.4g ± %.2g</td><td>%.1f</td><td class=\"v-%s\">%s</td><td>%s</td><td>%s</td></tr>\n",
-          href, $1, $2, $3, $4, $5, $6, $8, $9, $9 need, $11, $12 }' href="../${f#results/}" "$f" | sed 's/&/\&amp;/g'
+    awk -F, "$csvcol"'!/^#/ {
+        need = (get("verdict") == "undecided" && get("seeds_needed") > 0) ? sprintf(" (%d seeds would decide it)", get("seeds_needed")) : ""
+        printf "<tr class=\"ledger-row\" data-claims=\"%s\"><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s %.4g ± %.2g</td><td>%.1f</td><td class=\"v-%s\">%s</td><td>%s</td><td>%s</td></tr>\n",
+          href, get("id"), get("source"), get("claim"), get("statistic"), get("method"), get("value"), get("se"), get("z_min"),
+          get("verdict"), get("verdict") need, get("scale"), get("command") }' href="../${f#results/}" "$f" | sed 's/&/\&amp;/g'
   done
   echo "</table>"
 fi
@@ -90,8 +95,8 @@ for e in "${entries[@]}"; do
   if [ "${verdict:0:1}" = @ ]; then
     echo "<div class=\"verdict\"><b>Holds? (measured on this run)</b><ul>"
     for vf in ${verdict:1}; do
-      # "- " lines, or the rows of a claims.md table (claim | statistic | value | against | verdict)
-      if [ -f "$vf" ]; then { { grep '^- ' "$vf" || true; } | sed 's/^- //'; { grep '^| ' "$vf" || true; } | { grep -v -e '^| claim |' -e '^| ---' || true; } |
+      # "- " lines, or the rows of a claims.md table (id | claim | statistic | value | against | verdict)
+      if [ -f "$vf" ]; then { { grep '^- ' "$vf" || true; } | sed 's/^- //'; { grep '^| ' "$vf" || true; } | { grep -v -e '^| claim |' -e '^| id |' -e '^| ---' || true; } |
           sed -e 's/^| //; s/ |$//; s/ | /: /; s/ | /; /g'; } | esc | sed -e 's|\*\*\([^*]*\)\*\*|<b>\1</b>|g' -e 's|^|<li>|; s|$|</li>|'
       else echo "<li class=\"missing\">$(basename "$vf") not made yet: <code>$(printf '%s' "$cmd" | esc)</code></li>"; fi
     done

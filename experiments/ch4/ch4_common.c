@@ -75,7 +75,7 @@ void ch4_meta_runs(FILE *f, uint64_t seed, int seeds, int threads)
     csv_meta(f, "threads", "%d", threads);
 }
 
-void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim, const char *stat,
+void ch4_claim_extreme(struct claims *cl, const char *id, const char *source, const char *claim, const char *stat,
                        const char *const *names, const double *x, int n, const bool *have, int m, int sign, int seeds)
 {
     double mean[CH4_MAX_METHODS] = {0}, se[CH4_MAX_METHODS] = {0}, z[CH4_MAX_METHODS];
@@ -90,7 +90,7 @@ void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim,
         snprintf(zs + a, sizeof zs - a, "%s%s=%.2f", a ? ";" : "", names[i], z[i]);
         snprintf(md + b, sizeof md - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", names[i], mean[i], se[i], z[i]);
     }
-    claims_row(cl, source, claim, stat, names[m], mean[m], se[m], zs, md, &v);
+    claims_row(cl, id, source, claim, stat, names[m], mean[m], se[m], zs, md, &v);
 }
 
 void ch4_stat_row_of(struct ch4_stat_row *row, const double *x, int seeds)

@@ -33,7 +33,7 @@ double ch4_pixel_noise_var(const struct image *ref);
 /* A claims row (claims.h) for "method m has the largest (sign +1) or smallest (-1) mean" among the
  * n methods with have[]: x holds `seeds` per-run values per method (method i at x + i * seeds);
  * the verdict is verdict_extreme's over the seeds, the row lists every other method's mean and z. */
-void ch4_claim_extreme(struct claims *cl, const char *source, const char *claim, const char *stat,
+void ch4_claim_extreme(struct claims *cl, const char *id, const char *source, const char *claim, const char *stat,
                        const char *const *names, const double *x, int n, const bool *have, int m, int sign, int seeds);
 /* The statistics row the figures share (fig4_1, fig4_2, fig4_3): one quantity of one configuration
  * over the seeds (the resolution column is fig4_2's only). */

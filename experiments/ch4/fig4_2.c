@@ -87,10 +87,10 @@ static char *claims(double *const *q, const double *gacc, int seeds, const char 
     const bool plain[NCONF] = {true, true, true, false}, at256[NCONF] = {false, false, true, true};
     const char *src = "thesis §4.1, Fig. 4.2";
     const char *blotchy = "smaller images get blotchier noise (PSSMLT, equal mutations per pixel)";
-    ch4_claim_extreme(&cl, src, blotchy, "lag-1 autocorrelation of the error", names, q[Q_RHO1], NCONF, plain, 2, +1,
-                      seeds);
-    ch4_claim_extreme(&cl, src, blotchy, "relMSE", names, q[Q_RELMSE], NCONF, plain, 2, +1, seeds);
-    ch4_claim_extreme(&cl, src, "steps scaled to the resolution remove it at 256²",
+    ch4_claim_extreme(&cl, "T4", src, blotchy, "lag-1 autocorrelation of the error", names, q[Q_RHO1], NCONF, plain, 2,
+                      +1, seeds);
+    ch4_claim_extreme(&cl, "T4", src, blotchy, "relMSE", names, q[Q_RELMSE], NCONF, plain, 2, +1, seeds);
+    ch4_claim_extreme(&cl, "T5", src, "steps scaled to the resolution remove it at 256²",
                       "lag-1 autocorrelation of the error", names, q[Q_RHO1], NCONF, at256, 3, -1, seeds);
     double m[2], se[2];
     mean_se(q[Q_RELMSE] + 3 * seeds, seeds, &m[0], &se[0]);
@@ -98,11 +98,11 @@ static char *claims(double *const *q, const double *gacc, int seeds, const char 
     struct verdict v = verdict_similar(m[0], se[0], m[1], se[1], 0.05, seeds);
     snprintf(zs, sizeof zs, "pssmlt-1024-5%%=%.2f", v.zmin);
     snprintf(md, sizeof md, "pssmlt-1024 %.4g ± %.2g within ±5 %% (z = %.1f)", m[1], se[1], v.zmin);
-    claims_row(&cl, src, "steps scaled to the resolution give 256² the relMSE of 1024²", "relMSE", names[3], m[0],
-               se[0], zs, md, &v);
+    claims_row(&cl, "harness:T5", src, "steps scaled to the resolution give 256² the relMSE of 1024²", "relMSE",
+               names[3], m[0], se[0], zs, md, &v);
     /* glossy: scaled steps at 256² against unscaled ones at 256² and at 1024² (where the scaling is 1) */
     const bool g[NGLOSSY] = {true, false, true, false, true};
-    ch4_claim_extreme(&cl, src,
+    ch4_claim_extreme(&cl, "T6", src,
                       "glossy-to-glossy transport: steps scaled to the resolution lose acceptance as it decreases",
                       "small-step acceptance (scenes/wall-glossy)", gnames, gacc, NGLOSSY, g, 4, -1, seeds);
     return claims_finish(&cl, out, err, errlen);

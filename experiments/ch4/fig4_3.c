@@ -62,12 +62,12 @@ static char *claims(const double *rel, const double *acc, int seeds, const char 
     claims_begin(&cl, scale, command, "Claims of thesis §4.2 on Fig. 4.3, %d seeds", seeds);
     const bool mcmc[NMETH] = {false, true, true}, all[NMETH] = {true, true, true};
     const char *src = "thesis §4.2, Fig. 4.3";
-    ch4_claim_extreme(&cl, src, "fixing discrete choices raises PSSMLT's small-step acceptance",
+    ch4_claim_extreme(&cl, "T8", src, "fixing discrete choices raises PSSMLT's small-step acceptance",
                       "small-step acceptance", names, acc, NMETH, mcmc, 2, +1, seeds);
-    ch4_claim_extreme(&cl, src, "fixing discrete choices lowers PSSMLT's error", "relMSE", names, rel, NMETH, mcmc, 2,
-                      -1, seeds);
-    ch4_claim_extreme(&cl, src, "BDPT has difficulty rendering this scene", "relMSE", names, rel, NMETH, all, 0, +1,
-                      seeds);
+    ch4_claim_extreme(&cl, "T9", src, "fixing discrete choices lowers PSSMLT's error", "relMSE", names, rel, NMETH,
+                      mcmc, 2, -1, seeds);
+    ch4_claim_extreme(&cl, "T10", src, "BDPT has difficulty rendering this scene", "relMSE", names, rel, NMETH, all, 0,
+                      +1, seeds);
     return claims_finish(&cl, out, err, errlen);
 }
 

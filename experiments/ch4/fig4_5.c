@@ -104,7 +104,7 @@ static void claims_predicted(struct claims *cl, const struct accept_table *t, co
         snprintf(md, sizeof md, "predicted from independent trials %.4g ± %.2g, within ±10 %% (z = %.1f)", mp, sp,
                  v.zmin);
         snprintf(stat, sizeof stat, "acceptance, mean over lengths 2-%d", t->K);
-        claims_row(cl, "harness check",
+        claims_row(cl, "harness", "harness check",
                    p == 0 ? "MMLT large steps accept as an independence sampler of their target predicts"
                           : "MCTLS accepts as an independence sampler of Eq. 4.7's target predicts",
                    stat, variants[pred[p].run].name, mc, sc, zs, md, &v);
@@ -127,28 +127,29 @@ static void claims_thesis(struct claims *cl, const struct accept_table *t)
     }
     snprintf(zs, sizeof zs, "mmlt-large=%.2f@%d", worst.zmin, at);
     snprintf(md, sizeof md, "MMLT large steps at each length; smallest z = %.1f at length %d", worst.zmin, at);
-    claims_row(cl, "thesis §4.3", "MCTLS is accepted more often than MMLT large steps at every length",
+    claims_row(cl, "T15", "thesis §4.3", "MCTLS is accepted more often than MMLT large steps at every length",
                "mean acceptance per length", "mctls", t->mean[1][at], t->se[1][at], zs, md, &worst);
     double r, rse;
     ratio_at(t, t->K, &r, &rse);
     struct verdict v = verdict_similar(r, rse, 5, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% at length %d (z = %.1f)", t->K, v.zmin);
-    claims_row(cl, "thesis §4.3", "MCTLS is up to five times more likely to be accepted at the longest length",
+    claims_row(cl, "harness:T16", "thesis §4.3",
+               "MCTLS is up to five times more likely to be accepted at the longest length",
                "acceptance ratio MCTLS / MMLT", "mctls", r, rse, zs, md, &v);
     ratio_at(t, 2, &r, &rse);
     v = verdict_similar(r, rse, 1, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "1x=%.2f", v.zmin);
     snprintf(md, sizeof md, "1 within ±25 %% at length 2 (z = %.1f)", v.zmin);
-    claims_row(cl, "thesis §4.3", "MCTLS is rejected about as often as MMLT large steps for short paths",
+    claims_row(cl, "harness:T14", "thesis §4.3", "MCTLS is rejected about as often as MMLT large steps for short paths",
                "acceptance ratio MCTLS / MMLT at length 2", "mctls", r, rse, zs, md, &v);
     v = verdict_similar(t->mean[0][t->K], t->se[0][t->K], t->mean[0][2], t->se[0][2], 0.25, 1);
     snprintf(zs, sizeof zs, "length2=%.2f", v.zmin);
     snprintf(md, sizeof md, "length 2: %.4g ± %.2g, within ±25 %% (z = %.1f)", t->mean[0][2], t->se[0][2], v.zmin);
     char stat[96];
     snprintf(stat, sizeof stat, "MMLT large-step acceptance at length %d", t->K);
-    claims_row(cl, "thesis §4.3", "MMLT large steps are consistently low over all path lengths", stat, "mmlt-large",
-               t->mean[0][t->K], t->se[0][t->K], zs, md, &v);
+    claims_row(cl, "harness:T13", "thesis §4.3", "MMLT large steps are consistently low over all path lengths", stat,
+               "mmlt-large", t->mean[0][t->K], t->se[0][t->K], zs, md, &v);
 }
 
 /* The harness's checks of the drawn trials and the caption's reason (more trials for longer paths,
@@ -167,14 +168,14 @@ static void claims_trials(struct claims *cl, const struct accept_table *t)
     snprintf(zs, sizeof zs, "mmlt-large5%%=%.2f", v.zmin);
     snprintf(md, sizeof md, "MMLT large steps %.4g ± %.2g within ±5 %% (z = %.1f)", m0, s0, v.zmin);
     snprintf(stat, sizeof stat, "large-step acceptance, mean over lengths 2-%d", t->K);
-    claims_row(cl, "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1", m1, s1,
-               zs, md, &v);
+    claims_row(cl, "harness", "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1",
+               m1, s1, zs, md, &v);
     /* the thesis's count: its MMLT large steps draw among k + 2 techniques, t = 0 always failing */
     ratio_of(t, V_MCTLS, V_TRIES1_T0, t->K, &r, &rse);
     v = verdict_similar(r, rse, 5, 0, 0.25, 1);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% at length %d (z = %.1f)", t->K, v.zmin);
-    claims_row(cl, "thesis §4.3",
+    claims_row(cl, "harness:T16", "thesis §4.3",
                "up to five times at the longest length, counting k + 2 techniques as the thesis does",
                "acceptance ratio MCTLS / MMLT large steps among k + 2", "mctls", r, rse, zs, md, &v);
     /* the caption's reason: longer paths give more trials. With a fixed number of trials (4) the
@@ -186,7 +187,7 @@ static void claims_trials(struct claims *cl, const struct accept_table *t)
     snprintf(zs, sizeof zs, "length3=%.2f", v.zmin);
     snprintf(md, sizeof md, "length 3: %.3g ± %.2g, within ±25 %% (z = %.1f)", r3, rse3, v.zmin);
     snprintf(stat, sizeof stat, "acceptance ratio, 4 drawn trials / MMLT, at length %d", t->K);
-    claims_row(cl, "thesis Fig. 4.5 caption",
+    claims_row(cl, "T17", "thesis Fig. 4.5 caption",
                "MCTLS gains with length because longer paths give more trials: at a fixed number of trials the gain "
                "stays flat",
                stat, "mctls-tries4", r, rse, zs, md, &v);
@@ -200,7 +201,7 @@ static void claims_trials(struct claims *cl, const struct accept_table *t)
     snprintf(zs, sizeof zs, "length3=%.2f", lz[1]);
     snprintf(md, sizeof md, "length 3: %.3g ± %.2g (z = %.1f)", r3, rse3, lz[1]);
     snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
-    claims_row(cl, "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
+    claims_row(cl, "T17", "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
                "mctls", r, rse, zs, md, &v);
 }
 

@@ -244,21 +244,21 @@ static char *claims(const struct fig46 *t, char *err, size_t errlen)
     struct verdict v = verdict_extreme(acc, acc_se, two, METHODS, 1, +1, t->seeds, z);
     snprintf(zs, sizeof zs, "mmlt-large=%.2f", z[0]);
     snprintf(md, sizeof md, "mmlt-large %.4g ± %.2g (z = %.1f)", acc[0], acc_se[0], z[0]);
-    claims_row(&cl, "thesis §4.3", "MCTLS is accepted more often than MMLT large steps", "mean acceptance probability",
-               "mctls", acc[1], acc_se[1], zs, md, &v);
+    claims_row(&cl, "harness:T15", "thesis §4.3", "MCTLS is accepted more often than MMLT large steps",
+               "mean acceptance probability", "mctls", acc[1], acc_se[1], zs, md, &v);
     double ratio = mean[1][1] / mean[0][1],
            ratio_se = ratio * sqrt(pow(se[1][1] / mean[1][1], 2) + pow(se[0][1] / mean[0][1], 2));
     v = verdict_similar(ratio, ratio_se, 5, 0, 0.25, t->seeds);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% (z = %.1f)", v.zmin);
-    claims_row(&cl, "thesis §4.3", "an MCTLS step costs about 5x an MMLT large step",
+    claims_row(&cl, "harness:T18", "thesis §4.3", "an MCTLS step costs about 5x an MMLT large step",
                "CPU time per proposal, MCTLS / MMLT", "mctls", ratio, ratio_se, zs, md, &v);
     v = verdict_similar(mean[1][0], se[1][0], mean[0][0], se[0][0], 0.25, t->seeds);
     snprintf(zs, sizeof zs, "mmlt-large=%.2f", v.zmin);
     snprintf(md, sizeof md, "mmlt-large %.4g ± %.2g, within ±25 %% (z = %.1f)", mean[0][0], se[0][0], v.zmin);
     if (!t->mutations) /* an equal number of proposals says nothing about equal time */
-        claims_row(&cl, "thesis §4.3", "at equal time MCTLS and MMLT large steps are similarly noisy", "relMSE",
-                   "mctls", mean[1][0], se[1][0], zs, md, &v);
+        claims_row(&cl, "harness:T19", "thesis §4.3", "at equal time MCTLS and MMLT large steps are similarly noisy",
+                   "relMSE", "mctls", mean[1][0], se[1][0], zs, md, &v);
     return claims_finish(&cl, fo->out, err, errlen);
 }
 

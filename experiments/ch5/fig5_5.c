@@ -43,18 +43,18 @@ static void write_claims(const struct fig5_cfg *c, const double *ratio_mean, con
     struct verdict v = verdict_extreme(m, s, both, 2, 0, +1, c->seeds, z);
     snprintf(zs, sizeof zs, "no-edge-effect=%.2f", z[1]);
     snprintf(md, sizeof md, "1, no edge effect (z = %.1f)", z[1]);
-    claims_row(&cl, "thesis §5.3", "MMLT small steps change the path more near edges (halos)", stat, "mmlt", m[0], s[0],
-               zs, md, &v);
+    claims_row(&cl, "T24", "thesis §5.3", "MMLT small steps change the path more near edges (halos)", stat, "mmlt",
+               m[0], s[0], zs, md, &v);
     v = verdict_extreme(ratio_mean, ratio_se, both, 2, 1, -1, c->seeds, z);
     snprintf(zs, sizeof zs, "mmlt=%.2f", z[0]);
     snprintf(md, sizeof md, "mmlt %.4g ± %.2g (z = %.1f)", ratio_mean[0], ratio_se[0], z[0]);
-    claims_row(&cl, "thesis §5.3", "controlled small steps are less sensitive to edges than MMLT's", stat, "controlled",
-               ratio_mean[1], ratio_se[1], zs, md, &v);
+    claims_row(&cl, "T25", "thesis §5.3", "controlled small steps are less sensitive to edges than MMLT's", stat,
+               "controlled", ratio_mean[1], ratio_se[1], zs, md, &v);
     v = verdict_similar(ratio_mean[1], ratio_se[1], 1, 0, 0.25, c->seeds);
     snprintf(zs, sizeof zs, "1=%.2f", v.zmin);
     snprintf(md, sizeof md, "1 within ±25 %% (z = %.1f)", v.zmin);
-    claims_row(&cl, "thesis §5.3", "controlled small steps show no halos at edges", stat, "controlled", ratio_mean[1],
-               ratio_se[1], zs, md, &v);
+    claims_row(&cl, "T25", "thesis §5.3", "controlled small steps show no halos at edges", stat, "controlled",
+               ratio_mean[1], ratio_se[1], zs, md, &v);
     claims_finish_print(&cl, c->fig.out);
 }
 

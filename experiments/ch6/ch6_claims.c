@@ -7,6 +7,7 @@
 #define MAX_METHODS 16
 
 static const struct claim {
+    const char *id; /* results/claims-catalogue.csv */
     const char *text, *method;
     int sign; /* +1: the method's value is the largest; -1: the smallest */
     enum ch6_q q;
@@ -14,20 +15,24 @@ static const struct claim {
     const char *against; /* the one method compared with (NULL: every other one) */
     const char *source;  /* NULL: the run's --source */
 } claims[] = {
-    {"(1) PSSMLT is worst", "pssmlt", +1, Q_RELMSE, "relMSE", NULL, NULL},
-    {"(1) PSSMLT is worst", "pssmlt", +1, Q_BLOCK_MEDIAN, "median block relMSE (firefly-robust)", NULL, NULL},
-    {"(1) PSSMLT is worst", "pssmlt", +1, Q_TRIMMED, "relMSE without the 0.1% largest pixel errors", NULL, NULL},
-    {"(2) MMLT is the splotchiest", "mmlt", +1, Q_CORRLEN, "error correlation length (pixels)", NULL, NULL},
-    {"(2) MMLT is the splotchiest", "mmlt", +1, Q_BLUR8, "error share surviving an 8x8 blur", NULL, NULL},
-    {"(2) MMLT is the splotchiest", "mmlt", +1, Q_SPREAD, "block-relMSE spread (CV)", NULL, NULL},
-    {"(3) PITP is the most uniform", "pitp", -1, Q_SPREAD, "block-relMSE spread (CV)", NULL, NULL},
-    {"(3) PITP is the most uniform", "pitp", -1, Q_BLUR8, "error share surviving an 8x8 blur", NULL, NULL},
-    {"(3) PITP is the most uniform", "pitp", -1, Q_CORRLEN, "error correlation length (pixels)", NULL, NULL},
+    {"T32", "(1) PSSMLT is worst", "pssmlt", +1, Q_RELMSE, "relMSE", NULL, NULL},
+    {"T32", "(1) PSSMLT is worst", "pssmlt", +1, Q_BLOCK_MEDIAN, "median block relMSE (firefly-robust)", NULL, NULL},
+    {"T32", "(1) PSSMLT is worst", "pssmlt", +1, Q_TRIMMED, "relMSE without the 0.1% largest pixel errors", NULL, NULL},
+    {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_CORRLEN, "error correlation length (pixels)", NULL,
+     NULL},
+    {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_BLUR8, "error share surviving an 8x8 blur", NULL,
+     NULL},
+    {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_SPREAD, "block-relMSE spread (CV)", NULL, NULL},
+    {"harness:T35", "(3) PITP is the most uniform", "pitp", -1, Q_SPREAD, "block-relMSE spread (CV)", NULL, NULL},
+    {"harness:T35", "(3) PITP is the most uniform", "pitp", -1, Q_BLUR8, "error share surviving an 8x8 blur", NULL,
+     NULL},
+    {"harness:T35", "(3) PITP is the most uniform", "pitp", -1, Q_CORRLEN, "error correlation length (pixels)", NULL,
+     NULL},
     /* 11.81 % of PSSMLT's samples against 29.75 % of MMLT's on the door scene */
-    {"(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO, "non-zero fraction per proposal",
-     "pssmlt", "MMLT paper §5"},
-    {"(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO_CONN, "non-zero fraction per connection",
-     "pssmlt", "MMLT paper §5"},
+    {"harness:M-d", "(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO,
+     "non-zero fraction per proposal", "pssmlt", "MMLT paper §5"},
+    {"harness:M-d", "(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO_CONN,
+     "non-zero fraction per connection", "pssmlt", "MMLT paper §5"},
 };
 
 static int find(const struct ch6_claims_in *in, const char *method)
@@ -62,8 +67,8 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
             snprintf(against + b, sizeof against - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", in->name[i],
                      mean[i], se[i], z[i]);
         }
-        claims_row(&out, cl->source ? cl->source : in->source, cl->text, cl->statistic, cl->method, mean[mi], se[mi],
-                   zs, against, &v);
+        claims_row(&out, cl->id, cl->source ? cl->source : in->source, cl->text, cl->statistic, cl->method, mean[mi],
+                   se[mi], zs, against, &v);
     }
     return claims_finish(&out, in->out, err, errlen);
 }

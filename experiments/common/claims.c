@@ -23,10 +23,11 @@ void claims_begin(struct claims *cl, const char *scale, const char *command, con
     csv_meta(cl->c, NULL,
              "z in the claimed direction over seeds; holds: z >= 2 (against every other method, or inside "
              "a similarity margin); contradicted: z <= -2; seeds_needed: per method, for |z_min| = 2");
-    fprintf(cl->c, "source,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n");
+    fprintf(cl->c, "id,source,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n");
     fprintf(cl->m,
             "%s (mean ± standard error over seeds; z in the claimed direction; holds: z ≥ 2, contradicted: "
-            "z ≤ −2):\n\n| claim | statistic | value | against (z) | verdict |\n| --- | --- | ---: | --- | --- |\n",
+            "z ≤ −2):\n\n| id | claim | statistic | value | against (z) | verdict |\n| --- | --- | --- | ---: | --- | "
+            "--- |\n",
             head);
 }
 
@@ -39,8 +40,9 @@ static const char *field(const char *s, char *buf, size_t n)
     return buf;
 }
 
-void claims_row(struct claims *cl, const char *source, const char *claim, const char *statistic, const char *method,
-                double value, double se, const char *versus, const char *versus_md, const struct verdict *v)
+void claims_row(struct claims *cl, const char *id, const char *source, const char *claim, const char *statistic,
+                const char *method, double value, double se, const char *versus, const char *versus_md,
+                const struct verdict *v)
 {
     char need[96] = "";
     if (!strcmp(v->word, "undecided") && v->seeds_needed > 0)
@@ -48,12 +50,12 @@ void claims_row(struct claims *cl, const char *source, const char *claim, const 
                  v->zmin > 0 ? "holds" : "contradicted");
     else if (!strcmp(v->word, "undecided"))
         snprintf(need, sizeof need, "; no effect seen");
-    char f[6][512];
-    fprintf(cl->c, "%s,%s,%s,%s,%.6g,%.3g,%s,%.3f,%s,%ld,%s,%s\n", field(source, f[0], 512), field(claim, f[1], 512),
-            field(statistic, f[2], 512), field(method, f[3], 512), value, se, field(versus, f[4], 512), v->zmin,
-            v->word, v->seeds_needed, field(cl->scale, f[5], 512), cl->command);
-    fprintf(cl->m, "| %s | %s | %s %.4g ± %.2g | %s | **%s**%s |\n", claim, statistic, method, value, se, versus_md,
-            v->word, need);
+    char f[7][512];
+    fprintf(cl->c, "%s,%s,%s,%s,%s,%.6g,%.3g,%s,%.3f,%s,%ld,%s,%s\n", field(id, f[6], 512), field(source, f[0], 512),
+            field(claim, f[1], 512), field(statistic, f[2], 512), field(method, f[3], 512), value, se,
+            field(versus, f[4], 512), v->zmin, v->word, v->seeds_needed, field(cl->scale, f[5], 512), cl->command);
+    fprintf(cl->m, "| %s | %s | %s | %s %.4g ± %.2g | %s | **%s**%s |\n", id, claim, statistic, method, value, se,
+            versus_md, v->word, need);
 }
 
 char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen)

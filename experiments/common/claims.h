@@ -18,10 +18,13 @@ struct claims {
 /* Starts both files: `title` heads them (a printf format). */
 void claims_begin(struct claims *cl, const char *scale, const char *command, const char *title, ...)
     __attribute__((format(printf, 4, 5)));
-/* One row: the claim's source and text, the statistic, the method and its value ± se, the
- * comparison (`versus`: "NAME=z;..." for the CSV, `versus_md` the readable form) and the verdict. */
-void claims_row(struct claims *cl, const char *source, const char *claim, const char *statistic, const char *method,
-                double value, double se, const char *versus, const char *versus_md, const struct verdict *v);
+/* One row: the claim's catalogue ID (results/claims-catalogue.csv: "T13"; "harness:T13" for the
+ * harness's own reading of that claim, another comparison or setting than the source's; "harness"
+ * for a check of the harness with no source claim), its source and text, the statistic, the method and its value ± se,
+ * the comparison (`versus`: "NAME=z;..." for the CSV, `versus_md` the readable form) and the verdict. */
+void claims_row(struct claims *cl, const char *id, const char *source, const char *claim, const char *statistic,
+                const char *method, double value, double se, const char *versus, const char *versus_md,
+                const struct verdict *v);
 /* Writes DIR/claims.csv and DIR/claims.md and returns the Markdown (caller frees), or NULL with one
  * line in err. */
 char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen);
