@@ -13,6 +13,8 @@ scale=${1:-quick}
 out=${REPORT_DIR:-results/report} # tests write elsewhere
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale
+# The claims ledger's files: every claims.csv of the figures at this scale.
+ledger=$(ls results/fig*/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv results/mmlt-ratio/"$scale"/*/claims.csv 2>/dev/null || true)
 # id | title | make command | images (space-separated) | data files | claim | verdict: the README's quick-scale
 # result, or @FILE... = the measured verdicts, the '- ' lines of those files (written by the run's scripts)
 entries=(
@@ -53,7 +55,6 @@ echo "<p>Generated $(date -u '+%Y-%m-%d %H:%M UTC') from commit $(git rev-parse 
 # The claims ledger: every row of every claims.csv the figures wrote (their verdicts come from the
 # runs, experiments/common/verdict.c), first; columns read by name (scripts/csv-col.awk). Above it,
 # the coverage of the sources' claims (results/claims-catalogue.csv) by the rows with exactly their ID.
-ledger=$(ls results/fig*/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv results/mmlt-ratio/"$scale"/*/claims.csv 2>/dev/null || true)
 csvcol=$(cat "$(dirname "$0")/csv-col.awk")
 echo "<section id=\"ledger\"><h2>Claims ledger</h2>"
 if [ -z "$ledger" ]; then echo "<p class=\"missing\">No figure with claims has been run yet (make fig4.6, make fig6.2 ...).</p>"
@@ -135,8 +136,7 @@ TAIL
 }
 if [ "$page_only" ]; then page; exit 0; fi
 # A claims.csv of a run older than the claims catalogue has no id column: name it, and what remakes it.
-for f in results/fig*/claims.csv results/table1-cmlt/claims.csv results/ch6-*/*/claims.csv results/mmlt-ratio/*/*/claims.csv; do
-  [ -f "$f" ] || continue
+for f in $ledger; do
   if ! grep -q '^id,' "$f"; then
     echo "report: $f is from a run older than the claims catalogue (no id column): make that figure again" >&2
     exit 1
