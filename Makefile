@@ -127,7 +127,7 @@ $$(patsubst %,$$(BIN)/%,$(2)): $$(BIN)/%: $$(BUILD)/experiments/$(1)/%.c.o $$($(
 tools: $$(patsubst %,$$(BIN)/%,$(2))
 endef
 
-.PHONY: all tools deps test test-fast test-san check bench clean help lint golden report
+.PHONY: all tools deps test test-fast test-san check bench clean help lint golden report figures
 SHELL := /bin/bash
 all: tools $(LIBCORE) $(TEST_BIN) $(TEST_OIIO_MODULE)
 # Every executable of bin/ (experiments in subfolders add theirs in their .mk), without the test runner.
@@ -271,6 +271,7 @@ ifneq ($($(1)_TABLE),)
 	$$(call TO_FILE,results/$(1)/$(1).md,$$($(1)_TABLE))
 	@cat results/$(1)/$(1).md
 endif
+FIGURE_TARGETS += $(1)
 endef
 
 # $(call CHECK,TARGET,TOOL,SEED[,ARGS]): `make check-TARGET` reruns the quick experiment
@@ -329,6 +330,11 @@ bench-mpi:
 endif
 
 # ---- make report: one static page with every figure (scripts/report.sh), checked in headless Chromium ----
+# Every figure of the report at SCALE, one after the other (each is resumable where its tool is), so
+# that `make figures report` gives the whole ledger in one command.
+figures:
+	@set -e; for t in $(FIGURE_TARGETS); do echo "== make $$t SCALE=$(SCALE)"; $(MAKE) --no-print-directory $$t; done
+
 report:
 	@bash scripts/install-deps.sh --report
 	bash scripts/report.sh $(SCALE)

@@ -3,7 +3,8 @@
 # path length K, MMLT against PSSMLT, from `bin/render --technique-images K` (core/stats/tech_image.h).
 # Renders seeds 1..SEEDS of both methods into OUTDIR, then writes
 #   OUTDIR/tech.md                the shares per technique and the "follow" statistics, mean ± standard
-#                                 error over seeds, with the verdict on the paper's claim. The follow
+#                                 error over seeds, then OUTDIR/claims.md: the verdicts on the paper's
+#                                 claim (M-f; claims.csv beside it, bin/ch6_tech --claims). The follow
 #                                 statistics (bin/ch6_tech) compare each run's sample counts with the
 #                                 mean contribution images of all OTHER runs of both methods (MMLT's
 #                                 own contribution images are its counts times a constant);
@@ -17,7 +18,9 @@ usage="usage: ch6-tech.sh BINDIR SCENE K SEEDS OUTDIR [--scale quick|full|paper]
 [ $# -ge 5 ] || { echo "$usage" >&2; exit 2; }
 render=$1/render tool=$1/ch6_tech scene=$2 k=$3 seeds=$4 out=$5
 shift 5
+scale=custom
 if [ "${1:-}" = --scale ]; then
+  scale=$2
   case "${2:-}" in
     quick | full) budget=(--time 8) ;;
     paper) budget=(--time 120) ;;
@@ -43,6 +46,9 @@ done
 runs() { for s in $(seq 1 "$seeds"); do echo "$out/$1-s$s"; done; }
 "$tool" --k "$k" --out "$out/follow-mmlt.csv" --ref $(runs mmlt) $(runs pssmlt) --run $(runs mmlt)
 "$tool" --k "$k" --out "$out/follow-pssmlt.csv" --ref $(runs mmlt) $(runs pssmlt) --run $(runs pssmlt)
+# The paper's claim on them (M-f), its verdicts from the tool: OUTDIR/claims.csv and claims.md.
+"$tool" --k "$k" --claims "$out" --scale "$scale" --command "make mmlt-ratio SCALE=$scale" \
+  --follow "$out/follow-mmlt.csv" "$out/follow-pssmlt.csv" > /dev/null
 
 # Tables: per technique and per method, mean ± standard error over the seeds.
 tmp="$out/.tech.md.tmp$$"
@@ -76,14 +82,9 @@ awk -F, -v k="$k" -v seeds="$seeds" '
       mm = ms[j]; mse(tv, mm, ntv[mm]); tvm[mm] = M; tvs[mm] = SE; mse(r, mm, nr[mm]); rm[mm] = M; rs[mm] = SE
       printf "| %s | %.4f ± %.4f | %.3f ± %.3f | %.0f | %.0f |\n", (mm == "mmlt" ? "MMLT" : "PSSMLT"), tvm[mm], tvs[mm], rm[mm], rs[mm], ns[mm] / ntv[mm], nm[mm] / ntv[mm]
     }
-    zt = (tvm["pssmlt"] - tvm["mmlt"]) / sqrt(tvs["pssmlt"]^2 + tvs["mmlt"]^2)
-    zr = (rm["mmlt"] - rm["pssmlt"]) / sqrt(rs["pssmlt"]^2 + rs["mmlt"]^2)
-    printf "\nMMLT paper §5 / Fig. 5: MMLT'"'"'s sample counts follow the per-technique contributions, PSSMLT'"'"'s do not.\n\n"
-    printf "- image-wide technique shares: tv of MMLT below PSSMLT'"'"'s by z = %.1f: **%s**\n", zt, verdict(zt)
-    printf "- per 8×8 block: r of MMLT above PSSMLT'"'"'s by z = %.1f: **%s**\n", zr, verdict(zr)
-  }
-  function verdict(z) { return (z > 2) ? "holds" : (z > 0) ? "holds in the mean, not significantly (z <= 2)" : (z < -2) ? "does not hold (the reverse, z < -2)" : "does not hold" 
+    printf "\n"
   }' $(for m in mmlt pssmlt; do for s in $(seq 1 "$seeds"); do echo "$out/$m-s$s.tech.csv"; done; done) "$out/follow-mmlt.csv" "$out/follow-pssmlt.csv" > "$tmp"
+cat "$out/claims.md" >> "$tmp"
 mv -f "$tmp" "$out/tech.md"
 
 # The montage of seed 1.

@@ -12,9 +12,11 @@ page_only=
 scale=${1:-quick}
 out=${REPORT_DIR:-results/report} # tests write elsewhere
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
-ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale
+ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale meq=results/mmlt-equal-$scale
+bg=results/bdpt-pt-$scale cdc=results/cdc-ch6-$scale
 # The claims ledger's files: every claims.csv of the figures at this scale.
-ledger=$(ls results/fig*/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv results/mmlt-ratio/"$scale"/*/claims.csv 2>/dev/null || true)
+ledger=$(ls results/fig*/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv results/mmlt-ratio/"$scale"/*/claims.csv \
+  "$hyb"/*/claims.csv "$meq"/*/claims.csv "$tech"/claims.csv "$bg"/*/claims.csv "$cdc"/*/claims.csv 2>/dev/null || true)
 # id | title | make command | images (space-separated) | data files | claim | verdict: the README's quick-scale
 # result, or @FILE... = the measured verdicts, the '- ' lines of those files (written by the run's scripts)
 entries=(
@@ -33,8 +35,11 @@ entries=(
 "fig6.5|Thesis Fig. 6.5: living room, full images|make fig6.5|$ch6/living-room/fig6.5.png|$ch6/living-room/summary.csv $ch6/living-room/claims.md $ch6/living-room/claims.csv|Full-resolution images of Fig. 6.2's methods: PSSMLT worst; MMLT streaky/splotchy; PITP most uniform.|@$ch6/living-room/claims.md"
 "fig6.6|Thesis Fig. 6.6: staircase, full images|make fig6.6|$ch6/staircase/fig6.6.png|$ch6/staircase/summary.csv $ch6/staircase/claims.md $ch6/staircase/claims.csv|Full-resolution images of Fig. 6.3's methods: PSSMLT worst; MMLT streaky/splotchy; PITP most uniform.|@$ch6/staircase/claims.md"
 "fig6.7|Thesis Fig. 6.7: ajar, full images|make fig6.7|$ch6/ajar/fig6.7.png|$ch6/ajar/summary.csv $ch6/ajar/claims.md $ch6/ajar/claims.csv|Full-resolution images of Fig. 6.4's methods: PSSMLT worst; MMLT streaky/splotchy; PITP most uniform.|@$ch6/ajar/claims.md"
-"mmlt-ratio|MMLT paper §5 and Fig. 5: non-zero samples; per-technique contributions and sample counts (ajar, length 4)|make mmlt-ratio|$tech/technique-images.png|results/mmlt-ratio/mmlt-ratio.md $tech/tech.md $tech/follow-mmlt.csv $tech/follow-pssmlt.csv results/mmlt-ratio/$scale/ajar-direct/claims.csv|11.81 % of PSSMLT's samples vs 29.75 % of MMLT's have non-zero contribution (door scene); MMLT's per-technique sample counts follow the per-technique contributions, PSSMLT's do not.|@results/mmlt-ratio/mmlt-ratio.md $tech/tech.md"
-"hybrid-study|Thesis §4.3/§7.1: hybrid MCTLS at equal time, with small steps|make hybrid-study||$hyb/hybrid-study.md $hyb/ajar/summary.csv $hyb/living-room/summary.csv|Open question: do MMLT large steps for short paths plus MCTLS for long ones beat both?|"
+"mmlt-ratio|MMLT paper §5 and Fig. 5: non-zero samples; per-technique contributions and sample counts (ajar, length 4)|make mmlt-ratio|$tech/technique-images.png|results/mmlt-ratio/mmlt-ratio.md $tech/tech.md $tech/follow-mmlt.csv $tech/follow-pssmlt.csv results/mmlt-ratio/$scale/ajar-direct/claims.csv $tech/claims.csv|11.81 % of PSSMLT's samples vs 29.75 % of MMLT's have non-zero contribution (door scene); MMLT's per-technique sample counts follow the per-technique contributions, PSSMLT's do not.|@results/mmlt-ratio/mmlt-ratio.md $tech/tech.md"
+"hybrid-study|Thesis §4.3/§7.1: hybrid MCTLS at equal time, with small steps|make hybrid-study||$hyb/hybrid-study.md $hyb/ajar/summary.csv $hyb/living-room/summary.csv $hyb/ajar/claims.csv $hyb/living-room/claims.csv|Open question: do MMLT large steps for short paths plus MCTLS for long ones beat both?|@$hyb/ajar/claims.md $hyb/living-room/claims.md"
+"cdc-ch6|Thesis §4.2: constrained discrete choices on the chapter-6 scenes (PSSMLT with and without --cdc, equal time)|make cdc-ch6||$cdc/living-room/claims.csv $cdc/staircase/claims.csv $cdc/ajar/claims.csv|In other scenes the effect of CDC is usually subtle.|@$cdc/living-room/claims.md $cdc/staircase/claims.md $cdc/ajar/claims.md"
+"bdpt-pt|Thesis Fig. 3.4: BDPT vs path tracing at equal samples (ajar)|make bdpt-pt||$bg/ajar/summary.csv $bg/ajar/ajar.md $bg/ajar/claims.csv|BDPT has lower variance than path tracing at equal samples.|@$bg/ajar/claims.md"
+"mmlt-equal|MMLT paper §5 and Fig. 4: BDPT, PSSMLT and MMLT at equal time (ajar, up to 8 bounces)|make mmlt-equal||$meq/ajar/summary.csv $meq/ajar/ajar.md $meq/ajar/claims.csv|BDPT and PSSMLT are noisy, PSSMLT barely improves on BDPT, MMLT is less noisy than both.|@$meq/ajar/claims.md"
 )
 page() {
 cat <<'HEAD'
@@ -46,7 +51,7 @@ section { border-top: 1px solid #ccc; padding: 0.5em 0 1em; }
 img { max-width: 100%; border: 1px solid #ddd; margin: 4px 0; }
 pre { background: #f6f6f6; padding: 0.5em; overflow-x: auto; font-size: 12px; }
 table { border-collapse: collapse; font-size: 13px; } td, th { border: 1px solid #ccc; padding: 2px 5px; }
-.v-holds { background: #dfd; } .v-contradicted { background: #fdd; } .v-undecided { background: #ffd; }
+.v-holds { background: #dfd; } .v-contradicted { background: #fdd; } .v-undecided { background: #ffd; } .v-notrep { background: #eee; }
 .missing { color: #a00; } .claim { background: #eef4ff; padding: 0.4em; } .verdict { background: #efe; padding: 0.4em; }
 </style></head><body>
 <h1>pss-harness: every figure</h1>
@@ -61,14 +66,22 @@ if [ -z "$ledger" ]; then echo "<p class=\"missing\">No figure with claims has b
 else
   # shellcheck disable=SC2086  # the ledger is a list of paths without spaces
   bash "$(dirname "$0")/claims-coverage.sh" --html results/claims-catalogue.csv $ledger
-  echo "<table><tr><th>id</th><th>source</th><th>claim</th><th>statistic</th><th>value ± s.e.</th><th>z (deciding)</th><th>verdict</th><th>scale</th><th>command</th></tr>"
+  # Beside each row, what the source says and where (the catalogue's reading); after the rows, one
+  # row per claim the harness cannot test, with what it would need.
+  echo "<table><tr><th>id</th><th>the source (where: the claim)</th><th>this row's claim</th><th>statistic</th><th>value ± s.e.</th><th>z (deciding)</th><th>verdict</th><th>scale</th><th>command</th></tr>"
   for f in $ledger; do
-    awk -F, "$csvcol"'!/^#/ {
+    awk -F, -v catalogue=results/claims-catalogue.csv "$csvcol"'
+      FILENAME == catalogue && !/^#/ { k = get("id"); said[k] = get("source") " " get("where") ": " get("claim"); next }
+      !/^#/ {
+        base = get("id"); sub(/^harness:?/, "", base)
         need = (get("verdict") == "undecided" && get("seeds_needed") > 0) ? sprintf(" (%d seeds would decide it)", get("seeds_needed")) : ""
-        printf "<tr class=\"ledger-row\" data-claims=\"%s\"><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s %.4g ± %.2g</td><td>%.1f</td><td class=\"v-%s\">%s</td><td>%s</td><td>%s</td></tr>\n",
-          href, get("id"), get("source"), get("claim"), get("statistic"), get("method"), get("value"), get("se"), get("z_min"),
-          get("verdict"), get("verdict") need, get("scale"), get("command") }' href="../${f#results/}" "$f" | sed 's/&/\&amp;/g'
+        printf "<tr class=\"ledger-row\" data-claims=\"%s\"><td>%s</td><td>%s</td><td>%s (%s)</td><td>%s</td><td>%s %.4g ± %.2g</td><td>%.1f</td><td class=\"v-%s\">%s</td><td>%s</td><td>%s</td></tr>\n",
+          href, get("id"), (base in said) ? said[base] : "", get("claim"), get("source"), get("statistic"), get("method"), get("value"), get("se"), get("z_min"),
+          get("verdict"), get("verdict") need, get("scale"), get("command") }' href="../${f#results/}" results/claims-catalogue.csv "$f" | sed 's/&/\&amp;/g'
   done
+  awk -F, "$csvcol"'!/^#/ && get("needs") != "" {
+      printf "<tr><td>%s</td><td>%s %s: %s</td><td>%s</td><td></td><td></td><td></td><td class=\"v-notrep\">not reproduced: needs %s</td><td></td><td></td></tr>\n",
+        get("id"), get("source"), get("where"), get("claim"), get("compares"), get("needs") }' results/claims-catalogue.csv | sed 's/&/\&amp;/g'
   echo "</table>"
 fi
 echo "</section>"

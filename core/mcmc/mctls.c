@@ -99,7 +99,7 @@ double mctls_step(const struct path_ctx *pc, const struct mlt_opts *o, struct ch
         ysum = drawn_trials(pc, c, w, b, r, o->mctls_tries, o->mctls_count_t0, &j, &c->xsum);
         c->xsum_valid = false;
     } else {
-        if (!c->xsum_valid) {
+        if (!c->xsum_valid || o->mctls_recompute) {
             c->xsum = mctls_trials(pc, &c->pss.base, w, k, b->xpi, b->xsp);
             c->xsum_valid = true;
         }

@@ -72,6 +72,10 @@ struct mlt_opts {
      * and connection counts are not those of Eq. 4.7's. */
     int mctls_tries;
     bool mctls_count_t0;
+    /* MCTLS (Eq. 4.7) re-evaluates the current state's trials at every step instead of keeping them
+     * from when it was proposed: the same chain, at the cost the thesis's ray count assumes
+     * (§4.3.1: 2k + 2 rays more per step), for fig4.6's test of that count. */
+    bool mctls_recompute;
     bool uniform_lengths; /* MMLT: every length gets the same share of mutations, not b_k */
     bool time_proposals;  /* record each proposal's time in the statistics (two clock reads) */
     bool max_heuristic;   /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */

@@ -142,6 +142,8 @@ const struct mlt_option mlt_options[] = {
      .methods = APPLIES_MULTIPLEXED, .numbers = true, .help = "MCTLS trials (mlt.h)", .conflict = mctls_conflict},
     {"mctls_count_t0", NULL, MLT_OPTION_FLAG, FIELD(mctls_count_t0), .methods = APPLIES_MULTIPLEXED, .numbers = true,
      .help = "MCTLS trials among k + 2 techniques (mlt.h)", .conflict = mctls_conflict},
+    {"mctls_recompute", NULL, MLT_OPTION_FLAG, FIELD(mctls_recompute), .methods = APPLIES_MULTIPLEXED,
+     .help = "MCTLS re-evaluates the current state's trials every step (mlt.h)"},
     {"ctrl_unit_ratio", NULL, MLT_OPTION_FLAG, FIELD(ctrl_unit_ratio), .methods = APPLIES_MULTIPLEXED, .numbers = true,
      .help = "tests only: a broken controlled step"},
     {"time_proposals", NULL, MLT_OPTION_FLAG, FIELD(time_proposals), .methods = APPLIES_MCMC,

@@ -81,16 +81,17 @@ double *error_field(const struct image *img, const struct image *ref)
     return e;
 }
 
-double error_blur_share(const struct image *a, const struct image *ref, double eps, int k)
+double error_blur_share_in(const struct image *a, const struct image *ref, double eps, int k, const int rect[4],
+                           double s)
 {
-    double s = mean_lum_scale(a, ref), all = 0, blurred = 0;
-    int bw = a->w / k, bh = a->h / k;
+    double all = 0, blurred = 0;
+    int bw = rect[2] / k, bh = rect[3] / k;
     for (int by = 0; by < bh; by++)
         for (int bx = 0; bx < bw; bx++)
             for (int c = 0; c < 3; c++) {
                 double m = 0;
-                for (int y = by * k; y < (by + 1) * k; y++)
-                    for (int x = bx * k; x < (bx + 1) * k; x++) {
+                for (int y = rect[1] + by * k; y < rect[1] + (by + 1) * k; y++)
+                    for (int x = rect[0] + bx * k; x < rect[0] + (bx + 1) * k; x++) {
                         size_t i = 3 * ((size_t)y * a->w + x) + (size_t)c;
                         double r = ref->px[i], e = (s * a->px[i] - r) / sqrt(r * r + eps);
                         m += e;
@@ -101,6 +102,11 @@ double error_blur_share(const struct image *a, const struct image *ref, double e
             }
     /* per pixel: the blocks' squared means stand for k^2 pixels each */
     return all > 0 ? blurred * k * k / all : NAN;
+}
+
+double error_blur_share(const struct image *a, const struct image *ref, double eps, int k)
+{
+    return error_blur_share_in(a, ref, eps, k, (const int[4]){0, 0, a->w, a->h}, mean_lum_scale(a, ref));
 }
 
 double error_corr_length(const struct image *img, const struct image *ref)

@@ -41,15 +41,23 @@ ch6-assets: deps $(BIN)/ch6_assets
 # stopped.
 CH6_METHODS ?= pssmlt,mmlt,pitp
 CH6_OUT := results/ch6-$(SCALE)
+# SEEDS=N: N seeds (at most 64) instead of the scale's, for every bin/ch6_equal target here: an
+# undecided row says how many seeds would decide it. With the full scale's checkpoints the runs
+# already complete are kept, so a finished run grows by the new seeds only; while SEEDS is given
+# the targets always rerun (`make fig6.4 SCALE=full SEEDS=16`).
+CH6_SEEDS := $(if $(SEEDS),--seeds $(SEEDS))
+CH6_SEEDS_FORCE := $(if $(SEEDS),ch6-seeds-force)
+CH6_SEEDS_CMD := $(if $(SEEDS), SEEDS=$(SEEDS))
+.PHONY: ch6-seeds-force
 # the claims' source and command for claims.csv, which bin/ch6_equal writes with its verdicts
-CH6_living-room_ARGS := --source 'thesis Figs. 6.2 and 6.5' --command 'make fig6.2 SCALE=$(SCALE)'
-CH6_staircase_ARGS := --source 'thesis Figs. 6.3 and 6.6' --command 'make fig6.3 SCALE=$(SCALE)'
-CH6_ajar_ARGS := --source 'thesis Figs. 6.4 and 6.7' --command 'make fig6.4 SCALE=$(SCALE)'
+CH6_living-room_ARGS := --source 'thesis Figs. 6.2 and 6.5' --command 'make fig6.2 SCALE=$(SCALE)$(CH6_SEEDS_CMD)'
+CH6_staircase_ARGS := --source 'thesis Figs. 6.3 and 6.6' --command 'make fig6.3 SCALE=$(SCALE)$(CH6_SEEDS_CMD)'
+CH6_ajar_ARGS := --source 'thesis Figs. 6.4 and 6.7' --command 'make fig6.4 SCALE=$(SCALE)$(CH6_SEEDS_CMD)'
 
 # The tools are order-only: every commit relinks them (version.h), which must not rerun minutes of
 # renders; a changed scene does. `make ch6-clean` reruns everything.
-$(CH6_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CH6_OUT)/$* --methods $(CH6_METHODS) --scale $(SCALE) $(CH6_$*_ARGS)
+$(CH6_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CH6_OUT)/$* --methods $(CH6_METHODS) --scale $(SCALE) $(CH6_$*_ARGS) $(CH6_SEEDS)
 	bash scripts/plot.sh scripts/ch6-time.gp $@ $(CH6_OUT)/$*/error-vs-time "name='$*'"
 
 .PHONY: fig6.2 fig6.3 fig6.4 fig6.5 fig6.6 fig6.7 ch6-clean
@@ -58,6 +66,7 @@ $(1): deps $(CH6_OUT)/$(2)/summary.csv
 	bash scripts/ch6-figure.sh $(3) $(CH6_OUT)/$(2) $(CH6_OUT)/$(2)/$(1).png
 	@echo "$(CH6_OUT)/$(2)/$(1).png; table $(CH6_OUT)/$(2)/$(2).md, error vs time $(CH6_OUT)/$(2)/error-vs-time.png"
 	@cat $(CH6_OUT)/$(2)/$(2).md $(CH6_OUT)/$(2)/claims.md
+FIGURE_TARGETS += $(1)
 endef
 $(eval $(call CH6_FIG,fig6.2,living-room,insets))
 $(eval $(call CH6_FIG,fig6.3,staircase,insets))
@@ -119,20 +128,21 @@ $(TECH_OUT)/tech.md: scenes/ajar/scene.json | deps $(BIN)/render $(BIN)/ch6_tech
 # the render CSVs' counts are read: ch6_equal --reference-spp 0). The scales are bin/ch6_equal's
 # (--study ratio).
 RATIO_OUT := results/mmlt-ratio/$(SCALE)/ajar-direct
-$(RATIO_OUT)/summary.csv: scenes/ajar/scene.json | deps $(BIN)/ch6_equal $(BIN)/render
+$(RATIO_OUT)/summary.csv: scenes/ajar/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
 	$(BIN)/ch6_equal --scene scenes/ajar/scene.json --name ajar-direct --out $(RATIO_OUT) --min-length 2 --reference-spp 0 \
-	  --study ratio --scale $(SCALE) --source 'MMLT paper §5' --command 'make mmlt-ratio SCALE=$(SCALE)' >/dev/null
+	  --study ratio --scale $(SCALE) --source 'MMLT paper §5' --command 'make mmlt-ratio SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
 
 # make check-mmlt-ratio: the paper's setting (ajar, paths of length >= 2, no reference) at a fixed
 # 16 mutations per pixel at 256x144, seeds 101-108 against the baseline's 1-8: the non-zero
 # fractions (per proposal, per connection, large steps) and the seed pass's error per method
 # (Welch t over the seeds, Sidak alpha = 0.01 over the 12 rows); `make ch6-baseline-mmlt-ratio`.
-CH6_CHECK_OPTS_mmlt-ratio := --spp 16 --seeds 8 --min-length 2 --reference-spp 0 --resolution 256x144 \
+CH6_CHECK_OPTS_mmlt-ratio := --study ratio --spp 16 --seeds 8 --min-length 2 --reference-spp 0 --resolution 256x144 \
   --render-args "--p-large 0.1"
 $(eval $(call CH6_CHECK,mmlt-ratio,ajar))
 ch6-baselines: ch6-baseline-mmlt-ratio
 
 .PHONY: mmlt-ratio
+FIGURE_TARGETS += mmlt-ratio
 mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary.csv $(CH6_OUT)/ajar/summary.csv $(RATIO_OUT)/summary.csv $(TECH_OUT)/tech.md
 	@mkdir -p results/mmlt-ratio
 	$(call TO_FILE,results/mmlt-ratio/mmlt-ratio.md,bash scripts/ch6-ratio.sh $(filter %summary.csv,$^))
@@ -145,10 +155,12 @@ mmlt-ratio: deps $(CH6_OUT)/living-room/summary.csv $(CH6_OUT)/staircase/summary
 HYB_METHODS := mmlt=--method mmlt,mctls=--method mmlt --large-step mctls,hybrid4=--method mmlt --large-step hybrid --hybrid-length 4,hybrid6=--method mmlt --large-step hybrid --hybrid-length 6,hybrid8=--method mmlt --large-step hybrid --hybrid-length 8
 HYB_OUT := results/hybrid-study-$(SCALE)
 
-$(HYB_OUT)/%/summary.csv: scenes/%/scene.json | deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(HYB_OUT)/$* --methods '$(HYB_METHODS)' --study hybrid --scale $(SCALE)
+$(HYB_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(HYB_OUT)/$* --methods '$(HYB_METHODS)' --study hybrid --scale $(SCALE) \
+	  --source 'thesis §4.3, §7.1' --command 'make hybrid-study SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS)
 
 .PHONY: hybrid-study
+FIGURE_TARGETS += hybrid-study
 hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.csv
 	$(call TO_FILE,$(HYB_OUT)/hybrid-study.md,bash scripts/ch6-hybrid.sh $(filter %summary.csv,$^))
 	@cat $(HYB_OUT)/hybrid-study.md
@@ -157,7 +169,68 @@ hybrid-study: deps $(HYB_OUT)/ajar/summary.csv $(HYB_OUT)/living-room/summary.cs
 # 16 mutations per pixel instead of a time budget, seeds 101-108 against the baseline's 1-8 and the
 # cached quick reference; every statistic of stats.csv per configuration (Welch t over the seeds,
 # Sidak alpha = 0.01 over the rows). `make ch6-baseline-hybrid-study` rewrites the baseline.
-CH6_CHECK_OPTS_hybrid-study := --methods '$(HYB_METHODS)' --spp 16 --seeds 8 --reference-spp 256 --resolution 128x72 \
+CH6_CHECK_OPTS_hybrid-study := --study hybrid --methods '$(HYB_METHODS)' --spp 16 --seeds 8 --reference-spp 256 --resolution 128x72 \
   --render-args "--p-large 0.1"
 $(eval $(call CH6_CHECK,hybrid-study,ajar))
 ch6-baselines: ch6-baseline-hybrid-study
+
+# ---- MMLT paper §5, Fig. 4: BDPT vs PSSMLT vs MMLT at equal time (claim M-b) ----
+# ajar (the door scene's counterpart), paths of 1 to 8 segments (the paper's 8 bounces, direct light
+# included), equal CPU time per method; the scales are bin/ch6_equal's (--study mmlt-equal). Each
+# method takes its own options (BDPT has no large steps).
+MEQ_METHODS := bdpt,pssmlt=--method pssmlt --p-large 0.1,mmlt=--method mmlt --p-large 0.1
+MEQ_OUT := results/mmlt-equal-$(SCALE)
+$(MEQ_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(MEQ_OUT)/$* --methods '$(MEQ_METHODS)' --study mmlt-equal \
+	  --scale $(SCALE) --source 'MMLT paper §5, Fig. 4' --command 'make mmlt-equal SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
+.PHONY: mmlt-equal
+FIGURE_TARGETS += mmlt-equal
+mmlt-equal: deps $(MEQ_OUT)/ajar/summary.csv
+	@cat $(MEQ_OUT)/ajar/ajar.md $(MEQ_OUT)/ajar/claims.md
+
+# make check-mmlt-equal: the three methods on ajar at 16 samples or mutations per pixel at 256x144
+# (paths of 1 to 8 segments), seeds 101-108 against the baseline's 1-8 and the cached quick
+# reference; every statistic of stats.csv per method (Welch t over the seeds, Sidak alpha = 0.01);
+# `make ch6-baseline-mmlt-equal` rewrites the baseline.
+CH6_CHECK_OPTS_mmlt-equal := --study mmlt-equal --methods '$(MEQ_METHODS)' --spp 16 --seeds 8 --min-length 1 --max-length 8 \
+  --reference-spp 256 --resolution 256x144 --render-args ""
+$(eval $(call CH6_CHECK,mmlt-equal,ajar))
+ch6-baselines: ch6-baseline-mmlt-equal
+
+# ---- thesis Fig. 3.4: BDPT vs path tracing at equal samples (claim T37) ----
+# ajar at the scale's samples per pixel, seeds and resolution (bin/ch6_equal --study background).
+BG_OUT := results/bdpt-pt-$(SCALE)
+$(BG_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(BG_OUT)/$* --methods pt,bdpt --study background \
+	  --scale $(SCALE) --source 'thesis Fig. 3.4' --command 'make bdpt-pt SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
+.PHONY: bdpt-pt
+FIGURE_TARGETS += bdpt-pt
+bdpt-pt: deps $(BG_OUT)/ajar/summary.csv
+	@cat $(BG_OUT)/ajar/ajar.md $(BG_OUT)/ajar/claims.md
+
+# make check-bdpt-pt: the same at the quick settings, seeds 101-108 against the baseline's 1-8
+# (results/baselines/bdpt-pt/stats.csv, `make ch6-baseline-bdpt-pt`): every statistic of stats.csv
+# per method, Welch t over the seeds, Sidak alpha = 0.01 over the rows.
+CH6_CHECK_OPTS_bdpt-pt := --study background --methods pt,bdpt --spp 16 --seeds 8 --resolution 128x72 --reference-spp 1024 --render-args ""
+$(eval $(call CH6_CHECK,bdpt-pt,ajar))
+ch6-baselines: ch6-baseline-bdpt-pt
+
+# ---- thesis §4.2: constrained discrete choices on the chapter-6 scenes (claim T11) ----
+# PSSMLT with and without --cdc at the equal-time study's settings (bin/ch6_equal --study cdc).
+CDC_METHODS := pssmlt=--method pssmlt --p-large 0.1,pssmlt-cdc=--method pssmlt --p-large 0.1 --cdc
+CDC_OUT := results/cdc-ch6-$(SCALE)
+$(CDC_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CDC_OUT)/$* --methods '$(CDC_METHODS)' --study cdc \
+	  --scale $(SCALE) --source 'thesis §4.2' --command 'make cdc-ch6 SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
+.PHONY: cdc-ch6
+FIGURE_TARGETS += cdc-ch6
+cdc-ch6: deps $(CDC_OUT)/living-room/summary.csv $(CDC_OUT)/staircase/summary.csv $(CDC_OUT)/ajar/summary.csv
+	@cat $(CDC_OUT)/*/claims.md
+
+# make check-cdc-ch6: both on ajar at 16 mutations per pixel, 256x144, paths of length >= 3, seeds
+# 101-108 against the baseline's 1-8 (results/baselines/cdc-ch6/stats.csv, `make ch6-baseline-cdc-ch6`):
+# every statistic of stats.csv per method, Welch t over the seeds, Sidak alpha = 0.01 over the rows.
+CH6_CHECK_OPTS_cdc-ch6 := --study cdc --methods '$(CDC_METHODS)' --spp 16 --seeds 8 --min-length 3 \
+  --reference-spp 256 --resolution 256x144 --render-args ""
+$(eval $(call CH6_CHECK,cdc-ch6,ajar))
+ch6-baselines: ch6-baseline-cdc-ch6

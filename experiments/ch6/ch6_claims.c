@@ -6,40 +6,146 @@
 
 #define MAX_METHODS 16
 
+/* Each claim is tested as the source states it, against whom it names (`against`: a space-separated
+ * list; NULL every other method of the run, where the study's runs are those the source compares),
+ * in the studies whose runs are its setting. */
 static const struct claim {
     const char *id; /* results/claims-catalogue.csv */
     const char *text, *method;
     int sign; /* +1: the method's value is the largest; -1: the smallest */
     enum ch6_q q;
     const char *statistic;
-    const char *against; /* the one method compared with (NULL: every other one) */
+    const char *against;
     const char *source;  /* NULL: the run's --source */
+    bool direct;         /* the source's setting includes direct light: harness:ID for runs without it */
+    const char *studies; /* the bin/ch6_equal studies whose runs test it (space-separated) */
 } claims[] = {
-    {"T32", "(1) PSSMLT is worst", "pssmlt", +1, Q_RELMSE, "relMSE", NULL, NULL},
-    {"T32", "(1) PSSMLT is worst", "pssmlt", +1, Q_BLOCK_MEDIAN, "median block relMSE (firefly-robust)", NULL, NULL},
-    {"T32", "(1) PSSMLT is worst", "pssmlt", +1, Q_TRIMMED, "relMSE without the 0.1% largest pixel errors", NULL, NULL},
-    {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_CORRLEN, "error correlation length (pixels)", NULL,
-     NULL},
-    {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_BLUR8, "error share surviving an 8x8 blur", NULL,
-     NULL},
-    {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_SPREAD, "block-relMSE spread (CV)", NULL, NULL},
-    {"harness:T35", "(3) PITP is the most uniform", "pitp", -1, Q_SPREAD, "block-relMSE spread (CV)", NULL, NULL},
-    {"harness:T35", "(3) PITP is the most uniform", "pitp", -1, Q_BLUR8, "error share surviving an 8x8 blur", NULL,
-     NULL},
-    {"harness:T35", "(3) PITP is the most uniform", "pitp", -1, Q_CORRLEN, "error correlation length (pixels)", NULL,
-     NULL},
-    /* 11.81 % of PSSMLT's samples against 29.75 % of MMLT's on the door scene */
-    {"harness:M-d", "(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO,
-     "non-zero fraction per proposal", "pssmlt", "MMLT paper §5"},
-    {"harness:M-d", "(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO_CONN,
-     "non-zero fraction per connection", "pssmlt", "MMLT paper §5"},
+    {"T32", "(1) PSSMLT is worst", "pssmlt", +1, Q_RELMSE, "relMSE", NULL, NULL, false, "equal-time"},
+    {"T32", "(1) PSSMLT is worst", "pssmlt", +1, Q_BLOCK_MEDIAN, "median block relMSE (firefly-robust)", NULL, NULL,
+     false, "equal-time"},
+    {"T32", "(1) PSSMLT is worst", "pssmlt", +1, Q_TRIMMED, "relMSE without the 0.1% largest pixel errors", NULL, NULL,
+     false, "equal-time"},
+    {"T33", "at equal time PSSMLT produces fewer samples than MMLT", "pssmlt", -1, Q_MPS, "mutations per second",
+     "mmlt", NULL, false, "equal-time"},
+    /* "In contrast, PITP ...": MMLT's artifacts against PITP, in the figures' insets and whole */
+    {"T34", "(2) MMLT shows streaky or splotchy artifacts (against PITP)", "mmlt", +1, Q_INSET_BLUR8,
+     "error share surviving an 8x8 blur, in the figure's insets", "pitp", NULL, false, "equal-time"},
+    {"T34", "(2) MMLT shows streaky or splotchy artifacts (against PITP)", "mmlt", +1, Q_INSET_SPREAD,
+     "block-relMSE spread (CV), in the figure's insets", "pitp", NULL, false, "equal-time"},
+    {"T34", "(2) MMLT shows streaky or splotchy artifacts (against PITP)", "mmlt", +1, Q_BLUR8,
+     "error share surviving an 8x8 blur", "pitp", NULL, false, "equal-time"},
+    {"T34", "(2) MMLT shows streaky or splotchy artifacts (against PITP)", "mmlt", +1, Q_SPREAD,
+     "block-relMSE spread (CV)", "pitp", NULL, false, "equal-time"},
+    {"T34", "(2) MMLT shows streaky or splotchy artifacts (against PITP)", "mmlt", +1, Q_CORRLEN,
+     "error correlation length (pixels)", "pitp", NULL, false, "equal-time"},
+    {"T35", "(3) PITP's noise is more uniform than MMLT's", "pitp", -1, Q_INSET_SPREAD,
+     "block-relMSE spread (CV), in the figure's insets", "mmlt", NULL, false, "equal-time"},
+    {"T35", "(3) PITP's noise is more uniform than MMLT's", "pitp", -1, Q_SPREAD, "block-relMSE spread (CV)", "mmlt",
+     NULL, false, "equal-time"},
+    {"T35", "(3) PITP's noise is more uniform than MMLT's", "pitp", -1, Q_BLUR8, "error share surviving an 8x8 blur",
+     "mmlt", NULL, false, "equal-time"},
+    {"T36", "PITP improves upon previous work (MMLT, PSSMLT) in each scene", "pitp", -1, Q_RELMSE, "relMSE",
+     "mmlt pssmlt", "thesis §7", false, "equal-time"},
+    {"T36", "PITP improves upon previous work (MMLT, PSSMLT) in each scene", "pitp", -1, Q_BLOCK_MEDIAN,
+     "median block relMSE (firefly-robust)", "mmlt pssmlt", "thesis §7", false, "equal-time"},
+    /* thesis §4.3: low large-step acceptance "is especially the case in Multiplexed MLT" */
+    {"T12", "low large-step acceptance is especially a problem of MMLT", "mmlt", -1, Q_LARGE_NONZERO,
+     "large-step proposals with a contribution (fraction)", "pssmlt", "thesis §4.3", false, "equal-time"},
+    /* thesis §4.3, §7.1 (make hybrid-study): MMLT large steps for short paths and MCTLS for long ones
+     * "could perform better" than either */
+    {"T20", "a hybrid (MMLT large steps short, MCTLS long) performs better than either", "hybrid4", -1, Q_RELMSE,
+     "relMSE", "mmlt mctls", "thesis §4.3, §7.1", false, "hybrid"},
+    {"T20", "a hybrid (MMLT large steps short, MCTLS long) performs better than either", "hybrid6", -1, Q_RELMSE,
+     "relMSE", "mmlt mctls", "thesis §4.3, §7.1", false, "hybrid"},
+    {"T20", "a hybrid (MMLT large steps short, MCTLS long) performs better than either", "hybrid8", -1, Q_RELMSE,
+     "relMSE", "mmlt mctls", "thesis §4.3, §7.1", false, "hybrid"},
+    /* MMLT paper §5, Fig. 4 (make mmlt-equal): "MMLT is less noisy than both" BDPT and PSSMLT */
+    {"M-b", "MMLT is less noisy than BDPT and PSSMLT at equal time", "mmlt", -1, Q_RELMSE, "relMSE", "bdpt pssmlt",
+     "MMLT paper §5, Fig. 4", false, "mmlt-equal"},
+    /* thesis Fig. 3.4 (make bdpt-pt): BDPT has the lower variance at equal samples */
+    {"T37", "BDPT has lower variance than path tracing at equal samples", "bdpt", -1, Q_RELMSE, "relMSE", "pt",
+     "thesis §3.5, Fig. 3.4", false, "background"},
+    /* the harness's readings: the splotchiest and the most uniform of the three chapter-6 methods */
+    {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_CORRLEN, "error correlation length (pixels)",
+     "pssmlt pitp", NULL, false, "equal-time"},
+    {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_BLUR8, "error share surviving an 8x8 blur",
+     "pssmlt pitp", NULL, false, "equal-time"},
+    {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_SPREAD, "block-relMSE spread (CV)", "pssmlt pitp",
+     NULL, false, "equal-time"},
+    {"harness:T35", "(3) PITP is the most uniform", "pitp", -1, Q_SPREAD, "block-relMSE spread (CV)", "pssmlt mmlt",
+     NULL, false, "equal-time"},
+    {"harness:T35", "(3) PITP is the most uniform", "pitp", -1, Q_BLUR8, "error share surviving an 8x8 blur",
+     "pssmlt mmlt", NULL, false, "equal-time"},
+    {"harness:T35", "(3) PITP is the most uniform", "pitp", -1, Q_CORRLEN, "error correlation length (pixels)",
+     "pssmlt mmlt", NULL, false, "equal-time"},
+    /* 11.81 % of PSSMLT's samples against 29.75 % of MMLT's on the door scene, direct light included */
+    {"M-d", "(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO, "non-zero fraction per proposal",
+     "pssmlt", "MMLT paper §5", true, "equal-time ratio"},
+    {"M-d", "(4) MMLT has more non-zero samples than PSSMLT", "mmlt", +1, Q_NONZERO_CONN,
+     "non-zero fraction per connection", "pssmlt", "MMLT paper §5", true, "equal-time ratio"},
 };
+
+bool ch6_listed(const char *list, const char *word)
+{
+    size_t n = strlen(word);
+    for (const char *p = strstr(list, word); p; p = strstr(p + 1, word))
+        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return true;
+    return false;
+}
+
+/* The claim's ID for this run: harness:ID when the source's setting has direct light and the run
+ * leaves it out. */
+static const char *claim_id(const struct claim *cl, const struct ch6_claims_in *in, char *buf, size_t len)
+{
+    if (!cl->direct || in->minlen <= 2) return cl->id;
+    snprintf(buf, len, "harness:%s", cl->id);
+    return buf;
+}
 
 static int find(const struct ch6_claims_in *in, const char *method)
 {
     for (int i = 0; i < in->methods; i++)
         if (in->have[i] && !strcmp(in->name[i], method)) return i;
     return -1;
+}
+
+/* Claims of a ratio of two methods' means: a / b within ±25 % of `target`. */
+static const struct ratio_claim {
+    const char *id, *source, *text, *statistic, *a, *b;
+    enum ch6_q q;
+    double target;
+    bool direct;         /* as struct claim's */
+    const char *studies; /* as struct claim's */
+} ratio_claims[] = {
+    /* MMLT paper §5: "an improvement of approximately 2.5 times" in the share of non-zero samples */
+    {"M-e", "MMLT paper §5", "MMLT's share of non-zero samples is about 2.5 times PSSMLT's",
+     "non-zero fraction per proposal", "mmlt", "pssmlt", Q_NONZERO, 2.5, true, "equal-time ratio"},
+    /* MMLT paper §5, Fig. 4: "PSSMLT barely improves on BDPT" at equal time */
+    /* thesis §4.2 (make cdc-ch6): "in other scenes the effect of CDC is usually subtle" */
+    {"T11", "thesis §4.2", "CDC's effect is usually subtle in other scenes (relMSE within ±25 %)", "relMSE",
+     "pssmlt-cdc", "pssmlt", Q_RELMSE, 1, false, "cdc"},
+    {"M-b", "MMLT paper §5, Fig. 4", "PSSMLT barely improves on BDPT at equal time", "relMSE", "pssmlt", "bdpt",
+     Q_RELMSE, 1, false, "mmlt-equal"},
+};
+
+/* The ratio claims whose two methods ran; the ratio's first-order standard error. */
+static void ratio_rows(struct claims *out, const struct ch6_claims_in *in)
+{
+    for (size_t k = 0; k < sizeof ratio_claims / sizeof *ratio_claims; k++) {
+        const struct ratio_claim *rc = &ratio_claims[k];
+        if (!ch6_listed(rc->studies, in->study)) continue;
+        int ai = find(in, rc->a), bi = find(in, rc->b);
+        if (ai < 0 || bi < 0 || isnan(in->mean[ai][rc->q]) || !(in->mean[bi][rc->q] > 0)) continue;
+        double a = in->mean[ai][rc->q], b = in->mean[bi][rc->q];
+        double r = a / b, rse = r * sqrt(pow(in->se[ai][rc->q] / a, 2) + pow(in->se[bi][rc->q] / b, 2));
+        struct verdict v = verdict_similar(r, rse, rc->target, 0, 0.25, in->seeds);
+        char zs[64], md[128], idbuf[64], stat[160];
+        snprintf(zs, sizeof zs, "%gx=%.2f", rc->target, v.zmin);
+        snprintf(md, sizeof md, "%g within ±25 %% (z = %.1f)", rc->target, v.zmin);
+        snprintf(stat, sizeof stat, "%s, %s / %s", rc->statistic, rc->a, rc->b);
+        const struct claim c = {.id = rc->id, .direct = rc->direct};
+        claims_row(out, claim_id(&c, in, idbuf, sizeof idbuf), rc->source, rc->text, stat, rc->a, r, rse, zs, md, &v);
+    }
 }
 
 char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
@@ -50,14 +156,16 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
     double mean[MAX_METHODS], se[MAX_METHODS], z[MAX_METHODS];
     for (size_t k = 0; k < sizeof claims / sizeof *claims; k++) {
         const struct claim *cl = &claims[k];
-        int mi = find(in, cl->method), oi = cl->against ? find(in, cl->against) : -1;
-        if (mi < 0 || (cl->against && oi < 0) || isnan(in->mean[mi][cl->q]))
-            continue; /* no reference: no image claims */
+        if (!ch6_listed(cl->studies, in->study)) continue;
+        int mi = find(in, cl->method), others = 0;
+        if (mi < 0 || isnan(in->mean[mi][cl->q])) continue; /* no reference: no image claims */
         bool have[MAX_METHODS];
         for (int i = 0; i < in->methods; i++) {
             mean[i] = in->mean[i][cl->q], se[i] = in->se[i][cl->q];
-            have[i] = in->have[i] && (!cl->against || i == mi || i == oi);
+            have[i] = in->have[i] && (!cl->against || i == mi || ch6_listed(cl->against, in->name[i]));
+            others += have[i] && i != mi;
         }
+        if (!others) continue; /* none of those it is compared with ran */
         struct verdict v = verdict_extreme(mean, se, have, in->methods, mi, cl->sign, in->seeds, z);
         char zs[512] = "", against[1024] = "";
         for (int i = 0; i < in->methods; i++) {
@@ -67,8 +175,10 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
             snprintf(against + b, sizeof against - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", in->name[i],
                      mean[i], se[i], z[i]);
         }
-        claims_row(&out, cl->id, cl->source ? cl->source : in->source, cl->text, cl->statistic, cl->method, mean[mi],
-                   se[mi], zs, against, &v);
+        char idbuf[64];
+        claims_row(&out, claim_id(cl, in, idbuf, sizeof idbuf), cl->source ? cl->source : in->source, cl->text,
+                   cl->statistic, cl->method, mean[mi], se[mi], zs, against, &v);
     }
+    ratio_rows(&out, in);
     return claims_finish(&out, in->out, err, errlen);
 }

@@ -24,6 +24,8 @@ enum ch6_q {
     Q_NONZERO_CONN,  /* the fraction of evaluated connections with a contribution (MMLT paper §5) */
     Q_RELMSE_SCALED, /* relMSE of the image scaled to the reference's mean: without the normalisation's part */
     Q_B_RSE,         /* the seed pass's relative standard error (the render CSV's b_rse) */
+    Q_INSET_SPREAD,  /* block-relMSE spread over the blocks of the figure's two insets (--insets) */
+    Q_INSET_BLUR8,   /* error share surviving an 8 x 8 blur, the mean over the two insets */
     Q_COUNT
 };
 
@@ -32,13 +34,30 @@ struct ch6_claims_in {
     double budget;
     const char *unit; /* the budget's: "s" or "mutations per pixel" */
     int seeds, methods;
+    int minlen;        /* the runs' shortest path length (1 or 2: direct light included) */
+    const char *study; /* bin/ch6_equal --study: a claim is written only in the studies it belongs to */
     const char (*name)[64];
     const bool *have;
     const double (*mean)[Q_COUNT], (*se)[Q_COUNT];
 };
 
+/* Whether word is one of the space-separated list's words. */
+bool ch6_listed(const char *list, const char *word);
+
 /* Writes OUT/claims.csv and OUT/claims.md atomically and returns the Markdown (caller frees), or
  * NULL with one line in err. Claims whose method is not in the run are left out. */
 char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen);
+
+/* The MMLT paper's Fig. 5 claim (M-f) from bin/ch6_tech's follow tables of MMLT's and PSSMLT's runs
+ * (columns tv and r, one row per run): MMLT's sample counts follow the per-technique contributions
+ * more closely than PSSMLT's (smaller tv, larger r; z over the runs). */
+struct ch6_tech_claims_in {
+    const char *follow[2]; /* MMLT's, PSSMLT's */
+    const char *dir, *scale, *command;
+    int k;
+};
+/* Writes DIR/claims.csv and claims.md; returns the Markdown (caller frees), or NULL with one line in
+ * err. */
+char *ch6_tech_claims(const struct ch6_tech_claims_in *in, char *err, size_t errlen);
 
 #endif

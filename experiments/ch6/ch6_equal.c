@@ -71,9 +71,25 @@ static void names(struct ch6_equal *e, char *sname, size_t n)
 }
 
 /* The command line into e; returns the --methods text. */
+/* --insets: two rectangles X,Y,W,H of at least 8 x 8 pixels (the blur's block); whether they lie in
+ * the image is checked when the first image is measured (ch6_runs.c). */
+static void parse_insets(struct ch6_equal *e)
+{
+    if (!e->insets) return;
+    int(*r)[4] = e->inset, end = 0;
+    if (sscanf(e->insets, "%d,%d,%d,%d %d,%d,%d,%d%n", &r[0][0], &r[0][1], &r[0][2], &r[0][3], &r[1][0], &r[1][1],
+               &r[1][2], &r[1][3], &end) != 8 ||
+        e->insets[end])
+        opts_fail(e->prog, "--insets: expected 'X,Y,W,H X,Y,W,H', got '%s'", e->insets);
+    for (int i = 0; i < 2; i++)
+        if (r[i][0] < 0 || r[i][1] < 0 || r[i][2] < 8 || r[i][3] < 8)
+            opts_fail(e->prog, "--insets: rectangle %d needs X, Y >= 0 and W, H >= 8, got '%s'", i + 1, e->insets);
+    e->ninsets = 2;
+}
+
 static const char *parse(struct ch6_equal *e, int argc, char **argv)
 {
-    static const char *const studies[] = {"equal-time", "ratio", "hybrid", NULL};
+    static const char *const studies[] = {"equal-time", "ratio", "hybrid", "mmlt-equal", "background", "cdc", NULL};
     const char *methods, *extra, *render = NULL, *res = NULL;
     double t0 = -1;
     int study;
@@ -109,6 +125,8 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
                        .help =
                            "paths of K segments or more only, reference and runs (1: all; the thesis's chapter 6 uses "
                            "3: no direct lighting)"),
+        {"--max-length", OPT_INT, OPT_DST(e->maxlen), .arg = "K", .lo = 0, .hi = MAX_PATH_LENGTH, .def = "0",
+         .help = "paths of at most K segments, reference and runs (0: bin/render's default)"},
         {"--render-args", OPT_STRING, OPT_DST(extra), .arg = "ARGS", .help = "extra bin/render options for every run",
          .def = "--p-large 0.1"},
         {"--block", OPT_INT, OPT_DST(e->blk), .arg = "B", .lo = 2, .hi = 1024, .help = "block size of the error spread",
@@ -130,8 +148,9 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
                  "scale for this scene, as if given first (options given override them; the table of ch6_scales.c); "
                  "any other NAME only names the scale in claims.csv"},
         {"--study", OPT_CHOICE, OPT_DST(study), .choices = studies, .def = "equal-time",
-         .help = "whose scales --scale applies: equal-time (make fig6.2-6.7), ratio (make mmlt-ratio) or hybrid (make "
-                 "hybrid-study)"},
+         .help = "whose scales --scale applies and whose claims the runs test: equal-time (make "
+                 "fig6.2-6.7), ratio (make mmlt-ratio), hybrid (make hybrid-study), mmlt-equal (make mmlt-equal), "
+                 "background (make bdpt-pt) or cdc (make cdc-ch6)"},
         {"--checkpoint", OPT_DOUBLE, OPT_DST(e->ckpt_every), .arg = "S", .lo = 0, .hi = 1e6, .def = "0",
          .help = "every render (reference too) checkpoints every S seconds, and a rerun after an interruption keeps "
                  "the completed runs and resumes the interrupted one (0: off)"},
@@ -147,12 +166,14 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
     opts_parse(&spec, argc, args);
     if (args != argv) free(args);
     e->res = res;
+    e->study = studies[study];
     snprintf(e->extra_s, sizeof e->extra_s, "%s", extra);
     if (render) snprintf(e->render, sizeof e->render, "%s", render);
     if (!e->scene || !e->out) opts_fail(e->prog, "--scene and --out are required (see --help)");
     if (strlen(e->out) > 2000) opts_fail(e->prog, "--out: path too long");
     make_budgets(e, t0);
     if (access(e->scene, R_OK)) opts_fail(e->prog, "--scene: cannot read '%s'", e->scene);
+    parse_insets(e);
     return methods;
 }
 
@@ -170,6 +191,7 @@ int main(int argc, char **argv)
     snprintf(e.runsdir, sizeof e.runsdir, "%s/runs", e.out);
     outdir_require(e.prog, e.runsdir);
     snprintf(e.minlen_s, sizeof e.minlen_s, "%d", e.minlen);
+    snprintf(e.maxlen_s, sizeof e.maxlen_s, "%d", e.maxlen);
     snprintf(e.thr, sizeof e.thr, "%d", e.threads);
     ch6_reference(&e);
     ch6_runs(&e);

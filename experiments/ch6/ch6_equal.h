@@ -30,8 +30,12 @@ struct ch6_run {
 struct ch6_equal {
     /* the command line */
     const char *prog, *scene, *out, *name, *refpath, *res, *source, *command, *scale, *insets;
+    const char *study;                /* --study: whose scales, and whose claims (ch6_claims.h) */
     char render[4096], extra_s[1024]; /* render: --render, or "render" (in-process) */
     int seeds, refspp, blk, threads, minlen, spp, first_seed;
+    int inset[2][4], ninsets; /* --insets parsed: {x, y, w, h} each; 0 or 2 */
+    int maxlen;               /* --max-length for the reference and every run (0: bin/render's default) */
+    char maxlen_s[16];
     double T, ckpt_every;
     bool reuse, wall;
     /* derived */

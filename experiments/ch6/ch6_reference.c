@@ -29,27 +29,31 @@ static struct image *render_reference(void *ctx, const char *path, char *err, si
                     "--threads", e->thr,           "--quiet",  "--min-length", e->minlen_s, "--out", part};
     int c = 15;
     if (e->res) rv[c++] = "--resolution", rv[c++] = (char *)e->res;
+    if (e->maxlen) rv[c++] = "--max-length", rv[c++] = e->maxlen_s;
     if (proc_render_resumable(e->prog, &e->renderer, rv, c, part, e->ckpt_every, NULL) != 0)
         die(DIE_RUNTIME, e->prog, "the reference render failed: %s", path);
     snprintf(exr, sizeof exr, "%s.exr", part);
     if (rename(exr, path) != 0) die(DIE_RUNTIME, e->prog, "cannot rename the reference into place: %s", path);
     snprintf(exr, sizeof exr, "%s.png", part); /* the render's PNG: OUT/reference.png replaces it */
     unlink(exr);
+    snprintf(exr, sizeof exr, "%s.csv", part); /* and its samples and time, which the key does not need */
+    unlink(exr);
     return img_read(path, err, errlen);
 }
 
 void ch6_reference(struct ch6_equal *e)
 {
-    char err[4200], settings[256], path[4096];
+    char err[4200], settings[256], path[4096], maxs[32] = "";
     e->ref = NULL;
     if (e->refspp) {
+        if (e->maxlen) snprintf(maxs, sizeof maxs, "-max%d", e->maxlen); /* absent: the default, as before */
         if (!e->refpath) {
-            snprintf(e->defref, sizeof e->defref, "results/reference/%s-bdpt-%s-min%d-%d.exr", e->name,
-                     e->res ? e->res : "native", e->minlen, e->refspp);
+            snprintf(e->defref, sizeof e->defref, "results/reference/%s-bdpt-%s-min%d%s-%d.exr", e->name,
+                     e->res ? e->res : "native", e->minlen, maxs, e->refspp);
             e->refpath = e->defref;
         }
-        snprintf(settings, sizeof settings, "bdpt spp=%d seed=%s min_length=%d resolution=%s", e->refspp, REF_SEED,
-                 e->minlen, e->res ? e->res : "native");
+        snprintf(settings, sizeof settings, "bdpt spp=%d seed=%s min_length=%d resolution=%s%s%s", e->refspp, REF_SEED,
+                 e->minlen, e->res ? e->res : "native", e->maxlen ? " max_length=" : "", e->maxlen ? e->maxlen_s : "");
         struct refcache rc = {.path = e->refpath, .settings = settings};
         struct scene *sc = scene_load(e->scene, err, sizeof err);
         if (!sc) die(DIE_USAGE, e->prog, "%s", err);

@@ -86,6 +86,8 @@ static void write_claims(const struct ch6_equal *e)
                                .budget = e->T,
                                .unit = e->spp > 0 ? "mutations per pixel" : "s",
                                .seeds = e->seeds,
+                               .minlen = e->minlen,
+                               .study = e->study,
                                .methods = e->nm,
                                .name = (const char(*)[64])names,
                                .have = have,

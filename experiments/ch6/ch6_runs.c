@@ -28,25 +28,46 @@ static bool run_complete(const char *exr, const char *csvp, const char *scene)
     return done;
 }
 
+/* The splotch statistics within the figure's two insets (--insets), where the thesis points at
+ * MMLT's artifacts: the spread of the blocks of both together, and the mean of the two blur shares
+ * (the image scaled as a whole, so that an error spread over an inset is not scaled away). */
+static void inset_statistics(const struct ch6_equal *e, struct ch6_run *r, const struct image *im)
+{
+    if (!e->ninsets) return;
+    int n = 0;
+    r->q[Q_INSET_BLUR8] = 0;
+    for (int i = 0; i < 2; i++) {
+        const int *rc = e->inset[i];
+        if (rc[0] + rc[2] > im->w || rc[1] + rc[3] > im->h)
+            die(DIE_USAGE, e->prog, "--insets: rectangle %d (%d,%d,%d,%d) lies outside the %dx%d image", i + 1, rc[0],
+                rc[1], rc[2], rc[3], im->w, im->h);
+        int m = block_relmse_in(im, e->ref, e->blk, e->eps, rc, e->blocks + n, e->cap - n);
+        n += m < e->cap - n ? m : e->cap - n;
+        r->q[Q_INSET_BLUR8] += 0.5 * error_blur_share_in(im, e->ref, e->eps, 8, rc, mean_lum_scale(im, e->ref));
+    }
+    r->q[Q_INSET_SPREAD] = block_spread(e->blocks, n);
+}
+
 /* A run's image against the reference (no reference: every image statistic nan). */
 static void image_statistics(struct ch6_equal *e, struct ch6_run *r, const struct image *im)
 {
-    static const enum ch6_q image_q[] = {Q_RELMSE,  Q_RELMSE_SCALED, Q_SPREAD, Q_BLOCK_MEDIAN,
-                                         Q_TRIMMED, Q_BLUR4,         Q_BLUR8,  Q_CORRLEN};
+    static const enum ch6_q image_q[] = {Q_RELMSE, Q_RELMSE_SCALED, Q_SPREAD,  Q_BLOCK_MEDIAN, Q_TRIMMED,
+                                         Q_BLUR4,  Q_BLUR8,         Q_CORRLEN, Q_INSET_SPREAD, Q_INSET_BLUR8};
     for (size_t k = 0; k < sizeof image_q / sizeof *image_q; k++)
         r->q[image_q[k]] = NAN;
     const struct image *ref = e->ref;
     if (!ref) return;
     r->q[Q_RELMSE] = img_relmse(im, ref, e->eps);
-    r->q[Q_RELMSE_SCALED] = ch6_relmse_scaled(im, ref, e->eps);
-    int n = ch6_block_relmse(im, ref, e->blk, e->eps, e->blocks, e->cap);
+    r->q[Q_RELMSE_SCALED] = relmse_scaled(im, ref, e->eps);
+    int n = block_relmse(im, ref, e->blk, e->eps, e->blocks, e->cap);
     if (n > e->cap) n = e->cap;
-    r->q[Q_SPREAD] = ch6_spread(e->blocks, n);
-    r->q[Q_BLOCK_MEDIAN] = ch6_median(e->blocks, n);
-    r->q[Q_TRIMMED] = ch6_trimmed_relmse(im, ref, e->eps, 0.001);
+    r->q[Q_SPREAD] = block_spread(e->blocks, n);
+    r->q[Q_BLOCK_MEDIAN] = median_of(e->blocks, n);
+    r->q[Q_TRIMMED] = trimmed_relmse(im, ref, e->eps, 0.001);
     r->q[Q_BLUR4] = error_blur_share(im, ref, e->eps, 4);
     r->q[Q_BLUR8] = error_blur_share(im, ref, e->eps, 8);
     r->q[Q_CORRLEN] = error_corr_length(im, ref);
+    inset_statistics(e, r, im);
 }
 
 /* Non-zero fraction of the 'total' rows of the render's statistics: all kinds (kind NULL) or one. */
@@ -71,10 +92,17 @@ static void render_statistics(const struct ch6_equal *e, struct ch6_run *r, cons
     char err[4200];
     struct csv_file *c = csv_load(path, err, sizeof err);
     if (!c) die(DIE_RUNTIME, e->prog, "%s", err);
+    /* a Monte Carlo run (pt, bdpt) counts samples where a Markov chain counts mutations */
+    bool mc = !isnan(csv_meta_number(c, "samples"));
     if (!csv_meta_require(c, "seconds", &r->seconds, err, sizeof err) ||
-        !csv_meta_require(c, "mutations", &r->q[Q_MUTATIONS], err, sizeof err) ||
-        !csv_meta_require(c, "mutations_per_second", &r->q[Q_MPS], err, sizeof err))
+        !csv_meta_require(c, mc ? "samples" : "mutations", &r->q[Q_MUTATIONS], err, sizeof err) ||
+        !csv_meta_require(c, mc ? "samples_per_second" : "mutations_per_second", &r->q[Q_MPS], err, sizeof err))
         die(DIE_RUNTIME, e->prog, "%s", err);
+    if (mc) { /* no proposals, no normalisation */
+        r->q[Q_NONZERO] = r->q[Q_LARGE_NONZERO] = r->q[Q_NONZERO_CONN] = r->q[Q_B_RSE] = NAN;
+        csv_free(c);
+        return;
+    }
     r->q[Q_NONZERO] = nonzero_fraction(e, c, NULL);
     r->q[Q_LARGE_NONZERO] = nonzero_fraction(e, c, "large");
     double tried = csv_meta_number(c, "connections_evaluated");
@@ -98,6 +126,10 @@ static int render_argv(struct ch6_equal *e, const struct ch6_method *m, char **r
     if (e->res) {
         rv[c++] = "--resolution";
         rv[c++] = (char *)e->res;
+    }
+    if (e->maxlen) {
+        rv[c++] = "--max-length";
+        rv[c++] = e->maxlen_s;
     }
     return c;
 }

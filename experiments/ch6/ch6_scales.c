@@ -10,7 +10,14 @@
  * MMLT paper's §5 setting without a reference; the target adds --min-length 2 --reference-spp 0):
  * one budget of 4 s, 60 s or 300 s, 4 or 8 seeds, ajar at 256x144 (full: 512x288). hybrid (make
  * hybrid-study, thesis §4.3 / §7.1): 3 s per run (paper: 120 s), 8 seeds, 128x72, a 256-spp
- * reference (paper: 16 384 and 1M seed paths). */
+ * reference (paper: 16 384 and 1M seed paths). mmlt-equal (make mmlt-equal, the MMLT paper's §5 and
+ * Fig. 4: BDPT, PSSMLT and MMLT at equal time, up to 8 bounces, direct light included): one budget of
+ * 4 s, 60 s or 300 s, 4 or 8 seeds, 256x144 (full and paper: 512x288), paths of 1 to 8 segments, a
+ * 256-, 4096- or 16 384-spp reference; no --render-args (the target gives each method its own).
+ * cdc (make cdc-ch6, thesis §4.2): the equal-time study's budgets, seeds, lengths, references and
+ * resolutions, PSSMLT with and without constrained discrete choices.
+ * background (make bdpt-pt, thesis Fig. 3.4): equal samples, 16 (full, paper: 64) per pixel, 4 or 8
+ * seeds, 128x72 (256x144), a 1024- (4096-) spp reference. */
 #include "base/util.h"
 #include "ch6/ch6_equal.h"
 #include "common/opts.h"
@@ -68,16 +75,43 @@ static const struct {
      ALL_SCENES,
      {"--time", "120", "--seeds", "8", "--reference-spp", "16384", "--resolution", "128x72", "--render-args",
       "--p-large 0.1 --seed-paths 1000000"}},
+    {"cdc",
+     "quick",
+     ALL_SCENES,
+     {"--time", "4", "--seeds", "4", "--min-length", "3", "--reference-spp", "256", "--render-args", ""}},
+    {"cdc", "quick", "ajar", {"--resolution", "256x144"}},
+    {"cdc",
+     "full paper",
+     ALL_SCENES,
+     {"--time", "60", "--seeds", "8", "--min-length", "3", "--reference-spp", "4096", "--checkpoint", "60",
+      "--render-args", ""}},
+    {"cdc", "full paper", "living-room", {"--resolution", "512x288"}},
+    {"cdc", "full paper", "staircase", {"--resolution", "288x512"}},
+    {"cdc", "full paper", "ajar", {"--resolution", "512x288"}},
+    {"background",
+     "quick",
+     ALL_SCENES,
+     {"--spp", "16", "--seeds", "4", "--resolution", "128x72", "--reference-spp", "1024", "--render-args", ""}},
+    {"background",
+     "full paper",
+     ALL_SCENES,
+     {"--spp", "64", "--seeds", "8", "--resolution", "256x144", "--reference-spp", "4096", "--render-args", ""}},
+    {"mmlt-equal",
+     "quick",
+     ALL_SCENES,
+     {"--time", "4", "--seeds", "4", "--resolution", "256x144", "--min-length", "1", "--max-length", "8",
+      "--reference-spp", "256", "--render-args", ""}},
+    {"mmlt-equal",
+     "full",
+     ALL_SCENES,
+     {"--time", "60", "--seeds", "8", "--resolution", "512x288", "--min-length", "1", "--max-length", "8",
+      "--reference-spp", "4096", "--checkpoint", "60", "--render-args", ""}},
+    {"mmlt-equal",
+     "paper",
+     ALL_SCENES,
+     {"--time", "300", "--seeds", "8", "--resolution", "512x288", "--min-length", "1", "--max-length", "8",
+      "--reference-spp", "16384", "--checkpoint", "60", "--render-args", ""}},
 };
-
-/* Whether word is one of the space-separated list's. */
-static bool listed(const char *list, const char *word)
-{
-    size_t n = strlen(word);
-    for (const char *p = strstr(list, word); p; p = strstr(p + 1, word))
-        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return true;
-    return false;
-}
 
 /* The scene's folder name: "scenes/ajar/scene.json" -> "ajar". */
 static bool scene_is(const char *path, const char *name)
@@ -104,7 +138,7 @@ char **ch6_with_scale(const struct opts_spec *spec, int *argc, char **argv)
     const char *add[4 * MAX_SCALE_ARGS];
     int n = 0;
     for (size_t k = 0; k < sizeof scales / sizeof *scales; k++) {
-        if (strcmp(study, scales[k].study) || !listed(scales[k].scales, scale) ||
+        if (strcmp(study, scales[k].study) || !ch6_listed(scales[k].scales, scale) ||
             (scales[k].scene && !scene_is(scene, scales[k].scene)))
             continue;
         for (int j = 0; j < MAX_SCALE_ARGS && scales[k].args[j] && n < 4 * MAX_SCALE_ARGS; j++)

@@ -11,6 +11,7 @@
  * shares) and r (correlation of the within-block shares over B x B blocks). Writes
  * `run,tv,r,cells,references` rows to OUT.csv (atomically). */
 #include "base/util.h"
+#include "ch6/ch6_claims.h"
 #include "common/csv_meta.h"
 #include "common/die.h"
 #include "common/opts.h"
@@ -45,10 +46,10 @@ static const struct column follow_cols[] = {COL_STRING(struct follow_row, "run",
                                             COL_INT(struct follow_row, "references", "%d", references),
                                             {0}};
 
-/* The prefixes after --ref (mode 1) and after --run (mode 2). */
+/* The prefixes after --ref (mode 1) and after --run (mode 2), the tables after --follow (mode 3). */
 struct prefixes {
-    const char **ref, **run;
-    int nref, nrun, mode;
+    const char **ref, **run, *follow[2];
+    int nref, nrun, nfollow, mode;
 };
 
 static void prefix_arg(const char *prog, const char *arg, void *ctx)
@@ -58,6 +59,8 @@ static void prefix_arg(const char *prog, const char *arg, void *ctx)
         p->ref[p->nref++] = arg;
     else if (p->mode == 2)
         p->run[p->nrun++] = arg;
+    else if (p->mode == 3 && p->nfollow < 2)
+        p->follow[p->nfollow++] = arg;
     else
         opts_fail(prog, "'%s': give prefixes after --ref or --run (see --help)", arg);
 }
@@ -66,7 +69,8 @@ int main(int argc, char **argv)
 {
     const char *prog = "ch6_tech", *out = NULL;
     int k = 0, blk;
-    struct prefixes p = {xcalloc((size_t)argc, sizeof *p.ref), xcalloc((size_t)argc, sizeof *p.run), 0, 0, 0};
+    const char *claims = NULL, *scale = "custom", *command = "bin/ch6_tech";
+    struct prefixes p = {.ref = xcalloc((size_t)argc, sizeof *p.ref), .run = xcalloc((size_t)argc, sizeof *p.run)};
     const struct opt opts[] = {
         {"--k", OPT_INT, OPT_DST(k), .arg = "K", .lo = 1, .hi = MAX_PATH_LENGTH,
          .help = "the path length of the technique images"},
@@ -75,6 +79,12 @@ int main(int argc, char **argv)
         {"--out", OPT_STRING, OPT_DST(out), .arg = "OUT.csv", .help = "the rows run,tv,r,cells,references"},
         {"--ref", OPT_FLAG, OPT_DST(p.mode), .value = 1, .help = "the prefixes that follow are references"},
         {"--run", OPT_FLAG, OPT_DST(p.mode), .value = 2, .help = "the prefixes that follow are the runs scored"},
+        {"--claims", OPT_STRING, OPT_DST(claims), .arg = "DIR",
+         .help = "instead: DIR/claims.csv and claims.md, the MMLT paper's Fig. 5 claim from two earlier --out tables "
+                 "given after --follow (MMLT's, then PSSMLT's)"},
+        {"--follow", OPT_FLAG, OPT_DST(p.mode), .value = 3, .help = "the two tables that follow (with --claims)"},
+        {"--scale", OPT_STRING, OPT_DST(scale), .arg = "NAME", .help = "the scale, for claims.csv"},
+        {"--command", OPT_STRING, OPT_DST(command), .arg = "TEXT", .help = "the command that made it, for claims.csv"},
         {0}};
     opts_parse(
         &(struct opts_spec){
@@ -86,6 +96,18 @@ int main(int argc, char **argv)
             .positional = prefix_arg,
             .ctx = &p},
         argc, argv);
+    if (claims) {
+        if (!k || p.nfollow != 2) opts_fail(prog, "--claims needs --k and two tables after --follow (see --help)");
+        char err[1024];
+        char *md = ch6_tech_claims(&(struct ch6_tech_claims_in){{p.follow[0], p.follow[1]}, claims, scale, command, k},
+                                   err, sizeof err);
+        if (!md) die(DIE_RUNTIME, prog, "%s", err);
+        fputs(md, stdout);
+        free(md);
+        free(p.ref);
+        free(p.run);
+        return 0;
+    }
     const char **ref = p.ref, **run = p.run;
     int nref = p.nref, nrun = p.nrun;
     if (!k || !out || !nref || !nrun) opts_fail(prog, "--k, --out, --ref and --run are required (see --help)");

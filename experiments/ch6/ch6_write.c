@@ -43,6 +43,8 @@ static const struct column run_cols[] = {COL_STRING(struct run_row, "scene", sce
                                          RUN_Q("nonzero_per_connection", "%.6g", Q_NONZERO_CONN),
                                          RUN_Q("relmse_scaled", "%.6g", Q_RELMSE_SCALED),
                                          RUN_Q("b_rse", "%.6g", Q_B_RSE),
+                                         RUN_Q("inset_block_spread", "%.6g", Q_INSET_SPREAD),
+                                         RUN_Q("inset_blur8_share", "%.6g", Q_INSET_BLUR8),
                                          {0}};
 
 /* A row of summary.csv: each quantity's mean and its standard error over seeds */
@@ -71,6 +73,8 @@ static const struct column summary_cols[] = {COL_STRING(struct summary_row, "sce
                                              SUM_Q("nonzero_per_connection", Q_NONZERO_CONN),
                                              SUM_Q("relmse_scaled", Q_RELMSE_SCALED),
                                              SUM_Q("b_rse", Q_B_RSE),
+                                             SUM_Q("inset_block_spread", Q_INSET_SPREAD),
+                                             SUM_Q("inset_blur8_share", Q_INSET_BLUR8),
                                              {0}};
 
 /* A row of stats.csv */
@@ -106,6 +110,7 @@ static void write_runs(const struct ch6_equal *e)
         csv_meta(f, "reference", "none (--reference-spp 0: the image statistics are nan)");
     csv_meta(f, "render args", "%s", e->extra_s);
     csv_meta(f, "min_length", "%d", e->minlen);
+    if (e->maxlen) csv_meta(f, "max_length", "%d", e->maxlen);
     csv_meta(f, "relmse eps", "= 0.01 * (reference mean luminance %.6g)^2", e->mlum);
     csv_meta(f, NULL,
              "budgets are separate runs with the same seed (no snapshots), methods interleaved seed by seed; %s",
@@ -164,7 +169,9 @@ static void write_stats(const struct ch6_equal *e)
               {Q_NONZERO, "nonzero"},
               {Q_LARGE_NONZERO, "large_nonzero"},
               {Q_NONZERO_CONN, "nonzero_per_connection"},
-              {Q_B_RSE, "b_rse"}};
+              {Q_B_RSE, "b_rse"},
+              {Q_INSET_SPREAD, "inset_block_spread"},
+              {Q_INSET_BLUR8, "inset_blur8_share"}};
     struct table t;
     FILE *f = table_open(&t, stat_cols);
     csv_meta(f, NULL, "ch6_equal: mean +- standard error over %d seeds at the largest budget", e->seeds);

@@ -35,6 +35,9 @@ enum { SHORT_MAX = 6 };        /* the short pass: lengths 1..SHORT_MAX */
 struct cells {
     double mean[2][MAX_PATH_LENGTH + 1][2], se[2][MAX_PATH_LENGTH + 1][2];
     bool have[2][MAX_PATH_LENGTH + 1][2];
+    /* PITP's perturbations per length: [0] the share with j != i, [1] the mean |j - i| of those, [2] the
+     * mean acceptance; each the mean over the runs and its standard error ([.][k][1] = 0: no runs) */
+    double moves[3][MAX_PATH_LENGTH + 1][2];
     int K;
 };
 
@@ -44,57 +47,134 @@ static void keep_worst(struct verdict *worst, int *at, struct verdict v, int k)
     if (*at < 0 || v.zmin < worst->zmin) *worst = v, *at = k;
 }
 
-/* Thesis §6.1 on Figure 6.1, every length with both cells; errors over the RUNS runs. */
-static char *claims(const struct cells *t, const char *out, const char *scale, char *err, size_t errlen)
+/* Claim c's worst verdict over lengths kmin..K with both cells: (0) MMLT's technique changes below
+ * its keeps, (1) PITP's changes within 25 % of its keeps, (2) PITP's changes above MMLT's. */
+static int decide(const struct cells *t, int c, int kmin, struct verdict *w)
 {
-    struct claims cl;
-    char command[64], zs[128], md[256];
-    snprintf(command, sizeof command, "make fig6.1 SCALE=%s", scale);
-    claims_begin(&cl, scale, command,
-                 "Claims of thesis §6.1 on Fig. 6.1 (ajar, lengths 2-%d; standard errors over %d runs)", t->K, RUNS);
     const bool both[2] = {true, true};
-    struct verdict w[3];
-    int at[3] = {-1, -1, -1};
-    for (int k = 2; k <= t->K; k++) {
+    int at = -1;
+    for (int k = kmin; k <= t->K; k++) {
         double z[2];
-        if (t->have[0][k][0] && t->have[0][k][1]) { /* MMLT: changes below keeps */
+        if (c == 0 && t->have[0][k][0] && t->have[0][k][1]) {
             double m[2] = {t->mean[0][k][0], t->mean[0][k][1]}, e[2] = {t->se[0][k][0], t->se[0][k][1]};
-            keep_worst(&w[0], &at[0], verdict_extreme(m, e, both, 2, 1, -1, RUNS, z), k);
+            keep_worst(w, &at, verdict_extreme(m, e, both, 2, 1, -1, RUNS, z), k);
         }
-        if (t->have[1][k][0] && t->have[1][k][1]) { /* PITP: changes within 25 % of keeps */
-            struct verdict v =
-                verdict_similar(t->mean[1][k][1], t->se[1][k][1], t->mean[1][k][0], t->se[1][k][0], 0.25, RUNS);
-            keep_worst(&w[1], &at[1], v, k);
-        }
-        if (t->have[0][k][1] && t->have[1][k][1]) { /* technique changes: PITP above MMLT */
+        if (c == 1 && t->have[1][k][0] && t->have[1][k][1])
+            keep_worst(w, &at,
+                       verdict_similar(t->mean[1][k][1], t->se[1][k][1], t->mean[1][k][0], t->se[1][k][0], 0.25, RUNS),
+                       k);
+        if (c == 2 && t->have[0][k][1] && t->have[1][k][1]) {
             double m[2] = {t->mean[0][k][1], t->mean[1][k][1]}, e[2] = {t->se[0][k][1], t->se[1][k][1]};
-            keep_worst(&w[2], &at[2], verdict_extreme(m, e, both, 2, 1, +1, RUNS, z), k);
+            keep_worst(w, &at, verdict_extreme(m, e, both, 2, 1, +1, RUNS, z), k);
         }
     }
-    static const char *const claim[3] = {
-        "small steps in MMLT that change the sampling technique are very likely to be rejected",
-        "the acceptance probabilities in PITP are largely unaffected by technique changes",
-        "PITP can change sampling techniques without such a penalty"};
-    /* T31's row is decided from length 2 on; the chapter-6 runs have lengths 3 and up */
-    static const char *const id[3] = {"T29", "harness:T31", "T30"};
-    static const char *const stat[3] = {"MMLT small-step acceptance, technique changed vs kept, per length",
-                                        "PITP acceptance ratio changed / kept within ±25 %, per length",
-                                        "acceptance of technique-changing small steps, PITP vs MMLT, per length"};
-    for (int c = 0; c < 3; c++) {
-        if (at[c] < 0) continue;           /* no length with both cells */
-        int k = at[c], m = c == 0 ? 0 : 1; /* the technique-changing cell of the method claimed about */
+    return at;
+}
+
+/* Thesis §6.1 on Figure 6.1, every length with both cells; errors over the RUNS runs. T31 is decided
+ * over the lengths of the chapter-6 runs (3 and up: they leave direct light out) as the thesis's
+ * figure is read beside them; from length 2 on it is the harness's reading. */
+static void claims_accept(struct claims *cl, const struct cells *t)
+{
+    static const struct {
+        const char *id;
+        int c, kmin;
+        const char *claim, *stat, *against;
+    } rows[] = {
+        {"T29", 0, 2, "small steps in MMLT that change the sampling technique are very likely to be rejected",
+         "MMLT small-step acceptance, technique changed vs kept, per length", "MMLT's technique-keeping steps"},
+        {"T31", 1, 3, "the acceptance probabilities in PITP are largely unaffected by technique changes",
+         "PITP acceptance ratio changed / kept within ±25 %, per length 3 and up (the chapter-6 runs' lengths)",
+         "1 within ±25 %"},
+        {"harness:T31", 1, 2, "the acceptance probabilities in PITP are largely unaffected by technique changes",
+         "PITP acceptance ratio changed / kept within ±25 %, per length 2 and up", "1 within ±25 %"},
+        {"T30", 2, 2, "PITP can change sampling techniques without such a penalty",
+         "acceptance of technique-changing small steps, PITP vs MMLT, per length", "MMLT's technique changes"},
+    };
+    char zs[128], md[256];
+    for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
+        struct verdict w;
+        int k = decide(t, rows[i].c, rows[i].kmin, &w), m = rows[i].c == 0 ? 0 : 1;
+        if (k < 0) continue; /* no length with both cells */
         double v = t->mean[m][k][1], se = t->se[m][k][1];
-        if (c == 1) { /* the ratio and its first-order error */
+        if (rows[i].c == 1) { /* the ratio and its first-order error */
             double a = t->mean[1][k][1], b = t->mean[1][k][0];
             v = a / b;
             se = v * sqrt(pow(t->se[1][k][1] / a, 2) + pow(t->se[1][k][0] / b, 2));
         }
-        snprintf(zs, sizeof zs, "%s=%.2f@%d", c == 0 ? "mmlt-kept" : c == 1 ? "1x" : "mmlt-changed", w[c].zmin, k);
-        static const char *const against[3] = {"MMLT's technique-keeping steps", "1 within ±25 %",
-                                               "MMLT's technique changes"};
-        snprintf(md, sizeof md, "%s; smallest z = %.1f at length %d", against[c], w[c].zmin, k);
-        claims_row(&cl, id[c], "thesis §6.1, Fig. 6.1", claim[c], stat[c], m ? "pitp" : "mmlt", v, se, zs, md, &w[c]);
+        snprintf(zs, sizeof zs, "%s=%.2f@%d", (const char *[]){"mmlt-kept", "1x", "mmlt-changed"}[rows[i].c], w.zmin,
+                 k);
+        snprintf(md, sizeof md, "%s; smallest z = %.1f at length %d", rows[i].against, w.zmin, k);
+        claims_row(cl, rows[i].id, "thesis §6.1, Fig. 6.1", rows[i].claim, rows[i].stat, m ? "pitp" : "mmlt", v, se, zs,
+                   md, &w);
     }
+}
+
+/* Thesis §5.2 on PITP's moves (T23): during a technique change "|j - i| vertices are removed from one
+ * subpath and added to the other, which on average is much smaller than k + 1" (the mean |j - i| of
+ * the perturbations that change the technique below (k + 1) / 2 at every length: "much" read as at
+ * least halving the work of inverting the whole path, the harness's threshold). Beside it the
+ * harness's reading of "very likely to retain the current sampling technique": the thesis adds "if
+ * it is among the best techniques of the current path", which is not recorded; the row tests the
+ * unconditional share of perturbations that change it (below 1/2). Errors over the RUNS runs. */
+static void claims_moves(struct claims *cl, const struct cells *t)
+{
+    const bool both[2] = {true, true};
+    for (int q = 1; q >= 0; q--) {
+        struct verdict w;
+        int at = -1;
+        for (int k = 2; k <= t->K; k++) {
+            if (!t->moves[q][k][1]) continue;
+            double lim = q ? 0.5 * (k + 1) : 0.5, m[2] = {t->moves[q][k][0], lim}, e[2] = {t->moves[q][k][1], 0}, z[2];
+            keep_worst(&w, &at, verdict_extreme(m, e, both, 2, 0, -1, RUNS, z), k);
+        }
+        if (at < 0) continue;
+        char zs[128], md[256];
+        snprintf(zs, sizeof zs, "%s=%.2f@%d", q ? "half-k+1" : "half", w.zmin, at);
+        snprintf(md, sizeof md, "%s at every length; smallest z = %.1f at length %d",
+                 q ? "below (k + 1) / 2" : "below 1/2", w.zmin, at);
+        claims_row(cl, q ? "T23" : "harness:T23", "thesis §5.2",
+                   q ? "during a technique change |j - i| is on average much smaller than k + 1"
+                     : "PITP is very likely to retain the current technique",
+                   q ? "mean |j - i| of PITP's technique-changing perturbations, per length"
+                     : "share of all perturbations with j != i, per length",
+                   "pitp", t->moves[q][at][0], t->moves[q][at][1], zs, md, &w);
+    }
+}
+
+/* Thesis §5.2.1 (T22): PITP's technique perturbation keeps the path and picks j in proportion to
+ * its MIS weight, so it "is always accepted": its mean acceptance at least 0.99 at every length (an
+ * inversion that fails, or a target that differs between techniques, would lower it). */
+static void claims_always(struct claims *cl, const struct cells *t)
+{
+    const bool both[2] = {true, true};
+    struct verdict w;
+    int at = -1;
+    for (int k = 2; k <= t->K; k++) {
+        if (!(t->moves[2][k][0] > 0)) continue;
+        double m[2] = {t->moves[2][k][0], 0.99}, e[2] = {t->moves[2][k][1], 0}, z[2];
+        keep_worst(&w, &at, verdict_extreme(m, e, both, 2, 0, +1, RUNS, z), k);
+    }
+    if (at < 0) return;
+    char zs[64], md[128];
+    snprintf(zs, sizeof zs, "0.99=%.2f@%d", w.zmin, at);
+    snprintf(md, sizeof md, "at least 0.99 at every length; smallest z = %.1f at length %d", w.zmin, at);
+    claims_row(cl, "T22", "thesis §5.2.1", "PITP's technique perturbation is always accepted",
+               "mean acceptance of PITP's perturbations, per length", "pitp", t->moves[2][at][0], t->moves[2][at][1],
+               zs, md, &w);
+}
+
+static char *claims(const struct cells *t, const char *out, const char *scale, char *err, size_t errlen)
+{
+    struct claims cl;
+    char command[64];
+    snprintf(command, sizeof command, "make fig6.1 SCALE=%s", scale);
+    claims_begin(&cl, scale, command,
+                 "Claims of thesis §5.2 and §6.1 on Fig. 6.1 (ajar, lengths 2-%d; standard errors over %d runs)", t->K,
+                 RUNS);
+    claims_accept(&cl, t);
+    claims_moves(&cl, t);
+    claims_always(&cl, t);
     return claims_finish(&cl, out, err, errlen);
 }
 
@@ -186,6 +266,26 @@ static bool run_method(const struct scene *sc, const struct opts_accept *a, int 
     return true;
 }
 
+/* PITP's perturbations at length k over the runs: the share that change the technique and the mean
+ * |j - i| of those that change it, their means over the runs and standard errors (cells->moves). */
+static void pitp_moves(const struct mlt_stats run[RUNS], int k, struct cells *cells)
+{
+    double v[3][RUNS];
+    int n = 0;
+    for (int rr = 0; rr < RUNS; rr++) {
+        const struct accept_cell *p = &run[rr].any[PROPOSAL_PITP][k];
+        if (!p->attempts) continue;
+        long changed = run[rr].cell[PROPOSAL_PITP][k][1].attempts;
+        if (!changed) continue;
+        v[0][n] = (double)changed / p->attempts;
+        v[2][n] = cell_mean(p);
+        v[1][n++] = p->sum_dtech / changed; /* |j - i| is 0 when the technique stays */
+    }
+    if (n < 2) return;
+    for (int q = 0; q < 3; q++)
+        mean_se(v[q], n, &cells->moves[q][k][0], &cells->moves[q][k][1]);
+}
+
 /* Method m's rows of both tables, and its cells for the claims. Cells of fewer than MIN_ATTEMPTS
  * proposals are left out: their errors rest on a few batches, and near the threshold a cell would
  * be there at one seed and not at the next (MMLT's technique changes at lengths 2-3 on ajar:
@@ -214,6 +314,7 @@ static void method_rows(int m, const struct mlt_stats *all, const struct mlt_sta
                                                       cell_stderr(c), (double)c->accepted / c->attempts, n, run_se});
         }
         const struct accept_cell *p = &all->any[PROPOSAL_PITP][k];
+        if (m) pitp_moves(run, k, cells);
         if (m && p->attempts)
             table_row(&ts->t[1],
                       &(struct pitp_row){k, p->attempts, (double)all->cell[PROPOSAL_PITP][k][1].attempts / p->attempts,

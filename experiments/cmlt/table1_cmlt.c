@@ -17,6 +17,7 @@
 #include "common/outdir.h"
 #include "common/table_set.h"
 #include "common/text_out.h"
+#include "common/verdict.h"
 #include "io/image.h"
 #include <errno.h>
 #include <math.h>
@@ -28,7 +29,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#define MAX_BUDGETS 4
+#define MAX_BUDGETS CMLT_MAX_BUDGETS
+#define MAX_SEEDS 1000
 
 struct opts {
     const char *scale, *out, *commit;
@@ -74,7 +76,7 @@ static void parse(int argc, char **argv, struct opts *o)
          .help = "defaults for budgets and seeds", .def = "quick", .env = "SCALE"},
         {"--budgets", OPT_CALL, .dst = o, .call = parse_budgets, .arg = "LIST",
          .help = "comma-separated total samples per algorithm, suffix k or M", .def = "1M,8M", .paper = "16M,128M"},
-        {"--seeds", OPT_INT, OPT_DST(o->seeds), .arg = "K", .lo = 1, .hi = 1000,
+        {"--seeds", OPT_INT, OPT_DST(o->seeds), .arg = "K", .lo = 1, .hi = MAX_SEEDS,
          .help = "independent runs per algorithm and budget", .def = "10", .paper = "8"},
         OPT_SEED(o->seed, .hi = 1L << 40, .help = "base seed", .def = "1"),
         OPT_THREADS(o->threads, .hi = 256, .help = "worker threads", .def = "2"),
@@ -365,9 +367,11 @@ static void free_pool(struct pool *p)
     free(p->jobs);
 }
 
-/* What the run's tables share: the RMSE mean and standard error per (budget, algorithm). */
+/* What the run's tables share: the RMSE mean and standard error per (budget, algorithm), and those
+ * of each seed's acceptance and steps per second (the claims'). */
 struct summary {
     double mean[MAX_BUDGETS][CMLT_NALGO], se[MAX_BUDGETS][CMLT_NALGO];
+    double acc[2][MAX_BUDGETS][CMLT_NALGO], rate[2][MAX_BUDGETS][CMLT_NALGO];
     double wall;
     int partial;
 };
@@ -430,10 +434,13 @@ static void seed_rows(const struct pool *p, int a, int b, struct table *seeds)
 static void analyse_cell(const struct pool *p, int a, int b, struct summary *sm, struct table *t)
 {
     double s1 = 0, s2 = 0, steps = 0, secs = 0, acc = 0, swaps = 0, swacc = 0;
+    double va[MAX_SEEDS], vr[MAX_SEEDS];
     int m = 0;
     for (int j = 0; j < p->njobs; j++) {
         const struct job *J = &p->jobs[j];
         if (J->algo != a || J->bidx != b) continue;
+        va[m] = J->st.steps ? J->st.acc_sum / J->st.steps : NAN;
+        vr[m] = J->st.seconds > 0 ? J->st.steps / J->st.seconds : NAN;
         s1 += J->rmse;
         s2 += J->rmse * J->rmse;
         steps += J->st.steps;
@@ -446,6 +453,8 @@ static void analyse_cell(const struct pool *p, int a, int b, struct summary *sm,
     seed_rows(p, a, b, &t[T_SEEDS]);
     sm->mean[b][a] = s1 / m;
     sm->se[b][a] = m > 1 ? sqrt(fmax(0.0, (s2 - s1 * s1 / m) / (m - 1)) / m) : 0;
+    mean_se(va, m, &sm->acc[0][b][a], &sm->acc[1][b][a]);
+    mean_se(vr, m, &sm->rate[0][b][a], &sm->rate[1][b][a]);
     struct mean_row row = {cmlt_algo_names[a],
                            (long)p->o->budgets[b],
                            m,
@@ -572,7 +581,9 @@ int main(int argc, char **argv)
                                 .nbudgets = o.nbudgets,
                                 .budgets = o.budgets,
                                 .mean = sm.mean,
-                                .se = sm.se};
+                                .se = sm.se,
+                                .acc = sm.acc,
+                                .rate = sm.rate};
     char *claims = cmlt_write_claims(&ci, err, sizeof err);
     if (!claims || !write_images(&p, err, sizeof err)) die(DIE_RUNTIME, "table1_cmlt", "%s", err);
     fputs(md.buf, stderr);

@@ -93,7 +93,8 @@ static int run_mc(struct render_args *a, const struct scene *sc, const struct ck
         img_destroy(img);
         return 2;
     }
-    *ok = ctl->err[0] || !dist_root() || img_write_exr_png(img, a->out, err, errlen);
+    *ok = ctl->err[0] || !dist_root() ||
+          (img_write_exr_png(img, a->out, err, errlen) && render_write_mc_csv(a, &st, err, errlen));
     *partial = st.partial;
     if (*ok && !ctl->err[0] && dist_root())
         printf("%s%s%s: %ld samples (%d spp) in %.2f s, %.0f samples/s (%s), %ld non-finite dropped%s\n",

@@ -75,6 +75,26 @@ bool render_write_bdpt_tech(const struct render_args *a, const struct render_sta
     return ok;
 }
 
+bool render_write_mc_csv(const struct render_args *a, const struct render_stats *st, char *err, size_t errlen)
+{
+    struct text_out t;
+    FILE *f = text_out_open(&t);
+    meta_head(f, a, "");
+    csv_meta(f, "threads", "%d", a->mc.threads);
+    csv_meta(f, "max_length", "%d", a->mc.max_length);
+    csv_meta(f, "min_length", "%d", a->mc.min_length);
+    if (st->partial) csv_meta(f, NULL, "PARTIAL: interrupted after %ld samples", st->samples);
+    csv_meta(f, "samples", "%ld", st->samples);
+    csv_meta(f, "seconds", "%.3f", st->seconds);
+    csv_meta(f, "clock", "%s", a->mc.cpu_time ? "cpu seconds per thread" : "wall");
+    csv_meta(f, "samples_per_second", "%.0f", st->samples / st->seconds);
+    csv_meta(f, "nonfinite", "%ld", st->nonfinite);
+    fprintf(f, "method,samples,spp,seconds\n%s,%ld,%d,%.3f\n", a->method, st->samples, st->spp, st->seconds);
+    char path[4096];
+    snprintf(path, sizeof path, "%s.csv", a->out);
+    return text_out_save(&t, path, err, errlen);
+}
+
 bool render_write_csv(const struct render_args *a, const struct mlt_result *r, char *err, size_t errlen)
 {
     const struct mlt_opts *m = &a->mlt;

@@ -8,9 +8,13 @@
 #include <stddef.h>
 
 struct image;
+struct render_stats;
 
 /* PREFIX.csv: the MCMC run's options, counts, normalisation and per-length acceptance. */
 bool render_write_csv(const struct render_args *a, const struct mlt_result *r, char *err, size_t errlen);
+/* PREFIX.csv of pt and bdpt: the run's samples and time (metadata) and one row, so that a
+ * comparison at equal time (bin/ch6_equal) reads every method's run the same way. */
+bool render_write_mc_csv(const struct render_args *a, const struct render_stats *st, char *err, size_t errlen);
 /* PREFIX.angle.exr (mean angle change per pixel, radians) and PREFIX.angle.csv (per length). */
 bool render_write_angle(const struct render_args *a, const struct mlt_result *r, char *err, size_t errlen);
 /* The per-technique images and PREFIX.tech.csv of pssmlt and mmlt (core/stats/tech_image.h). */

@@ -32,16 +32,16 @@ Test(ch6_stats, block_relmse_finds_a_concentrated_error)
             img_add(b, x, y, (rgb){1.5, 1.5, 1.5});
         }
     double v[8];
-    int n = ch6_block_relmse(a, ref, 16, 0.01, v, 8);
+    int n = block_relmse(a, ref, 16, 0.01, v, 8);
     cr_assert_eq(n, 4);
     cr_assert_float_eq(v[0], 0, 1e-12);
     cr_assert_float_eq(v[1], 1 / 1.01, 1e-12);
-    cr_assert_float_eq(ch6_spread(v, n), 2, 1e-9);
-    n = ch6_block_relmse(b, ref, 16, 0.01, v, 8);
-    cr_assert_float_eq(ch6_spread(v, n), 0, 1e-12);
+    cr_assert_float_eq(block_spread(v, n), 2, 1e-9);
+    n = block_relmse(b, ref, 16, 0.01, v, 8);
+    cr_assert_float_eq(block_spread(v, n), 0, 1e-12);
     cr_assert_float_eq(v[0], img_relmse(b, ref, 0.01), 1e-12);
     /* partial blocks are dropped: 32 / 10 = 3 per axis */
-    cr_assert_eq(ch6_block_relmse(a, ref, 10, 0.01, v, 8), 9);
+    cr_assert_eq(block_relmse(a, ref, 10, 0.01, v, 8), 9);
     img_destroy(ref);
     img_destroy(a);
     img_destroy(b);
@@ -104,11 +104,11 @@ Test(ch6_stats, fireflies_and_splotches_told_apart)
     struct image *ref = constant(1), *ff = synthetic(false, 1), *sp = synthetic(true, 2);
     double eps = 0.01, blocks[64];
     double rf = img_relmse(ff, ref, eps), rs = img_relmse(sp, ref, eps);
-    double tf = ch6_trimmed_relmse(ff, ref, eps, 0.001), ts = ch6_trimmed_relmse(sp, ref, eps, 0.001);
-    int n = ch6_block_relmse(ff, ref, 16, eps, blocks, 64);
-    double spread_f = ch6_spread(blocks, n), mf = ch6_median(blocks, n);
-    n = ch6_block_relmse(sp, ref, 16, eps, blocks, 64);
-    double spread_s = ch6_spread(blocks, n), msp = ch6_median(blocks, n);
+    double tf = trimmed_relmse(ff, ref, eps, 0.001), ts = trimmed_relmse(sp, ref, eps, 0.001);
+    int n = block_relmse(ff, ref, 16, eps, blocks, 64);
+    double spread_f = block_spread(blocks, n), mf = median_of(blocks, n);
+    n = block_relmse(sp, ref, 16, eps, blocks, 64);
+    double spread_s = block_spread(blocks, n), msp = median_of(blocks, n);
     double b4f = error_blur_share(ff, ref, eps, 4), b8f = error_blur_share(ff, ref, eps, 8);
     double b4s = error_blur_share(sp, ref, eps, 4), b8s = error_blur_share(sp, ref, eps, 8);
     double lf = error_corr_length(ff, ref), ls = error_corr_length(sp, ref);
@@ -150,7 +150,7 @@ Test(ch6_stats, normalisation_offset_is_not_a_splotch)
     cr_expect(!isnan(l) && l < 1.5, "the offset correlates: %g", l);
     /* relMSE: the noise's 0.05^2 / 1.01 plus the offset's 0.05^2 / 1.01; scaled, the noise's alone
      * (within 10 %: 16 384 pixels of noise) */
-    double all = img_relmse(off, ref, 0.01), scaled = ch6_relmse_scaled(off, ref, 0.01), noise = 0.0025 / 1.01;
+    double all = img_relmse(off, ref, 0.01), scaled = relmse_scaled(off, ref, 0.01), noise = 0.0025 / 1.01;
     cr_expect(fabs(all / (2 * noise) - 1) < 0.1, "relMSE %g, expected %g", all, 2 * noise);
     cr_expect(fabs(scaled / noise - 1) < 0.1, "scaled relMSE %g, expected %g", scaled, noise);
     img_destroy(off);
@@ -161,9 +161,9 @@ Test(ch6_stats, normalisation_offset_is_not_a_splotch)
 Test(ch6_stats, median)
 {
     double a[5] = {5, 1, 4, 2, 3}, b[4] = {4, 1, 3, 2};
-    cr_assert_float_eq(ch6_median(a, 5), 3, 1e-12);
-    cr_assert_float_eq(ch6_median(b, 4), 2.5, 1e-12);
-    cr_assert(isnan(ch6_median(a, 0)));
+    cr_assert_float_eq(median_of(a, 5), 3, 1e-12);
+    cr_assert_float_eq(median_of(b, 4), 2.5, 1e-12);
+    cr_assert(isnan(median_of(a, 0)));
 }
 
 /* Verdicts: z = 2 / sqrt(0.5) = 2.83 holds; an effect of 0.5 with the same errors (z = 0.71) is

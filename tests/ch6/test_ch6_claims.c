@@ -1,0 +1,87 @@
+/* experiments/ch6/ch6_claims: each claim compared as its source compares it. MMLT's artifacts are
+ * judged against PITP (T34), whatever PSSMLT does; the harness's reading against every method is
+ * its own row; the MMLT paper's non-zero claims are its own IDs only with direct light. */
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "ch6/ch6_claims.h"
+#include "support/claims_rows.h"
+#include "support/tmpdir.h"
+
+enum { M_PSS, M_MMLT, M_PITP, NM };
+
+/* The claims of three methods whose means are given for some quantities (the others nan), standard
+ * errors 1 % of the mean, 8 seeds, the shortest path length minlen; returns OUT/claims.csv. */
+static char *claims_of(const double q[Q_COUNT][NM], int minlen)
+{
+    static const char names[NM][64] = {"pssmlt", "mmlt", "pitp"};
+    static const bool have[NM] = {true, true, true};
+    double mean[NM][Q_COUNT], se[NM][Q_COUNT];
+    for (int m = 0; m < NM; m++)
+        for (int k = 0; k < Q_COUNT; k++)
+            mean[m][k] = q[k][m] != 0 ? q[k][m] : NAN, se[m][k] = 0.01 * mean[m][k];
+    char dir[64], err[256];
+    tmpdir_make(dir, sizeof dir, "ch6-claims");
+    struct ch6_claims_in in = {.scene = "s",
+                               .source = "thesis ch. 6",
+                               .command = "test",
+                               .scale = "quick",
+                               .out = dir,
+                               .budget = 1,
+                               .unit = "s",
+                               .seeds = 8,
+                               .methods = NM,
+                               .minlen = minlen,
+                               .study = "equal-time",
+                               .name = names,
+                               .have = have,
+                               .mean = (const double(*)[Q_COUNT])mean,
+                               .se = (const double(*)[Q_COUNT])se};
+    char *md = ch6_write_claims(&in, err, sizeof err);
+    cr_assert(md, "%s", err);
+    free(md);
+    char *csv = claims_rows_read(dir);
+    tmpdir_remove(dir);
+    return csv;
+}
+
+/* PSSMLT the splotchiest, MMLT above PITP: the source's T34 holds, the harness's reading (MMLT the
+ * splotchiest of all) is contradicted. */
+Test(ch6_claims, mmlt_artifacts_are_judged_against_pitp)
+{
+    static double q[Q_COUNT][NM];
+    q[Q_BLUR8][M_PSS] = 0.5, q[Q_BLUR8][M_MMLT] = 0.3, q[Q_BLUR8][M_PITP] = 0.1;
+    char *csv = claims_of((const double(*)[NM])q, 3);
+    const char *v = claims_rows_verdict(csv, "T34", "8x8 blur");
+    cr_assert(v && !strcmp(v, "holds"), "T34: %s\n%s", v ? v : "no row", csv);
+    v = claims_rows_verdict(csv, "harness:T34", "8x8 blur");
+    cr_assert(v && !strcmp(v, "contradicted"), "harness:T34: %s", v ? v : "no row");
+    free(csv);
+}
+
+/* M-d and M-e are the paper's claims with direct light: at minlen 3 they are the harness's; the
+ * ratio 0.30 / 0.12 = 2.5 holds. */
+Test(ch6_claims, direct_light_decides_the_mmlt_paper_ids)
+{
+    static double q[Q_COUNT][NM];
+    q[Q_NONZERO][M_PSS] = 0.12, q[Q_NONZERO][M_MMLT] = 0.30, q[Q_NONZERO][M_PITP] = 0.31;
+    char *csv = claims_of((const double(*)[NM])q, 2);
+    const char *v = claims_rows_verdict(csv, "M-e", "mmlt / pssmlt");
+    cr_assert(v && !strcmp(v, "holds"), "M-e: %s\n%s", v ? v : "no row", csv);
+    cr_assert(claims_rows_verdict(csv, "M-d", "per proposal"));
+    free(csv);
+    csv = claims_of((const double(*)[NM])q, 3);
+    cr_assert(!claims_rows_verdict(csv, "M-d", "per proposal") &&
+              claims_rows_verdict(csv, "harness:M-d", "per proposal"));
+    cr_assert(!claims_rows_verdict(csv, "M-e", "mmlt") && claims_rows_verdict(csv, "harness:M-e", "mmlt"));
+    free(csv);
+}
+
+Test(ch6_claims, listed_matches_whole_words)
+{
+    cr_assert(ch6_listed("mmlt pssmlt", "pssmlt") && ch6_listed("mmlt pssmlt", "mmlt"));
+    cr_assert(!ch6_listed("mmlt pssmlt", "mlt") && !ch6_listed("pssmlt", "pss") && !ch6_listed("", "mmlt"));
+}
