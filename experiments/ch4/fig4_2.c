@@ -49,13 +49,15 @@ struct fig42 {
     long gmut;
     int seeds, refspp, maxlag;
     double mpp, p_large;
-    double *q[NQ], *gacc;
+    double *q[NQ], *gacc, *grel; /* grel: the glossy runs' relMSE, at 256² only (else nan) */
     double refvar[NCONF], errvar[NCONF];
 };
 
-/* Small-step acceptance of one PSSMLT run of `mutations` on the glossy scene at the camera's size. */
+/* Small-step acceptance of one PSSMLT run of `mutations` on the glossy scene at the camera's size,
+ * and with a reference its relMSE against it (else *relmse untouched). */
 static bool glossy_accept(const struct scene *sc, bool rap_resolution, long mutations, double p_large, uint64_t seed,
-                          int threads, double *accept, char *err, size_t errlen)
+                          int threads, const struct image *ref, double *accept, double *relmse, char *err,
+                          size_t errlen)
 {
     struct mlt_opts o = {.method = MLT_PSSMLT,
                          .p_large = p_large,
@@ -70,6 +72,7 @@ static bool glossy_accept(const struct scene *sc, bool rap_resolution, long muta
     struct mlt_result r;
     if (!mlt_render(sc, &o, &r, err, errlen)) return false;
     *accept = cell_mean(&r.stats.total[PROPOSAL_SMALL]);
+    if (ref) *relmse = img_relmse(r.img, ref, 0.01);
     mlt_result_free(&r);
     return true;
 }
@@ -77,8 +80,8 @@ static bool glossy_accept(const struct scene *sc, bool rap_resolution, long muta
 /* Thesis §4.1 on Figure 4.2: the diffuse wall's noise at smaller resolutions and with resolution
  * scaling (q: the per-run quantities of the NCONF configurations), and the glossy case's
  * acceptance (gacc: NGLOSSY configurations). */
-static char *claims(double *const *q, const double *gacc, int seeds, const char *out, const char *scale, char *err,
-                    size_t errlen)
+static char *claims(double *const *q, const double *gacc, const double *grel, int seeds, const char *out,
+                    const char *scale, char *err, size_t errlen)
 {
     struct claims cl;
     char command[64], zs[128], md[256];
@@ -105,6 +108,12 @@ static char *claims(double *const *q, const double *gacc, int seeds, const char 
     ch4_claim_extreme(&cl, "T6", src,
                       "glossy-to-glossy transport: steps scaled to the resolution lose acceptance as it decreases",
                       "small-step acceptance (scenes/wall-glossy)", gnames, gacc, NGLOSSY, g, 4, -1, seeds);
+    /* T7: "this leads to slower convergence": at 256² and equal mutations the scaled steps' error is
+     * the larger */
+    const bool g256[NGLOSSY] = {false, false, true, false, true};
+    ch4_claim_extreme(&cl, "T7", src, "in glossy-to-glossy transport that loss of acceptance slows convergence",
+                      "relMSE at 256², equal mutations (scenes/wall-glossy)", gnames, grel, NGLOSSY, g256, 4, +1,
+                      seeds);
     return claims_finish(&cl, out, err, errlen);
 }
 
@@ -186,16 +195,26 @@ static bool run_glossy(struct fig42 *t, char *err, size_t errlen)
     struct scene *gsc = scene_load(t->glossy_scene, err, errlen);
     if (!gsc) die(DIE_USAGE, prog, "%s", err);
     t->gacc = xcalloc((size_t)NGLOSSY * t->seeds, sizeof *t->gacc);
+    t->grel = xcalloc((size_t)NGLOSSY * t->seeds, sizeof *t->grel);
+    struct image *ref = NULL;
     bool ok = true;
     for (int c = 0; c < NGLOSSY && ok; c++) {
         camera_resize(&gsc->cam, gres[c], gres[c]);
+        if (gres[c] == 256 && !ref) { /* T7: the error at 256², scaled against unscaled steps */
+            char refpath[256];
+            snprintf(refpath, sizeof refpath, "results/reference/wall-glossy-bdpt-256x256-%d.exr", t->refspp);
+            ok = (ref = ch4_reference(gsc, METHOD_BDPT, t->refspp, refpath, t->fo.threads, prog, err, errlen));
+        }
         for (int s = 0; s < t->seeds && ok; s++) {
             fprintf(stderr, "%s: %s, seed %llu (%d of %d)\n", prog, gnames[c], (unsigned long long)(t->fo.seed + s),
                     s + 1, t->seeds);
+            t->grel[c * t->seeds + s] = NAN;
             ok = glossy_accept(gsc, c >= 3, t->gmut, t->p_large, t->fo.seed + s, t->fo.threads,
-                               &t->gacc[c * t->seeds + s], err, errlen);
+                               gres[c] == 256 ? ref : NULL, &t->gacc[c * t->seeds + s], &t->grel[c * t->seeds + s], err,
+                               errlen);
         }
     }
+    img_destroy(ref);
     scene_free(gsc);
     return ok;
 }
@@ -236,7 +255,9 @@ static void write_meta(FILE *f, const void *ctx)
     csv_meta(f, NULL,
              "l_x, l_y = lag (pixels) where the error's autocorrelation normalised at lag 1 falls below 1/e;"
              " l = their mean; rho1 = mean lag-1 autocorrelation");
-    csv_meta(f, "glossy", "%s, %ld mutations per run (glossy-*: small_accept only)", t->glossy_scene, t->gmut);
+    csv_meta(f, "glossy",
+             "%s, %ld mutations per run (glossy-*: small_accept; at 256 also relmse against a %d-spp BDPT reference)",
+             t->glossy_scene, t->gmut, t->refspp);
 }
 
 /* One run's row: quantity i from x[i] (NULL: an empty cell). */
@@ -270,11 +291,17 @@ static void write_rows(const struct fig42 *t, struct table *runs, struct table *
         }
     }
     for (int c = 0; c < NGLOSSY; c++) {
+        bool rel = gres[c] == 256;
         for (int s = 0; s < seeds; s++)
             run_row(runs, gnames[c], gres[c], t->fo.seed + s,
-                    (const double *[NQ]){[Q_ACCEPT] = &t->gacc[c * seeds + s]});
+                    (const double *[NQ]){
+                        [Q_ACCEPT] = &t->gacc[c * seeds + s], [Q_RELMSE] = rel ? &t->grel[c * seeds + s] : NULL});
         struct ch4_stat_row row = {.config = gnames[c], .quantity = "small_accept", .resolution = gres[c]};
         ch4_stat_row_of(&row, t->gacc + c * seeds, seeds);
+        table_row(stats, &row);
+        if (!rel) continue;
+        row = (struct ch4_stat_row){.config = gnames[c], .quantity = "relmse", .resolution = gres[c]};
+        ch4_stat_row_of(&row, t->grel + c * seeds, seeds);
         table_row(stats, &row);
     }
 }
@@ -303,8 +330,9 @@ int main(int argc, char **argv)
     bool ok = run_wall(&t, sc, err, sizeof err);
     scene_free(sc);
     ok = ok && run_glossy(&t, err, sizeof err) && write_tables(&t, err, sizeof err);
-    ok = ok && ch4_show_claims(claims(t.q, t.gacc, t.seeds, t.fo.out, t.fo.scale, err, sizeof err));
+    ok = ok && ch4_show_claims(claims(t.q, t.gacc, t.grel, t.seeds, t.fo.out, t.fo.scale, err, sizeof err));
     free(t.gacc);
+    free(t.grel);
     for (int i = 0; i < NQ; i++)
         free(t.q[i]);
     if (!ok) die(DIE_RUNTIME, prog, "%s", err);

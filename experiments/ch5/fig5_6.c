@@ -4,11 +4,12 @@
  * results/reference/jewelry-bdpt-<spp>-<W>x<H>.exr). Writes to OUT: reference.png, mmlt.png,
  * controlled.png (first seed), fig5.6.csv (kind,relmse,stderr,seeds,accept_small,
  * mutations_per_second,corrlen,corrlen_se,blur8,blur8_se,block_median_relmse,block_median_relmse_se,
- * trimmed_relmse,trimmed_relmse_se: relMSE = mean over pixels and channels of (I - R)^2 / (R^2 + 0.01);
- * corrlen, blur8 the error's correlation length in pixels and its share in 8x8 blobs, below; the
- * median of the 16x16 blocks' relMSE and the relMSE without the 0.1 % largest pixel errors, the
- * firefly-robust relMSEs of chapter 6; each averaged over seeds with its standard error over seeds) and
- * claims.csv, claims.md: the thesis's claims with their verdicts. */
+ * trimmed_relmse,trimmed_relmse_se,median_slope,median_slope_se: relMSE = mean over pixels and channels of (I - R)^2 /
+ * (R^2 + 0.01); corrlen, blur8 the error's correlation length in pixels and its share in 8x8 blobs, below; the median
+ * of the 16x16 blocks' relMSE and the relMSE without the 0.1 % largest pixel errors, the firefly-robust relMSEs of
+ * chapter 6; median_slope,median_slope_se: the slope of log median block relMSE against log mutations from a run of a
+ * quarter of the mutations (same seed) to the full one; each averaged over seeds with its standard error over seeds)
+ * and claims.csv, claims.md: the thesis's claims with their verdicts. */
 #include "ch5/fig5_common.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
@@ -18,6 +19,7 @@
 #include "path/scene_ready.h"
 #include "stats/error_stats.h"
 #include "stats/noise_corr.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,21 +44,25 @@ static struct image *reference(const struct scene *sc, const struct fig5_cfg *c,
 /* Thesis §5.3 on Fig. 5.6: controlled small steps are not better (their relMSE is the larger) and
  * their noise is streaky and splotchy (the longer error correlation length, the larger share of the
  * error in 8 x 8 blobs). */
-enum { Q_RELMSE, Q_CORRLEN, Q_BLUR8, Q_MEDIAN, Q_TRIMMED, NQ };
+enum { Q_RELMSE, Q_CORRLEN, Q_BLUR8, Q_MEDIAN, Q_TRIMMED, Q_SLOPE, NQ };
 static void write_claims(const struct fig5_cfg *c, double mean[2][NQ], double se[2][NQ])
 {
     static const char *const claim[NQ] = {"controlled small steps are not better than MMLT's (worse noise)",
                                           "controlled small steps give streaky, splotchy noise",
                                           "controlled small steps give streaky, splotchy noise",
                                           "controlled small steps are not better than MMLT's (worse noise)",
-                                          "controlled small steps are not better than MMLT's (worse noise)"};
+                                          "controlled small steps are not better than MMLT's (worse noise)",
+                                          "controlled steps' artifacts disappear over time, but much more slowly"};
     /* T26 is about streaks and splotches, not fireflies: the firefly-robust relMSEs (the median of the
      * 16 x 16 blocks' and the relMSE without the 0.1 % largest pixel errors) decide it; the relMSE,
      * which isolated bright pixels can carry, is the harness's reading */
-    static const char *const id[NQ] = {"harness:T26", "T27", "T27", "T26", "T26"};
-    static const char *const stat[NQ] = {
-        "relMSE against BDPT", "error correlation length (pixels)", "error share surviving an 8x8 blur",
-        "median 16x16-block relMSE (firefly-robust)", "relMSE without the 0.1% largest pixel errors"};
+    static const char *const id[NQ] = {"harness:T26", "T27", "T27", "T26", "T26", "T28"};
+    static const char *const stat[NQ] = {"relMSE against BDPT",
+                                         "error correlation length (pixels)",
+                                         "error share surviving an 8x8 blur",
+                                         "median 16x16-block relMSE (firefly-robust)",
+                                         "relMSE without the 0.1% largest pixel errors",
+                                         "slope of log median block relMSE against log mutations (larger: slower)"};
     struct claims cl;
     char command[64], zs[128], md[256];
     snprintf(command, sizeof command, "make fig5.6 SCALE=%s", c->fig.scale);
@@ -80,7 +86,7 @@ struct kind_row {
     double relmse, relmse_se;
     int seeds;
     double accept_small, mutations_per_second, corrlen, corrlen_se, blur8, blur8_se;
-    double median, median_se, trimmed, trimmed_se;
+    double median, median_se, trimmed, trimmed_se, slope, slope_se;
 };
 static const struct column kind_cols[] = {
     COL_STRING(struct kind_row, "kind", kind),
@@ -97,6 +103,8 @@ static const struct column kind_cols[] = {
     COL_DOUBLE(struct kind_row, "block_median_relmse_se", "%.3g", median_se),
     COL_DOUBLE(struct kind_row, "trimmed_relmse", "%.6g", trimmed),
     COL_DOUBLE(struct kind_row, "trimmed_relmse_se", "%.3g", trimmed_se),
+    COL_DOUBLE(struct kind_row, "median_slope", "%.4g", slope),
+    COL_DOUBLE(struct kind_row, "median_slope_se", "%.3g", slope_se),
     {0}};
 
 /* OUT/NAME.png and .exr of a run. */
@@ -119,6 +127,21 @@ static double median_block_relmse(const struct image *a, const struct image *ref
     return m;
 }
 
+/* Thesis §5.3.3 (T28): how fast a kind's artifacts fade. The same seed at a quarter of the
+ * mutations; the slope of log median block relMSE (firefly-robust) against log mutations from there
+ * to the full run, whose value is `full` (-1: error falling as 1 / mutations). */
+static double decay_slope(const struct scene *sc, const struct fig5_cfg *c, int kind, uint64_t seed,
+                          const struct image *ref, double full)
+{
+    struct fig5_cfg q = *c;
+    q.mpp = c->mpp / 4 > 0 ? c->mpp / 4 : 1;
+    struct mlt_result r;
+    fig5_run(sc, &q, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, seed, false, &r);
+    double quarter = median_block_relmse(r.img, ref);
+    mlt_result_free(&r);
+    return log(full / quarter) / log((double)c->mpp / q.mpp);
+}
+
 /* One small-step kind over the seeds against ref: its row of OUT/fig5.6.csv, its means and
  * standard errors (x: room for NQ values per seed), the first seed's image. */
 static void run_kind(const struct scene *sc, const struct fig5_cfg *c, const struct image *ref, int kind, double *x,
@@ -133,6 +156,7 @@ static void run_kind(const struct scene *sc, const struct fig5_cfg *c, const str
         x[2 * c->seeds + i] = error_blur_share(r.img, ref, 0.01, 8);
         x[3 * c->seeds + i] = median_block_relmse(r.img, ref);
         x[4 * c->seeds + i] = trimmed_relmse(r.img, ref, 0.01, 0.001);
+        x[5 * c->seeds + i] = decay_slope(sc, c, kind, c->fig.seed + (uint64_t)i, ref, x[3 * c->seeds + i]);
         acc += cell_mean(&r.stats.total[PROPOSAL_SMALL]) / c->seeds;
         rate += r.mutations / r.seconds / c->seeds;
         if (i == 0) write_image(c, r.img, fig5_kind_name[kind]);
@@ -142,7 +166,7 @@ static void run_kind(const struct scene *sc, const struct fig5_cfg *c, const str
         mean_se(x + (size_t)q * c->seeds, c->seeds, &mean[q], &se[q]);
     table_row(t, &(struct kind_row){fig5_kind_name[kind], mean[Q_RELMSE], se[Q_RELMSE], c->seeds, acc, rate,
                                     mean[Q_CORRLEN], se[Q_CORRLEN], mean[Q_BLUR8], se[Q_BLUR8], mean[Q_MEDIAN],
-                                    se[Q_MEDIAN], mean[Q_TRIMMED], se[Q_TRIMMED]});
+                                    se[Q_MEDIAN], mean[Q_TRIMMED], se[Q_TRIMMED], mean[Q_SLOPE], se[Q_SLOPE]});
 }
 
 int main(int argc, char **argv)
