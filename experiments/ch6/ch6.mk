@@ -234,3 +234,25 @@ CH6_CHECK_OPTS_cdc-ch6 := --study cdc --methods '$(CDC_METHODS)' --spp 16 --seed
   --reference-spp 256 --resolution 256x144 --render-args ""
 $(eval $(call CH6_CHECK,cdc-ch6,ajar))
 ch6-baselines: ch6-baseline-cdc-ch6
+
+# ---- thesis Figs. 3.3 and 3.5: MIS against each technique alone (claim T38) ----
+# BDPT's balance-heuristic combination and its three techniques of paths of 2 segments (direct
+# light) alone, unweighted (bin/render --technique-s S --technique-t T), at equal samples on the Cornell box
+# (bin/ch6_equal --study mis).
+MIS_METHODS := bdpt,s0t3=--method bdpt --technique-s 0 --technique-t 3,s1t2=--method bdpt --technique-s 1 --technique-t 2,s2t1=--method bdpt --technique-s 2 --technique-t 1
+MIS_OUT := results/mis-robust-$(SCALE)
+$(MIS_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(MIS_OUT)/$* --methods '$(MIS_METHODS)' --study mis \
+	  --scale $(SCALE) --source 'thesis Figs. 3.3, 3.5' --command 'make mis-robust SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
+.PHONY: mis-robust
+FIGURE_TARGETS += mis-robust
+mis-robust: deps $(MIS_OUT)/cornell-box/summary.csv
+	@cat $(MIS_OUT)/cornell-box/cornell-box.md $(MIS_OUT)/cornell-box/claims.md
+
+# make check-mis-robust: the same at the quick settings with 8 seeds from 101 against the
+# baseline's 1-8 (results/baselines/mis-robust/stats.csv, `make ch6-baseline-mis-robust`): every
+# statistic of stats.csv per method, Welch t over the seeds, Sidak alpha = 0.01 over the rows.
+CH6_CHECK_OPTS_mis-robust := --study mis --methods '$(MIS_METHODS)' --spp 16 --seeds 8 --resolution 128x128 \
+  --min-length 2 --max-length 2 --reference-spp 1024 --render-args ""
+$(eval $(call CH6_CHECK,mis-robust,cornell-box))
+ch6-baselines: ch6-baseline-mis-robust

@@ -65,6 +65,11 @@ static const struct claim {
     /* thesis Fig. 3.4 (make bdpt-pt): BDPT has the lower variance at equal samples */
     {"T37", "BDPT has lower variance than path tracing at equal samples", "bdpt", -1, Q_RELMSE, "relMSE", "pt",
      "thesis §3.5, Fig. 3.4", false, "background"},
+    /* thesis Figs. 3.3, 3.5 (make mis-robust): BDPT's MIS combination against each of its techniques
+     * alone at one path length, over the whole image (per region the best single technique can be
+     * better: robust is not best everywhere) */
+    {"T38", "MIS is robust where each technique alone fails: the combination has the lowest error", "bdpt", -1,
+     Q_RELMSE, "relMSE", NULL, "thesis Figs. 3.3, 3.5", false, "mis"},
     /* the harness's readings: the splotchiest and the most uniform of the three chapter-6 methods */
     {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_CORRLEN, "error correlation length (pixels)",
      "pssmlt pitp", NULL, false, "equal-time"},

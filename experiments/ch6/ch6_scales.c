@@ -16,6 +16,8 @@
  * 256-, 4096- or 16 384-spp reference; no --render-args (the target gives each method its own).
  * cdc (make cdc-ch6, thesis §4.2): the equal-time study's budgets, seeds, lengths, references and
  * resolutions, PSSMLT with and without constrained discrete choices.
+ * mis (make mis-robust, thesis Figs. 3.3, 3.5): paths of 2 segments (direct light), equal samples,
+ * 16 (full, paper: 64) per pixel, 4 or 8 seeds, 128x128 (256x256), a 1024- (4096-) spp reference.
  * background (make bdpt-pt, thesis Fig. 3.4): equal samples, 16 (full, paper: 64) per pixel, 4 or 8
  * seeds, 128x72 (256x144), a 1024- (4096-) spp reference. */
 #include "base/util.h"
@@ -88,6 +90,16 @@ static const struct {
     {"cdc", "full paper", "living-room", {"--resolution", "512x288"}},
     {"cdc", "full paper", "staircase", {"--resolution", "288x512"}},
     {"cdc", "full paper", "ajar", {"--resolution", "512x288"}},
+    {"mis",
+     "quick",
+     ALL_SCENES,
+     {"--spp", "16", "--seeds", "4", "--resolution", "128x128", "--min-length", "2", "--max-length", "2",
+      "--reference-spp", "1024", "--render-args", ""}},
+    {"mis",
+     "full paper",
+     ALL_SCENES,
+     {"--spp", "64", "--seeds", "8", "--resolution", "256x256", "--min-length", "2", "--max-length", "2",
+      "--reference-spp", "4096", "--render-args", ""}},
     {"background",
      "quick",
      ALL_SCENES,

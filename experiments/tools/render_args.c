@@ -52,6 +52,16 @@ static const char *help_tail(void)
     return t;
 }
 
+/* --technique-s S --technique-t T: one technique (core/mc/render.h only_s, only_t), both given, a
+ * path length within the limit. */
+static void technique_arg(struct render_args *a)
+{
+    int s = a->mc.only_s, t = a->mc.only_t;
+    if (s < 0 || t < 1 || s + t - 1 < 1 || s + t - 1 > MAX_PATH_LENGTH)
+        opts_fail("render", "--technique-s %d --technique-t %d: S + T - 1 segments must be 1 to %d", s, t,
+                  MAX_PATH_LENGTH);
+}
+
 /* Whether argv holds the option (opts.h takes no --opt=value). */
 static bool given(int argc, char **argv, const char *name)
 {
@@ -83,6 +93,12 @@ void render_args_parse(int argc, char **argv, struct render_args *a)
          .help = "pt/bdpt numbers: independent, or sobol (scrambled (0,2)-sequences per pixel, as Tungsten's default): "
                  "equally unbiased, lower error where stratification pays (pixel area, direct light; not fireflies)"},
         OPT_THREADS(a->mc.threads, .hi = 1024, .help = "worker threads (default: all cores)", .def_int = cpu_count),
+        {"--technique-s", OPT_INT, OPT_DST(a->mc.only_s), .arg = "S", .lo = 0, .hi = MAX_PATH_LENGTH,
+         .tag = APPLIES_BDPT, .help = "bdpt, with --technique-t: one technique alone, unweighted"},
+        {"--technique-t", OPT_INT, OPT_DST(a->mc.only_t), .arg = "T", .lo = 1, .hi = MAX_PATH_LENGTH + 1,
+         .tag = APPLIES_BDPT,
+         .help = "bdpt: the technique of S emitter and T camera vertices alone, paths of S + T - 1 segments (thesis "
+                 "Figs. 3.3, 3.5: what MIS combines)"},
         OPT_MAX_LENGTH(a->mc.max_length, .help = "maximum path length in segments (default: integrator.max_bounces)"),
         OPT_MIN_LENGTH(a->mc.min_length, .hi = MAX_PATH_LENGTH,
                        .help = "leave out paths shorter than K segments (3: no direct lighting; default 1)"),
@@ -125,6 +141,9 @@ void render_args_parse(int argc, char **argv, struct render_args *a)
         a->mc.cpu_time = m->cpu_time = true;
     }
     a->mc.sobol = a->sampler == 1;
+    bool ts = given(argc, argv, "--technique-s"), tt = given(argc, argv, "--technique-t");
+    if (ts != tt) opts_fail(prog, "--technique-s and --technique-t: give both (one technique, s and t)");
+    if (ts) technique_arg(a);
     /* the options both drivers read */
     m->seconds = a->mc.seconds, m->seed = a->mc.seed, m->threads = a->mc.threads;
     a->mc.progress = m->progress = !a->quiet;
@@ -164,6 +183,8 @@ void render_args_identity(const struct render_args *a, const struct scene *sc, c
         a->mc.max_length, a->mc.min_length, sc->cam.width, sc->cam.height, isa ? isa : "?");
     /* only when not the default, so that checkpoints of independent-number runs stay resumable */
     if (a->mc.sobol && len > 0 && (size_t)len < n) len += snprintf(buf + len, n - (size_t)len, " sampler=sobol");
+    if (a->mc.only_t > 0 && len > 0 && (size_t)len < n)
+        len += snprintf(buf + len, n - (size_t)len, " technique=%d,%d", a->mc.only_s, a->mc.only_t);
     /* every number-changing MCMC option, from its descriptor: none can be left out */
     if (strcmp(a->method, "pt") && strcmp(a->method, "bdpt") && len > 0 && (size_t)len < n)
         mlt_options_identity(&a->mlt, buf + len, n - (size_t)len);
