@@ -174,85 +174,58 @@ CH6_CHECK_OPTS_hybrid-study := --study hybrid --methods '$(HYB_METHODS)' --spp 1
 $(eval $(call CH6_CHECK,hybrid-study,ajar))
 ch6-baselines: ch6-baseline-hybrid-study
 
+# $(call CH6_STUDY,TARGET,STUDY,SCENES): `make TARGET` runs bin/ch6_equal --study STUDY at the
+# scale (its settings are ch6_scales.c's) with the methods TARGET_METHODS, the claims' source
+# TARGET_SOURCE, on each of SCENES into results/TARGET-SCALE/SCENE/ (checkpointed at full, SEEDS as
+# above), and shows each scene's table and claims; `make check-TARGET` reruns the first scene with
+# CH6_CHECK_OPTS_TARGET from seed 101 against results/baselines/TARGET/stats.csv (CH6_CHECK).
+# Set the variables before the call.
+define CH6_STUDY
+$(1)_OUT := results/$(1)-$$(SCALE)
+$$($(1)_OUT)/%/summary.csv: scenes/%/scene.json $$(CH6_SEEDS_FORCE) | deps $$(BIN)/ch6_equal $$(BIN)/render
+	$$(BIN)/ch6_equal --scene scenes/$$*/scene.json --out $$($(1)_OUT)/$$* --methods '$$($(1)_METHODS)' --study $(2) \
+	  --scale $$(SCALE) --source '$$($(1)_SOURCE)' --command 'make $(1) SCALE=$$(SCALE)$$(CH6_SEEDS_CMD)' $$(CH6_SEEDS) >/dev/null
+.PHONY: $(1)
+FIGURE_TARGETS += $(1)
+$(1): deps $$(patsubst %,$$($(1)_OUT)/%/summary.csv,$(3))
+	@cat $$(foreach c,$(3),$$($(1)_OUT)/$$(c)/$$(c).md $$($(1)_OUT)/$$(c)/claims.md)
+$$(eval $$(call CH6_CHECK,$(1),$$(firstword $(3))))
+ch6-baselines: ch6-baseline-$(1)
+endef
+
 # ---- MMLT paper §5, Fig. 4: BDPT vs PSSMLT vs MMLT at equal time (claim M-b) ----
 # ajar (the door scene's counterpart), paths of 1 to 8 segments (the paper's 8 bounces, direct light
-# included), equal CPU time per method; the scales are bin/ch6_equal's (--study mmlt-equal). Each
-# method takes its own options (BDPT has no large steps).
-MEQ_METHODS := bdpt,pssmlt=--method pssmlt --p-large 0.1,mmlt=--method mmlt --p-large 0.1
-MEQ_OUT := results/mmlt-equal-$(SCALE)
-$(MEQ_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(MEQ_OUT)/$* --methods '$(MEQ_METHODS)' --study mmlt-equal \
-	  --scale $(SCALE) --source 'MMLT paper §5, Fig. 4' --command 'make mmlt-equal SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
-.PHONY: mmlt-equal
-FIGURE_TARGETS += mmlt-equal
-mmlt-equal: deps $(MEQ_OUT)/ajar/summary.csv
-	@cat $(MEQ_OUT)/ajar/ajar.md $(MEQ_OUT)/ajar/claims.md
-
-# make check-mmlt-equal: the three methods on ajar at 16 samples or mutations per pixel at 256x144
-# (paths of 1 to 8 segments), seeds 101-108 against the baseline's 1-8 and the cached quick
-# reference; every statistic of stats.csv per method (Welch t over the seeds, Sidak alpha = 0.01);
-# `make ch6-baseline-mmlt-equal` rewrites the baseline.
-CH6_CHECK_OPTS_mmlt-equal := --study mmlt-equal --methods '$(MEQ_METHODS)' --spp 16 --seeds 8 --min-length 1 --max-length 8 \
-  --reference-spp 256 --resolution 256x144 --render-args ""
-$(eval $(call CH6_CHECK,mmlt-equal,ajar))
-ch6-baselines: ch6-baseline-mmlt-equal
+# included), equal CPU time per method (--study mmlt-equal). Each method takes its own options (BDPT
+# has no large steps). The check: at 16 samples or mutations per pixel, 256x144.
+mmlt-equal_METHODS := bdpt,pssmlt=--method pssmlt --p-large 0.1,mmlt=--method mmlt --p-large 0.1
+mmlt-equal_SOURCE := MMLT paper §5, Fig. 4
+CH6_CHECK_OPTS_mmlt-equal := --study mmlt-equal --methods '$(mmlt-equal_METHODS)' --spp 16 --seeds 8 --min-length 1 \
+  --max-length 8 --reference-spp 256 --resolution 256x144 --render-args ""
+$(eval $(call CH6_STUDY,mmlt-equal,mmlt-equal,ajar))
 
 # ---- thesis Fig. 3.4: BDPT vs path tracing at equal samples (claim T37) ----
-# ajar at the scale's samples per pixel, seeds and resolution (bin/ch6_equal --study background).
-BG_OUT := results/bdpt-pt-$(SCALE)
-$(BG_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(BG_OUT)/$* --methods pt,bdpt --study background \
-	  --scale $(SCALE) --source 'thesis Fig. 3.4' --command 'make bdpt-pt SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
-.PHONY: bdpt-pt
-FIGURE_TARGETS += bdpt-pt
-bdpt-pt: deps $(BG_OUT)/ajar/summary.csv
-	@cat $(BG_OUT)/ajar/ajar.md $(BG_OUT)/ajar/claims.md
-
-# make check-bdpt-pt: the same at the quick settings, seeds 101-108 against the baseline's 1-8
-# (results/baselines/bdpt-pt/stats.csv, `make ch6-baseline-bdpt-pt`): every statistic of stats.csv
-# per method, Welch t over the seeds, Sidak alpha = 0.01 over the rows.
-CH6_CHECK_OPTS_bdpt-pt := --study background --methods pt,bdpt --spp 16 --seeds 8 --resolution 128x72 --reference-spp 1024 --render-args ""
-$(eval $(call CH6_CHECK,bdpt-pt,ajar))
-ch6-baselines: ch6-baseline-bdpt-pt
+# ajar at the scale's samples per pixel, seeds and resolution (--study background).
+bdpt-pt_METHODS := pt,bdpt
+bdpt-pt_SOURCE := thesis Fig. 3.4
+CH6_CHECK_OPTS_bdpt-pt := --study background --methods pt,bdpt --spp 16 --seeds 8 --resolution 128x72 \
+  --reference-spp 1024 --render-args ""
+$(eval $(call CH6_STUDY,bdpt-pt,background,ajar))
 
 # ---- thesis §4.2: constrained discrete choices on the chapter-6 scenes (claim T11) ----
-# PSSMLT with and without --cdc at the equal-time study's settings (bin/ch6_equal --study cdc).
-CDC_METHODS := pssmlt=--method pssmlt --p-large 0.1,pssmlt-cdc=--method pssmlt --p-large 0.1 --cdc
-CDC_OUT := results/cdc-ch6-$(SCALE)
-$(CDC_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CDC_OUT)/$* --methods '$(CDC_METHODS)' --study cdc \
-	  --scale $(SCALE) --source 'thesis §4.2' --command 'make cdc-ch6 SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
-.PHONY: cdc-ch6
-FIGURE_TARGETS += cdc-ch6
-cdc-ch6: deps $(CDC_OUT)/living-room/summary.csv $(CDC_OUT)/staircase/summary.csv $(CDC_OUT)/ajar/summary.csv
-	@cat $(CDC_OUT)/*/claims.md
-
-# make check-cdc-ch6: both on ajar at 16 mutations per pixel, 256x144, paths of length >= 3, seeds
-# 101-108 against the baseline's 1-8 (results/baselines/cdc-ch6/stats.csv, `make ch6-baseline-cdc-ch6`):
-# every statistic of stats.csv per method, Welch t over the seeds, Sidak alpha = 0.01 over the rows.
-CH6_CHECK_OPTS_cdc-ch6 := --study cdc --methods '$(CDC_METHODS)' --spp 16 --seeds 8 --min-length 3 \
+# PSSMLT with and without --cdc at the equal-time study's settings (--study cdc). The check: ajar at
+# 16 mutations per pixel, 256x144, paths of length >= 3.
+cdc-ch6_METHODS := pssmlt=--method pssmlt --p-large 0.1,pssmlt-cdc=--method pssmlt --p-large 0.1 --cdc
+cdc-ch6_SOURCE := thesis §4.2
+CH6_CHECK_OPTS_cdc-ch6 := --study cdc --methods '$(cdc-ch6_METHODS)' --spp 16 --seeds 8 --min-length 3 \
   --reference-spp 256 --resolution 256x144 --render-args ""
-$(eval $(call CH6_CHECK,cdc-ch6,ajar))
-ch6-baselines: ch6-baseline-cdc-ch6
+$(eval $(call CH6_STUDY,cdc-ch6,cdc,ajar living-room staircase))
 
 # ---- thesis Figs. 3.3 and 3.5: MIS against each technique alone (claim T38) ----
 # BDPT's balance-heuristic combination and its three techniques of paths of 2 segments (direct
-# light) alone, unweighted (bin/render --technique-s S --technique-t T), at equal samples on the Cornell box
-# (bin/ch6_equal --study mis).
-MIS_METHODS := bdpt,s0t3=--method bdpt --technique-s 0 --technique-t 3,s1t2=--method bdpt --technique-s 1 --technique-t 2,s2t1=--method bdpt --technique-s 2 --technique-t 1
-MIS_OUT := results/mis-robust-$(SCALE)
-$(MIS_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(MIS_OUT)/$* --methods '$(MIS_METHODS)' --study mis \
-	  --scale $(SCALE) --source 'thesis Figs. 3.3, 3.5' --command 'make mis-robust SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
-.PHONY: mis-robust
-FIGURE_TARGETS += mis-robust
-mis-robust: deps $(MIS_OUT)/cornell-box/summary.csv
-	@cat $(MIS_OUT)/cornell-box/cornell-box.md $(MIS_OUT)/cornell-box/claims.md
-
-# make check-mis-robust: the same at the quick settings with 8 seeds from 101 against the
-# baseline's 1-8 (results/baselines/mis-robust/stats.csv, `make ch6-baseline-mis-robust`): every
-# statistic of stats.csv per method, Welch t over the seeds, Sidak alpha = 0.01 over the rows.
-CH6_CHECK_OPTS_mis-robust := --study mis --methods '$(MIS_METHODS)' --spp 16 --seeds 8 --resolution 128x128 \
+# light) alone, unweighted (bin/render --technique-s S --technique-t T), at equal samples on the
+# Cornell box (--study mis).
+mis-robust_METHODS := bdpt,s0t3=--method bdpt --technique-s 0 --technique-t 3,s1t2=--method bdpt --technique-s 1 --technique-t 2,s2t1=--method bdpt --technique-s 2 --technique-t 1
+mis-robust_SOURCE := thesis Figs. 3.3, 3.5
+CH6_CHECK_OPTS_mis-robust := --study mis --methods '$(mis-robust_METHODS)' --spp 16 --seeds 8 --resolution 128x128 \
   --min-length 2 --max-length 2 --reference-spp 1024 --render-args ""
-$(eval $(call CH6_CHECK,mis-robust,cornell-box))
-ch6-baselines: ch6-baseline-mis-robust
+$(eval $(call CH6_STUDY,mis-robust,mis,cornell-box))
