@@ -12,8 +12,11 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
 {
     const struct mlt_opts *o = j->o;
     *wk = (struct worker){.job = j, .opts = o, .tid = tid, .global_tid = j->g0 + tid};
-    wk->path_ctx = (struct path_ctx){
-        .sc = j->sc, .max_length = o->max_length, .min_length = o->min_length, .max_heuristic = o->max_heuristic};
+    wk->path_ctx = (struct path_ctx){.sc = j->sc,
+                                     .max_length = o->max_length,
+                                     .min_length = o->min_length,
+                                     .max_heuristic = o->max_heuristic,
+                                     .power_heuristic = o->power_heuristic};
     wk->scratch = xmalloc(sizeof *wk->scratch);
     wk->scratch->nf = (struct nonfinite){{0}};
     wk->scratch->tech_k = 0; /* the MCMC methods split states by technique themselves (tech_split.h) */

@@ -79,6 +79,7 @@ struct mlt_opts {
     bool uniform_lengths; /* MMLT: every length gets the same share of mutations, not b_k */
     bool time_proposals;  /* record each proposal's time in the statistics (two clock reads) */
     bool max_heuristic;   /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */
+    bool power_heuristic; /* MMLT: the power heuristic (beta = 2) in the target (MMLT paper §6) */
     /* MMLT's small step: the lazy primary-sample-space step, or thesis §5.3's controlled step
      * (Alg. 4) or root perturbation (Alg. 3), see controlled_step.h. Controlled and root need the
      * Gaussian kernel without --cdc, and MMLT large steps. */

@@ -36,6 +36,16 @@ static bool small_step_conflict(const struct mlt_opts *o, char *err, size_t errl
     return true;
 }
 
+static bool power_conflict(const struct mlt_opts *o, char *err, size_t errlen)
+{
+    /* PITP picks a technique in proportion to the balance heuristic's weights (Eq. 5.22-5.25) and
+     * MCTLS sums the techniques' balance-weighted contributions (Eq. 4.7): another heuristic is MMLT's
+     * target with its own large steps only */
+    if (o->method == MLT_MMLT && o->large_step == LARGE_MMLT) return false;
+    snprintf(err, errlen, "--power-heuristic: mmlt with MMLT large steps only");
+    return true;
+}
+
 static bool technique_conflict(const struct mlt_opts *o, char *err, size_t errlen)
 {
     if (o->method == MLT_PITP || o->large_step != LARGE_MMLT || o->technique_k < o->min_length ||
@@ -122,6 +132,10 @@ const struct mlt_option mlt_options[] = {
     {"max_heuristic", "--max-heuristic", MLT_OPTION_FLAG, FIELD(max_heuristic), .methods = APPLIES_PSSMLT,
      .numbers = true, .help = "pssmlt: Kelemen's maximum heuristic instead of the balance heuristic",
      .csv_group = MLT_CSV_BEFORE_COUNTS, .csv_pos = 5, .csv_key = "mis", .csv_values = mis_names},
+    {"power_heuristic", "--power-heuristic", MLT_OPTION_FLAG, FIELD(power_heuristic), .methods = APPLIES_MMLT,
+     .numbers = true,
+     .help = "mmlt: the power heuristic (beta = 2) in the target instead of the balance heuristic (MMLT paper §6)",
+     .csv_group = MLT_CSV_BEFORE_COUNTS, .csv_pos = 8, .csv_key = "power_heuristic", .conflict = power_conflict},
     {"small_step", "--small-step", MLT_OPTION_CHOICE, FIELD(small_step), .choices = small_steps,
      .methods = APPLIES_MULTIPLEXED, .numbers = true,
      .help = "mmlt/pitp small step (default pss; controlled: thesis 5.3 Alg. 4, root: Alg. 3, analysis only); the "

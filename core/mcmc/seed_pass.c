@@ -31,7 +31,8 @@ static void seed_worker(int tid, void *p)
     struct path_ctx pc = {.sc = j->sc,
                           .max_length = j->o->max_length,
                           .min_length = j->o->min_length,
-                          .max_heuristic = j->o->max_heuristic};
+                          .max_heuristic = j->o->max_heuristic,
+                          .power_heuristic = j->o->power_heuristic};
     struct scratch *w = xcalloc(1, sizeof *w); /* its counts are not kept: a seed target is never splatted */
     struct mmlt_path *x = xmalloc(sizeof *x);
     struct sampler_independent s;

@@ -132,6 +132,7 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     double *rat = ratios ? ratios : r;
     out->w = mis_weights(&m, s, max_s, rat);
     if (pc->max_heuristic) out->w = mis_max_weight(rat, m.k, s);
+    if (pc->power_heuristic) out->w = mis_power_weight(rat, m.k);
     if (leak) out->w = 1;
     out->f = nonfinite_inject(out->f);
     return true;

@@ -46,6 +46,14 @@ double mis_max_weight(const double *ratios, int k, int s)
     return 1;
 }
 
+double mis_power_weight(const double *ratios, int k)
+{
+    double sum = 0;
+    for (int j = 0; j <= k; j++)
+        sum += ratios[j] * ratios[j];
+    return 1.0 / sum;
+}
+
 /* Unit direction and length of the segment x_i -> x_{i+1}; the length is 0 when x_i lies at
  * infinity (only x_0 can: an environment vertex). */
 static vec3 seg(const struct vertex *const *x, int i, double *len)

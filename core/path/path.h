@@ -75,8 +75,9 @@ struct path_ctx {
      * an unbiased estimator of the paths of length s + t - 1 (tests, per-technique images). */
     int only_s, only_t;
     /* Weights of the techniques: the balance heuristic, or Kelemen's maximum heuristic (weight 1
-     * for the technique of largest density among those that can produce the path, else 0). */
-    bool max_heuristic;
+     * for the technique of largest density among those that can produce the path, else 0), or the
+     * power heuristic (beta = 2). */
+    bool max_heuristic, power_heuristic;
 };
 
 /* Thesis Alg. 1. Fill `v` (capacity MAX_SUBPATH_VERTS) and return the vertex count.
@@ -195,5 +196,7 @@ void mis_unfold_delta_chains(struct mis_path *m, const struct vertex *const *x);
 /* Maximum heuristic from the same ratios: 1 if technique s has the largest density (ties go to
  * the smallest index), else 0. */
 double mis_max_weight(const double *ratios, int k, int s);
+/* Veach's power heuristic (beta = 2) from the same ratios (ratios[s] = 1): 1 / sum_j ratios[j]^2. */
+double mis_power_weight(const double *ratios, int k);
 
 #endif

@@ -70,6 +70,10 @@ static const struct claim {
      * better: robust is not best everywhere) */
     {"T38", "MIS is robust where each technique alone fails: the combination has the lowest error", "bdpt", -1,
      Q_RELMSE, "relMSE", NULL, "thesis Figs. 3.3, 3.5", false, "mis"},
+    /* MMLT paper §6 (make mmlt-equal): no weighting function found beats the balance heuristic in
+     * MMLT's target; against the power heuristic (beta = 2) */
+    {"M-l", "no weighting function beats the balance heuristic in MMLT's target (against the power heuristic)", "mmlt",
+     -1, Q_RELMSE, "relMSE", "mmlt-power", "MMLT paper §6", false, "mmlt-equal"},
     /* the harness's readings: the splotchiest and the most uniform of the three chapter-6 methods */
     {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_CORRLEN, "error correlation length (pixels)",
      "pssmlt pitp", NULL, false, "equal-time"},
