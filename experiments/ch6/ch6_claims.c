@@ -129,20 +129,20 @@ static const struct ratio_claim {
     /* MMLT paper §5: "an improvement of approximately 2.5 times" in the share of non-zero samples */
     {"M-e", "MMLT paper §5", "MMLT's share of non-zero samples is about 2.5 times PSSMLT's",
      "non-zero fraction per proposal", "mmlt", "pssmlt", Q_NONZERO, 2.5, true, "equal-time ratio"},
-    /* MMLT paper §5, Fig. 4: "PSSMLT barely improves on BDPT" at equal time */
     /* thesis §4.2 (make cdc-ch6): "in other scenes the effect of CDC is usually subtle" */
     {"T11", "thesis §4.2", "CDC's effect is usually subtle in other scenes (relMSE within ±25 %)", "relMSE",
      "pssmlt-cdc", "pssmlt", Q_RELMSE, 1, false, "cdc"},
+    /* MMLT paper §5, Fig. 4: "PSSMLT barely improves on BDPT" at equal time */
     {"M-b", "MMLT paper §5, Fig. 4", "PSSMLT barely improves on BDPT at equal time", "relMSE", "pssmlt", "bdpt",
      Q_RELMSE, 1, false, "mmlt-equal"},
 };
 
 /* The ratio claims whose two methods ran; the ratio's first-order standard error. */
-static void ratio_rows(struct claims *out, const struct ch6_claims_in *in)
+static void ratio_rows(struct claims *out, const struct ch6_claims_in *in, const char *study)
 {
     for (size_t k = 0; k < sizeof ratio_claims / sizeof *ratio_claims; k++) {
         const struct ratio_claim *rc = &ratio_claims[k];
-        if (!ch6_listed(rc->studies, in->study)) continue;
+        if (!ch6_listed(rc->studies, study)) continue;
         int ai = find(in, rc->a), bi = find(in, rc->b);
         if (ai < 0 || bi < 0 || isnan(in->mean[ai][rc->q]) || !(in->mean[bi][rc->q] > 0)) continue;
         double a = in->mean[ai][rc->q], b = in->mean[bi][rc->q];
@@ -163,9 +163,10 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
     claims_begin(&out, in->scale, in->command, "Claims on %s at %g %s per run, %d seeds", in->scene, in->budget,
                  in->unit, in->seeds);
     double mean[MAX_METHODS], se[MAX_METHODS], z[MAX_METHODS];
+    const char *study = in->study ? in->study : "equal-time";
     for (size_t k = 0; k < sizeof claims / sizeof *claims; k++) {
         const struct claim *cl = &claims[k];
-        if (!ch6_listed(cl->studies, in->study)) continue;
+        if (!ch6_listed(cl->studies, study)) continue;
         int mi = find(in, cl->method), others = 0;
         if (mi < 0 || isnan(in->mean[mi][cl->q])) continue; /* no reference: no image claims */
         bool have[MAX_METHODS];
@@ -188,6 +189,6 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
         claims_row(&out, claim_id(cl, in, idbuf, sizeof idbuf), cl->source ? cl->source : in->source, cl->text,
                    cl->statistic, cl->method, mean[mi], se[mi], zs, against, &v);
     }
-    ratio_rows(&out, in);
+    ratio_rows(&out, in, study);
     return claims_finish(&out, in->out, err, errlen);
 }

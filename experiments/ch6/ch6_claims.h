@@ -35,7 +35,7 @@ struct ch6_claims_in {
     const char *unit; /* the budget's: "s" or "mutations per pixel" */
     int seeds, methods;
     int minlen;        /* the runs' shortest path length (1 or 2: direct light included) */
-    const char *study; /* bin/ch6_equal --study: a claim is written only in the studies it belongs to */
+    const char *study; /* bin/ch6_equal --study (NULL: equal-time): a claim is written only in its studies */
     const char (*name)[64];
     const bool *have;
     const double (*mean)[Q_COUNT], (*se)[Q_COUNT];
