@@ -167,15 +167,15 @@ int mixing_rows(const struct chain_trace *t, int n, struct mixing_row *rows, int
         for (int i = 0; i < n; i++)
             if (t[i].k == k && t[i].n > 0) tc[m++] = &t[i];
         if (!m) continue;
-        ASSERT(nr < max - 1);
+        ASSERT(nr < max);
         group_row(tc, m, &rows[nr++], &acc);
     }
     free(tc);
-    ASSERT(nr < max);
     if (nr == 1 && rows[0].k == 0) { /* PSSMLT: its one group is the run */
         rows[0].k = -1;
         return 1;
     }
+    ASSERT(nr < max);
     all_row(rows, nr, &acc, &rows[nr]);
     return nr + 1;
 }
