@@ -88,18 +88,19 @@ static double state_column(const struct chain *c)
 }
 
 /* One iteration of the worker's chains, and its mixing record (stats/chain_trace.h): whether the
- * iteration left the chain's state as it was (target, technique, where it splats; every mutation
- * alike), and on the trace's thinned iterations the state's column and target. Draws nothing. */
+ * iteration moved the chain's path (where its first splat lands: every accepted proposal of every
+ * mutation moves it almost surely; PITP's perturbation, which keeps the path and changes its
+ * technique and with it the target, does not), and on the trace's thinned iterations the state's
+ * column and target. Draws nothing. */
 static void iterate(struct worker *wk)
 {
     const struct mlt_opts *o = wk->opts;
     struct chain *c = pick_chain(wk);
     bool large = rng_uniform(&wk->r) < o->p_large;
     double t_start = o->time_proposals ? now_seconds() : 0;
-    double f0 = c->f, px0 = c->cur.s[0].px, py0 = c->cur.s[0].py;
-    int tech0 = c->tech;
+    double px0 = c->cur.s[0].px, py0 = c->cur.s[0].py;
     mutations_iterate(wk, c, large, t_start); /* the registry's steps (mutation.h) */
-    bool moved = c->f != f0 || c->tech != tech0 || c->cur.s[0].px != px0 || c->cur.s[0].py != py0;
+    bool moved = c->cur.s[0].px != px0 || c->cur.s[0].py != py0;
     if (trace_step(c->trace, moved)) trace_keep(c->trace, state_column(c), c->f);
 }
 

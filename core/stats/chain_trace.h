@@ -22,7 +22,7 @@ struct chain_trace {
     int k;          /* the chain's path length (MMLT, PITP), 0 for PSSMLT's chains over all lengths */
     int len;        /* values held */
     long n;         /* iterations of this chain */
-    long moved;     /* iterations after which its state differed from before */
+    long moved;     /* iterations that moved its path (core/mcmc/chain_loop.c says how that is seen) */
     long run;       /* the current run of unchanged iterations */
     long longest;   /* the longest such run */
     long stride;    /* values held are those of iterations 0, stride, 2 stride, ... */
