@@ -10,6 +10,7 @@
 #include "path/splat.h"
 #include "sampler/pss.h"
 #include "stats/angle_change.h"
+#include "stats/chain_trace.h"
 #include "stats/mlt_stats.h"
 #include "stats/tech_image.h"
 
@@ -32,6 +33,7 @@ struct chain {
     long *dropped;              /* where its weighted splats that come out non-finite are counted (a
                                  * tiny target's weight can overflow): its length's cell, PSSMLT's [0] */
     void *state[MUTATIONS_MAX]; /* each mutation's own, by its place in the registry (or NULL) */
+    struct chain_trace *trace;  /* its mixing record (the job's, stats/chain_trace.h) */
 };
 
 /* Everything one worker thread carries from one iteration to the next. Scratch buffers (walks,
@@ -46,8 +48,9 @@ struct mlt_thread {
     struct mlt_stats *st;
     long *ctrl_fail; /* [2]: forward, reverse */
     struct image *img;
-    struct angle_acc *angle; /* or NULL */
-    struct tech_acc *tech;   /* or NULL */
+    struct angle_acc *angle;   /* or NULL */
+    struct tech_acc *tech;     /* or NULL */
+    struct chain_trace *trace; /* nk: the chains' mixing records */
 };
 
 /* Replaces b's contents with the thread's state. */

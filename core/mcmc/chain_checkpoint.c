@@ -94,6 +94,15 @@ void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct ml
         CKPT_PUT(b, a->prop);
         CKPT_PUT(b, a->active);
     }
+    ckpt_put(b, t->trace, (size_t)t->nk * sizeof *t->trace);
+}
+
+/* A mixing record's counts index its trace and step its thinning: checked as the chains' are. */
+static bool trace_valid(const struct chain_trace *t)
+{
+    return t->len >= 0 && t->len < TRACE_CAP && t->stride >= 1 && t->countdown >= 1 && t->countdown <= t->stride &&
+           t->n >= 0 && t->moved >= 0 && t->moved <= t->n && t->longest >= t->run && t->run >= 0 && t->k >= 0 &&
+           t->k <= MAX_PATH_LENGTH;
 }
 
 bool mlt_thread_load(struct ckpt_buf *b, const struct scene *sc, const struct mlt_thread *t)
@@ -126,5 +135,8 @@ bool mlt_thread_load(struct ckpt_buf *b, const struct scene *sc, const struct ml
         CKPT_GET(b, a->prop);
         CKPT_GET(b, a->active);
     }
+    ckpt_get(b, t->trace, (size_t)t->nk * sizeof *t->trace);
+    for (int i = 0; i < t->nk; i++)
+        if (!trace_valid(&t->trace[i])) return false;
     return !b->short_read;
 }

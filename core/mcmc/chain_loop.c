@@ -36,8 +36,8 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
              0x9E3779B97F4A7C15ULL + (uint64_t)wk->global_tid); /* streams and budgets are the job's global thread's */
     wk->track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     wk->ctrl = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *wk->ctrl) : NULL;
-    wk->saved = (struct mlt_thread){wk->ch, j->nk,         &wk->r,  &wk->n,    &wk->scratch->nf,
-                                    wk->st, wk->ctrl_fail, wk->img, wk->angle, wk->tech};
+    wk->saved = (struct mlt_thread){wk->ch,        j->nk,   &wk->r,    &wk->n,   &wk->scratch->nf, wk->st,
+                                    wk->ctrl_fail, wk->img, wk->angle, wk->tech, j->trace[tid]};
 }
 
 /* Every chain from a seed sample (seed_pass.c), or set up for the state a checkpoint left it in. */
@@ -50,6 +50,8 @@ static void chains_start(struct worker *wk)
         c->k = kk + 1;
         c->scale = j->scale[kk];
         c->dropped = &wk->scratch->nf.len[wk->multiplexed ? c->k : 0];
+        c->trace = &j->trace[wk->tid][kk];
+        trace_init(c->trace, wk->multiplexed ? c->k : 0); /* a resumed run's comes from the checkpoint */
         if (!j->resume) {
             if (j->cdf[kk]) chain_start(wk, c, kk);
             continue;
@@ -74,14 +76,35 @@ static struct chain *pick_chain(struct worker *wk)
     return &wk->ch[kk];
 }
 
-/* One iteration of the worker's chains. */
+/* Where the state's contribution lands in the image: the luminance-weighted mean raster column of
+ * its splats (one splat for MMLT and PITP). Chains stuck in different parts of the image disagree
+ * on it; the luminance of the splats themselves is b_k / P(k) for every state and says nothing. */
+static double state_column(const struct chain *c)
+{
+    double sum = 0, w = 0;
+    for (int i = 0; i < c->cur.n; i++) {
+        double l = luminance(c->cur.s[i].c);
+        sum += l * c->cur.s[i].px;
+        w += l;
+    }
+    return w > 0 ? sum / w : c->cur.s[0].px;
+}
+
+/* One iteration of the worker's chains, and its mixing record (stats/chain_trace.h): whether the
+ * iteration moved the chain's path (where its first splat lands: every accepted proposal of every
+ * mutation moves it almost surely; PITP's perturbation, which keeps the path and changes its
+ * technique and with it the target, does not), and on the trace's thinned iterations the state's
+ * column and target. Draws nothing. */
 static void iterate(struct worker *wk)
 {
     const struct mlt_opts *o = wk->opts;
     struct chain *c = pick_chain(wk);
     bool large = rng_uniform(&wk->r) < o->p_large;
     double t_start = o->time_proposals ? now_seconds() : 0;
+    double px0 = c->cur.s[0].px, py0 = c->cur.s[0].py;
     mutations_iterate(wk, c, large, t_start); /* the registry's steps (mutation.h) */
+    bool moved = c->cur.s[0].px != px0 || c->cur.s[0].py != py0;
+    if (trace_step(c->trace, moved)) trace_keep(c->trace, state_column(c), c->f);
 }
 
 /* Whether iteration n may run: no interruption, and within the time or mutation budget. */

@@ -79,6 +79,9 @@ static void job_alloc(struct run_job *rj, const struct scene *sc)
     rj->stats = xcalloc((size_t)T, sizeof(struct mlt_stats));
     rj->done = xcalloc((size_t)T, sizeof(long));
     rj->ctrl_fail = xcalloc((size_t)T, sizeof *rj->ctrl_fail);
+    rj->trace = xcalloc((size_t)T, sizeof *rj->trace);
+    for (int i = 0; i < T; i++)
+        rj->trace[i] = xcalloc((size_t)rj->nk, sizeof **rj->trace);
     if (o->angle_stats) {
         rj->angle = xcalloc((size_t)T, sizeof *rj->angle);
         for (int i = 0; i < T; i++)
@@ -104,6 +107,9 @@ static void job_free(struct run_job *rj)
             tech_acc_free(&rj->tech[i]);
     for (int kk = 0; kk < rj->nk; kk++)
         free((void *)rj->cdf[kk]);
+    for (int i = 0; i < T; i++)
+        free(rj->trace[i]);
+    free(rj->trace);
     free(rj->img);
     free(rj->stats);
     free(rj->done);
@@ -143,6 +149,9 @@ struct stats_merge {
     const struct angle_acc *angle; /* or NULL */
     struct mlt_stats *stats_out;
     struct angle_acc *angle_out;
+    struct chain_trace *const *trace; /* per thread, nk each */
+    struct chain_trace *trace_out;    /* per global thread, nk each */
+    int nk, g0;
 };
 
 static void add_thread_stats(void *p, int i)
@@ -150,6 +159,8 @@ static void add_thread_stats(void *p, int i)
     struct stats_merge *m = p;
     stats_merge(m->stats_out, &m->stats[i]);
     if (m->angle) angle_acc_merge(m->angle_out, &m->angle[i]);
+    /* a gather, not a sum: each global thread's slots are written by its own rank only */
+    memcpy(m->trace_out + (size_t)(m->g0 + i) * m->nk, m->trace[i], (size_t)m->nk * sizeof *m->trace_out);
 }
 
 /* The threads' images (film scale over the job's mutations), statistics, angle and technique
@@ -164,10 +175,14 @@ static void merge_results(struct run_job *rj, const struct scene *sc, struct mlt
         angle_acc_init(r->angle, W, H);
     }
     double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
-    struct stats_merge sm = {rj->stats, rj->angle, &r->stats, r->angle};
+    r->ntrace = rj->stride * rj->nk;
+    r->trace = xcalloc((size_t)r->ntrace, sizeof *r->trace);
+    struct stats_merge sm = {rj->stats, rj->angle, &r->stats, r->angle, rj->trace, r->trace, rj->nk, rj->g0};
     struct thread_results tr = {.threads = T, .img = rj->img, .scale = scale, .add = add_thread_stats, .ctx = &sm};
-    /* every field the merges add travels; the statistics are flat structs of counts and sums */
+    /* every field the merges add travels; the statistics are flat structs of counts and sums, the
+     * mixing records flat structs */
     tr.extra[tr.nextra++] = (struct dist_buf){&r->stats, sizeof r->stats};
+    tr.extra[tr.nextra++] = (struct dist_buf){r->trace, (size_t)r->ntrace * sizeof *r->trace};
     if (r->angle) {
         size_t cells = (size_t)W * H;
         tr.extra[tr.nextra++] = (struct dist_buf){r->angle->sum, cells * sizeof *r->angle->sum};
@@ -230,4 +245,6 @@ void mlt_result_free(struct mlt_result *r)
     r->angle = NULL;
     tech_acc_destroy(r->tech);
     r->tech = NULL;
+    free(r->trace);
+    r->trace = NULL;
 }

@@ -31,6 +31,7 @@
 #include "sampler/pss.h"
 #include "scene/scene.h"
 #include "stats/angle_change.h"
+#include "stats/chain_trace.h"
 #include "stats/mlt_stats.h"
 #include "stats/tech_image.h"
 
@@ -109,6 +110,11 @@ struct mlt_result {
     struct angle_acc *angle; /* with angle_stats */
     long ctrl_fail_forward, ctrl_fail_reverse; /* controlled steps: impossible inversions */
     struct tech_acc *tech;                     /* with technique_k */
+    /* Every chain's mixing record (stats/chain_trace.h; stats/mixing.h turns them into the
+     * diagnostics), the job's global threads in order, each thread's chains by length: over MPI
+     * ranks too, on rank 0. */
+    struct chain_trace *trace;
+    int ntrace;
 };
 
 /* Returns false (with a message) when the seed pass finds no light at all. */

@@ -33,7 +33,8 @@ struct run_job {
     struct tech_acc *tech;   /* per thread, with technique_k */
     long (*ctrl_fail)[2];    /* per thread: forward, reverse */
     long *done;
-    int g0, stride; /* this rank's first global thread; the job's threads (base/dist.h) */
+    struct chain_trace **trace; /* per thread, nk each: the chains' mixing records */
+    int g0, stride;             /* this rank's first global thread; the job's threads (base/dist.h) */
     double t0;
     struct progress prog;
     /* checkpoints (o->ckpt): the rendezvous, the run's normalisation, and on resume each thread's

@@ -41,9 +41,20 @@ static void scene_arg(const char *prog, const char *arg, void *ctx)
 /* The summary line and the input limits (base/input_limits.h), composed from the limits themselves. */
 static const char *help_tail(void)
 {
-    static char t[1024];
+    static char t[4096];
     snprintf(t, sizeof t,
              "Prints one summary line: method, samples, seconds, samples/s.\n"
+             "pssmlt, mmlt, pitp also write PREFIX.mixing.csv, the chains' mixing diagnostics: a row per path\n"
+             "length (mmlt, pitp) and an `all` row (core/mcmc/docs/outputs.md). rhat_contrib, rhat_target:\n"
+             "rank-normalised split-R-hat across the chains of where the state splats (its raster column) and\n"
+             "of its target; near 1 the chains agree, above 1.01 they do not yet (that length's image is not\n"
+             "to be trusted). ess_total: effective independent draws over the chains (under 100: too few);\n"
+             "ess_per_chain_min: the worst chain's; tau: iterations per effective draw (at least `thin`, the\n"
+             "traces' thinning). longest_reject_run_max: the most iterations a chain's state stayed unchanged;\n"
+             "stuck_share: chains whose run exceeds 1 %% of the chain, 100 iterations and what the length's\n"
+             "acceptance explains. startup_z: the first 1 %% of each chain against the rest (|z| > 3: start-up\n"
+             "bias). Without --quiet a warning on stderr names the lengths with R-hat > 1.01, ESS < 100 or a\n"
+             "stuck chain.\n"
              "Input limits (refused with one error line, exit status 2): scene files %ld MB; resolution %d per side\n"
              "and %ld pixels; textures %d per side, %ld texels, %d channels; meshes %ld vertices and triangles;\n"
              "paths %d segments (a larger max_bounces is capped with a warning).\n",

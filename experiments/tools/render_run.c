@@ -121,6 +121,7 @@ static int run_mcmc(struct render_args *a, const struct scene *sc, const struct 
     a->mlt.pss.width = camera_film_width(&sc->cam);
     a->mlt.pss.height = camera_film_height(&sc->cam);
     struct mlt_result r;
+    char mixing[1024] = "";
     *ok = mlt_render(sc, &a->mlt, &r, err, errlen);
     if (!*ok) {
         fprintf(stderr, "%s%s\n", a->resume ? "render: --resume: " : "", err);
@@ -129,6 +130,7 @@ static int run_mcmc(struct render_args *a, const struct scene *sc, const struct 
     *partial = r.partial;
     *ok = ctl->err[0] || !dist_root() ||
           (img_write_exr_png(r.img, a->out, err, errlen) && render_write_csv(a, &r, err, errlen) &&
+           render_write_mixing(a, &r, mixing, sizeof mixing, err, errlen) &&
            (!r.angle || render_write_angle(a, &r, err, errlen)) && (!r.tech || render_write_tech(a, &r, err, errlen)));
     if (*ok && !ctl->err[0] && dist_root())
         printf("%s%s: %ld mutations in %.2f s (+%.2f s seed pass, normalisation rel. s.e. %.2f %%), %.0f mutations/s "
@@ -140,6 +142,8 @@ static int run_mcmc(struct render_args *a, const struct scene *sc, const struct 
     if (*ok && !ctl->err[0] && dist_root()) {
         warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
         warn_normalisation(&r, a->mlt.seed_paths);
+        if (*mixing && !a->quiet)
+            fprintf(stderr, "render: warning: the chains mix poorly: %s; see %s.mixing.csv\n", mixing, a->out);
     }
     mlt_result_free(&r);
     return 0;

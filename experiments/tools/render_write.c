@@ -7,6 +7,7 @@
 #include "io/image.h"
 #include "mc/bdpt_tech.h"
 #include "mc/render.h"
+#include "stats/mixing.h"
 #include "tools/mlt_cli.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,6 +20,23 @@ static void meta_head(FILE *f, const struct render_args *a, const char *extra)
     csv_meta(f, "render", "%s --method %s%s", a->scene, a->method, extra);
     csv_meta_commit(f);
     csv_meta(f, "seed", "%llu", (unsigned long long)a->mlt.seed);
+}
+
+bool render_write_mixing(const struct render_args *a, const struct mlt_result *r, char *warn, size_t warnlen, char *err,
+                         size_t errlen)
+{
+    struct mixing_row rows[MAX_PATH_LENGTH + 2];
+    int n = mixing_rows(r->trace, r->ntrace, rows, MAX_PATH_LENGTH + 2);
+    mixing_warning_line(rows, n, warn, warnlen);
+    struct text_out t;
+    FILE *f = text_out_open(&t);
+    meta_head(f, a, "");
+    csv_meta(f, "mutations", "%ld", r->mutations);
+    csv_meta(f, "trace_cap", "%d", TRACE_CAP);
+    mixing_write_csv(f, rows, n);
+    char path[4096];
+    snprintf(path, sizeof path, "%s.mixing.csv", a->out);
+    return text_out_save(&t, path, err, errlen);
 }
 
 /* PREFIX.angle.exr (mean angle change per pixel, radians) and PREFIX.angle.csv (per length). */

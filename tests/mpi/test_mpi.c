@@ -134,6 +134,12 @@ static void same_bits(const char *method, const char *budget, bool mcmc, bool an
             cr_expect_str_eq(a, b, "%s: %s.csv differs from one process's", method, runs[i].name);
             free(a);
             free(b);
+            /* the chains' mixing records, gathered over the ranks in global thread order */
+            a = csv_body("single", "mixing.csv");
+            b = csv_body(runs[i].name, "mixing.csv");
+            cr_expect_str_eq(a, b, "%s: %s.mixing.csv differs from one process's", method, runs[i].name);
+            free(a);
+            free(b);
         }
         if (angle) {
             cr_expect(same_pixels("single", runs[i].name, "angle.exr"), "%s: %s.angle.exr differs", method,

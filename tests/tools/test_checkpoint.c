@@ -174,6 +174,7 @@ static void complete_and_compare(const char *run, const char *resume, bool mcmc)
     cr_assert(!find_temporary(tmp, sizeof tmp), "a completed run left a temporary of its checkpoint: %s", tmp);
     assert_same_pixels("ref.exr", "run.exr");
     if (mcmc) assert_same_stats("ref.csv", "run.csv");
+    if (mcmc) assert_same_stats("ref.mixing.csv", "run.mixing.csv"); /* the chains' traces are checkpointed */
 }
 
 /* One uninterrupted run, then the same run killed (SIGKILL) `kills` times at random moments, each
