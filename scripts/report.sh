@@ -76,6 +76,7 @@ else
       !/^#/ {
         base = get("id"); sub(/^harness:?/, "", base)
         need = (get("verdict") == "undecided" && get("seeds_needed") > 0) ? sprintf(" (%d seeds would decide it)", get("seeds_needed")) : ""
+        if (("mixing" in col) && get("mixing") != "") need = need " ⚠ " get("mixing")
         printf "<tr class=\"ledger-row\" data-claims=\"%s\"><td>%s</td><td>%s</td><td>%s (%s)</td><td>%s</td><td>%s %.4g ± %.2g</td><td>%.1f</td><td class=\"v-%s\">%s</td><td>%s</td><td>%s</td></tr>\n",
           href, get("id"), (base in said) ? said[base] : "", get("claim"), get("source"), get("statistic"), get("method"), get("value"), get("se"), get("z_min"),
           get("verdict"), get("verdict") need, get("scale"), get("command") }' href="../${f#results/}" results/claims-catalogue.csv "$f" | sed 's/&/\&amp;/g'

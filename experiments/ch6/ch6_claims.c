@@ -111,6 +111,20 @@ static const char *claim_id(const struct claim *cl, const struct ch6_claims_in *
     return buf;
 }
 
+/* The note on a row whose runs' chains mix poorly (issue 45: R-hat > 1.01, ESS < 100 or a stuck
+ * chain in any seed's run at the largest budget) among the methods with use[i]: into buf, "" for
+ * none. */
+static const char *mixing_flag(const struct ch6_claims_in *in, const bool *use, char *buf, size_t n)
+{
+    buf[0] = 0;
+    for (int i = 0; i < in->methods; i++) {
+        if (!use[i] || !(in->mean[i][Q_MIX_WARN] > 0)) continue;
+        size_t l = strlen(buf);
+        snprintf(buf + l, n - l, "%s%s", l ? " " : "chains mix poorly (R-hat; ESS; stuck): ", in->name[i]);
+    }
+    return buf;
+}
+
 static int find(const struct ch6_claims_in *in, const char *method)
 {
     for (int i = 0; i < in->methods; i++)
@@ -153,7 +167,12 @@ static void ratio_rows(struct claims *out, const struct ch6_claims_in *in, const
         snprintf(md, sizeof md, "%g within ±25 %% (z = %.1f)", rc->target, v.zmin);
         snprintf(stat, sizeof stat, "%s, %s / %s", rc->statistic, rc->a, rc->b);
         const struct claim c = {.id = rc->id, .direct = rc->direct};
+        bool use[MAX_METHODS] = {false};
+        char flag[256];
+        use[ai] = use[bi] = true;
+        out->flag = mixing_flag(in, use, flag, sizeof flag);
         claims_row(out, claim_id(&c, in, idbuf, sizeof idbuf), rc->source, rc->text, stat, rc->a, r, rse, zs, md, &v);
+        out->flag = NULL;
     }
 }
 
@@ -185,9 +204,11 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
             snprintf(against + b, sizeof against - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", in->name[i],
                      mean[i], se[i], z[i]);
         }
-        char idbuf[64];
+        char idbuf[64], flag[256];
+        out.flag = mixing_flag(in, have, flag, sizeof flag);
         claims_row(&out, claim_id(cl, in, idbuf, sizeof idbuf), cl->source ? cl->source : in->source, cl->text,
                    cl->statistic, cl->method, mean[mi], se[mi], zs, against, &v);
+        out.flag = NULL;
     }
     ratio_rows(&out, in, study);
     return claims_finish(&out, in->out, err, errlen);

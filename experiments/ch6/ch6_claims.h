@@ -26,6 +26,10 @@ enum ch6_q {
     Q_B_RSE,         /* the seed pass's relative standard error (the render CSV's b_rse) */
     Q_INSET_SPREAD,  /* block-relMSE spread over the blocks of the figure's two insets (--insets) */
     Q_INSET_BLUR8,   /* error share surviving an 8 x 8 blur, the mean over the two insets */
+    Q_RHAT,          /* the run's largest split-R-hat (PREFIX.mixing.csv's `all` row; MCMC only) */
+    Q_ESS_PER_S,     /* its effective sample size over its seconds */
+    Q_STUCK,         /* its share of stuck chains */
+    Q_MIX_WARN,      /* 1 when its mixing diagnostics warn (R-hat > 1.01, ESS < 100 or a stuck chain), else 0 */
     Q_COUNT
 };
 

@@ -22,22 +22,33 @@ static double relmse_slope(const struct ch6_equal *e, int mi)
     return ch6_loglog_slope(bx, by, e->nb);
 }
 
+/* The mixing diagnostics' cell: the largest R-hat and the ESS per second (means over the seeds), the
+ * share of stuck chains, and how many of the seeds' runs warn; empty for a method without chains. */
+static const char *mixing_cell(const double (*q)[2], char *cell, size_t n)
+{
+    if (isnan(q[Q_RHAT][0])) return "";
+    snprintf(cell, n, "%.3f / %.3g / %.0f %%%s", q[Q_RHAT][0], q[Q_ESS_PER_S][0], 100 * q[Q_STUCK][0],
+             q[Q_MIX_WARN][0] > 0 ? " ⚠" : "");
+    return cell;
+}
+
 static void table_rows(const struct ch6_equal *e, FILE *f)
 {
+    char cell[96];
     for (int mi = 0; mi < e->nm; mi++) {
         if (!e->ms[mi].available) {
-            fprintf(f, "| %s | not available in this build | | | | | | | | | | |\n", e->ms[mi].name);
+            fprintf(f, "| %s | not available in this build | | | | | | | | | | | |\n", e->ms[mi].name);
             continue;
         }
         const double(*q)[2] = e->sum[mi];
         fprintf(f,
                 "| %s | %.4g ± %.2g | %.4g ± %.2g | %.3g ± %.2g | %.3g ± %.2g | %.2f ± %.2f | %.0f ± %.0f | %.4f ± "
-                "%.4f | %.4f ± %.4f | %.2f | %.0f %% | %.2f %% |\n",
+                "%.4f | %.4f ± %.4f | %.2f | %.0f %% | %.2f %% | %s |\n",
                 e->ms[mi].name, q[Q_RELMSE][0], q[Q_RELMSE][1], q[Q_BLOCK_MEDIAN][0], q[Q_BLOCK_MEDIAN][1],
                 q[Q_SPREAD][0], q[Q_SPREAD][1], q[Q_BLUR8][0], q[Q_BLUR8][1], q[Q_CORRLEN][0], q[Q_CORRLEN][1],
                 q[Q_MPS][0], q[Q_MPS][1], q[Q_NONZERO][0], q[Q_NONZERO][1], q[Q_LARGE_NONZERO][0],
                 q[Q_LARGE_NONZERO][1], relmse_slope(e, mi), 100 * (1 - q[Q_RELMSE_SCALED][0] / q[Q_RELMSE][0]) + 0.0,
-                100 * q[Q_B_RSE][0]);
+                100 * q[Q_B_RSE][0], mixing_cell(q, cell, sizeof cell));
     }
 }
 
@@ -54,12 +65,14 @@ static void write_markdown(const struct ch6_equal *e)
             : e->wall  ? "s (wall clock)"
                        : "s (CPU seconds per thread)",
             e->threads, e->seeds, e->minlen, e->refspp);
-    fprintf(f,
-            "| method | relMSE | median block relMSE | block-relMSE spread (CV, %dx%d) | error share after 8x8 blur | "
-            "error correlation length (px) | mutations/s | non-zero proposals | large-step non-zero | relMSE slope vs "
-            "time | normalisation's share of relMSE | seed pass rel. s.e. |\n",
-            e->blk, e->blk);
-    fprintf(f, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    fprintf(
+        f,
+        "| method | relMSE | median block relMSE | block-relMSE spread (CV, %dx%d) | error share after 8x8 blur | "
+        "error correlation length (px) | mutations/s | non-zero proposals | large-step non-zero | relMSE slope vs "
+        "time | normalisation's share of relMSE | seed pass rel. s.e. | mixing: R-hat / ESS per s / stuck chains (⚠: "
+        "R-hat > 1.01, ESS < 100 or a stuck chain in a run) |\n",
+        e->blk, e->blk);
+    fprintf(f, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     table_rows(e, f);
     snprintf(path, sizeof path, "%s/%s.md", e->out, e->name);
     if (!text_out_commit(&t, path, err, sizeof err)) die(DIE_RUNTIME, e->prog, "%s", err);

@@ -86,6 +86,30 @@ static double nonzero_fraction(const struct ch6_equal *e, const struct csv_file 
     return att > 0 ? nz / att : NAN;
 }
 
+/* The run's mixing diagnostics (core/stats/mixing.h), the `all` row of PREFIX.mixing.csv beside the
+ * statistics CSV at path: nan where the method has no chains (pt, bdpt). */
+static void mixing_statistics(const struct ch6_equal *e, struct ch6_run *r, const char *path)
+{
+    r->q[Q_RHAT] = r->q[Q_ESS_PER_S] = r->q[Q_STUCK] = r->q[Q_MIX_WARN] = NAN;
+    char mpath[4200], err[4400];
+    snprintf(mpath, sizeof mpath, "%.*s.mixing.csv", (int)strlen(path) - 4, path);
+    if (access(mpath, R_OK)) return;
+    struct csv_file *c = csv_load(mpath, err, sizeof err);
+    if (!c) die(DIE_RUNTIME, e->prog, "%s", err);
+    int cl = csv_column(c, "length", err, sizeof err), c1 = csv_column(c, "rhat_contrib", err, sizeof err),
+        c2 = csv_column(c, "rhat_target", err, sizeof err), ce = csv_column(c, "ess_total", err, sizeof err),
+        cs = csv_column(c, "stuck_share", err, sizeof err), cw = csv_column(c, "warning", err, sizeof err);
+    if (cl < 0 || c1 < 0 || c2 < 0 || ce < 0 || cs < 0 || cw < 0) die(DIE_RUNTIME, e->prog, "%s", err);
+    for (int i = 0; i < c->nrows; i++) {
+        if (strcmp(csv_cell(c, i, cl), "all")) continue;
+        r->q[Q_RHAT] = fmax(csv_number(c, i, c1), csv_number(c, i, c2));
+        r->q[Q_ESS_PER_S] = r->seconds > 0 ? csv_number(c, i, ce) / r->seconds : NAN;
+        r->q[Q_STUCK] = csv_number(c, i, cs);
+        r->q[Q_MIX_WARN] = strcmp(csv_cell(c, i, cw), "ok") != 0;
+    }
+    csv_free(c);
+}
+
 /* The render's statistics CSV: the counts every run reports, and those a method may lack (nan). */
 static void render_statistics(const struct ch6_equal *e, struct ch6_run *r, const char *path)
 {
@@ -200,6 +224,7 @@ static void one_run(void *ctx, int s, int bi, int mi)
     img_destroy(im);
     snprintf(path, sizeof path, "%.4000s.csv", prefix);
     render_statistics(e, r, path);
+    mixing_statistics(e, r, path);
 }
 
 void ch6_runs(struct ch6_equal *e)

@@ -45,6 +45,10 @@ static const struct column run_cols[] = {COL_STRING(struct run_row, "scene", sce
                                          RUN_Q("b_rse", "%.6g", Q_B_RSE),
                                          RUN_Q("inset_block_spread", "%.6g", Q_INSET_SPREAD),
                                          RUN_Q("inset_blur8_share", "%.6g", Q_INSET_BLUR8),
+                                         RUN_Q("rhat", "%.4g", Q_RHAT),
+                                         RUN_Q("ess_per_s", "%.4g", Q_ESS_PER_S),
+                                         RUN_Q("stuck_share", "%.4g", Q_STUCK),
+                                         RUN_Q("mixing_warning", "%.0f", Q_MIX_WARN),
                                          {0}};
 
 /* A row of summary.csv: each quantity's mean and its standard error over seeds */
@@ -75,6 +79,10 @@ static const struct column summary_cols[] = {COL_STRING(struct summary_row, "sce
                                              SUM_Q("b_rse", Q_B_RSE),
                                              SUM_Q("inset_block_spread", Q_INSET_SPREAD),
                                              SUM_Q("inset_blur8_share", Q_INSET_BLUR8),
+                                             SUM_Q("rhat", Q_RHAT),
+                                             SUM_Q("ess_per_s", Q_ESS_PER_S),
+                                             SUM_Q("stuck_share", Q_STUCK),
+                                             SUM_Q("mixing_warning", Q_MIX_WARN),
                                              {0}};
 
 /* A row of stats.csv */
@@ -171,7 +179,9 @@ static void write_stats(const struct ch6_equal *e)
               {Q_NONZERO_CONN, "nonzero_per_connection"},
               {Q_B_RSE, "b_rse"},
               {Q_INSET_SPREAD, "inset_block_spread"},
-              {Q_INSET_BLUR8, "inset_blur8_share"}};
+              {Q_INSET_BLUR8, "inset_blur8_share"},
+              {Q_RHAT, "rhat"},
+              {Q_STUCK, "stuck_share"}}; /* not ESS per second: it depends on the machine's speed */
     struct table t;
     FILE *f = table_open(&t, stat_cols);
     csv_meta(f, NULL, "ch6_equal: mean +- standard error over %d seeds at the largest budget", e->seeds);

@@ -23,7 +23,8 @@ void claims_begin(struct claims *cl, const char *scale, const char *command, con
     csv_meta(cl->c, NULL,
              "z in the claimed direction over seeds; holds: z >= 2 (against every other method, or inside "
              "a similarity margin); contradicted: z <= -2; seeds_needed: per method, for |z_min| = 2");
-    fprintf(cl->c, "id,source,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n");
+    fprintf(cl->c,
+            "id,source,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command,mixing\n");
     fprintf(cl->m,
             "%s (mean ± standard error over seeds; z in the claimed direction; holds: z ≥ 2, contradicted: "
             "z ≤ −2):\n\n| id | claim | statistic | value | against (z) | verdict |\n| --- | --- | --- | ---: | --- | "
@@ -50,12 +51,14 @@ void claims_row(struct claims *cl, const char *id, const char *source, const cha
                  v->zmin > 0 ? "holds" : "contradicted");
     else if (!strcmp(v->word, "undecided"))
         snprintf(need, sizeof need, "; no effect seen");
-    char f[7][512];
-    fprintf(cl->c, "%s,%s,%s,%s,%s,%.6g,%.3g,%s,%.3f,%s,%ld,%s,%s\n", field(id, f[6], 512), field(source, f[0], 512),
+    char f[8][512];
+    const char *flag = cl->flag ? cl->flag : "";
+    fprintf(cl->c, "%s,%s,%s,%s,%s,%.6g,%.3g,%s,%.3f,%s,%ld,%s,%s,%s\n", field(id, f[6], 512), field(source, f[0], 512),
             field(claim, f[1], 512), field(statistic, f[2], 512), field(method, f[3], 512), value, se,
-            field(versus, f[4], 512), v->zmin, v->word, v->seeds_needed, field(cl->scale, f[5], 512), cl->command);
-    fprintf(cl->m, "| %s | %s | %s | %s %.4g ± %.2g | %s | **%s**%s |\n", id, claim, statistic, method, value, se,
-            versus_md, v->word, need);
+            field(versus, f[4], 512), v->zmin, v->word, v->seeds_needed, field(cl->scale, f[5], 512), cl->command,
+            field(flag, f[7], 512));
+    fprintf(cl->m, "| %s | %s | %s | %s %.4g ± %.2g | %s | **%s**%s%s%s |\n", id, claim, statistic, method, value, se,
+            versus_md, v->word, need, *flag ? "; ⚠ " : "", flag);
 }
 
 char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen)

@@ -13,6 +13,10 @@ struct claims {
     size_t clen, mlen;
     FILE *c, *m;
     const char *scale, *command;
+    /* Set before claims_row: a note on the runs behind the row (e.g. their chains' mixing
+     * diagnostics warn), its `mixing` column and a mark beside its verdict; NULL or "" for none. The
+     * verdict stands; the note says how much to trust it. */
+    const char *flag;
 };
 
 /* Starts both files: `title` heads them (a printf format). */

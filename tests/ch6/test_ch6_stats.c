@@ -243,18 +243,18 @@ Test(ch6_tool, skips_a_method_the_renderer_lacks_and_writes_its_tables, .timeout
     char *claims = slurp_file(cmd);
     cr_assert(
         strstr(claims,
-               "\nid,source,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command\n"),
+               "\nid,source,claim,statistic,method,value,se,z_by_method,z_min,verdict,seeds_needed,scale,command,mixing\n"),
         "%s", claims);
     int rows = 0;
     for (char *line = strtok(claims, "\n"); line; line = strtok(NULL, "\n")) {
         if (line[0] == '#' || !strncmp(line, "id,", 3)) continue;
-        char *f[13] = {0};
+        char *f[14] = {0};
         int n = 0;
-        for (char *c = line; n < 13; c = strchr(c, ',') + 1) {
+        for (char *c = line; n < 14; c = strchr(c, ',') + 1) {
             f[n++] = c;
             if (!strchr(c, ',')) break;
         }
-        cr_assert_eq(n, 13, "%s", line);
+        cr_assert_eq(n, 14, "%s", line);
         cr_assert(!strncmp(f[0], "T32,", 4), "%s", line); /* the catalogue's ID (results/claims-catalogue.csv) */
         cr_assert(!strncmp(f[2], "(1) PSSMLT is worst,", 20) && !strncmp(f[4], "pssmlt,", 7), "%s", line);
         cr_assert(strstr(f[7], "big="), "%s", line);
