@@ -143,6 +143,8 @@ static const struct ratio_claim {
     /* MMLT paper §5: "an improvement of approximately 2.5 times" in the share of non-zero samples */
     {"M-e", "MMLT paper §5", "MMLT's share of non-zero samples is about 2.5 times PSSMLT's",
      "non-zero fraction per proposal", "mmlt", "pssmlt", Q_NONZERO, 2.5, true, "equal-time ratio"},
+    {"M-e", "MMLT paper §5", "MMLT's share of non-zero samples is about 2.5 times PSSMLT's",
+     "non-zero fraction per connection", "mmlt", "pssmlt", Q_NONZERO_CONN, 2.5, true, "equal-time ratio"},
     /* thesis §4.2 (make cdc-ch6): "in other scenes the effect of CDC is usually subtle" */
     {"T11", "thesis §4.2", "CDC's effect is usually subtle in other scenes (relMSE within ±25 %)", "relMSE",
      "pssmlt-cdc", "pssmlt", Q_RELMSE, 1, false, "cdc"},
