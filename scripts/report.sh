@@ -113,7 +113,7 @@ for e in "${entries[@]}"; do
     for vf in ${verdict:1}; do
       # "- " lines, or the rows of a claims.md table (id | claim | statistic | value | against | verdict)
       if [ -f "$vf" ]; then { { grep '^- ' "$vf" || true; } | sed 's/^- //'; { grep '^| ' "$vf" || true; } | { grep -v -e '^| claim |' -e '^| id |' -e '^| ---' || true; } |
-          sed -e 's/^| //; s/ |$//; s/ | /: /; s/ | /; /g'; } | esc | sed -e 's|\*\*\([^*]*\)\*\*|<b>\1</b>|g' -e 's|^|<li>|; s|$|</li>|'
+          sed -e 's/^| //; s/ |$//; s/ | /: /; s/ | /; /g; s/\\|/|/g'; } | esc | sed -e 's|\*\*\([^*]*\)\*\*|<b>\1</b>|g' -e 's|^|<li>|; s|$|</li>|'
       else echo "<li class=\"missing\">$(basename "$vf") not made yet: <code>$(printf '%s' "$cmd" | esc)</code></li>"; fi
     done
     echo "</ul></div>"

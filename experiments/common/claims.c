@@ -41,6 +41,19 @@ static const char *field(const char *s, char *buf, size_t n)
     return buf;
 }
 
+/* A text cell of the Markdown table: its pipes escaped, so that a claim such as "|j - i| is small"
+ * keeps the table's columns. */
+static const char *md_cell(const char *s, char *buf, size_t n)
+{
+    size_t k = 0;
+    for (; *s && k + 2 < n; s++) {
+        if (*s == '|') buf[k++] = '\\';
+        buf[k++] = *s;
+    }
+    buf[k] = 0;
+    return buf;
+}
+
 void claims_row(struct claims *cl, const char *id, const char *source, const char *claim, const char *statistic,
                 const char *method, double value, double se, const char *versus, const char *versus_md,
                 const struct verdict *v)
@@ -57,8 +70,10 @@ void claims_row(struct claims *cl, const char *id, const char *source, const cha
             field(claim, f[1], 512), field(statistic, f[2], 512), field(method, f[3], 512), value, se,
             field(versus, f[4], 512), v->zmin, v->word, v->seeds_needed, field(cl->scale, f[5], 512), cl->command,
             field(flag, f[7], 512));
-    fprintf(cl->m, "| %s | %s | %s | %s %.4g ± %.2g | %s | **%s**%s%s%s |\n", id, claim, statistic, method, value, se,
-            versus_md, v->word, need, *flag ? "; ⚠ " : "", flag);
+    char m[3][1024];
+    fprintf(cl->m, "| %s | %s | %s | %s %.4g ± %.2g | %s | **%s**%s%s%s |\n", id, md_cell(claim, m[0], sizeof m[0]),
+            md_cell(statistic, m[1], sizeof m[1]), method, value, se, md_cell(versus_md, m[2], sizeof m[2]), v->word,
+            need, *flag ? "; ⚠ " : "", flag);
 }
 
 char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen)
