@@ -83,13 +83,8 @@ void ch4_claim_extreme(struct claims *cl, const char *id, const char *source, co
     for (int i = 0; i < n; i++)
         mean_se(x + i * seeds, seeds, &mean[i], &se[i]);
     struct verdict v = verdict_extreme(mean, se, have, n, m, sign, seeds, z);
-    char zs[512] = "", md[1024] = "";
-    for (int i = 0; i < n; i++) {
-        if (isnan(z[i])) continue;
-        size_t a = strlen(zs), b = strlen(md);
-        snprintf(zs + a, sizeof zs - a, "%s%s=%.2f", a ? ";" : "", names[i], z[i]);
-        snprintf(md + b, sizeof md - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", names[i], mean[i], se[i], z[i]);
-    }
+    char zs[512], md[1024];
+    claims_versus(names, mean, se, z, n, zs, sizeof zs, md, sizeof md);
     claims_row(cl, id, source, claim, stat, names[m], mean[m], se[m], zs, md, &v);
 }
 

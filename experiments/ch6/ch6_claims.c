@@ -184,7 +184,9 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
     claims_begin(&out, in->scale, in->command, "Claims on %s at %g %s per run, %d seeds", in->scene, in->budget,
                  in->unit, in->seeds);
     double mean[MAX_METHODS], se[MAX_METHODS], z[MAX_METHODS];
-    const char *study = in->study ? in->study : "equal-time";
+    const char *study = in->study ? in->study : "equal-time", *names[MAX_METHODS];
+    for (int i = 0; i < in->methods && i < MAX_METHODS; i++)
+        names[i] = in->name[i];
     for (size_t k = 0; k < sizeof claims / sizeof *claims; k++) {
         const struct claim *cl = &claims[k];
         if (!ch6_listed(cl->studies, study)) continue;
@@ -198,14 +200,8 @@ char *ch6_write_claims(const struct ch6_claims_in *in, char *err, size_t errlen)
         }
         if (!others) continue; /* none of those it is compared with ran */
         struct verdict v = verdict_extreme(mean, se, have, in->methods, mi, cl->sign, in->seeds, z);
-        char zs[512] = "", against[1024] = "";
-        for (int i = 0; i < in->methods; i++) {
-            if (isnan(z[i])) continue;
-            size_t a = strlen(zs), b = strlen(against);
-            snprintf(zs + a, sizeof zs - a, "%s%s=%.2f", a ? ";" : "", in->name[i], z[i]);
-            snprintf(against + b, sizeof against - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", in->name[i],
-                     mean[i], se[i], z[i]);
-        }
+        char zs[512], against[1024];
+        claims_versus(names, mean, se, z, in->methods, zs, sizeof zs, against, sizeof against);
         char idbuf[64], flag[256];
         out.flag = mixing_flag(in, have, flag, sizeof flag);
         claims_row(&out, claim_id(cl, in, idbuf, sizeof idbuf), cl->source ? cl->source : in->source, cl->text,

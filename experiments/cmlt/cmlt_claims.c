@@ -40,14 +40,7 @@ static struct verdict extreme(const double *mean, const double *se, int m, int s
     for (int a = 0; a < CMLT_NALGO; a++)
         have[a] = !against || (against >> a & 1u) || a == m;
     struct verdict v = verdict_extreme(mean, se, have, CMLT_NALGO, m, sign, seeds, z);
-    zs[0] = md[0] = 0;
-    for (int a = 0; a < CMLT_NALGO; a++) {
-        if (isnan(z[a])) continue;
-        size_t p = strlen(zs), q = strlen(md);
-        snprintf(zs + p, zlen - p, "%s%s=%.2f", p ? ";" : "", cmlt_algo_names[a], z[a]);
-        snprintf(md + q, mlen - q, "%s%s %.4g ± %.2g (z = %.1f)", q ? "; " : "", cmlt_algo_names[a], mean[a], se[a],
-                 z[a]);
-    }
+    claims_versus(cmlt_algo_names, mean, se, z, CMLT_NALGO, zs, zlen, md, mlen);
     return v;
 }
 

@@ -2,6 +2,7 @@
 #include "common/claims.h"
 #include "base/util.h"
 #include "common/csv_meta.h"
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,6 +40,18 @@ static const char *field(const char *s, char *buf, size_t n)
     for (char *c = buf; *c; c++)
         if (*c == ',' || *c == '\n') *c = ';';
     return buf;
+}
+
+void claims_versus(const char *const *names, const double *mean, const double *se, const double *z, int k, char *versus,
+                   size_t vlen, char *versus_md, size_t mlen)
+{
+    versus[0] = versus_md[0] = 0;
+    for (int i = 0; i < k; i++) {
+        if (isnan(z[i])) continue;
+        size_t a = strlen(versus), b = strlen(versus_md);
+        snprintf(versus + a, vlen - a, "%s%s=%.2f", a ? ";" : "", names[i], z[i]);
+        snprintf(versus_md + b, mlen - b, "%s%s %.4g ± %.2g (z = %.1f)", b ? "; " : "", names[i], mean[i], se[i], z[i]);
+    }
 }
 
 /* A text cell of the Markdown table: its pipes escaped, so that a claim such as "|j - i| is small"

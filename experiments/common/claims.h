@@ -29,6 +29,10 @@ void claims_begin(struct claims *cl, const char *scale, const char *command, con
 void claims_row(struct claims *cl, const char *id, const char *source, const char *claim, const char *statistic,
                 const char *method, double value, double se, const char *versus, const char *versus_md,
                 const struct verdict *v);
+/* The comparison's two forms for claims_row from verdict_extreme's z over k methods: "NAME=z;..."
+ * into versus and "NAME mean ± se (z = z); ..." into versus_md, for the methods whose z is a number. */
+void claims_versus(const char *const *names, const double *mean, const double *se, const double *z, int k, char *versus,
+                   size_t vlen, char *versus_md, size_t mlen);
 /* Writes DIR/claims.csv and DIR/claims.md and returns the Markdown (caller frees), or NULL with one
  * line in err. */
 char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen);
