@@ -29,7 +29,7 @@
 #   inputs/           check_stats's input CSVs (a copy of results/baselines/ at record time)
 #
 # Timing removed from the text outputs (everything else in them is compared):
-#   comment lines `# commit ...`, `# seconds ...`, `# seed_seconds ...`, `# mutations_per_second ...`;
+#   comment lines `# commit ...`, `# seconds ...`, `# seed_seconds ...`, `# mutations_per_second ...`, `# samples_per_second ...`;
 #   `commit=...` and `seconds=...` in table1_cmlt's metadata line, `Wall time X s` in table1.md;
 #   CSV columns whose name is or contains seconds/secs/time/wall as a word, or per_s/per_second
 #   (render: none; fig4_3 runs: seconds; fig4_5: seconds; fig5_6: mutations_per_second;
@@ -283,7 +283,7 @@ COLRE='(^|_)(seconds|secs|time|wall)(_|$)|per_s(_|$)|per_second'
 strip_csv() {
   awk -F, -v re="$COLRE" '
     /^#/ {
-      if ($0 ~ /^# (commit|seconds|seed_seconds|mutations_per_second)( |$)/) next
+      if ($0 ~ /^# (commit|seconds|seed_seconds|mutations_per_second|samples_per_second)( |$)/) next
       gsub(/ (commit|seconds)=[^ ]*/, "")
       print; next
     }

@@ -24,9 +24,10 @@ struct chain {
     struct splat_list cur;
     double f;
     int k, tech;
-    double scale;   /* b_k / P(k): the chain's splat weight */
-    double xsum;    /* MCTLS: sum over techniques of the current numbers' targets */
-    double pending; /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
+    double scale;      /* b_k / P(k): the chain's splat weight */
+    struct image *img; /* where its splats go: the thread's image, or its length's (progressive_norm) */
+    double xsum;       /* MCTLS: sum over techniques of the current numbers' targets */
+    double pending;    /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
     bool xsum_valid;
     struct ctrl_path *path;     /* controlled steps and angle statistics: the current subpaths */
     struct mmlt_path *x;        /* PITP: the current path in its technique's form (swapped with a spare on accept) */
@@ -48,6 +49,7 @@ struct mlt_thread {
     struct mlt_stats *st;
     long *ctrl_fail; /* [2]: forward, reverse */
     struct image *img;
+    struct image **len_img;    /* nk, or NULL (progressive_norm) */
     struct angle_acc *angle;   /* or NULL */
     struct tech_acc *tech;     /* or NULL */
     struct chain_trace *trace; /* nk: the chains' mixing records */

@@ -76,6 +76,8 @@ void mlt_thread_save(struct ckpt_buf *b, const struct scene *sc, const struct ml
     CKPT_PUT(b, *t->st);
     ckpt_put(b, t->ctrl_fail, 2 * sizeof *t->ctrl_fail);
     ckpt_put_image(b, t->img);
+    for (int i = 0; t->len_img && i < t->nk; i++)
+        ckpt_put_image(b, t->len_img[i]);
     if (t->angle) {
         size_t np = (size_t)t->angle->w * t->angle->h;
         ckpt_put(b, t->angle->sum, np * sizeof(double));
@@ -117,6 +119,8 @@ bool mlt_thread_load(struct ckpt_buf *b, const struct scene *sc, const struct ml
     CKPT_GET(b, *t->st);
     ckpt_get(b, t->ctrl_fail, 2 * sizeof *t->ctrl_fail);
     ckpt_get_image(b, t->img);
+    for (int i = 0; t->len_img && i < t->nk; i++)
+        ckpt_get_image(b, t->len_img[i]);
     if (t->angle) {
         size_t np = (size_t)t->angle->w * t->angle->h;
         ckpt_get(b, t->angle->sum, np * sizeof(double));

@@ -20,7 +20,7 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
     wk->scratch = xmalloc(sizeof *wk->scratch);
     wk->scratch->nf = (struct nonfinite){{0}};
     wk->scratch->tech_k = 0; /* the MCMC methods split states by technique themselves (tech_split.h) */
-    wk->ch = xcalloc((size_t)j->nk, sizeof *wk->ch);
+    wk->ch = xcalloc((size_t)j->nch, sizeof *wk->ch);
     wk->mctls_buf = xmalloc(sizeof *wk->mctls_buf);
     wk->st = &j->stats[tid];
     wk->img = j->img[tid];
@@ -36,24 +36,39 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
              0x9E3779B97F4A7C15ULL + (uint64_t)wk->global_tid); /* streams and budgets are the job's global thread's */
     wk->track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     wk->ctrl = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *wk->ctrl) : NULL;
-    wk->saved = (struct mlt_thread){wk->ch,        j->nk,   &wk->r,    &wk->n,   &wk->scratch->nf, wk->st,
-                                    wk->ctrl_fail, wk->img, wk->angle, wk->tech, j->trace[tid]};
+    wk->saved = (struct mlt_thread){.ch = wk->ch,
+                                    .nk = j->nch,
+                                    .r = &wk->r,
+                                    .n = &wk->n,
+                                    .nonfinite = &wk->scratch->nf,
+                                    .st = wk->st,
+                                    .ctrl_fail = wk->ctrl_fail,
+                                    .img = wk->img,
+                                    .len_img = j->len_img ? j->len_img[tid] : NULL,
+                                    .angle = wk->angle,
+                                    .tech = wk->tech,
+                                    .trace = j->trace[tid]};
 }
 
-/* Every chain from a seed sample (seed_pass.c), or set up for the state a checkpoint left it in. */
+/* Every chain from a seed sample (seed_pass.c), or set up for the state a checkpoint left it in.
+ * Under one_chain, the thread's one chain starts at a length drawn as its target weighs them
+ * (one_chain.c); its target is f_k(u) over all lengths, so its splats weigh sum_k b_k. */
 static void chains_start(struct worker *wk)
 {
     const struct run_job *j = wk->job;
-    for (int kk = 0; kk < j->nk; kk++) {
-        struct chain *c = &wk->ch[kk];
+    bool one = wk->opts->one_chain, by_length = wk->multiplexed && !one;
+    for (int ci = 0; ci < j->nch; ci++) {
+        struct chain *c = &wk->ch[ci];
+        int kk = !one ? ci : j->resume ? 0 : one_chain_first(wk); /* a resumed chain's k is loaded */
         mutations_chain_alloc(c);
         c->k = kk + 1;
-        c->scale = j->scale[kk];
-        c->dropped = &wk->scratch->nf.len[wk->multiplexed ? c->k : 0];
-        c->trace = &j->trace[wk->tid][kk];
-        trace_init(c->trace, wk->multiplexed ? c->k : 0); /* a resumed run's comes from the checkpoint */
+        c->scale = one ? j->res->b : j->scale[kk];
+        c->img = j->len_img ? j->len_img[wk->tid][kk] : wk->img;
+        c->dropped = &wk->scratch->nf.len[by_length ? c->k : 0];
+        c->trace = &j->trace[wk->tid][ci];
+        trace_init(c->trace, by_length ? c->k : 0); /* a resumed run's comes from the checkpoint */
         if (!j->resume) {
-            if (j->cdf[kk]) chain_start(wk, c, kk);
+            if (c->scale > 0) chain_start(wk, c, kk);
             continue;
         }
         if (!(c->scale > 0)) continue; /* a length without light: never started */
@@ -67,13 +82,7 @@ static void chains_start(struct worker *wk)
 static struct chain *pick_chain(struct worker *wk)
 {
     const struct run_job *j = wk->job;
-    int kk = 0;
-    if (j->nk > 1) {
-        double u = rng_uniform(&wk->r) * j->kcdf[j->nk];
-        while (kk < j->nk - 1 && j->kcdf[kk + 1] <= u)
-            kk++;
-    }
-    return &wk->ch[kk];
+    return &wk->ch[j->nch > 1 ? length_index(j, rng_uniform(&wk->r)) : 0];
 }
 
 /* Where the state's contribution lands in the image: the luminance-weighted mean raster column of
@@ -102,6 +111,10 @@ static void iterate(struct worker *wk)
     bool large = rng_uniform(&wk->r) < o->p_large;
     double t_start = o->time_proposals ? now_seconds() : 0;
     double px0 = c->cur.s[0].px, py0 = c->cur.s[0].py;
+    if (wk->job->len_img) { /* progressive_norm.c discards a missed length's iterations without light */
+        wk->st->iters[c->k]++;
+        wk->st->zero_iters[c->k] += !(c->f > 0);
+    }
     mutations_iterate(wk, c, large, t_start); /* the registry's steps (mutation.h) */
     bool moved = c->cur.s[0].px != px0 || c->cur.s[0].py != py0;
     if (trace_step(c->trace, moved)) trace_keep(c->trace, state_column(c), c->f);
@@ -137,8 +150,8 @@ static void worker_finish(struct worker *wk)
         mlt_thread_save(&j->sync.slot[wk->tid], j->sc, &wk->saved);
         ckpt_sync_finish(&j->sync);
     }
-    for (int kk = 0; kk < j->nk; kk++) {
-        pay_current(wk->img, &wk->ch[kk]);
+    for (int kk = 0; kk < j->nch; kk++) {
+        pay_current(wk->ch[kk].img, &wk->ch[kk]);
         free(wk->ch[kk].path);
         free(wk->ch[kk].x);
         mutations_chain_free(&wk->ch[kk]);

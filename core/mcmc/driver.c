@@ -81,7 +81,7 @@ static void job_alloc(struct run_job *rj, const struct scene *sc)
     rj->ctrl_fail = xcalloc((size_t)T, sizeof *rj->ctrl_fail);
     rj->trace = xcalloc((size_t)T, sizeof *rj->trace);
     for (int i = 0; i < T; i++)
-        rj->trace[i] = xcalloc((size_t)rj->nk, sizeof **rj->trace);
+        rj->trace[i] = xcalloc((size_t)rj->nch, sizeof **rj->trace);
     if (o->angle_stats) {
         rj->angle = xcalloc((size_t)T, sizeof *rj->angle);
         for (int i = 0; i < T; i++)
@@ -91,6 +91,15 @@ static void job_alloc(struct run_job *rj, const struct scene *sc)
     for (int i = 0; i < T; i++) {
         rj->img[i] = img_create(W, H);
         rj->img[i]->tent = sc->cam.filter == FILTER_TENT;
+    }
+    if (!o->progressive_norm) return;
+    rj->len_img = xcalloc((size_t)T, sizeof *rj->len_img);
+    for (int i = 0; i < T; i++) {
+        rj->len_img[i] = xcalloc((size_t)rj->nk, sizeof **rj->len_img);
+        for (int kk = 0; kk < rj->nk; kk++) {
+            rj->len_img[i][kk] = img_create(W, H);
+            rj->len_img[i][kk]->tent = rj->img[i]->tent;
+        }
     }
 }
 
@@ -110,6 +119,12 @@ static void job_free(struct run_job *rj)
     for (int i = 0; i < T; i++)
         free(rj->trace[i]);
     free(rj->trace);
+    for (int i = 0; rj->len_img && i < T; i++) {
+        for (int kk = 0; kk < rj->nk; kk++)
+            img_destroy(rj->len_img[i][kk]);
+        free(rj->len_img[i]);
+    }
+    free(rj->len_img);
     free(rj->img);
     free(rj->stats);
     free(rj->done);
@@ -175,9 +190,9 @@ static void merge_results(struct run_job *rj, const struct scene *sc, struct mlt
         angle_acc_init(r->angle, W, H);
     }
     double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
-    r->ntrace = rj->stride * rj->nk;
+    r->ntrace = rj->stride * rj->nch;
     r->trace = xcalloc((size_t)r->ntrace, sizeof *r->trace);
-    struct stats_merge sm = {rj->stats, rj->angle, &r->stats, r->angle, rj->trace, r->trace, rj->nk, rj->g0};
+    struct stats_merge sm = {rj->stats, rj->angle, &r->stats, r->angle, rj->trace, r->trace, rj->nch, rj->g0};
     struct thread_results tr = {.threads = T, .img = rj->img, .scale = scale, .add = add_thread_stats, .ctx = &sm};
     /* every field the merges add travels; the statistics are flat structs of counts and sums, the
      * mixing records flat structs */
@@ -209,6 +224,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     rj.sc = sc;
     rj.o = &o;
     rj.nk = o.method != MLT_PSSMLT ? o.max_length : 1;
+    rj.nch = o.one_chain ? 1 : rj.nk;
     rj.res = r;
     rj.g0 = dist_thread0(o.threads);
     rj.stride = dist_size() * o.threads;
@@ -228,6 +244,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
         r->mutations = counts[0];
         r->ctrl_fail_forward = counts[1];
         r->ctrl_fail_reverse = counts[2];
+        normalisation_from_large_steps(&rj, r); /* under progressive_norm, into the threads' images */
         merge_results(&rj, sc, r);
     } else {
         snprintf(err, errlen, "the checkpoint's state does not fit this run's chains");

@@ -141,7 +141,7 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
     bool acc, changed, nonzero;
     wk->scratch->conn_tried = wk->scratch->conn_nonzero = 0;
     double a =
-        mctls_step(&wk->path_ctx, wk->opts, c, wk->scratch, wk->mctls_buf, &wk->r, wk->img, &acc, &changed, &nonzero);
+        mctls_step(&wk->path_ctx, wk->opts, c, wk->scratch, wk->mctls_buf, &wk->r, c->img, &acc, &changed, &nonzero);
     mutation_take_connections(wk);
     stats_record(wk->st, PROPOSAL_MCTLS, c->k, changed, a, acc, nonzero, mutation_elapsed(wk, t_start));
 }

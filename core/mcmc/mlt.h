@@ -78,6 +78,12 @@ struct mlt_opts {
      * (§4.3.1: 2k + 2 rays more per step), for fig4.6's test of that count. */
     bool mctls_recompute;
     bool uniform_lengths; /* MMLT: every length gets the same share of mutations, not b_k */
+    /* MMLT paper §4: b_k re-estimated at the end from the seed pass and every large step's fresh
+     * numbers together (progressive_norm.c); the image's length-k part is rescaled to it exactly */
+    bool progressive_norm;
+    /* MMLT paper §4's alternative: one chain per thread over all lengths, the length changed by the
+     * large steps only (one_chain.c), instead of one chain per length */
+    bool one_chain;
     bool time_proposals;  /* record each proposal's time in the statistics (two clock reads) */
     bool max_heuristic;   /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */
     bool power_heuristic; /* MMLT: the power heuristic (beta = 2) in the target (MMLT paper §6) */
@@ -103,6 +109,12 @@ struct mlt_result {
     /* The seed pass's relative standard errors: of b and of each b_k (sd / (mean sqrt n) over the
      * seed paths; 0 where b_k is 0). They move every MCMC image's mean, and a length's share. */
     double b_rse, b_k_rse[MAX_PATH_LENGTH + 1];
+    /* The large steps' own estimate of the same (every large step of fresh numbers is an independent
+     * sample of its length's b_k): its samples, value and relative standard error; b_image, the
+     * estimate the image is scaled to: the seed pass's, or under progressive_norm both pooled. */
+    long large_n[MAX_PATH_LENGTH + 1];
+    double bl, bl_rse, bl_k[MAX_PATH_LENGTH + 1], bl_k_rse[MAX_PATH_LENGTH + 1];
+    double b_image, b_image_rse;
     long mutations;
     double seconds, seed_seconds;
     long nonfinite;          /* contributions dropped as NaN or infinite; by length in stats.nonfinite */

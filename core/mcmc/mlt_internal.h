@@ -23,11 +23,13 @@
 struct run_job {
     const struct scene *sc;
     const struct mlt_opts *o;
-    int nk;                                 /* chains per thread: 1 (PSSMLT) or K (MMLT) */
+    int nk;                                 /* lengths with a seed pool: 1 (PSSMLT) or K (MMLT) */
+    int nch;                                /* chains per thread: nk, or 1 (one_chain) */
     const double *cdf[MAX_PATH_LENGTH + 1]; /* per chain index: seed-pool CDF over i (NULL: no light) */
     double kcdf[MAX_PATH_LENGTH + 2];       /* length selection */
     double scale[MAX_PATH_LENGTH + 1];      /* per chain index: b_k / P(k) */
     struct image **img;
+    struct image ***len_img; /* progressive_norm: per thread, one image per chain index (else NULL) */
     struct mlt_stats *stats;
     struct angle_acc *angle; /* per thread, with angle_stats */
     struct tech_acc *tech;   /* per thread, with technique_k */
@@ -74,6 +76,16 @@ struct worker {
     struct ctrl_sampler *ctrl;         /* controlled and root small steps only */
 };
 
+/* The chain index of a length drawn with P(k) (the job's kcdf) by u in [0, 1). */
+static inline int length_index(const struct run_job *j, double u)
+{
+    int kk = 0;
+    u *= j->kcdf[j->nk];
+    while (kk < j->nk - 1 && j->kcdf[kk + 1] <= u)
+        kk++;
+    return kk;
+}
+
 /* The seed pass's stream of sample i for chain index kk: the chain start reproduces the sample. */
 static inline uint64_t seed_stream(long i, int nk, int kk) { return (uint64_t)i * (uint64_t)nk + (uint64_t)kk; }
 
@@ -105,6 +117,14 @@ bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errle
  * to its target. */
 void chain_start(struct worker *wk, struct chain *c, int kk);
 
+/* progressive_norm.c: the large steps' estimate of b_k into r (bl_k, b_image, ...) and, under
+ * progressive_norm, each thread's length images rescaled to the pooled b_k into its image. */
+void normalisation_from_large_steps(const struct run_job *rj, struct mlt_result *r);
+/* one_chain.c (mlt_opts.one_chain): the chain's first length, drawn in proportion to the seed
+ * pools' sums; and a large step's new length, drawn with P(k), into pr (k, and T's ratio in tr). */
+int one_chain_first(struct worker *wk);
+struct proposal;
+void one_chain_length(struct worker *wk, struct proposal *pr);
 /* chain_loop.c: one worker thread's run (parallel_run's function; p is the run_job). */
 void run_worker(int tid, void *p);
 

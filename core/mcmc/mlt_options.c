@@ -73,6 +73,24 @@ static bool mctls_conflict(const struct mlt_opts *o, char *err, size_t errlen)
     return true;
 }
 
+static bool progressive_conflict(const struct mlt_opts *o, char *err, size_t errlen)
+{
+    /* the rescale is per length: a chain that changes its length has no length's image to rescale */
+    if (!o->one_chain) return false;
+    snprintf(err, errlen, "--progressive-norm rescales each length's chain: not with --one-chain");
+    return true;
+}
+
+static bool one_chain_conflict(const struct mlt_opts *o, char *err, size_t errlen)
+{
+    /* the length changes only in a large step of fresh numbers (one_chain.c); MCTLS's trials, the
+     * controlled steps' kept subpaths and the technique images are per length */
+    if (o->method == MLT_MMLT && o->large_step == LARGE_MMLT && o->small_step == SMALL_STEP_PSS && !o->technique_k)
+        return false;
+    snprintf(err, errlen, "--one-chain: mmlt with MMLT large steps, the pss small step and no technique images");
+    return true;
+}
+
 static bool angle_conflict(const struct mlt_opts *o, char *err, size_t errlen)
 {
     if (o->method != MLT_PSSMLT && o->large_step == LARGE_MMLT) return false;
@@ -89,6 +107,8 @@ static const char *const large_steps[] = {"mmlt", "mctls", "hybrid", NULL};
 static const char *const small_steps[] = {"pss", "controlled", "root", NULL};
 static const char *const seed_estimators[] = {"pool", "bdpt"};
 static const char *const mis_names[] = {"balance", "maximum"};
+static const char *const normalisations[] = {"seed", "progressive"};
+static const char *const chain_layouts[] = {"per_length", "one"};
 
 const struct mlt_option mlt_options[] = {
     /* bin/render's, in its --help order */
@@ -129,6 +149,17 @@ const struct mlt_option mlt_options[] = {
     {"uniform_lengths", "--uniform-lengths", MLT_OPTION_FLAG, FIELD(uniform_lengths), .methods = APPLIES_MULTIPLEXED,
      .numbers = true, .help = "mmlt: equal mutations per path length instead of in proportion to b_k",
      .csv_group = MLT_CSV_BEFORE_COUNTS, .csv_pos = 4, .csv_key = "uniform_lengths"},
+    {"progressive_norm", "--progressive-norm", MLT_OPTION_FLAG, FIELD(progressive_norm), .methods = APPLIES_MCMC,
+     .numbers = true,
+     .help = "b_k from the seed pass and every large step together (MMLT paper 4), the image rescaled to it per "
+             "length (exact); costs one image per length and thread",
+     .csv_group = MLT_CSV_BEFORE_COUNTS, .csv_pos = 9, .csv_key = "normalisation", .csv_values = normalisations,
+     .conflict = progressive_conflict},
+    {"one_chain", "--one-chain", MLT_OPTION_FLAG, FIELD(one_chain), .methods = APPLIES_MMLT, .numbers = true,
+     .help = "mmlt: one chain per thread over all lengths, the length changed by large steps (MMLT paper 4's "
+             "alternative), instead of one chain per length",
+     .csv_group = MLT_CSV_BEFORE_COUNTS, .csv_pos = 10, .csv_key = "chains", .csv_values = chain_layouts,
+     .csv_effective = true, .conflict = one_chain_conflict},
     {"max_heuristic", "--max-heuristic", MLT_OPTION_FLAG, FIELD(max_heuristic), .methods = APPLIES_PSSMLT,
      .numbers = true, .help = "pssmlt: Kelemen's maximum heuristic instead of the balance heuristic",
      .csv_group = MLT_CSV_BEFORE_COUNTS, .csv_pos = 5, .csv_key = "mis", .csv_values = mis_names},

@@ -16,10 +16,11 @@
 #include "mcmc/mlt_internal.h"
 
 /* A proposal evaluated: its target (0 after an impossible inversion), the kernel's ratio
- * T(v->u) / T(u->v), its technique and whether its subpaths are complete. */
+ * T(v->u) / T(u->v), its path length (the chain's, but for --one-chain's large steps), its
+ * technique and whether its subpaths are complete. */
 struct proposal {
     double f, tr;
-    int tech;
+    int k, tech;
     bool complete;
 };
 

@@ -35,7 +35,7 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
             struct splat_list l;
             l.n = 0;
             splat_push(&l, conn.px, conn.py, mmlt_contribution(&conn, c->k));
-            move_to(wk->img, c, &l, splat_luminance(&l));
+            move_to(c->img, c, &l, splat_luminance(&l));
         }
     }
     stats_record_dt(wk->st, PROPOSAL_PITP, c->k, dtech != 0, dtech, outcome == PITP_FAILED, accept,

@@ -32,12 +32,15 @@ void mutation_propose(struct worker *wk, struct chain *c, bool large, struct pro
     pss_begin(&c->pss, large);
     if (cs) ctrl_begin(cs, &c->pss, c->path, wk->spare->cam, wk->spare->emi, o->small_step);
     wk->scratch->conn_tried = wk->scratch->conn_nonzero = 0; /* the chain starts' and seed pass's are not counted */
-    pr->f = eval_state(o->method, &wk->path_ctx, cs ? &cs->base : &c->pss.base, wk->scratch, c->k, wk->spare, &wk->prop,
-                       &pr->tech, &pr->complete);
+    pr->k = c->k;
+    pr->tr = 1;
+    if (large && o->one_chain) one_chain_length(wk, pr);
+    pr->f = eval_state(o->method, &wk->path_ctx, cs ? &cs->base : &c->pss.base, wk->scratch, pr->k, wk->spare,
+                       &wk->prop, &pr->tech, &pr->complete);
     mutation_take_connections(wk);
     if (wk->tech)
         tech_split_record(wk->tech, &wk->path_ctx, wk->scratch, wk->multiplexed ? c->k : 0, pr->tech, &wk->prop, false);
-    pr->tr = cs ? ctrl_finish(cs, pr->complete) : 1;
+    if (cs) pr->tr = ctrl_finish(cs, pr->complete);
     if (cs && cs->fail != CTRL_OK) wk->ctrl_fail[cs->fail - 1]++;
     if (o->ctrl_unit_ratio && pr->tr > 0) pr->tr = 1;
     if (pr->tr == 0) pr->f = 0; /* an impossible inversion: nothing this proposal could splat */
@@ -61,14 +64,14 @@ static void record_angle(struct worker *wk, const struct chain *c, const struct 
 void mutation_decide(struct worker *wk, struct chain *c, int kind, const struct proposal *pr, double t_start)
 {
     double a = c->f > 0 ? mind(pr->f * pr->tr / c->f, 1.0) : 1.0;
-    splat_ev(wk->img, c, &wk->prop, pr->f, a);
+    splat_ev(c->img, c, &wk->prop, pr->f, a);
     bool acc = rng_uniform(&wk->r) < a;
     if (wk->tech) tech_acc_step(wk->tech, a, acc, pr->f, c->f, c->scale);
     if (acc) {
         pss_accept(&c->pss);
-        move_to(wk->img, c, &wk->prop, pr->f);
+        move_to(c->img, c, &wk->prop, pr->f);
         c->xsum_valid = false;
-        if (wk->track) ctrl_path_capture(c->path, wk->spare->cam, pr->tech, wk->spare->emi, c->k + 1 - pr->tech);
+        if (wk->track) ctrl_path_capture(c->path, wk->spare->cam, pr->tech, wk->spare->emi, pr->k + 1 - pr->tech);
         if (wk->pitp) {
             struct mmlt_path *t = c->x;
             c->x = wk->spare;
@@ -79,9 +82,12 @@ void mutation_decide(struct worker *wk, struct chain *c, int kind, const struct 
     }
     bool m = wk->multiplexed;
     int tech0 = wk->tech_before;
-    stats_record_dt(wk->st, (enum proposal_kind)kind, m ? c->k : 0, m && pr->tech != tech0,
+    stats_record_dt(wk->st, (enum proposal_kind)kind, m ? pr->k : 0, m && pr->tech != tech0,
                     m ? abs(pr->tech - tech0) : 0, false, a, acc, pr->f > 0, mutation_elapsed(wk, t_start));
-    if (acc) c->tech = pr->tech;
+    if (acc) {
+        c->tech = pr->tech;
+        c->k = pr->k;
+    }
 }
 
 static bool is_large(const struct worker *wk, const struct chain *c, bool large)
@@ -100,6 +106,8 @@ static void large_step(struct worker *wk, struct chain *c, bool large, double t_
 {
     struct proposal pr;
     mutation_propose(wk, c, large, &pr);
+    /* fresh numbers: an independent sample of its length's b_k (progressive_norm.c) */
+    target_sum_add(&wk->st->large[pr.k], pr.f);
     mutation_decide(wk, c, PROPOSAL_LARGE, &pr, t_start);
 }
 

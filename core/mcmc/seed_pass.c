@@ -107,8 +107,9 @@ bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errle
         double *cdf = xmalloc((size_t)o->seed_paths * sizeof(double)), acc = 0;
         for (long i = 0; i < o->seed_paths; i++)
             cdf[i] = acc += f[i * rj->nk + kk];
-        /* a length whose pool found nothing has no chain to start: it is left out under either
-         * estimate of b_k (a bias only where the seed pass is too small to see the length) */
+        /* a length whose pool found nothing has no pool to start from: it is left out under either
+         * estimate of b_k (a bias where the seed pass is too small to see the length), unless
+         * progressive_norm runs it anyway (below) */
         double mean = 0, var_mean = 0;
         if (acc > 0) mean_and_var(bk ? bk : f, rj->nk, kk, o->seed_paths, &mean, &var_mean);
         r->b_k[kk + 1] = mean;
@@ -126,11 +127,22 @@ bool normalise(struct run_job *rj, struct mlt_result *r, char *err, size_t errle
     free(f);
     free(bk);
     /* Length k is chosen with probability P(k) (b_k / b, or uniform over the lengths with b_k > 0)
-     * and its splats weigh b_k / P(k), so every length is estimated without bias either way. */
+     * and its splats weigh b_k / P(k), so every length is estimated without bias either way. Under
+     * progressive_norm a length the pass missed runs too, on a provisional b_k (the smallest it
+     * found): the end rescales it to what its large steps found (progressive_norm.c). */
+    double bmin = total, bsel[MAX_PATH_LENGTH + 1], bsum = 0;
+    for (int kk = 0; kk < rj->nk; kk++)
+        if (rj->cdf[kk]) bmin = fmin(bmin, r->b_k[kk + 1]);
     for (int kk = 0; kk < rj->nk; kk++) {
-        double pk = !rj->cdf[kk] ? 0 : o->uniform_lengths ? 1.0 / live : r->b_k[kk + 1] / total;
+        bool missed = o->progressive_norm && !rj->cdf[kk] && kk + 1 >= o->min_length;
+        bsel[kk] = rj->cdf[kk] ? r->b_k[kk + 1] : missed ? bmin : 0;
+        bsum += bsel[kk];
+        live += missed;
+    }
+    for (int kk = 0; kk < rj->nk; kk++) {
+        double pk = !(bsel[kk] > 0) ? 0 : o->uniform_lengths ? 1.0 / live : bsel[kk] / bsum;
         rj->kcdf[kk + 1] = rj->kcdf[kk] + pk;
-        rj->scale[kk] = pk > 0 ? r->b_k[kk + 1] / pk : 0;
+        rj->scale[kk] = pk > 0 ? bsel[kk] / pk : 0;
     }
     r->b = total;
     r->b_rse = total > 0 ? sqrt(var_total) / total : 0;
@@ -152,8 +164,12 @@ void chain_start(struct worker *wk, struct chain *c, int kk)
 {
     const struct run_job *j = wk->job;
     const struct mlt_opts *o = wk->opts;
-    long i = pick_cdf(j->cdf[kk], o->seed_paths, rng_uniform(&wk->r));
-    pss_init(&c->pss, &o->pss, o->seed, seed_stream(i, j->nk, kk));
+    /* a length the seed pass missed (progressive_norm) starts from fresh numbers, most likely
+     * without light: a chain at a zero target accepts any proposal, so it walks until it finds
+     * some (the start-up bias the pool spares the others) */
+    uint64_t stream = j->cdf[kk] ? seed_stream(pick_cdf(j->cdf[kk], o->seed_paths, rng_uniform(&wk->r)), j->nk, kk)
+                                 : (1ULL << 60) | ((uint64_t)wk->global_tid << 24) | (uint64_t)kk;
+    pss_init(&c->pss, &o->pss, o->seed, stream);
     if (wk->pitp) c->x = xmalloc(sizeof *c->x);
     struct mmlt_path *x0 = wk->pitp ? c->x : wk->spare;
     bool complete;

@@ -86,6 +86,20 @@ void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src)
     nonfinite_add(&dst->nonfinite, &src->nonfinite);
     dst->conn_tried += src->conn_tried;
     dst->conn_nonzero += src->conn_nonzero;
+    for (int l = 0; l < STATS_LENGTHS; l++) {
+        dst->large[l].sum += src->large[l].sum;
+        dst->large[l].sq += src->large[l].sq;
+        dst->large[l].n += src->large[l].n;
+        dst->iters[l] += src->iters[l];
+        dst->zero_iters[l] += src->zero_iters[l];
+    }
+}
+
+void target_sum_add(struct target_sum *t, double f)
+{
+    t->sum += f;
+    t->sq += f * f;
+    t->n++;
 }
 
 double cell_mean(const struct accept_cell *c) { return c->attempts ? c->sum_a / c->attempts : NAN; }

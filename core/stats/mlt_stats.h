@@ -32,12 +32,23 @@ struct accept_cell {
 
 /* Every proposal is recorded three times, each cell a contiguous subsequence of the chain so that
  * batch means apply: by (kind, length, technique changed), by (kind, length), and by kind. */
+/* Independent samples of a normalisation constant: the targets of the large steps' fresh numbers,
+ * each an unbiased sample of b_k (MMLT paper §4), by chain length (index k; PSSMLT's b at 1). */
+struct target_sum {
+    double sum, sq;
+    long n;
+};
+
 struct mlt_stats {
     struct accept_cell cell[PROPOSAL_KINDS][STATS_LENGTHS][2];
     struct accept_cell any[PROPOSAL_KINDS][STATS_LENGTHS];
     struct accept_cell total[PROPOSAL_KINDS];
     struct nonfinite nonfinite;    /* by length, as the rows (path/splat.h) */
     long conn_tried, conn_nonzero; /* connections the chains evaluated, and those with a contribution */
+    struct target_sum large[STATS_LENGTHS];
+    /* progressive_norm only: iterations of each length's chains, and those spent at a state
+     * without light (a length the seed pass missed starts there) */
+    long iters[STATS_LENGTHS], zero_iters[STATS_LENGTHS];
 };
 
 void stats_clear(struct mlt_stats *s);
@@ -47,6 +58,7 @@ void stats_record(struct mlt_stats *s, enum proposal_kind kind, int length, bool
  * constructed (stats_record: 0 and false). */
 void stats_record_dt(struct mlt_stats *s, enum proposal_kind kind, int length, bool technique_changed, int dtech,
                      bool failed, double a, bool accepted, bool nonzero, double seconds);
+void target_sum_add(struct target_sum *t, double f);
 /* Adds src into dst (threads are merged in a fixed order). */
 void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src);
 /* One value into a cell's mean and batches (also for other per-proposal statistics, such as the

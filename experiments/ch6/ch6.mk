@@ -231,3 +231,15 @@ mis-robust_SOURCE := thesis Figs. 3.3, 3.5
 CH6_CHECK_OPTS_mis-robust := --study mis --methods '$(mis-robust_METHODS)' --spp 16 --seeds 8 --resolution 128x128 \
   --min-length 2 --max-length 2 --reference-spp 1024 --render-args ""
 $(eval $(call CH6_STUDY,mis-robust,mis,cornell-box))
+
+# ---- MMLT paper §4: the normalisation once or progressively (claim M-j), one chain per length or
+# one over all lengths (claim M-k) ----
+# MMLT as the paper runs it, with b_k pooled from the seed pass and every large step
+# (--progressive-norm), and with one chain over all lengths (--one-chain), at equal CPU time on the
+# three chapter-6 scenes (--study mmlt-design: the cdc study's settings). The check: ajar at 16
+# mutations per pixel, 256x144, paths of length >= 3.
+mmlt-design_METHODS := mmlt=--method mmlt --p-large 0.1,mmlt-progressive=--method mmlt --p-large 0.1 --progressive-norm,mmlt-one-chain=--method mmlt --p-large 0.1 --one-chain
+mmlt-design_SOURCE := MMLT paper §4
+CH6_CHECK_OPTS_mmlt-design := --study mmlt-design --methods '$(mmlt-design_METHODS)' --spp 16 --seeds 8 --min-length 3 \
+  --reference-spp 256 --resolution 256x144 --render-args ""
+$(eval $(call CH6_STUDY,mmlt-design,mmlt-design,ajar living-room staircase))

@@ -74,6 +74,20 @@ static const struct claim {
      * MMLT's target; against the power heuristic (beta = 2) */
     {"M-l", "no weighting function beats the balance heuristic in MMLT's target (against the power heuristic)", "mmlt",
      -1, Q_RELMSE, "relMSE", "mmlt-power", "MMLT paper §6", false, "mmlt-equal"},
+    /* MMLT paper §4 (make mmlt-design): b_k estimated progressively "is less likely to miss rare
+     * bounces" than once at the start; the image's mean is where a missed bounce shows */
+    {"M-j", "b_k estimated progressively is less likely to miss rare bounces than once at the start",
+     "mmlt-progressive", -1, Q_NORM_ERR, "|image mean / reference mean - 1|", "mmlt", "MMLT paper §4", false,
+     "mmlt-design"},
+    {"M-j", "b_k estimated progressively is less likely to miss rare bounces than once at the start",
+     "mmlt-progressive", -1, Q_B_IMAGE_RSE, "the normalisation's relative standard error", "mmlt", "MMLT paper §4",
+     false, "mmlt-design"},
+    /* MMLT paper §4: "a separate Markov chain for each path length ... is more efficient" than one
+     * chain over all lengths */
+    {"M-k", "one chain per path length is more efficient than one chain over all lengths", "mmlt", -1, Q_RELMSE,
+     "relMSE", "mmlt-one-chain", "MMLT paper §4", false, "mmlt-design"},
+    {"M-k", "one chain per path length is more efficient than one chain over all lengths", "mmlt", -1, Q_BLOCK_MEDIAN,
+     "median block relMSE (firefly-robust)", "mmlt-one-chain", "MMLT paper §4", false, "mmlt-design"},
     /* the harness's readings: the splotchiest and the most uniform of the three chapter-6 methods */
     {"harness:T34", "(2) MMLT is the splotchiest", "mmlt", +1, Q_CORRLEN, "error correlation length (pixels)",
      "pssmlt pitp", NULL, false, "equal-time"},

@@ -51,8 +51,8 @@ static void inset_statistics(const struct ch6_equal *e, struct ch6_run *r, const
 /* A run's image against the reference (no reference: every image statistic nan). */
 static void image_statistics(struct ch6_equal *e, struct ch6_run *r, const struct image *im)
 {
-    static const enum ch6_q image_q[] = {Q_RELMSE, Q_RELMSE_SCALED, Q_SPREAD,  Q_BLOCK_MEDIAN, Q_TRIMMED,
-                                         Q_BLUR4,  Q_BLUR8,         Q_CORRLEN, Q_INSET_SPREAD, Q_INSET_BLUR8};
+    static const enum ch6_q image_q[] = {Q_RELMSE, Q_RELMSE_SCALED, Q_SPREAD,       Q_BLOCK_MEDIAN, Q_TRIMMED, Q_BLUR4,
+                                         Q_BLUR8,  Q_CORRLEN,       Q_INSET_SPREAD, Q_INSET_BLUR8,  Q_NORM_ERR};
     for (size_t k = 0; k < sizeof image_q / sizeof *image_q; k++)
         r->q[image_q[k]] = NAN;
     const struct image *ref = e->ref;
@@ -67,6 +67,7 @@ static void image_statistics(struct ch6_equal *e, struct ch6_run *r, const struc
     r->q[Q_BLUR4] = error_blur_share(im, ref, e->eps, 4);
     r->q[Q_BLUR8] = error_blur_share(im, ref, e->eps, 8);
     r->q[Q_CORRLEN] = error_corr_length(im, ref);
+    r->q[Q_NORM_ERR] = fabs(img_mean_luminance(im) / e->mlum - 1);
     inset_statistics(e, r, im);
 }
 
@@ -123,7 +124,7 @@ static void render_statistics(const struct ch6_equal *e, struct ch6_run *r, cons
         !csv_meta_require(c, mc ? "samples_per_second" : "mutations_per_second", &r->q[Q_MPS], err, sizeof err))
         die(DIE_RUNTIME, e->prog, "%s", err);
     if (mc) { /* no proposals, no normalisation */
-        r->q[Q_NONZERO] = r->q[Q_LARGE_NONZERO] = r->q[Q_NONZERO_CONN] = r->q[Q_B_RSE] = NAN;
+        r->q[Q_NONZERO] = r->q[Q_LARGE_NONZERO] = r->q[Q_NONZERO_CONN] = r->q[Q_B_RSE] = r->q[Q_B_IMAGE_RSE] = NAN;
         csv_free(c);
         return;
     }
@@ -132,6 +133,7 @@ static void render_statistics(const struct ch6_equal *e, struct ch6_run *r, cons
     double tried = csv_meta_number(c, "connections_evaluated");
     r->q[Q_NONZERO_CONN] = tried > 0 ? csv_meta_number(c, "connections_nonzero") / tried : NAN;
     r->q[Q_B_RSE] = csv_meta_number(c, "b_rse");
+    r->q[Q_B_IMAGE_RSE] = csv_meta_number(c, "b_image_rse");
     csv_free(c);
 }
 

@@ -49,6 +49,8 @@ static const struct column run_cols[] = {COL_STRING(struct run_row, "scene", sce
                                          RUN_Q("ess_per_s", "%.4g", Q_ESS_PER_S),
                                          RUN_Q("stuck_share", "%.4g", Q_STUCK),
                                          RUN_Q("mixing_warning", "%.0f", Q_MIX_WARN),
+                                         RUN_Q("norm_error", "%.6g", Q_NORM_ERR),
+                                         RUN_Q("b_image_rse", "%.6g", Q_B_IMAGE_RSE),
                                          {0}};
 
 /* A row of summary.csv: each quantity's mean and its standard error over seeds */
@@ -83,6 +85,8 @@ static const struct column summary_cols[] = {COL_STRING(struct summary_row, "sce
                                              SUM_Q("ess_per_s", Q_ESS_PER_S),
                                              SUM_Q("stuck_share", Q_STUCK),
                                              SUM_Q("mixing_warning", Q_MIX_WARN),
+                                             SUM_Q("norm_error", Q_NORM_ERR),
+                                             SUM_Q("b_image_rse", Q_B_IMAGE_RSE),
                                              {0}};
 
 /* A row of stats.csv */
@@ -181,7 +185,9 @@ static void write_stats(const struct ch6_equal *e)
               {Q_INSET_SPREAD, "inset_block_spread"},
               {Q_INSET_BLUR8, "inset_blur8_share"},
               {Q_RHAT, "rhat"},
-              {Q_STUCK, "stuck_share"}}; /* not ESS per second: it depends on the machine's speed */
+              {Q_STUCK, "stuck_share"},
+              {Q_NORM_ERR, "norm_error"},
+              {Q_B_IMAGE_RSE, "b_image_rse"}}; /* not ESS per second: it depends on the machine's speed */
     struct table t;
     FILE *f = table_open(&t, stat_cols);
     csv_meta(f, NULL, "ch6_equal: mean +- standard error over %d seeds at the largest budget", e->seeds);

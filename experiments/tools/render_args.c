@@ -118,6 +118,10 @@ void render_args_parse(int argc, char **argv, struct render_args *a)
                        .str = &a->res_arg, .help = "override the camera resolution (same horizontal fov)"),
         OPT_OUT(a->out, .arg = "PREFIX", .help = "output prefix", .def = "out"),
         {"--quiet", OPT_FLAG, OPT_DST(a->quiet), .help = "no progress bar"},
+        {"--timing", OPT_FLAG, OPT_DST(a->timing),
+         .help = "one line on stderr with the wall-clock seconds of each phase: start-up (the process's start to "
+                 "main: loading, libraries), scene load (parse, meshes, textures, BVH), seed pass (MCMC), render, "
+                 "output (images, CSVs), total"},
         {"--checkpoint", OPT_DOUBLE, OPT_DST(a->checkpoint), .arg = "SECONDS", .lo = 1e-3, .hi = 1e9,
          .help = "write the run's whole state to PREFIX.ckpt every SECONDS (atomically; Ctrl-C always leaves one); the "
                  "seed pass of pssmlt/mmlt/pitp is not checkpointed"},

@@ -17,7 +17,11 @@ struct render_args {
     struct mlt_opts mlt;
     int res[2], sampler;
     const char *res_arg; /* --resolution as given */
-    bool quiet;
+    bool quiet, timing;
+    /* --timing: wall-clock seconds at each phase's end (render_run.c) */
+    struct {
+        double startup, main, loaded, rendered, written, seed_pass;
+    } t;
 };
 
 /* Reads argv into a (set to its defaults first by the caller); --help prints and exits 0, a bad

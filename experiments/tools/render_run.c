@@ -18,6 +18,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 /* " (length 3: 10, length 4: 2)" for the lengths with a count, "" for none; length 0 holds sums
@@ -44,15 +45,17 @@ static void warn_nonfinite(long total, const struct nonfinite *nf)
                 total, nonfinite_note(nf));
 }
 
-/* The seed pass's error moves the whole image's mean: above 1 % say so, once, and what halves it. */
-static void warn_normalisation(const struct mlt_result *r, long seed_paths)
+/* The normalisation's error moves the whole image's mean: above 1 % say so, once, and what halves it. */
+static void warn_normalisation(const struct mlt_result *r, const struct mlt_opts *o)
 {
-    if (r->b_rse > 0.01)
+    double e = r->b_image_rse;
+    if (e > 0.01)
         fprintf(stderr,
-                "render: warning: the normalisation's relative standard error is %.1f %% (--seed-paths %ld): the "
-                "image's mean "
-                "is that uncertain; %ld seed paths would bring it to 0.5 %%\n",
-                100 * r->b_rse, seed_paths, (long)ceil(seed_paths * (r->b_rse / 0.005) * (r->b_rse / 0.005)));
+                "render: warning: the normalisation's relative standard error is %.1f %% (--seed-paths %ld%s): the "
+                "image's mean is that uncertain; %ld seed paths would bring the seed pass's to 0.5 %%%s\n",
+                100 * e, o->seed_paths, o->progressive_norm ? ", --progressive-norm" : "",
+                (long)ceil(o->seed_paths * (r->b_rse / 0.005) * (r->b_rse / 0.005)),
+                o->progressive_norm ? "" : "; --progressive-norm adds the large steps' samples");
 }
 
 /* "(4 threads)", or under MPI "(2 ranks x 2 threads)". */
@@ -88,6 +91,7 @@ static int run_mc(struct render_args *a, const struct scene *sc, const struct ck
         a->mc.tech_k = a->mlt.technique_k;
     }
     struct image *img = render_mc(sc, &a->mc, &st);
+    a->t.rendered = now_seconds();
     if (st.resume_failed) {
         fprintf(stderr, "render: --resume %s: the checkpoint's state does not fit this run\n", a->resume);
         img_destroy(img);
@@ -105,6 +109,7 @@ static int run_mc(struct render_args *a, const struct scene *sc, const struct ck
     if (*ok && !ctl->err[0] && dist_root() && st.tech) *ok = render_write_bdpt_tech(a, &st, img, err, errlen);
     bdpt_tech_free(st.tech);
     img_destroy(img);
+    a->t.written = now_seconds();
     return 0;
 }
 
@@ -123,6 +128,8 @@ static int run_mcmc(struct render_args *a, const struct scene *sc, const struct 
     struct mlt_result r;
     char mixing[1024] = "";
     *ok = mlt_render(sc, &a->mlt, &r, err, errlen);
+    a->t.rendered = now_seconds();
+    a->t.seed_pass = r.seed_seconds;
     if (!*ok) {
         fprintf(stderr, "%s%s\n", a->resume ? "render: --resume: " : "", err);
         return a->resume ? 2 : 1;
@@ -137,16 +144,49 @@ static int run_mcmc(struct render_args *a, const struct scene *sc, const struct 
                "(%s), "
                "%ld non-finite dropped%s\n",
                *partial ? "PARTIAL (interrupted) " : "", a->method, r.mutations, r.seconds, r.seed_seconds,
-               100 * r.b_rse, r.mutations / r.seconds, threads_note(a->mlt.threads), r.nonfinite,
+               100 * r.b_image_rse, r.mutations / r.seconds, threads_note(a->mlt.threads), r.nonfinite,
                nonfinite_note(&r.stats.nonfinite));
     if (*ok && !ctl->err[0] && dist_root()) {
         warn_nonfinite(r.nonfinite, &r.stats.nonfinite);
-        warn_normalisation(&r, a->mlt.seed_paths);
+        warn_normalisation(&r, &a->mlt);
         if (*mixing && !a->quiet)
             fprintf(stderr, "render: warning: the chains mix poorly: %s; see %s.mixing.csv\n", mixing, a->out);
     }
     mlt_result_free(&r);
+    a->t.written = now_seconds();
     return 0;
+}
+
+/* Seconds from the process's start to now (/proc/self/stat's start time, in clock ticks since
+ * boot, against CLOCK_BOOTTIME): 10 ms resolution; NAN where /proc is not there. */
+static double process_age(void)
+{
+    FILE *f = fopen("/proc/self/stat", "r");
+    if (!f) return NAN;
+    char buf[1024];
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = 0;
+    const char *p = strrchr(buf, ')'); /* the command name may hold spaces */
+    unsigned long long start = 0;
+    /* after the name: state is field 3, starttime field 22 */
+    if (!p ||
+        sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %*u %*u %*d %*d %*d %*d %*d %*d %llu", &start) != 1)
+        return NAN;
+    struct timespec ts;
+    clock_gettime(CLOCK_BOOTTIME, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec - (double)start / (double)sysconf(_SC_CLK_TCK);
+}
+
+/* --timing's line: where a run's wall time goes, phase by phase. */
+static void print_timing(const struct render_args *a)
+{
+    double render = a->t.rendered - a->t.loaded - a->t.seed_pass;
+    fprintf(stderr,
+            "render: timing: start-up %.3f s, scene load %.3f s, seed pass %.3f s, render %.3f s, output %.3f s, "
+            "total %.3f s (wall clock)\n",
+            a->t.startup, a->t.loaded - a->t.main, a->t.seed_pass, render, a->t.written - a->t.rendered,
+            a->t.startup + a->t.written - a->t.main);
 }
 
 /* The scene, resized and with the defaults it gives (spp, max length); NULL with *status 2 when it
@@ -226,6 +266,8 @@ int render_run(int argc, char **argv)
     a.mc = (struct render_opts){.method = METHOD_BDPT, .spp = -1, .max_length = -1};
     pss_opts_default(&a.mlt.pss, 1, 1);
     accel_set_isa(NULL); /* an earlier run's --embree-isa is not this one's */
+    a.t.startup = process_age();
+    a.t.main = now_seconds();
     render_args_parse(argc, argv, &a);
     const char *inject = getenv("PSS_INJECT_NONFINITE"); /* tests only (path/splat.h) */
     if (inject) nonfinite_inject_every = atol(inject);
@@ -233,6 +275,7 @@ int render_run(int argc, char **argv)
     int rc;
     struct scene *sc = load(&a, &rc);
     if (!sc) return rc;
+    a.t.loaded = now_seconds();
     render_args_mlt_setup(&a.mlt, &a, sc);
     struct ckpt_setup k = {0};
     char err[1024];
@@ -248,6 +291,7 @@ int render_run(int argc, char **argv)
     ckpt_buf_free(&k.resume);
     scene_free(sc);
     if (rc) return rc;
+    if (a.timing && ok && dist_root()) print_timing(&a);
     /* A checkpoint that could not be written stopped the run (ckpt_save_run): its line alone, and
      * no outputs, which a full disk would refuse too. */
     if (k.ctl.err[0])

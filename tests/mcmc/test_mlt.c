@@ -51,7 +51,7 @@ static struct image *render_plain_ctx(void *p, uint64_t seed)
 
 /* Cornell box at 64x64: 8 BDPT renders of 16 spp against 12 independent MCMC runs of 16 mutations
  * per pixel (each with its own 10k-path seed pass) per configuration; Welch t on 8x8 blocks and on
- * the image mean, alpha 0.01 Sidak over the 65 comparisons of all 12 configurations. Each
+ * the image mean, alpha 0.01 Sidak over the 65 comparisons of each of the 15 configurations. Each
  * configuration is its own test; the reference is rendered once (support/disk_cache.h) and is the
  * one stat_mctls_tries compares against. */
 static const struct cornell_cfg {
@@ -77,7 +77,10 @@ static const struct cornell_cfg {
     {"pitp --rap --cdc --kernel gaussian", MLT_PITP, true, true, KERNEL_GAUSSIAN, LARGE_MMLT, 0.1, false, false, false},
     {"pitp --large-step hybrid --hybrid-length 3 --uniform-lengths", MLT_PITP, false, false, KERNEL_KELEMEN,
      LARGE_HYBRID, 0.3, true, false, false},
-    {"mmlt --power-heuristic", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, true}};
+    {"mmlt --power-heuristic", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, true},
+    {"mmlt --progressive-norm", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
+    {"pitp --progressive-norm", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
+    {"mmlt --one-chain", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false}};
 #define CORNELL_CFGS ((int)(sizeof cornell_cfg / sizeof *cornell_cfg))
 
 ParameterizedTestParameters(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
@@ -109,6 +112,8 @@ ParameterizedTest(int *param, stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
     c.o.uniform_lengths = cf->uniform;
     c.o.max_heuristic = cf->maxh;
     c.o.power_heuristic = cf->power;
+    c.o.progressive_norm = strstr(cf->name, "--progressive-norm") != NULL; /* flags the fields do not carry */
+    c.o.one_chain = strstr(cf->name, "--one-chain") != NULL;
     stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * (uint64_t)i, 8);
     double pm, worst;
     int f = stack_compare(&a, &ref, CORNELL_CFGS, &pm, &worst);

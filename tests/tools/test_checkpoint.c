@@ -241,7 +241,7 @@ static void kills_of(const char *args, bool mcmc, int kills, uint64_t seed)
 
 /* Each method with a budget that takes the uninterrupted run about a second (more under the
  * sanitizers, and the kill moments scale with it): ten kills each of PT, BDPT, MMLT and PITP,
- * three of the other MCMC variants, 49 in all. */
+ * three of the other MCMC variants, 55 in all. */
 Test(checkpoint, sigkill_and_resume_is_bit_identical_pt_bdpt, .timeout = 600)
 {
     kills_of(COMMON " --method pt --spp 400", false, 10, 1);
@@ -263,6 +263,8 @@ Test(checkpoint, sigkill_and_resume_is_bit_identical_other_mcmc, .timeout = 600)
     kills_of(MCMC "pitp --small-step controlled --angle-stats", true, 3, 13);
     assert_same_pixels("ref.angle.exr", "run.angle.exr");
     kills_of(MCMC "mmlt --large-step hybrid --hybrid-length 3", true, 3, 14);
+    kills_of(MCMC "mmlt --progressive-norm --seed-paths 3", true, 3, 15); /* length images; missed lengths */
+    kills_of(MCMC "mmlt --one-chain", true, 3, 16);
 }
 
 /* SIGKILL in the middle of a checkpoint write, three times per method: every write pauses 150 ms
