@@ -92,12 +92,14 @@ static double state_column(const struct chain *c)
 }
 
 /* The per-pixel mixing count (stats/pixel_mixing.h) of the state the chain holds after the
- * iteration: a new visit when its first splat left the pixel of (px0, py0), the state's before the
- * iteration, or on the chain's first iteration (counted by its trace). */
-static void count_pixels(struct pixel_mixing *m, const struct chain *c, double px0, double py0)
+ * iteration: a new visit when it moved and its first splat left the pixel of (px0, py0), the
+ * state's before the iteration, or on the chain's first iteration (counted by its trace). */
+static void count_pixels(struct pixel_mixing *m, const struct chain *c, bool moved, double px0, double py0)
 {
-    bool fresh = c->trace->n == 1 || pixmix_cell(m, c->cur.s[0].px, c->cur.s[0].py) != pixmix_cell(m, px0, py0);
-    for (int i = 0; i < c->cur.n; i++)
+    long cell = pixmix_cell(m, c->cur.s[0].px, c->cur.s[0].py);
+    bool fresh = c->trace->n == 1 || (moved && cell != pixmix_cell(m, px0, py0));
+    pixmix_add(m, cell, fresh);
+    for (int i = 1; i < c->cur.n; i++)
         pixmix_add(m, pixmix_cell(m, c->cur.s[i].px, c->cur.s[i].py), fresh);
 }
 
@@ -116,7 +118,7 @@ static void iterate(struct worker *wk)
     mutations_iterate(wk, c, large, t_start); /* the registry's steps (mutation.h) */
     bool moved = c->cur.s[0].px != px0 || c->cur.s[0].py != py0;
     if (trace_step(c->trace, moved)) trace_keep(c->trace, state_column(c), c->f);
-    count_pixels(wk->mix, c, px0, py0);
+    count_pixels(wk->mix, c, moved, px0, py0);
 }
 
 /* Whether iteration n may run: no interruption, and within the time or mutation budget. */
