@@ -45,12 +45,14 @@ static inline long pixmix_cell(const struct pixel_mixing *m, double px, double p
 }
 
 /* One iteration's splat of a chain's state in cell (-1: none); fresh: the chain arrived there with
- * this iteration. */
+ * this iteration. The first splat a pixel gets is a visit in any case, so that a pixel with splats
+ * never reads 0 (a resumed run's counters start at the resume, its chains do not). */
 static inline void pixmix_add(struct pixel_mixing *m, long cell, bool fresh)
 {
     if (cell < 0) return;
-    m->n[2 * cell]++;
-    m->n[2 * cell + 1] += fresh;
+    long *c = m->n + 2 * cell;
+    c[1] += fresh || c[0] == 0;
+    c[0]++;
 }
 
 #endif
