@@ -8,7 +8,7 @@
 #include "base/dist.h"
 #include "io/image.h"
 
-#define MERGE_MAX_EXTRA 6
+#define MERGE_MAX_EXTRA 7
 
 struct thread_results {
     int threads;        /* this rank's */

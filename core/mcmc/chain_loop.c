@@ -27,6 +27,7 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
     wk->tech = j->tech ? &j->tech[tid] : NULL;
     wk->angle = j->angle ? &j->angle[tid] : NULL;
     wk->ctrl_fail = j->ctrl_fail[tid];
+    wk->mix = &j->mix[tid];
     wk->pitp = o->method == MLT_PITP;
     wk->multiplexed = o->method != MLT_PSSMLT;
     wk->spare = xmalloc(sizeof *wk->spare);
@@ -99,11 +100,24 @@ static double state_column(const struct chain *c)
     return w > 0 ? sum / w : c->cur.s[0].px;
 }
 
+/* The per-pixel mixing count (stats/pixel_mixing.h) of the state the chain holds after the
+ * iteration: a new visit when it moved and its first splat left the pixel of (px0, py0), the
+ * state's before the iteration, or on the chain's first iteration (counted by its trace). */
+static void count_pixels(struct pixel_mixing *m, const struct chain *c, bool moved, double px0, double py0)
+{
+    if (c->cur.n == 0) return; /* a missed length's chain before it found light (progressive_norm.c) */
+    long cell = pixmix_cell(m, c->cur.s[0].px, c->cur.s[0].py);
+    bool fresh = c->trace->n == 1 || (moved && cell != pixmix_cell(m, px0, py0));
+    pixmix_add(m, cell, fresh);
+    for (int i = 1; i < c->cur.n; i++)
+        pixmix_add(m, pixmix_cell(m, c->cur.s[i].px, c->cur.s[i].py), fresh);
+}
+
 /* One iteration of the worker's chains, and its mixing record (stats/chain_trace.h): whether the
  * iteration moved the chain's path (where its first splat lands: every accepted proposal of every
  * mutation moves it almost surely; PITP's perturbation, which keeps the path and changes its
  * technique and with it the target, does not), and on the trace's thinned iterations the state's
- * column and target. Draws nothing. */
+ * column and target; and the per-pixel count of its state. Draws nothing. */
 static void iterate(struct worker *wk)
 {
     const struct mlt_opts *o = wk->opts;
@@ -118,6 +132,7 @@ static void iterate(struct worker *wk)
     mutations_iterate(wk, c, large, t_start); /* the registry's steps (mutation.h) */
     bool moved = c->cur.s[0].px != px0 || c->cur.s[0].py != py0;
     if (trace_step(c->trace, moved)) trace_keep(c->trace, state_column(c), c->f);
+    count_pixels(wk->mix, c, moved, px0, py0);
 }
 
 /* Whether iteration n may run: no interruption, and within the time or mutation budget. */

@@ -88,7 +88,9 @@ static void job_alloc(struct run_job *rj, const struct scene *sc)
             angle_acc_init(&rj->angle[i], W, H);
     }
     if (o->technique_k) rj->tech = tech_acc_alloc(T, o->technique_k, W, H, sc->cam.filter == FILTER_TENT);
+    rj->mix = xcalloc((size_t)T, sizeof *rj->mix);
     for (int i = 0; i < T; i++) {
+        pixmix_init(&rj->mix[i], W, H);
         rj->img[i] = img_create(W, H);
         rj->img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
@@ -106,8 +108,11 @@ static void job_alloc(struct run_job *rj, const struct scene *sc)
 static void job_free(struct run_job *rj)
 {
     int T = rj->o->threads;
-    for (int i = 0; i < T; i++)
+    for (int i = 0; i < T; i++) {
         img_destroy(rj->img[i]);
+        pixmix_free(&rj->mix[i]);
+    }
+    free(rj->mix);
     if (rj->angle)
         for (int i = 0; i < T; i++)
             angle_acc_free(&rj->angle[i]);
@@ -164,8 +169,10 @@ struct stats_merge {
     const struct angle_acc *angle; /* or NULL */
     struct mlt_stats *stats_out;
     struct angle_acc *angle_out;
-    struct chain_trace *const *trace; /* per thread, nk each */
+    struct chain_trace *const *trace; /* per thread, nk (chains per thread) each */
     struct chain_trace *trace_out;    /* per global thread, nk each */
+    const struct pixel_mixing *mix;
+    struct pixel_mixing *mix_out;
     int nk, g0;
 };
 
@@ -174,6 +181,7 @@ static void add_thread_stats(void *p, int i)
     struct stats_merge *m = p;
     stats_merge(m->stats_out, &m->stats[i]);
     if (m->angle) angle_acc_merge(m->angle_out, &m->angle[i]);
+    pixmix_merge(m->mix_out, &m->mix[i]);
     /* a gather, not a sum: each global thread's slots are written by its own rank only */
     memcpy(m->trace_out + (size_t)(m->g0 + i) * m->nk, m->trace[i], (size_t)m->nk * sizeof *m->trace_out);
 }
@@ -192,12 +200,16 @@ static void merge_results(struct run_job *rj, const struct scene *sc, struct mlt
     double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
     r->ntrace = rj->stride * rj->nch;
     r->trace = xcalloc((size_t)r->ntrace, sizeof *r->trace);
-    struct stats_merge sm = {rj->stats, rj->angle, &r->stats, r->angle, rj->trace, r->trace, rj->nch, rj->g0};
+    r->mix = xmalloc(sizeof *r->mix);
+    pixmix_init(r->mix, W, H);
+    struct stats_merge sm = {rj->stats, rj->angle, &r->stats, r->angle, rj->trace,
+                             r->trace,  rj->mix,   r->mix,    rj->nch,  rj->g0};
     struct thread_results tr = {.threads = T, .img = rj->img, .scale = scale, .add = add_thread_stats, .ctx = &sm};
     /* every field the merges add travels; the statistics are flat structs of counts and sums, the
      * mixing records flat structs */
     tr.extra[tr.nextra++] = (struct dist_buf){&r->stats, sizeof r->stats};
     tr.extra[tr.nextra++] = (struct dist_buf){r->trace, (size_t)r->ntrace * sizeof *r->trace};
+    tr.extra[tr.nextra++] = (struct dist_buf){r->mix->n, 2 * (size_t)W * H * sizeof *r->mix->n};
     if (r->angle) {
         size_t cells = (size_t)W * H;
         tr.extra[tr.nextra++] = (struct dist_buf){r->angle->sum, cells * sizeof *r->angle->sum};
@@ -264,4 +276,7 @@ void mlt_result_free(struct mlt_result *r)
     r->tech = NULL;
     free(r->trace);
     r->trace = NULL;
+    if (r->mix) pixmix_free(r->mix);
+    free(r->mix);
+    r->mix = NULL;
 }

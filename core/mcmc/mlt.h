@@ -33,6 +33,7 @@
 #include "stats/angle_change.h"
 #include "stats/chain_trace.h"
 #include "stats/mlt_stats.h"
+#include "stats/pixel_mixing.h"
 #include "stats/tech_image.h"
 
 /* MLT_PITP: MMLT with the path-invariant technique perturbation before every small step (thesis
@@ -127,6 +128,7 @@ struct mlt_result {
      * ranks too, on rank 0. */
     struct chain_trace *trace;
     int ntrace;
+    struct pixel_mixing *mix; /* distinct states over splats per pixel (stats/pixel_mixing.h), rank 0 */
 };
 
 /* Returns false (with a message) when the seed pass finds no light at all. */

@@ -36,6 +36,7 @@ struct run_job {
     long (*ctrl_fail)[2];    /* per thread: forward, reverse */
     long *done;
     struct chain_trace **trace; /* per thread, nk each: the chains' mixing records */
+    struct pixel_mixing *mix;   /* per thread: the per-pixel mixing counters */
     int g0, stride;             /* this rank's first global thread; the job's threads (base/dist.h) */
     double t0;
     struct progress prog;
@@ -63,6 +64,7 @@ struct worker {
     struct tech_acc *tech;   /* or NULL */
     struct angle_acc *angle; /* or NULL */
     long *ctrl_fail;         /* [2]: forward, reverse */
+    struct pixel_mixing *mix;
     bool pitp, multiplexed;
     bool track;      /* chains keep their subpaths (controlled steps, angle statistics) */
     int tech_before; /* the current chain's technique when the iteration began */

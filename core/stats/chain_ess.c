@@ -78,3 +78,15 @@ double ess_tau(const double *x, int m, size_t n)
 }
 
 double ess_of(const double *x, int m, size_t n) { return (double)m * (double)n / ess_tau(x, m, n); }
+
+double ess_se(const double *x, int m, size_t n)
+{
+    size_t N = (size_t)m * n;
+    double mean = 0, q = 0;
+    for (size_t i = 0; i < N; i++)
+        mean += x[i];
+    mean /= (double)N;
+    for (size_t i = 0; i < N; i++)
+        q += (x[i] - mean) * (x[i] - mean);
+    return sqrt(q / (double)(N - 1) / ess_of(x, m, n));
+}

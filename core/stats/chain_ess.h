@@ -16,5 +16,9 @@
 double ess_tau(const double *x, int m, size_t n);
 /* m n / tau (NaN as tau). */
 double ess_of(const double *x, int m, size_t n);
+/* The standard error of the mean of all m n draws: their sd times sqrt(1 / ESS) (NaN as tau). On
+ * AR(1) chains it is closer to the truth, and far less scattered, than batch means of
+ * core/stats/mlt_stats.h's 2048 values (tests/stats/test_se_estimators.c); it needs the draws. */
+double ess_se(const double *x, int m, size_t n);
 
 #endif

@@ -188,10 +188,9 @@ static void row_label(const struct mixing_row *r, char *buf, size_t len)
         snprintf(buf, len, "%d", r->k);
 }
 
-void mixing_write_csv(FILE *f, const struct mixing_row *rows, int n)
+/* The rows, each opened by "RUN," when run is given and closed by ",ESS_PER_S" when seconds > 0. */
+static void write_rows(FILE *f, const char *run, const struct mixing_row *rows, int n, double seconds)
 {
-    fprintf(f, "length,chains,draws,thin,rhat_contrib,rhat_target,ess_total,ess_per_chain_min,tau,"
-               "longest_reject_run_max,stuck_share,startup_z,warning\n");
     for (int i = 0; i < n; i++) {
         const struct mixing_row *r = &rows[i];
         char k[16], w[32] = "";
@@ -199,10 +198,29 @@ void mixing_write_csv(FILE *f, const struct mixing_row *rows, int n)
         static const char *const words[] = {"rhat", "ess", "stuck"};
         for (int b = 0; b < 3; b++)
             if (r->warn & (1u << b)) snprintf(w + strlen(w), sizeof w - strlen(w), "%s%s", *w ? "+" : "", words[b]);
-        fprintf(f, "%s,%d,%ld,%ld,%.4f,%.4f,%.1f,%.1f,%.4g,%ld,%.4f,%.3f,%s\n", k, r->chains, r->draws, r->thin,
+        if (run) fprintf(f, "%s,", run);
+        fprintf(f, "%s,%d,%ld,%ld,%.4f,%.4f,%.1f,%.1f,%.4g,%ld,%.4f,%.3f,%s", k, r->chains, r->draws, r->thin,
                 r->rhat_contrib, r->rhat_target, r->ess_total, r->ess_chain_min, r->tau, r->longest_max, r->stuck_share,
                 r->startup_z, *w ? w : "ok");
+        if (run) fprintf(f, ",%.3f,%.4g", seconds, seconds > 0 ? r->ess_total / seconds : NAN);
+        fputc('\n', f);
     }
+}
+
+static const char mixing_cols[] = "length,chains,draws,thin,rhat_contrib,rhat_target,ess_total,ess_per_chain_min,tau,"
+                                  "longest_reject_run_max,stuck_share,startup_z,warning";
+
+void mixing_write_csv(FILE *f, const struct mixing_row *rows, int n)
+{
+    fprintf(f, "%s\n", mixing_cols);
+    write_rows(f, NULL, rows, n, 0);
+}
+
+void mixing_runs_header(FILE *f) { fprintf(f, "run,%s,seconds,ess_per_s\n", mixing_cols); }
+
+void mixing_write_run(FILE *f, const char *run, const struct mixing_row *rows, int n, double seconds)
+{
+    write_rows(f, run, rows, n, seconds);
 }
 
 /* "; WHAT at lengths 3, 4" for the length rows (all but the last, unless it is the only row)

@@ -57,6 +57,11 @@ struct mixing_row {
 int mixing_rows(const struct chain_trace *t, int n, struct mixing_row *rows, int max);
 /* The CSV header and rows (after the caller's metadata lines). */
 void mixing_write_csv(FILE *f, const struct mixing_row *rows, int n);
+/* The same rows for a table of several runs: the header, "run," before the columns above and
+ * ",seconds,ess_per_s" after them (ess_total over the run's seconds; NaN when untimed); and one
+ * run's rows. */
+void mixing_runs_header(FILE *f);
+void mixing_write_run(FILE *f, const char *run, const struct mixing_row *rows, int n, double seconds);
 /* One line for the run's summary ("R-hat 1.05 at lengths 3, 4; ..."), or false when no row warns. */
 bool mixing_warning_line(const struct mixing_row *rows, int n, char *buf, size_t len);
 

@@ -13,8 +13,9 @@
  * "light:mctls/mmlt-large": the ratio of those shares), OUT/fig4.5-trials.csv:
  * length,statistic,value,se, both acceptances predicted from independent pairs of subpaths and
  * split into their factors (fig4_5_trials.h; 4x the chains' proposals per length, jackknife
- * errors), and OUT/claims.csv and claims.md: the thesis's statements on the figure (§4.3) with
- * their verdicts, and two checks of the chains against the prediction. */
+ * errors), OUT/fig4.5-mixing.csv: the chains' mixing diagnostics per variant and length
+ * (common/mixing_runs.h; a warning on stderr as bin/render's), and OUT/claims.csv and claims.md: the thesis's
+ * statements on the figure (§4.3) with their verdicts, and two checks of the chains against the prediction. */
 #include "base/parallel.h"
 #include "base/util.h"
 #include "ch4/ch4_common.h"
@@ -22,6 +23,7 @@
 #include "ch4/fig4_5_trials.h"
 #include "common/csv_meta.h"
 #include "common/die.h"
+#include "common/mixing_runs.h"
 #include "common/opts.h"
 #include "common/table_set.h"
 #include "mcmc/mlt.h"
@@ -62,7 +64,7 @@ static const struct column ratio_cols[] = {COL_STRING(struct ratio_row, "ratio",
 
 /* Variant m's chain over all lengths: its rows of OUT/fig4.5.csv, its acceptances into tab. */
 static bool run_variant(const struct opts_accept *a, const struct scene *sc, int m, struct table *out,
-                        struct accept_table *tab, char *err, size_t errlen)
+                        struct mixing_runs *mx, struct accept_table *tab, char *err, size_t errlen)
 {
     int K = a->max_length;
     const struct fig4_5_variant *va = &fig4_5_variants[m];
@@ -83,6 +85,7 @@ static bool run_variant(const struct opts_accept *a, const struct scene *sc, int
     fprintf(stderr, "fig4.5: %s, %ld mutations over lengths 1..%d\n", va->name, a->mutations, K);
     struct mlt_result r;
     if (!mlt_render(sc, &o, &r, err, errlen)) return false;
+    mixing_runs_add(mx, va->name, &r, r.seconds);
     enum proposal_kind kind = va->step == LARGE_MMLT ? PROPOSAL_LARGE : PROPOSAL_MCTLS;
     for (int k = 1; k <= K; k++) {
         /* both technique outcomes together: the figure plots all large steps of a length */
@@ -97,7 +100,8 @@ static bool run_variant(const struct opts_accept *a, const struct scene *sc, int
     return true;
 }
 
-/* Every variant's chain over all lengths: OUT/fig4.5.csv, and its acceptances into tab. */
+/* Every variant's chain over all lengths: OUT/fig4.5.csv, its chains' mixing diagnostics
+ * OUT/fig4.5-mixing.csv (common/mixing_runs.h), and its acceptances into tab. */
 static bool run_variants(const struct opts_accept *a, const struct scene *sc, struct accept_table *tab, char *err,
                          size_t errlen)
 {
@@ -112,12 +116,23 @@ static bool run_variants(const struct opts_accept *a, const struct scene *sc, st
     csv_meta(f, "threads", "%d", a->fig.threads);
     csv_meta(f, "mutations_per_method", "%ld", a->mutations);
     table_header(&tb.t[0]);
+    struct mixing_runs mx;
+    f = mixing_runs_open(&mx, "fig4_5", "fig4.5-mixing.csv");
+    csv_meta_head(f, "fig4.5: the mixing diagnostics of the chains behind fig4.5.csv (core/mcmc/docs/outputs.md)",
+                  a->fig.scene, a->fig.scale);
+    csv_meta(f, "seed", "%llu", (unsigned long long)a->fig.seed);
+    csv_meta(f, "threads", "%d", a->fig.threads);
     for (int m = 0; m < NV; m++)
-        if (!run_variant(a, sc, m, &tb.t[0], tab, err, errlen)) {
+        if (!run_variant(a, sc, m, &tb.t[0], &mx, tab, err, errlen)) {
             text_out_free(&tb.t[0].out);
+            text_out_free(&mx.out);
             return false;
         }
-    return table_set_save(&tb, "fig4_5", a->fig.out, err, errlen);
+    if (!table_set_save(&tb, "fig4_5", a->fig.out, err, errlen)) {
+        text_out_free(&mx.out);
+        return false;
+    }
+    return mixing_runs_save(&mx, a->fig.out, err, errlen);
 }
 
 /* The ratio rows of OUT/fig4.5-ratios.csv whose shape the figure is about. */

@@ -9,13 +9,16 @@
  * method,length,technique_changed,attempts,mean_accept,stderr,accepted_fraction,runs,run_se
  * (stderr: batch-means over the merged runs; run_se: standard error of the runs' means; cells with
  * fewer than 16000 proposals are left out), and OUT/fig6.1-pitp.csv: per length, PITP's perturbations, the fraction
- * with j != i, the inversion failures and the mean |j - i|; and OUT/claims.csv, OUT/claims.md: the thesis's claims on
- * Fig. 6.1 decided from the runs' means and their standard error over the runs. */
+ * with j != i, the inversion failures and the mean |j - i|; OUT/fig6.1-mixing.csv: each run's chains'
+ * mixing diagnostics per length (common/mixing_runs.h; a warning on stderr as bin/render's); and OUT/claims.csv,
+ * OUT/claims.md: the thesis's claims on Fig. 6.1 decided from the runs' means and their standard error over the runs.
+ */
 #include "base/parallel.h"
 #include "base/util.h"
 #include "common/claims.h"
 #include "common/csv_meta.h"
 #include "common/die.h"
+#include "common/mixing_runs.h"
 #include "common/opts.h"
 #include "common/table_set.h"
 #include "mcmc/mlt.h"
@@ -214,7 +217,7 @@ static const struct column pitp_cols[] = {COL_INT(struct pitp_row, "length", "%d
                                           COL_DOUBLE(struct pitp_row, "mean_dtech", "%.9g", dtech),
                                           {0}};
 
-/* The metadata lines of both tables. */
+/* The metadata lines of every table. */
 static void write_meta(FILE *f, const void *ctx)
 {
     const struct opts_accept *a = ctx;
@@ -234,9 +237,10 @@ static const char *const names[2] = {"mmlt", "pitp"};
  * longer than a batch, so the batch-means error (plotted, as the thesis does) understates the
  * run-to-run scatter, which run_se (over the runs' means) measures for check-fig6.1. Each run is
  * the main pass, then the short one (its own seed and seed pass; a length's chain does not depend
- * on the longest length, so the two merge). False with a message in err. */
+ * on the longest length, so the two merge). Each run's mixing diagnostics into mx. False with a
+ * message in err. */
 static bool run_method(const struct scene *sc, const struct opts_accept *a, int m, struct mlt_stats *all,
-                       struct mlt_stats run[RUNS], char *err, size_t errlen)
+                       struct mlt_stats run[RUNS], struct mixing_runs *mx, char *err, size_t errlen)
 {
     stats_clear(all);
     for (int rr = 0; rr < RUNS; rr++) {
@@ -258,6 +262,9 @@ static bool run_method(const struct scene *sc, const struct opts_accept *a, int 
                     o.mutations, kmax);
             struct mlt_result r;
             if (!mlt_render(sc, &o, &r, err, errlen)) return false;
+            char label[64];
+            snprintf(label, sizeof label, "%s run %d%s", names[m], rr + 1, pass ? " short" : "");
+            mixing_runs_add(mx, label, &r, r.seconds);
             stats_merge(&run[rr], &r.stats);
             stats_merge(all, &r.stats);
             mlt_result_free(&r);
@@ -334,11 +341,16 @@ int main(int argc, char **argv)
     static struct cells cells;
     static struct mlt_stats all, run[RUNS];
     cells.K = a.max_length;
+    struct mixing_runs mx;
+    FILE *mf = mixing_runs_open(&mx, "fig6_1", "fig6.1-mixing.csv");
+    write_meta(mf, &a);
     for (int m = 0; m < 2; m++) {
-        if (!run_method(sc, &a, m, &all, run, err, sizeof err)) die(DIE_RUNTIME, "fig6_1", "%s", err);
+        if (!run_method(sc, &a, m, &all, run, &mx, err, sizeof err)) die(DIE_RUNTIME, "fig6_1", "%s", err);
         method_rows(m, &all, run, &cells, &ts);
     }
-    if (!table_set_save(&ts, "fig6_1", a.fig.out, err, sizeof err)) die(DIE_RUNTIME, "fig6_1", "%s", err);
+    if (!table_set_save(&ts, "fig6_1", a.fig.out, err, sizeof err) ||
+        !mixing_runs_save(&mx, a.fig.out, err, sizeof err))
+        die(DIE_RUNTIME, "fig6_1", "%s", err);
     char *md = claims(&cells, a.fig.out, a.fig.scale, err, sizeof err);
     if (!md) die(DIE_RUNTIME, "fig6_1", "%s", err);
     free(md);

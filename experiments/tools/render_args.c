@@ -41,7 +41,7 @@ static void scene_arg(const char *prog, const char *arg, void *ctx)
 /* The summary line and the input limits (base/input_limits.h), composed from the limits themselves. */
 static const char *help_tail(void)
 {
-    static char t[4096];
+    static char t[6144];
     snprintf(t, sizeof t,
              "Prints one summary line: method, samples, seconds, samples/s.\n"
              "pssmlt, mmlt, pitp also write PREFIX.mixing.csv, the chains' mixing diagnostics: a row per path\n"
@@ -55,6 +55,11 @@ static const char *help_tail(void)
              "acceptance explains. startup_z: the first 1 %% of each chain against the rest (|z| > 3: start-up\n"
              "bias). Without --quiet a warning on stderr names the lengths with R-hat > 1.01, ESS < 100 or a\n"
              "stuck chain.\n"
+             "They also write PREFIX.mixing.exr (grey): per pixel, the chains' visits (arrivals of a chain in\n"
+             "the pixel) over the iterations whose current state splatted there (0: none did); 1/value is the\n"
+             "mean number of iterations a chain stayed once there. High (near 1): chains move on at every\n"
+             "iteration; low: a chain sat there (a stuck state, a splotch, or steps too small to leave the\n"
+             "pixel). Compare runs at one resolution (core/mcmc/docs/outputs.md).\n"
              "Input limits (refused with one error line, exit status 2): scene files %ld MB; resolution %d per side\n"
              "and %ld pixels; textures %d per side, %ld texels, %d channels; meshes %ld vertices and triangles;\n"
              "paths %d segments (a larger max_bounces is capped with a warning).\n",

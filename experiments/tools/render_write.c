@@ -8,6 +8,7 @@
 #include "mc/bdpt_tech.h"
 #include "mc/render.h"
 #include "stats/mixing.h"
+#include "stats/pixel_mixing.h"
 #include "tools/mlt_cli.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -35,8 +36,14 @@ bool render_write_mixing(const struct render_args *a, const struct mlt_result *r
     csv_meta(f, "trace_cap", "%d", TRACE_CAP);
     mixing_write_csv(f, rows, n);
     char path[4096];
+    snprintf(path, sizeof path, "%s.mixing.exr", a->out); /* distinct states over splats per pixel */
+    struct image *im = pixmix_image(r->mix);
+    bool ok = img_write_exr(im, 1.0, path, err, errlen);
+    img_destroy(im);
     snprintf(path, sizeof path, "%s.mixing.csv", a->out);
-    return text_out_save(&t, path, err, errlen);
+    if (ok) return text_out_save(&t, path, err, errlen);
+    text_out_free(&t);
+    return false;
 }
 
 /* PREFIX.angle.exr (mean angle change per pixel, radians) and PREFIX.angle.csv (per length). */

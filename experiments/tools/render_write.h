@@ -15,7 +15,8 @@ bool render_write_csv(const struct render_args *a, const struct mlt_result *r, c
 /* PREFIX.csv of pt and bdpt: the run's samples and time (metadata) and one row, so that a
  * comparison at equal time (bin/ch6_equal) reads every method's run the same way. */
 bool render_write_mc_csv(const struct render_args *a, const struct render_stats *st, char *err, size_t errlen);
-/* PREFIX.mixing.csv: the chains' mixing diagnostics per length and over all (core/stats/mixing.h);
+/* PREFIX.mixing.csv: the chains' mixing diagnostics per length and over all (core/stats/mixing.h), and
+ * PREFIX.mixing.exr, distinct states over splats per pixel (core/stats/pixel_mixing.h);
  * into warn (when a row warns; else "") the summary's warning. */
 bool render_write_mixing(const struct render_args *a, const struct mlt_result *r, char *warn, size_t warnlen, char *err,
                          size_t errlen);

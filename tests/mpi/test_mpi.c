@@ -140,6 +140,9 @@ static void same_bits(const char *method, const char *budget, bool mcmc, bool an
             cr_expect_str_eq(a, b, "%s: %s.mixing.csv differs from one process's", method, runs[i].name);
             free(a);
             free(b);
+            /* the per-pixel counts, summed over the ranks like the image */
+            cr_expect(same_pixels("single", runs[i].name, "mixing.exr"), "%s: %s.mixing.exr differs", method,
+                      runs[i].name);
         }
         if (angle) {
             cr_expect(same_pixels("single", runs[i].name, "angle.exr"), "%s: %s.angle.exr differs", method,

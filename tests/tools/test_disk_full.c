@@ -154,7 +154,8 @@ Test(disk_full, render_exr_under_a_file_size_limit)
 
 Test(disk_full, render_png_csv_angle_and_technique_outputs)
 {
-    const char *names[] = {"a.png", "a.csv", "a.angle.exr", "a.tech-t2.exr", "a.tech.csv"};
+    const char *names[] = {"a.png",       "a.csv",         "a.mixing.exr", "a.mixing.csv",
+                           "a.angle.exr", "a.tech-t2.exr", "a.tech.csv"};
     good_run(MMLT); /* a failing run changes nothing to redo */
     for (size_t i = 0; i < sizeof names / sizeof *names; i++)
         fails_cleanly(NULL, MMLT, (struct run){.fail = names[i]}, names[i], NULL);
@@ -177,6 +178,12 @@ Test(disk_full, checkpoint_at_ctrl_c)
 Test(disk_full, experiment_csv)
 {
     fails_cleanly(FIG45, FIG45, (struct run){.limit = 256, .chatty = true}, "fig4.5.csv", NULL);
+}
+
+/* a figure's table of its chains' mixing diagnostics (common/mixing_runs.h) */
+Test(disk_full, experiment_mixing_csv)
+{
+    fails_cleanly(FIG45, FIG45, (struct run){.fail = "fig4.5-mixing.csv", .chatty = true}, "fig4.5-mixing.csv", NULL);
 }
 
 Test(disk_full, experiment_markdown)
