@@ -11,7 +11,7 @@ static uint64_t name_hash(const char *s)
     return h;
 }
 
-void inv_run(const struct inv_func *f, struct inv_scratch *x, long n, uint64_t seed, bool broken, struct inv_result *r)
+void inv_run(const struct inv_func *f, struct inv_scratch *x, long n, uint64_t seed, double scale_first, struct inv_result *r)
 {
     memset(r, 0, sizeof *r);
     uint64_t h = name_hash(f->name);
@@ -36,9 +36,9 @@ void inv_run(const struct inv_func *f, struct inv_scratch *x, long n, uint64_t s
             r->failures++;
             continue;
         }
-        for (int k = 0; broken && k < INV_SLOTS; k++)
+        for (int k = 0; scale_first != 1 && k < INV_SLOTS; k++)
             if (!isnan(inv[k])) {
-                inv[k] *= 0.99;
+                inv[k] *= scale_first;
                 break;
             }
         inv_set_add(&test, inv);

@@ -18,9 +18,9 @@ struct inv_result {
 };
 
 /* Seeds come from (seed, the function's name): a function's numbers do not depend on the others.
- * `broken`: the first inverted number of every sample is scaled by 0.99, an inverse that must fail
- * the test (the check's and the unit test's demonstration). Forward draws stop at 100 n per pass
+ * `scale_first` (1: none): the first inverted number of every sample is multiplied by it, a broken
+ * inverse the test must reject (the check's and the unit test's demonstration). Forward draws stop at 100 n per pass
  * (a function whose samples are rarer tests fewer). */
-void inv_run(const struct inv_func *f, struct inv_scratch *x, long n, uint64_t seed, bool broken, struct inv_result *r);
+void inv_run(const struct inv_func *f, struct inv_scratch *x, long n, uint64_t seed, double scale_first, struct inv_result *r);
 
 #endif

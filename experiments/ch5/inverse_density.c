@@ -41,7 +41,7 @@ static void worker(int tid, void *ctx)
     for (int i; (i = atomic_fetch_add(&j->next, 1)) < j->n;) {
         const struct inv_func *f = &j->f[i];
         long n = f->kind == INV_PATH ? j->path_samples : j->samples;
-        inv_run(f, x, n, j->seed, j->broken && !strcmp(j->broken, f->name), &j->r[i]);
+        inv_run(f, x, n, j->seed, j->broken && !strcmp(j->broken, f->name) ? 0.99 : 1, &j->r[i]);
         fprintf(stderr, "inverse_density: %s: %ld inverted, %ld failed, p = %.3g (chi2), %.3g (KS)\n", f->name,
                 j->r[i].samples, j->r[i].failures, j->r[i].g.chi_p_adj, j->r[i].g.ks_p_adj);
     }
