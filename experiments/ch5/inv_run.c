@@ -11,7 +11,8 @@ static uint64_t name_hash(const char *s)
     return h;
 }
 
-void inv_run(const struct inv_func *f, struct inv_scratch *x, long n, uint64_t seed, double scale_first, struct inv_result *r)
+void inv_run(const struct inv_func *f, struct inv_scratch *x, long n, uint64_t seed, double scale_first,
+             struct inv_result *r)
 {
     memset(r, 0, sizeof *r);
     uint64_t h = name_hash(f->name);

@@ -21,6 +21,7 @@ struct inv_result {
  * `scale_first` (1: none): the first inverted number of every sample is multiplied by it, a broken
  * inverse the test must reject (the check's and the unit test's demonstration). Forward draws stop at 100 n per pass
  * (a function whose samples are rarer tests fewer). */
-void inv_run(const struct inv_func *f, struct inv_scratch *x, long n, uint64_t seed, double scale_first, struct inv_result *r);
+void inv_run(const struct inv_func *f, struct inv_scratch *x, long n, uint64_t seed, double scale_first,
+             struct inv_result *r);
 
 #endif

@@ -99,7 +99,7 @@ int main(int argc, char **argv)
          .help = "forward samples per pass of a path function", .def = "40000", .paper = "200000"},
         {"--bsdf-scenes", OPT_STRING, OPT_DST(c.bsdf_scenes), .arg = "A,B",
          .help = "scenes of scenes/ whose BSDF types are tested (each type once)",
-         .def = "cornell-box,ajar,materials,surfaces,glass-marble,window"},
+         .def = "cornell-box,ajar,materials,surfaces"},
         {"--path-scenes", OPT_STRING, OPT_DST(c.path_scenes), .arg = "A,B",
          .help = "scenes of scenes/ whose camera, emitter and paths are tested", .def = "cornell-box,ajar"},
         {"--break-inverse", OPT_STRING, OPT_DST(c.broken), .arg = "NAME",

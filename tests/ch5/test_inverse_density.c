@@ -43,8 +43,8 @@ static void run_two(double scale, double p[2])
         struct inv_result r;
         inv_run(g[i], x, N[i], 7, scale, &r);
         cr_log_info("%s scale %g: %ld inverted, %ld failed, %s, chi2 %.1f (%d) at %s p %.3g, KS D %.4f at %s p %.3g",
-                    g[i]->name, scale, r.samples, r.failures, r.uniform ? "uniform" : "forward", r.g.chi2,
-                    r.g.chi_dof, r.g.chi_worst, r.g.chi_p_adj, r.g.ks_d, r.g.ks_worst, r.g.ks_p_adj);
+                    g[i]->name, scale, r.samples, r.failures, r.uniform ? "uniform" : "forward", r.g.chi2, r.g.chi_dof,
+                    r.g.chi_worst, r.g.chi_p_adj, r.g.ks_d, r.g.ks_worst, r.g.ks_p_adj);
         cr_expect(r.samples + r.failures == N[i], "%s: %ld samples of %ld", g[i]->name, r.samples + r.failures, N[i]);
         cr_expect(r.failures <= N[i] / 1000, "%s: %ld inversions failed", g[i]->name, r.failures);
         cr_expect(r.g.chi_tests > 0 && r.g.ks_tests > 0, "%s: nothing tested", g[i]->name);
