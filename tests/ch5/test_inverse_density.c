@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "ch5/inv_run.h"
+#include "common/verdict.h"
 #include "path/scene_ready.h"
 #include "support/scenes.h"
 
@@ -79,4 +80,16 @@ Test(inverse_density, ks_law_and_sidak)
     cr_expect(fabs(inv_ks_q(1.36) - 0.0494) < 2e-4, "Q(1.36) = %.5f", inv_ks_q(1.36));
     cr_expect(fabs(inv_sidak_alpha(0.01, 4) - (1 - pow(0.99, 0.25))) < 1e-12);
     cr_expect(fabs(inv_sidak_p(inv_sidak_alpha(0.01, 4), 4) - 0.01) < 1e-12);
+}
+
+/* The ledger's verdict from p-values (common/verdict.h): holds at exactly the Sidak level of m tests,
+ * contradicted just below it, and its z margin has the sign of the verdict. */
+Test(inverse_density, verdict_no_rejection_at_the_sidak_level)
+{
+    double each = inv_sidak_alpha(0.01, 88);
+    struct verdict at = verdict_no_rejection(each, 0.01, 88), below = verdict_no_rejection(each * 0.999, 0.01, 88);
+    struct verdict high = verdict_no_rejection(0.5, 0.01, 88);
+    cr_expect_str_eq(at.word, "holds");
+    cr_expect_str_eq(below.word, "contradicted");
+    cr_expect(below.zmin < 0 && high.zmin > 0 && fabs(at.zmin) < 1e-9, "z %g %g %g", below.zmin, at.zmin, high.zmin);
 }
