@@ -15,8 +15,9 @@ esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale meq=results/mmlt-equal-$scale
 bg=results/bdpt-pt-$scale cdc=results/cdc-ch6-$scale mis=results/mis-robust-$scale md=results/mmlt-design-$scale
 # The claims ledger's files: every claims.csv of the figures at this scale.
-ledger=$(ls results/fig*/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv results/mmlt-ratio/"$scale"/*/claims.csv \
-  "$hyb"/*/claims.csv "$meq"/*/claims.csv "$tech"/claims.csv "$bg"/*/claims.csv "$cdc"/*/claims.csv "$mis"/*/claims.csv "$md"/*/claims.csv 2>/dev/null || true)
+ledger=$(ls results/fig*/claims.csv results/inverse-density/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv \
+  results/mmlt-ratio/"$scale"/*/claims.csv "$hyb"/*/claims.csv "$meq"/*/claims.csv "$tech"/claims.csv "$bg"/*/claims.csv \
+  "$cdc"/*/claims.csv "$mis"/*/claims.csv "$md"/*/claims.csv 2>/dev/null || true)
 # id | title | make command | images (space-separated) | data files | claim | verdict: the README's quick-scale
 # result, or @FILE... = the measured verdicts, the '- ' lines of those files (written by the run's scripts)
 entries=(
@@ -27,6 +28,7 @@ entries=(
 "fig4.6|Thesis Fig. 4.6: equal-time MMLT large steps vs MCTLS vs hybrid (no small steps)|make fig4.6|results/fig4.6/fig4.6.png|results/fig4.6/fig4.6.csv results/fig4.6/fig4.6-runs.csv results/fig4.6/fig4.6.md results/fig4.6/claims.csv|At equal time MMLT large steps and MCTLS are similarly noisy: an MCTLS step costs about 5x as much, which cancels its higher acceptance (§4.3).|@results/fig4.6/claims.md"
 "fig5.5|Thesis Fig. 5.5: angle change of MMLT vs controlled small steps|make fig5.5|results/fig5.5/fig5.5.png|results/fig5.5/fig5.5.csv results/fig5.5/fig5.5.md results/fig5.5/claims.csv|MMLT's small steps change the path more near edges; controlled steps do not.|@results/fig5.5/claims.md"
 "fig5.6|Thesis Fig. 5.6: rendered images, MMLT vs controlled small steps|make fig5.6|results/fig5.6/fig5.6.png|results/fig5.6/fig5.6.csv results/fig5.6/fig5.6.md results/fig5.6/claims.csv|Controlled small steps give streaky, splotchy noise and are not better.|@results/fig5.6/claims.md"
+"inverse-density|Thesis §5.1, Eq. 5.3: inverted numbers against forward ones, every sampling function with an inverse|make inverse-density||results/inverse-density/inverse_density.csv results/inverse-density/inverse_density.md results/inverse-density/claims.csv|The numbers an inverse random walk returns for a path are distributed as the numbers with which the path was sampled.|@results/inverse-density/claims.md"
 "fig6.1|Thesis Fig. 6.1: small-step acceptance per length, MMLT vs PITP, split by technique change|make fig6.1|results/fig6.1/fig6.1.png|results/fig6.1/fig6.1.csv results/fig6.1/fig6.1-pitp.csv results/fig6.1/fig6.1.md results/fig6.1/claims.csv|Technique changes in MMLT are very unlikely to be accepted, whereas technique changes in PITP have little effect on the acceptance probability (§6.1).|@results/fig6.1/claims.md"
 "table1-cmlt|CMLT paper Table 1 and Fig. 3: the two-light toy|make table1-cmlt|results/table1-cmlt/fig3.png|results/table1-cmlt/table1.csv results/table1-cmlt/table1_stats.csv results/table1-cmlt/table1.md results/table1-cmlt/claims.csv|PSS-MLT-1 has about twice PSS-MLT-2's RMSE; PSS-MLT-AVG is worse than PSS-MLT-2; PSS-MLT-MIX is better than AVG; CMLT-EPSM is just worse than MIX; CMLT is best.|@results/table1-cmlt/claims.md"
 "fig6.2|Thesis Fig. 6.2: living room, equal time, insets|make fig6.2|$ch6/living-room/fig6.2.png $ch6/living-room/error-vs-time.png|$ch6/living-room/summary.csv $ch6/living-room/runs.csv $ch6/living-room/living-room.md $ch6/living-room/claims.md $ch6/living-room/claims.csv|PSSMLT worst (all connections cost); MMLT streaky/splotchy; PITP most uniform.|@$ch6/living-room/claims.md"

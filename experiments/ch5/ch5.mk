@@ -1,6 +1,6 @@
 # Thesis Figures 5.5 and 5.6 (controlled small steps, §5.3) on scenes/jewelry: binaries, figures,
-# checks against results/baselines/, montages and tables.
-$(eval $(call TOOLS,ch5,fig5_5 fig5_6))
+# checks against results/baselines/, montages and tables; the inverse-density test of Eq. 5.3.
+$(eval $(call TOOLS,ch5,fig5_5 fig5_6 inverse_density))
 
 # Thesis Fig. 5.5: angle-change images (MMLT vs controlled small steps) with the edge/elsewhere table.
 fig5.5_POST = bash scripts/fig5-montage.sh results/fig5.5 mmlt.angle.png "MMLT small steps" controlled.angle.png "controlled small steps" root.angle.png "root only (Alg. 3)" edges.png "edge mask (2 px)"
@@ -23,3 +23,14 @@ CHECK_fig5.6_relmse := --key kind --mean relmse --se stderr --count seeds --alph
 CHECK_fig5.6_corrlen := --key kind --mean corrlen --se corrlen_se --count seeds --alpha 0.003345
 CHECK_fig5.6_blur8 := --key kind --mean blur8 --se blur8_se --count seeds --alpha 0.003345
 $(eval $(call CHECK,fig5.6,fig5_6,101))
+
+# Thesis §5.1 Eq. 5.3 (claim T21): the inverted numbers of every sampling function with an inverse
+# against its forward numbers (chi-square and KS, Sidak alpha = 0.01 over the functions).
+$(eval $(call FIGURE,inverse-density,inverse_density))
+# The check is the verdict itself at the quick scale with other seeds: every p-value above the
+# corrected level (bin/inverse_density --require-holds exits 1 otherwise); no baseline.
+.PHONY: check-inverse-density
+check-inverse-density: deps $(BIN)/inverse_density
+	$(BIN)/inverse_density --scale quick --seed 101 --out results/check-inverse-density --require-holds
+CHECK_TARGETS += check-inverse-density
+TEST_LIBS += $(ch5_LIB)

@@ -1,4 +1,5 @@
 /* Verdicts from z values (verdict.h). */
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdbool.h>
 
@@ -61,5 +62,13 @@ struct verdict verdict_extreme(const double *mean, const double *se, const bool 
         v.word = "contradicted";
     else
         v.seeds_needed = seeds_for(v.zmin, seeds);
+    return v;
+}
+
+struct verdict verdict_no_rejection(double p_min, double alpha, int m)
+{
+    double each = -expm1(log1p(-alpha) / m);
+    struct verdict v = {p_min >= each ? "holds" : "contradicted", 0, 0, 0};
+    v.zmin = gsl_cdf_ugaussian_Qinv(each) - gsl_cdf_ugaussian_Qinv(fmin(fmax(p_min, 1e-300), 1 - 1e-12));
     return v;
 }

@@ -33,4 +33,11 @@ struct verdict verdict_extreme(const double *mean, const double *se, const bool 
  * is the deciding one; seeds_needed as above. */
 struct verdict verdict_similar(double a, double se_a, double b, double se_b, double margin, int seeds);
 
+/* Claim: no test of a family rejects (goodness of fit), at family-wise level alpha with a Sidak
+ * correction over m tests: "holds" when the smallest p-value p_min is at least the per-test level
+ * 1 - (1 - alpha)^(1/m), "contradicted" when it is below (a test cannot be undecided). zmin is the
+ * margin in normal quantiles, Qinv(alpha_each) - Qinv(p_min): positive when it holds, as the z of
+ * the other verdicts; deciding and seeds_needed are 0. */
+struct verdict verdict_no_rejection(double p_min, double alpha, int m);
+
 #endif

@@ -53,7 +53,8 @@ Test(normalisation, progressive_rescales_the_image_exactly)
         size_t n = (size_t)3 * a.img->w * a.img->h;
         for (size_t p = 0; p < n; p++) {
             double want = ratio * a.img->px[p];
-            if (want != 0) worst = fmax(worst, fabs(b.img->px[p] / want - 1));
+            if (want != 0)
+                worst = fmax(worst, fabs(b.img->px[p] / want - 1));
             else
                 cr_assert_eq(b.img->px[p], 0);
         }
