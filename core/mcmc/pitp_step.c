@@ -10,12 +10,15 @@
 static bool applies(const struct worker *wk, const struct chain *c, bool large)
 {
     (void)c;
-    return wk->pitp && !large;
+    return wk->pitp && !large && wk->opts->pitp_rate > 0;
 }
 
 static void step(struct worker *wk, struct chain *c, bool large, double t_start)
 {
     (void)large, (void)t_start; /* not timed: its time is the small step's */
+    /* --pitp-rate: below 1 the worker's generator decides (the thesis's 1 draws nothing) */
+    double rate = wk->opts->pitp_rate;
+    if (rate < 1 && !(rng_uniform(&wk->r) < rate)) return;
     int s_new;
     double accept;
     struct connection conn;

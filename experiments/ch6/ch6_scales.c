@@ -19,7 +19,9 @@
  * mis (make mis-robust, thesis Figs. 3.3, 3.5): paths of 2 segments (direct light), equal samples,
  * 16 (full, paper: 64) per pixel, 4 or 8 seeds, 128x128 (256x256), a 1024- (4096-) spp reference.
  * background (make bdpt-pt, thesis Fig. 3.4): equal samples, 16 (full, paper: 64) per pixel, 4 or 8
- * seeds, 128x72 (256x144), a 1024- (4096-) spp reference. */
+ * seeds, 128x72 (256x144), a 1024- (4096-) spp reference.
+ * pitp-rate (make pitp-rate, the harness's question how often PITP should move the technique): cdc's
+ * rows, PITP at each rate; each method gives its own --p-large 0.1 and --pitp-rate. */
 #include "base/util.h"
 #include "ch6/ch6_equal.h"
 #include "common/opts.h"
@@ -29,7 +31,7 @@
 #define ALL_SCENES NULL
 
 static const struct {
-    const char *study, *scales, *scene; /* scales: the scales the row applies at, separated by spaces */
+    const char *study, *scales, *scene; /* study, scales: those the row applies to, separated by spaces */
     const char *args[MAX_SCALE_ARGS];
 } scales[] = {
     {"equal-time",
@@ -77,19 +79,19 @@ static const struct {
      ALL_SCENES,
      {"--time", "120", "--seeds", "8", "--reference-spp", "16384", "--resolution", "128x72", "--render-args",
       "--p-large 0.1 --seed-paths 1000000"}},
-    {"cdc",
+    {"cdc pitp-rate",
      "quick",
      ALL_SCENES,
      {"--time", "4", "--seeds", "4", "--min-length", "3", "--reference-spp", "256", "--render-args", ""}},
-    {"cdc", "quick", "ajar", {"--resolution", "256x144"}},
-    {"cdc",
+    {"cdc pitp-rate", "quick", "ajar", {"--resolution", "256x144"}},
+    {"cdc pitp-rate",
      "full paper",
      ALL_SCENES,
      {"--time", "60", "--seeds", "8", "--min-length", "3", "--reference-spp", "4096", "--checkpoint", "60",
       "--render-args", ""}},
-    {"cdc", "full paper", "living-room", {"--resolution", "512x288"}},
-    {"cdc", "full paper", "staircase", {"--resolution", "288x512"}},
-    {"cdc", "full paper", "ajar", {"--resolution", "512x288"}},
+    {"cdc pitp-rate", "full paper", "living-room", {"--resolution", "512x288"}},
+    {"cdc pitp-rate", "full paper", "staircase", {"--resolution", "288x512"}},
+    {"cdc pitp-rate", "full paper", "ajar", {"--resolution", "512x288"}},
     {"mis",
      "quick",
      ALL_SCENES,
@@ -150,7 +152,7 @@ char **ch6_with_scale(const struct opts_spec *spec, int *argc, char **argv)
     const char *add[4 * MAX_SCALE_ARGS];
     int n = 0;
     for (size_t k = 0; k < sizeof scales / sizeof *scales; k++) {
-        if (strcmp(study, scales[k].study) || !ch6_listed(scales[k].scales, scale) ||
+        if (!ch6_listed(scales[k].study, study) || !ch6_listed(scales[k].scales, scale) ||
             (scales[k].scene && !scene_is(scene, scales[k].scene)))
             continue;
         for (int j = 0; j < MAX_SCALE_ARGS && scales[k].args[j] && n < 4 * MAX_SCALE_ARGS; j++)

@@ -90,6 +90,7 @@ static double mutation_rate(const struct scene *sc, enum mlt_method m, enum smal
 {
     struct mlt_opts o = {.method = m,
                          .p_large = 0.1,
+                         .pitp_rate = 1,
                          .seconds = seconds,
                          .seed_paths = 20000,
                          .seed = 1,
@@ -120,6 +121,60 @@ static double mutation_rate(const struct scene *sc, enum mlt_method m, enum smal
     }
     mlt_result_free(&r);
     return rate;
+}
+
+/* The cost of PITP's technique move, differential: PITP at --pitp-rate 1 and 0 from the same seed with
+ * the same mutation budget make the same iterations, large and small steps alike, and the same seed
+ * pass and chain starts (which r.seconds leaves out), so the difference in chain time over the
+ * perturbations made is the time of one. Beside it the small step's own time: PITP at P = 0 with
+ * --p-large 0, every iteration one of MMLT's small steps. One thread, medians over `runs`, the
+ * budget about `seconds` of the P = 1 chain. NAN when a run fails. */
+struct technique_cost {
+    double small_us, move_us, moves_per_small;
+};
+
+static bool pitp_run(const struct scene *sc, double rate, double p_large, long mutations, int K, double *sec,
+                     long *small, long *moves)
+{
+    struct mlt_opts o = {.method = MLT_PITP,
+                         .p_large = p_large,
+                         .pitp_rate = rate,
+                         .mutations = mutations,
+                         .seed_paths = 20000,
+                         .seed = 1,
+                         .threads = 1,
+                         .max_length = K};
+    pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+    struct mlt_result r;
+    char err[256];
+    if (!mlt_render(sc, &o, &r, err, sizeof err)) return false;
+    *sec = r.seconds;
+    *small = r.stats.total[PROPOSAL_SMALL].attempts;
+    *moves = r.stats.total[PROPOSAL_PITP].attempts;
+    mlt_result_free(&r);
+    return *small > 0;
+}
+
+static struct technique_cost technique_cost(const struct scene *sc, int runs, double seconds, int K)
+{
+    struct technique_cost c = {NAN, NAN, NAN};
+    double s, move_us[99], small_us[99];
+    long small, moves, n = 20000;
+    if (!pitp_run(sc, 1, 0.1, n, K, &s, &small, &moves) || !(s > 0)) return c;
+    n = (long)(n * seconds / s);
+    for (int i = 0; i < runs; i++) {
+        double s0, s1, sp;
+        long small0, moves0, small1, moves1, smallp, movesp;
+        if (!pitp_run(sc, 0, 0.1, n, K, &s0, &small0, &moves0) || !pitp_run(sc, 1, 0.1, n, K, &s1, &small1, &moves1) ||
+            !pitp_run(sc, 0, 0, n, K, &sp, &smallp, &movesp) || !(moves1 > 0))
+            return c;
+        move_us[i] = 1e6 * (s1 - s0) / (double)moves1;
+        small_us[i] = 1e6 * sp / (double)smallp;
+        c.moves_per_small = (double)moves1 / (double)small1;
+    }
+    c.move_us = median(move_us, runs);
+    c.small_us = median(small_us, runs);
+    return c;
 }
 
 /* Peak memory once an image has been written: the first write opens the OpenImageIO module, whose
@@ -229,6 +284,10 @@ static void report(const char *path, const struct scene *sc, int runs, double se
         printf("  %-42s %8.2f %8.2f   %.3f of %.3f us (%.0f %%)\n", method_names[m], f.per[m].closest, f.per[m].shadow,
                ray_us, us, 100 * ray_us / us);
     }
+    struct technique_cost tc = technique_cost(sc, runs, seconds, K);
+    printf("%-44s %12.3f   mmlt's, pitp --pitp-rate 0 --p-large 0 (1 thread)\n", "small step (us)", tc.small_us);
+    printf("%-44s %12.3f   pitp P = 1 minus P = 0 per perturbation (%.2f per small step; 1 thread)\n",
+           "technique move (us)", tc.move_us, tc.moves_per_small);
     printf("%-44s %12.1f\n", "peak resident memory (MB)", ru.ru_maxrss / 1024.0);
     printf("%-44s %12.1f   (OpenImageIO loaded)\n", "  after writing EXR + PNG (MB)", io_mb);
 }
