@@ -6,8 +6,8 @@
 
 #include "camera/camera.h"
 #include "mc/render.h"
-#include "path/scene_ready.h"
 #include "mcmc/mlt_options.h"
+#include "path/scene_ready.h"
 #include "support/agree.h"
 #include "support/disk_cache.h"
 #include "support/scenes.h"
