@@ -1,7 +1,7 @@
 /* PITP's technique perturbation as a mutation (mutation.h; pitp.h): before every small step of a
- * PITP chain, always accepted; MMLT's small step then starts from the current path in the new
- * technique's form. Its per-chain state is the path in its technique's form (chain.x), which
- * this file also checkpoints. */
+ * PITP chain (or a share pitp_rate of them, mlt.h), always accepted; MMLT's small step then starts
+ * from the current path in the new technique's form. Its per-chain state is the path in its
+ * technique's form (chain.x), which this file also checkpoints. */
 #include "mcmc/mutation.h"
 #include "mcmc/splat_ev.h"
 #include "path/path_checkpoint.h"
