@@ -20,7 +20,8 @@ set key top right
 set ylabel 'relative MSE'
 plot csv using (P(strcol(cm))):(column(cr)):(column(crs)) with yerrorlines title 'relMSE', \
      csv using (P(strcol(cm))):(column(cb)):(column(cbs)) with yerrorlines title 'median block relMSE'
-set ylabel 'splotch statistic'
+set ylabel 'splotch statistic (log scale: the two differ in size)'
+set logscale y
 plot csv using (P(strcol(cm))):(column(cl)):(column(cls)) with yerrorlines title 'error share after 8x8 blur', \
      csv using (P(strcol(cm))):(column(cp)):(column(cps)) with yerrorlines title 'block-relMSE spread (CV)'
 unset multiplot
