@@ -317,6 +317,7 @@ check: $(CHECK_TARGETS)
 bench: deps all $(BENCH_TARGETS)
 	$(BIN)/bench
 	$(BIN)/bench --runs 1 --seconds 1 scenes/*/scene.json
+	bash scripts/bench-technique-ir.sh $(BIN)
 	$(if $(filter 1,$(MPI)),bash scripts/bench-mpi.sh $(BIN)/render)
 
 # 1 rank x 2 threads against 2 ranks x 1 thread (scripts/bench-mpi.sh), in the MPI=1 build.

@@ -92,6 +92,11 @@ struct mlt_opts {
      * (Alg. 4) or root perturbation (Alg. 3), see controlled_step.h. Controlled and root need the
      * Gaussian kernel without --cdc, and MMLT large steps. */
     enum small_step small_step;
+    /* PITP: the probability that a small step is preceded by the technique perturbation (1: the
+     * thesis's, every small step; 0: MMLT's small steps). Below 1 the decision is drawn from the
+     * worker's generator (pitp_step.c); at 0 and 1 nothing is drawn. A zero-initialised struct
+     * has 0: initialisers that run PITP set it (mlt_opts_defaults gives 1). */
+    double pitp_rate;
     bool angle_stats;     /* MMLT: angle change of every small step (angle_change.h) */
     bool ctrl_unit_ratio; /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
     /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a mutation

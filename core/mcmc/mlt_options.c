@@ -172,6 +172,12 @@ const struct mlt_option mlt_options[] = {
      .help = "mmlt/pitp small step (default pss; controlled: thesis 5.3 Alg. 4, root: Alg. 3, analysis only); the "
              "latter two use the Gaussian kernel",
      .csv_group = MLT_CSV_BEFORE_COUNTS, .csv_pos = 6, .csv_key = "small_step", .conflict = small_step_conflict},
+    {"pitp_rate", "--pitp-rate", MLT_OPTION_DOUBLE, FIELD(pitp_rate), .def = "1", .lo = 0, .hi = 1, .arg = "P",
+     .methods = APPLIES_PITP, .numbers = true,
+     .help = "pitp: probability that a small step is preceded by the technique perturbation (1, the thesis's: "
+             "every one; 0: MMLT's small steps). Tungsten's reversible jump (0.05) replaces a step instead: 5 % of "
+             "its iterations are a technique move alone, 85 % small steps, so its 0.05 is P = 0.059 per small step "
+             "here. Each kernel keeps the target, so any fixed P does"},
     {"angle_stats", "--angle-stats", MLT_OPTION_FLAG, FIELD(angle_stats), .methods = APPLIES_MULTIPLEXED,
      .numbers = true, .help = "mmlt, pitp: angle change of every small step, PREFIX.angle.exr and .angle.csv",
      .conflict = angle_conflict},

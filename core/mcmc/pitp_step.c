@@ -1,7 +1,7 @@
 /* PITP's technique perturbation as a mutation (mutation.h; pitp.h): before every small step of a
- * PITP chain, always accepted; MMLT's small step then starts from the current path in the new
- * technique's form. Its per-chain state is the path in its technique's form (chain.x), which
- * this file also checkpoints. */
+ * PITP chain (or a share pitp_rate of them, mlt.h), always accepted; MMLT's small step then starts
+ * from the current path in the new technique's form. Its per-chain state is the path in its
+ * technique's form (chain.x), which this file also checkpoints. */
 #include "mcmc/mutation.h"
 #include "mcmc/splat_ev.h"
 #include "path/path_checkpoint.h"
@@ -10,12 +10,15 @@
 static bool applies(const struct worker *wk, const struct chain *c, bool large)
 {
     (void)c;
-    return wk->pitp && !large;
+    return wk->pitp && !large && wk->opts->pitp_rate > 0;
 }
 
 static void step(struct worker *wk, struct chain *c, bool large, double t_start)
 {
     (void)large, (void)t_start; /* not timed: its time is the small step's */
+    /* --pitp-rate: below 1 the worker's generator decides (the thesis's 1 draws nothing) */
+    double rate = wk->opts->pitp_rate;
+    if (rate < 1 && !(rng_uniform(&wk->r) < rate)) return;
     int s_new;
     double accept;
     struct connection conn;

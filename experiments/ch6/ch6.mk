@@ -179,7 +179,7 @@ ch6-baselines: ch6-baseline-hybrid-study
 # TARGET_SOURCE, on each of SCENES into results/TARGET-SCALE/SCENE/ (checkpointed at full, SEEDS as
 # above), and shows each scene's table and claims; `make check-TARGET` reruns the first scene with
 # CH6_CHECK_OPTS_TARGET from seed 101 against results/baselines/TARGET/stats.csv (CH6_CHECK).
-# Set the variables before the call.
+# Set the variables before the call; TARGET_POST, if set, is a last command of `make TARGET`.
 define CH6_STUDY
 $(1)_OUT := results/$(1)-$$(SCALE)
 $$($(1)_OUT)/%/summary.csv: scenes/%/scene.json $$(CH6_SEEDS_FORCE) | deps $$(BIN)/ch6_equal $$(BIN)/render
@@ -189,6 +189,7 @@ $$($(1)_OUT)/%/summary.csv: scenes/%/scene.json $$(CH6_SEEDS_FORCE) | deps $$(BI
 FIGURE_TARGETS += $(1)
 $(1): deps $$(patsubst %,$$($(1)_OUT)/%/summary.csv,$(3))
 	@cat $$(foreach c,$(3),$$($(1)_OUT)/$$(c)/$$(c).md $$($(1)_OUT)/$$(c)/claims.md)
+	$$($(1)_POST)
 $$(eval $$(call CH6_CHECK,$(1),$$(firstword $(3))))
 ch6-baselines: ch6-baseline-$(1)
 endef
@@ -243,3 +244,18 @@ mmlt-design_SOURCE := MMLT paper §4
 CH6_CHECK_OPTS_mmlt-design := --study mmlt-design --methods '$(mmlt-design_METHODS)' --spp 16 --seeds 8 --min-length 3 \
   --reference-spp 256 --resolution 256x144 --render-args ""
 $(eval $(call CH6_STUDY,mmlt-design,mmlt-design,ajar living-room staircase))
+
+# ---- the harness's question: how often should PITP move the technique? (--pitp-rate) ----
+# PITP with the technique perturbation before a small step with probability P (1: the thesis's,
+# every one; 0: MMLT's small steps; 0.05: Tungsten's reversible-jump rate, see core/mcmc/README.md)
+# at equal CPU time on the three chapter-6 scenes, at the equal-time study's settings (--study
+# pitp-rate). Beside each scene's table and claims: scripts/ch6-pitp-rate.sh's table of relMSE, its
+# firefly-robust variants and the splotch statistics against P with the best P, and a plot per
+# scene (scripts/ch6-pitp-rate.gp: pitp-rate.png). The check: ajar at 16 mutations per pixel,
+# 256x144, paths of length >= 3.
+pitp-rate_METHODS := p0=--method pitp --p-large 0.1 --pitp-rate 0,p0.05=--method pitp --p-large 0.1 --pitp-rate 0.05,p0.1=--method pitp --p-large 0.1 --pitp-rate 0.1,p0.25=--method pitp --p-large 0.1 --pitp-rate 0.25,p0.5=--method pitp --p-large 0.1 --pitp-rate 0.5,p1=--method pitp --p-large 0.1 --pitp-rate 1
+pitp-rate_SOURCE := harness: how often should PITP move the technique?
+pitp-rate_POST = bash scripts/ch6-pitp-rate.sh $(pitp-rate_OUT) ajar living-room staircase
+CH6_CHECK_OPTS_pitp-rate := --study pitp-rate --methods '$(pitp-rate_METHODS)' --spp 16 --seeds 8 --min-length 3 \
+  --reference-spp 256 --resolution 256x144 --render-args ""
+$(eval $(call CH6_STUDY,pitp-rate,pitp-rate,ajar living-room staircase))

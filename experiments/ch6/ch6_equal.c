@@ -90,7 +90,7 @@ static void parse_insets(struct ch6_equal *e)
 static const char *parse(struct ch6_equal *e, int argc, char **argv)
 {
     static const char *const studies[] = {"equal-time", "ratio", "hybrid",      "mmlt-equal", "background",
-                                          "cdc",        "mis",   "mmlt-design", NULL};
+                                          "cdc",        "mis",   "mmlt-design", "pitp-rate",  NULL};
     const char *methods, *extra, *render = NULL, *res = NULL;
     double t0 = -1;
     int study;
@@ -151,8 +151,8 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
         {"--study", OPT_CHOICE, OPT_DST(study), .choices = studies, .def = "equal-time",
          .help = "whose scales --scale applies and whose claims the runs test: equal-time (make "
                  "fig6.2-6.7), ratio (make mmlt-ratio), hybrid (make hybrid-study), mmlt-equal (make mmlt-equal), "
-                 "background (make bdpt-pt), cdc (make cdc-ch6), mis (make mis-robust) or mmlt-design (make "
-                 "mmlt-design)"},
+                 "background (make bdpt-pt), cdc (make cdc-ch6), mis (make mis-robust), mmlt-design (make "
+                 "mmlt-design) or pitp-rate (make pitp-rate)"},
         {"--checkpoint", OPT_DOUBLE, OPT_DST(e->ckpt_every), .arg = "S", .lo = 0, .hi = 1e6, .def = "0",
          .help = "every render (reference too) checkpoints every S seconds, and a rerun after an interruption keeps "
                  "the completed runs and resumes the interrupted one (0: off)"},

@@ -22,7 +22,8 @@
  * seeds, 128x72 (256x144), a 1024- (4096-) spp reference. mmlt-design (make mmlt-design, the MMLT
  * paper's §4: b_k once or progressively, one chain per length or one over all): the cdc study's
  * budgets, seeds, lengths, references and resolutions, with the equal-time study's 1M seed paths at
- * full and paper. */
+ * full and paper. pitp-rate (make pitp-rate, the harness's question how often PITP should move the
+ * technique): cdc's rows, PITP at each rate; each method gives its own --p-large 0.1 and --pitp-rate. */
 #include "base/util.h"
 #include "ch6/ch6_equal.h"
 #include "common/opts.h"
@@ -32,8 +33,7 @@
 #define ALL_SCENES NULL
 
 static const struct {
-    const char *study, *scales, *scene; /* study, scales: the studies and scales the row applies to, separated
-                                         * by spaces */
+    const char *study, *scales, *scene; /* study, scales: those the row applies to, separated by spaces */
     const char *args[MAX_SCALE_ARGS];
 } scales[] = {
     {"equal-time",
@@ -81,19 +81,19 @@ static const struct {
      ALL_SCENES,
      {"--time", "120", "--seeds", "8", "--reference-spp", "16384", "--resolution", "128x72", "--render-args",
       "--p-large 0.1 --seed-paths 1000000"}},
-    {"cdc mmlt-design",
+    {"cdc mmlt-design pitp-rate",
      "quick",
      ALL_SCENES,
      {"--time", "4", "--seeds", "4", "--min-length", "3", "--reference-spp", "256", "--render-args", ""}},
-    {"cdc mmlt-design", "quick", "ajar", {"--resolution", "256x144"}},
-    {"cdc",
+    {"cdc mmlt-design pitp-rate", "quick", "ajar", {"--resolution", "256x144"}},
+    {"cdc pitp-rate",
      "full paper",
      ALL_SCENES,
      {"--time", "60", "--seeds", "8", "--min-length", "3", "--reference-spp", "4096", "--checkpoint", "60",
       "--render-args", ""}},
-    {"cdc mmlt-design", "full paper", "living-room", {"--resolution", "512x288"}},
-    {"cdc mmlt-design", "full paper", "staircase", {"--resolution", "288x512"}},
-    {"cdc mmlt-design", "full paper", "ajar", {"--resolution", "512x288"}},
+    {"cdc mmlt-design pitp-rate", "full paper", "living-room", {"--resolution", "512x288"}},
+    {"cdc mmlt-design pitp-rate", "full paper", "staircase", {"--resolution", "288x512"}},
+    {"cdc mmlt-design pitp-rate", "full paper", "ajar", {"--resolution", "512x288"}},
     {"mis",
      "quick",
      ALL_SCENES,

@@ -249,6 +249,7 @@ static bool run_method(const struct scene *sc, const struct opts_accept *a, int 
             int kmax = pass ? SHORT_MAX : a->max_length;
             struct mlt_opts o = {.method = m ? MLT_PITP : MLT_MMLT,
                                  .p_large = 0.1,
+                                 .pitp_rate = 1,
                                  .mutations = (pass ? 3 * a->mutations / 2 : a->mutations) / RUNS,
                                  .seed_paths = a->fig.paper ? 1000000 : 100000,
                                  .seed = a->fig.seed * 1000 + (uint64_t)rr + (pass ? 500 : 0),

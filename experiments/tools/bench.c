@@ -90,6 +90,7 @@ static double mutation_rate(const struct scene *sc, enum mlt_method m, enum smal
 {
     struct mlt_opts o = {.method = m,
                          .p_large = 0.1,
+                         .pitp_rate = 1,
                          .seconds = seconds,
                          .seed_paths = 20000,
                          .seed = 1,
@@ -120,6 +121,66 @@ static double mutation_rate(const struct scene *sc, enum mlt_method m, enum smal
     }
     mlt_result_free(&r);
     return rate;
+}
+
+/* The cost of PITP's technique move, differential and in the process's CPU seconds (a loaded
+ * machine stretches wall time, not CPU time; the main thread waits asleep): PITP at --pitp-rate 1
+ * and 0 from the same seed with the same mutation budget make the same iterations, large and small
+ * steps alike, after the same seed pass and chain starts, so the difference over the perturbations
+ * made is the time of one. Beside it the small step's own time: PITP at P = 0 with --p-large 0,
+ * every iteration one of MMLT's small steps, at two budgets (the difference cancels the seed pass
+ * and chain starts). One thread, medians over `runs`, the budget about `seconds` of the P = 1
+ * chain. NAN when a run fails. */
+struct technique_cost {
+    double small_us, move_us;
+};
+
+/* One run's CPU seconds, and its small steps and perturbations. */
+static bool pitp_run(const struct scene *sc, double rate, double p_large, long mutations, int K, double *sec,
+                     long *small, long *moves)
+{
+    struct mlt_opts o = {.method = MLT_PITP,
+                         .p_large = p_large,
+                         .pitp_rate = rate,
+                         .mutations = mutations,
+                         .seed_paths = 20000,
+                         .seed = 1,
+                         .threads = 1,
+                         .max_length = K};
+    pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
+    struct mlt_result r;
+    char err[256];
+    double t0 = budget_seconds(true, 1);
+    if (!mlt_render(sc, &o, &r, err, sizeof err)) return false;
+    *sec = budget_seconds(true, 1) - t0;
+    *small = r.stats.total[PROPOSAL_SMALL].attempts;
+    *moves = r.stats.total[PROPOSAL_PITP].attempts;
+    mlt_result_free(&r);
+    return *small > 0;
+}
+
+static struct technique_cost technique_cost(const struct scene *sc, int runs, double seconds, int K)
+{
+    struct technique_cost c = {NAN, NAN};
+    double s1, s2, move_us[99], small_us[99];
+    long small, moves, n = 20000;
+    if (!pitp_run(sc, 1, 0.1, n, K, &s1, &small, &moves) || !pitp_run(sc, 1, 0.1, 2 * n, K, &s2, &small, &moves) ||
+        !(s2 > s1))
+        return c;
+    n = (long)(n * seconds / (s2 - s1)); /* the chain alone: the seed pass cancels */
+    for (int i = 0; i < runs; i++) {
+        double s0, s1, sp, sq;
+        long small0, moves0, small1, moves1, smallp, smallq, movesp;
+        if (!pitp_run(sc, 0, 0.1, n, K, &s0, &small0, &moves0) || !pitp_run(sc, 1, 0.1, n, K, &s1, &small1, &moves1) ||
+            !pitp_run(sc, 0, 0, n, K, &sp, &smallp, &movesp) || !pitp_run(sc, 0, 0, n / 5, K, &sq, &smallq, &movesp) ||
+            !(moves1 > 0) || !(smallp > smallq))
+            return c;
+        move_us[i] = 1e6 * (s1 - s0) / (double)moves1;
+        small_us[i] = 1e6 * (sp - sq) / (double)(smallp - smallq);
+    }
+    c.move_us = median(move_us, runs);
+    c.small_us = median(small_us, runs);
+    return c;
 }
 
 /* Peak memory once an image has been written: the first write opens the OpenImageIO module, whose
@@ -229,6 +290,10 @@ static void report(const char *path, const struct scene *sc, int runs, double se
         printf("  %-42s %8.2f %8.2f   %.3f of %.3f us (%.0f %%)\n", method_names[m], f.per[m].closest, f.per[m].shadow,
                ray_us, us, 100 * ray_us / us);
     }
+    struct technique_cost tc = technique_cost(sc, runs, seconds, K);
+    printf("%-44s %12.3f   mmlt's: pitp --pitp-rate 0 --p-large 0 (CPU, 1 thread)\n", "small step (us)", tc.small_us);
+    printf("%-44s %12.3f   pitp P = 1 minus P = 0 per perturbation, %.2fx a small step (CPU, 1 thread)\n",
+           "technique move (us)", tc.move_us, tc.move_us / tc.small_us);
     printf("%-44s %12.1f\n", "peak resident memory (MB)", ru.ru_maxrss / 1024.0);
     printf("%-44s %12.1f   (OpenImageIO loaded)\n", "  after writing EXR + PNG (MB)", io_mb);
 }

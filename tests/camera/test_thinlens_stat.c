@@ -117,6 +117,7 @@ static struct image *chain_render(void *p, uint64_t seed)
     const struct scene *sc = c->sc;
     struct mlt_opts mo = {.method = c->m,
                           .p_large = 0.1,
+                          .pitp_rate = 1,
                           .mutations = 64L * sc->cam.width * sc->cam.height,
                           .seed_paths = 20000,
                           .seed = seed,

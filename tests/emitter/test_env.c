@@ -19,6 +19,7 @@ static struct image *mcmc_run(const struct scene *sc, enum mlt_method m, long mp
 {
     struct mlt_opts mo = {.method = m,
                           .p_large = 0.1,
+                          .pitp_rate = 1,
                           .mutations = mpp * sc->cam.width * sc->cam.height,
                           .seed_paths = seed_paths,
                           .seed = seed,

@@ -47,6 +47,7 @@ static struct image *ch6_render(void *p, uint64_t seed)
     }
     struct mlt_opts o = {.method = c->mlt,
                          .p_large = 0.1,
+                         .pitp_rate = 1,
                          .seed_paths = c->seed_paths,
                          .seed = seed,
                          .threads = 2,

@@ -107,6 +107,7 @@ static struct image *render_ctrl(void *p, uint64_t seed)
     const struct ctrl_ctx *c = p;
     struct mlt_opts o = {.method = c->method,
                          .p_large = 0.1,
+                         .pitp_rate = 1,
                          .seed_paths = c->seed_paths,
                          .threads = 2,
                          .seed = seed,

@@ -27,8 +27,13 @@ static const char *const method_names[] = {"pssmlt", "mmlt", "pitp"};
 
 static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, long mutations)
 {
-    *o = (struct mlt_opts){
-        .method = m, .p_large = 0.1, .mutations = mutations, .seed_paths = 20000, .threads = 2, .max_length = 8};
+    *o = (struct mlt_opts){.method = m,
+                           .p_large = 0.1,
+                           .pitp_rate = 1,
+                           .mutations = mutations,
+                           .seed_paths = 20000,
+                           .threads = 2,
+                           .max_length = 8};
     pss_opts_default(&o->pss, sc->cam.width, sc->cam.height);
 }
 

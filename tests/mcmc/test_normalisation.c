@@ -20,7 +20,8 @@ static struct mlt_opts cornell_opts(const struct scene *sc, enum mlt_method m)
                          .seed_paths = 2000,
                          .threads = 2,
                          .max_length = 5,
-                         .seed = 11};
+                         .seed = 11,
+                         .pitp_rate = 1}; /* PITP as the thesis's: a zero-initialised rate is 0 */
     pss_opts_default(&o.pss, sc->cam.width, sc->cam.height);
     return o;
 }

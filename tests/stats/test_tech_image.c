@@ -14,6 +14,7 @@ static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, 
 {
     *o = (struct mlt_opts){.method = m,
                            .p_large = 0.1,
+                           .pitp_rate = 1,
                            .mutations = 60000,
                            .seed_paths = 5000,
                            .threads = 2,
