@@ -14,10 +14,11 @@ out=${REPORT_DIR:-results/report} # tests write elsewhere
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale meq=results/mmlt-equal-$scale
 bg=results/bdpt-pt-$scale cdc=results/cdc-ch6-$scale mis=results/mis-robust-$scale md=results/mmlt-design-$scale
+pr=results/pitp-rate-$scale
 # The claims ledger's files: every claims.csv of the figures at this scale.
 ledger=$(ls results/fig*/claims.csv results/inverse-density/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv \
   results/mmlt-ratio/"$scale"/*/claims.csv "$hyb"/*/claims.csv "$meq"/*/claims.csv "$tech"/claims.csv "$bg"/*/claims.csv \
-  "$cdc"/*/claims.csv "$mis"/*/claims.csv "$md"/*/claims.csv 2>/dev/null || true)
+  "$cdc"/*/claims.csv "$mis"/*/claims.csv "$md"/*/claims.csv "$pr"/*/claims.csv 2>/dev/null || true)
 # id | title | make command | images (space-separated) | data files | claim | verdict: the README's quick-scale
 # result, or @FILE... = the measured verdicts, the '- ' lines of those files (written by the run's scripts)
 entries=(
@@ -42,6 +43,7 @@ entries=(
 "cdc-ch6|Thesis §4.2: constrained discrete choices on the chapter-6 scenes (PSSMLT with and without --cdc, equal time)|make cdc-ch6||$cdc/living-room/claims.csv $cdc/staircase/claims.csv $cdc/ajar/claims.csv|In other scenes the effect of CDC is usually subtle.|@$cdc/living-room/claims.md $cdc/staircase/claims.md $cdc/ajar/claims.md"
 "mis-robust|Thesis Figs. 3.3 and 3.5: MIS against each technique alone (Cornell box, direct light, equal samples)|make mis-robust||$mis/cornell-box/summary.csv $mis/cornell-box/cornell-box.md $mis/cornell-box/claims.csv|MIS is robust where each technique alone fails.|@$mis/cornell-box/claims.md"
 "bdpt-pt|Thesis Fig. 3.4: BDPT vs path tracing at equal samples (ajar)|make bdpt-pt||$bg/ajar/summary.csv $bg/ajar/ajar.md $bg/ajar/claims.csv|BDPT has lower variance than path tracing at equal samples.|@$bg/ajar/claims.md"
+"pitp-rate|The harness's question: how often should PITP move the technique? (--pitp-rate P, equal time, chapter-6 scenes)|make pitp-rate|$pr/ajar/pitp-rate.png $pr/living-room/pitp-rate.png $pr/staircase/pitp-rate.png|$pr/pitp-rate.md $pr/living-room/claims.csv $pr/staircase/claims.csv $pr/ajar/claims.csv|Neither source asks: the thesis moves the technique before every small step (P = 1), Tungsten's reversible jump at a rate of 0.05.|@$pr/living-room/claims.md $pr/staircase/claims.md $pr/ajar/claims.md"
 "mmlt-design|MMLT paper §4: b_k once or progressively, one chain per length or one over all (equal time, chapter-6 scenes)|make mmlt-design||$md/living-room/claims.csv $md/staircase/claims.csv $md/ajar/claims.csv|b_k estimated progressively is less likely to miss rare bounces; one chain per path length is more efficient.|@$md/living-room/claims.md $md/staircase/claims.md $md/ajar/claims.md"
 "mmlt-equal|MMLT paper §5 and Fig. 4: BDPT, PSSMLT and MMLT at equal time (ajar, up to 8 bounces)|make mmlt-equal||$meq/ajar/summary.csv $meq/ajar/ajar.md $meq/ajar/claims.csv|BDPT and PSSMLT are noisy, PSSMLT barely improves on BDPT, MMLT is less noisy than both.|@$meq/ajar/claims.md"
 )

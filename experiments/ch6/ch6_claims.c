@@ -109,14 +109,14 @@ static const struct claim {
     /* make pitp-rate: the harness's own question, how often PITP should move the technique (P: the
      * probability that a small step is preceded by it; p1 the thesis's, p0.05 Tungsten's
      * reversible-jump rate) */
-    {"harness:pitp-rate-1", "the thesis's P = 1 is the best rate", "p1", -1, Q_RELMSE, "relMSE", NULL,
+    {"harness", "the thesis's P = 1 is the best rate", "p1", -1, Q_RELMSE, "relMSE", NULL,
      "harness: how often should PITP move the technique?", false, "pitp-rate"},
-    {"harness:pitp-rate-1", "the thesis's P = 1 is the best rate", "p1", -1, Q_BLOCK_MEDIAN,
+    {"harness", "the thesis's P = 1 is the best rate", "p1", -1, Q_BLOCK_MEDIAN,
      "median block relMSE (firefly-robust)", NULL, "harness: how often should PITP move the technique?", false,
      "pitp-rate"},
-    {"harness:pitp-rate-2", "a rate as low as the reversible-jump default (0.05) loses the gain (vs P = 1)", "p0.05",
+    {"harness", "a rate as low as the reversible-jump default (0.05) loses the gain (vs P = 1)", "p0.05",
      +1, Q_RELMSE, "relMSE", "p1", "harness: how often should PITP move the technique?", false, "pitp-rate"},
-    {"harness:pitp-rate-2", "a rate as low as the reversible-jump default (0.05) loses the gain (vs P = 1)", "p0.05",
+    {"harness", "a rate as low as the reversible-jump default (0.05) loses the gain (vs P = 1)", "p0.05",
      +1, Q_BLOCK_MEDIAN, "median block relMSE (firefly-robust)", "p1",
      "harness: how often should PITP move the technique?", false, "pitp-rate"},
 };
