@@ -111,14 +111,13 @@ static const struct claim {
      * reversible-jump rate) */
     {"harness", "the thesis's P = 1 is the best rate", "p1", -1, Q_RELMSE, "relMSE", NULL,
      "harness: how often should PITP move the technique?", false, "pitp-rate"},
-    {"harness", "the thesis's P = 1 is the best rate", "p1", -1, Q_BLOCK_MEDIAN,
-     "median block relMSE (firefly-robust)", NULL, "harness: how often should PITP move the technique?", false,
-     "pitp-rate"},
-    {"harness", "a rate as low as the reversible-jump default (0.05) loses the gain (vs P = 1)", "p0.05",
-     +1, Q_RELMSE, "relMSE", "p1", "harness: how often should PITP move the technique?", false, "pitp-rate"},
-    {"harness", "a rate as low as the reversible-jump default (0.05) loses the gain (vs P = 1)", "p0.05",
-     +1, Q_BLOCK_MEDIAN, "median block relMSE (firefly-robust)", "p1",
-     "harness: how often should PITP move the technique?", false, "pitp-rate"},
+    {"harness", "the thesis's P = 1 is the best rate", "p1", -1, Q_BLOCK_MEDIAN, "median block relMSE (firefly-robust)",
+     NULL, "harness: how often should PITP move the technique?", false, "pitp-rate"},
+    {"harness", "a rate as low as the reversible-jump default (0.05) loses the gain (vs P = 1)", "p0.05", +1, Q_RELMSE,
+     "relMSE", "p1", "harness: how often should PITP move the technique?", false, "pitp-rate"},
+    {"harness", "a rate as low as the reversible-jump default (0.05) loses the gain (vs P = 1)", "p0.05", +1,
+     Q_BLOCK_MEDIAN, "median block relMSE (firefly-robust)", "p1", "harness: how often should PITP move the technique?",
+     false, "pitp-rate"},
 };
 
 bool ch6_listed(const char *list, const char *word)
