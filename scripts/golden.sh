@@ -141,7 +141,7 @@ fig4_6_run() {
   mkdir -p results
   "$BIN/fig4_6" --scale quick --seconds 0.05 --reference-spp 4 --seed 1 --threads 2 --out out || rc=$?
   # every file made from the wall-time renders: their images, the per-run table and the claims on them
-  rm -f out/mmlt-large.* out/mctls.* out/hybrid.* out/fig4.6-runs.csv out/claims.csv out/claims.md
+  rm -f out/mmlt-large.* out/mctls.* out/mctls-recompute.* out/hybrid.* out/fig4.6-runs.csv out/claims.csv out/claims.md
   if [ -f out/fig4.6.csv ]; then
     awk -F, '/^#/ { print; next } { print $1 }' out/fig4.6.csv >out/fig4.6.csv.tmp && mv out/fig4.6.csv.tmp out/fig4.6.csv
   fi
