@@ -27,7 +27,7 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
     wk->tech = j->tech ? &j->tech[tid] : NULL;
     wk->angle = j->angle ? &j->angle[tid] : NULL;
     wk->ctrl_fail = j->ctrl_fail[tid];
-    wk->mix = &j->mix[tid];
+    wk->mix = j->mix ? &j->mix[tid] : NULL;
     wk->pitp = o->method == MLT_PITP;
     wk->multiplexed = o->method != MLT_PSSMLT;
     wk->spare = xmalloc(sizeof *wk->spare);
@@ -132,7 +132,7 @@ static void iterate(struct worker *wk)
     mutations_iterate(wk, c, large, t_start); /* the registry's steps (mutation.h) */
     bool moved = c->cur.s[0].px != px0 || c->cur.s[0].py != py0;
     if (trace_step(c->trace, moved)) trace_keep(c->trace, state_column(c), c->f);
-    count_pixels(wk->mix, c, moved, px0, py0);
+    if (wk->mix) count_pixels(wk->mix, c, moved, px0, py0);
 }
 
 /* Whether iteration n may run: no interruption, and within the time or mutation budget. */

@@ -88,9 +88,12 @@ static void job_alloc(struct run_job *rj, const struct scene *sc)
             angle_acc_init(&rj->angle[i], W, H);
     }
     if (o->technique_k) rj->tech = tech_acc_alloc(T, o->technique_k, W, H, sc->cam.filter == FILTER_TENT);
-    rj->mix = xcalloc((size_t)T, sizeof *rj->mix);
+    if (o->mixing_image) {
+        rj->mix = xcalloc((size_t)T, sizeof *rj->mix);
+        for (int i = 0; i < T; i++)
+            pixmix_init(&rj->mix[i], W, H);
+    }
     for (int i = 0; i < T; i++) {
-        pixmix_init(&rj->mix[i], W, H);
         rj->img[i] = img_create(W, H);
         rj->img[i]->tent = sc->cam.filter == FILTER_TENT;
     }
@@ -110,7 +113,7 @@ static void job_free(struct run_job *rj)
     int T = rj->o->threads;
     for (int i = 0; i < T; i++) {
         img_destroy(rj->img[i]);
-        pixmix_free(&rj->mix[i]);
+        if (rj->mix) pixmix_free(&rj->mix[i]);
     }
     free(rj->mix);
     if (rj->angle)
@@ -181,7 +184,7 @@ static void add_thread_stats(void *p, int i)
     struct stats_merge *m = p;
     stats_merge(m->stats_out, &m->stats[i]);
     if (m->angle) angle_acc_merge(m->angle_out, &m->angle[i]);
-    pixmix_merge(m->mix_out, &m->mix[i]);
+    if (m->mix) pixmix_merge(m->mix_out, &m->mix[i]);
     /* a gather, not a sum: each global thread's slots are written by its own rank only */
     memcpy(m->trace_out + (size_t)(m->g0 + i) * m->nk, m->trace[i], (size_t)m->nk * sizeof *m->trace_out);
 }
@@ -200,8 +203,10 @@ static void merge_results(struct run_job *rj, const struct scene *sc, struct mlt
     double scale = r->mutations > 0 ? camera_film_area(&sc->cam) / (double)r->mutations : 0;
     r->ntrace = rj->stride * rj->nch;
     r->trace = xcalloc((size_t)r->ntrace, sizeof *r->trace);
-    r->mix = xmalloc(sizeof *r->mix);
-    pixmix_init(r->mix, W, H);
+    if (rj->mix) {
+        r->mix = xmalloc(sizeof *r->mix);
+        pixmix_init(r->mix, W, H);
+    }
     struct stats_merge sm = {rj->stats, rj->angle, &r->stats, r->angle, rj->trace,
                              r->trace,  rj->mix,   r->mix,    rj->nch,  rj->g0};
     struct thread_results tr = {.threads = T, .img = rj->img, .scale = scale, .add = add_thread_stats, .ctx = &sm};
@@ -209,7 +214,7 @@ static void merge_results(struct run_job *rj, const struct scene *sc, struct mlt
      * mixing records flat structs */
     tr.extra[tr.nextra++] = (struct dist_buf){&r->stats, sizeof r->stats};
     tr.extra[tr.nextra++] = (struct dist_buf){r->trace, (size_t)r->ntrace * sizeof *r->trace};
-    tr.extra[tr.nextra++] = (struct dist_buf){r->mix->n, 2 * (size_t)W * H * sizeof *r->mix->n};
+    if (r->mix) tr.extra[tr.nextra++] = (struct dist_buf){r->mix->n, 2 * (size_t)W * H * sizeof *r->mix->n};
     if (r->angle) {
         size_t cells = (size_t)W * H;
         tr.extra[tr.nextra++] = (struct dist_buf){r->angle->sum, cells * sizeof *r->angle->sum};

@@ -97,7 +97,11 @@ struct mlt_opts {
      * worker's generator (pitp_step.c); at 0 and 1 nothing is drawn. A zero-initialised struct
      * has 0: initialisers that run PITP set it (mlt_opts_defaults gives 1). */
     double pitp_rate;
-    bool angle_stats;     /* MMLT: angle change of every small step (angle_change.h) */
+    bool angle_stats; /* MMLT: angle change of every small step (angle_change.h) */
+    /* the per-pixel mixing counters (stats/pixel_mixing.h; render's PREFIX.mixing.exr): opt-in, as
+     * their count per iteration (+1.4 % of a Cornell-box MMLT mutation) would take the diagnostics
+     * past their 2 % budget */
+    bool mixing_image;
     bool ctrl_unit_ratio; /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
     /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a mutation
      * budget a resumed run ends bit-identical to an uninterrupted one; with a time budget it runs
@@ -133,7 +137,8 @@ struct mlt_result {
      * ranks too, on rank 0. */
     struct chain_trace *trace;
     int ntrace;
-    struct pixel_mixing *mix; /* distinct states over splats per pixel (stats/pixel_mixing.h), rank 0 */
+    struct pixel_mixing
+        *mix; /* with mixing_image: visits over splats per pixel (stats/pixel_mixing.h), rank 0; else NULL */
 };
 
 /* Returns false (with a message) when the seed pass finds no light at all. */

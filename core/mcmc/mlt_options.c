@@ -178,6 +178,9 @@ const struct mlt_option mlt_options[] = {
              "every one; 0: MMLT's small steps). Tungsten's reversible jump (0.05) replaces a step instead: 5 % of "
              "its iterations are a technique move alone, 85 % small steps, so its 0.05 is P = 0.059 per small step "
              "here. Each kernel keeps the target, so any fixed P does"},
+    {"mixing_image", "--mixing-image", MLT_OPTION_FLAG, FIELD(mixing_image), .methods = APPLIES_MCMC,
+     .help = "PREFIX.mixing.exr: per pixel, the chains' visits over their iterations there (low: chains sat; "
+             "costs 1.4 % of a mutation)"},
     {"angle_stats", "--angle-stats", MLT_OPTION_FLAG, FIELD(angle_stats), .methods = APPLIES_MULTIPLEXED,
      .numbers = true, .help = "mmlt, pitp: angle change of every small step, PREFIX.angle.exr and .angle.csv",
      .conflict = angle_conflict},

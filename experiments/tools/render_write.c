@@ -36,10 +36,13 @@ bool render_write_mixing(const struct render_args *a, const struct mlt_result *r
     csv_meta(f, "trace_cap", "%d", TRACE_CAP);
     mixing_write_csv(f, rows, n);
     char path[4096];
-    snprintf(path, sizeof path, "%s.mixing.exr", a->out); /* distinct states over splats per pixel */
-    struct image *im = pixmix_image(r->mix);
-    bool ok = img_write_exr(im, 1.0, path, err, errlen);
-    img_destroy(im);
+    snprintf(path, sizeof path, "%s.mixing.exr", a->out); /* visits over splats per pixel */
+    bool ok = true;
+    if (r->mix) {
+        struct image *im = pixmix_image(r->mix);
+        ok = img_write_exr(im, 1.0, path, err, errlen);
+        img_destroy(im);
+    }
     snprintf(path, sizeof path, "%s.mixing.csv", a->out);
     if (ok) return text_out_save(&t, path, err, errlen);
     text_out_free(&t);

@@ -42,7 +42,7 @@ static void run(const char *dir, const char *name, const char *sigma)
     snprintf(cmd, sizeof cmd,
              BIN_DIR
              "/render scenes/cornell-box/scene.json --method mmlt --kernel gaussian --sigma %s --p-large 0.0001 "
-             "--resolution 32x32 --spp 1024 --max-length 2 --threads 4 --seed-paths 10000 --seed 1 "
+             "--resolution 32x32 --spp 1024 --max-length 2 --threads 4 --seed-paths 10000 --seed 1 --mixing-image "
              "--out %s/%s --quiet >/dev/null",
              sigma, dir, name);
     cr_assert_eq(system(cmd), 0, "%s", cmd);

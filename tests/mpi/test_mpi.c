@@ -119,8 +119,8 @@ static void same_bits(const char *method, const char *budget, bool mcmc, bool an
         int ranks, threads;
     } runs[] = {{"single", 0, 6}, {"np2", 2, 3}, {"np3", 3, 2}};
     for (int i = 0; i < 3; i++) {
-        snprintf(args, sizeof args, "%s --method %s %s --threads %d%s", box, method, budget, runs[i].threads,
-                 angle ? " --angle-stats" : "");
+        snprintf(args, sizeof args, "%s --method %s %s --threads %d%s%s", box, method, budget, runs[i].threads,
+                 angle ? " --angle-stats" : "", mcmc ? " --mixing-image" : "");
         int rc = run_render(runs[i].ranks, runs[i].name, args);
         char *err = output(runs[i].name, "err");
         cr_assert_eq(rc, 0, "%s: exit %d: %s", runs[i].name, rc, err);

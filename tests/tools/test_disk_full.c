@@ -143,7 +143,7 @@ static void fails_cleanly(const char *good, const char *cmd, struct run how, con
 }
 
 #define RENDER BIN_DIR "/render scenes/cornell-box/scene.json --resolution 16x12 --quiet --out DIR/a"
-#define MMLT RENDER " --method mmlt --spp 2 --seed-paths 2000 --angle-stats --technique-images 3"
+#define MMLT RENDER " --method mmlt --spp 2 --seed-paths 2000 --angle-stats --technique-images 3 --mixing-image"
 #define PT_CKPT RENDER " --method pt --spp 1024 --checkpoint 0.01"
 
 Test(disk_full, render_exr_under_a_file_size_limit)
