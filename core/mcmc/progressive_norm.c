@@ -62,7 +62,7 @@ void normalisation_from_large_steps(const struct run_job *rj, struct mlt_result 
     double sum[MAX_PATH_LENGTH + 1], sq[MAX_PATH_LENGTH + 1];
     long n[MAX_PATH_LENGTH + 1], it[MAX_PATH_LENGTH + 1], zero[MAX_PATH_LENGTH + 1];
     large_sums(rj, sum, sq, n, it, zero);
-    double ns = (double)rj->o->seed_paths, var_l = 0, var_p = 0, pooled = 0;
+    double ns = (double)rj->o->seed_paths, var_l = 0, var_p = 0, pooled = 0, b_new[MAX_PATH_LENGTH + 1];
     r->bl = 0;
     for (int k = 1; k <= rj->nk; k++) {
         double m = n[k] ? sum[k] / (double)n[k] : 0;
@@ -75,7 +75,8 @@ void normalisation_from_large_steps(const struct run_job *rj, struct mlt_result 
         /* the seed pass's variance of its mean, from its relative standard error */
         double vs = (r->b_k_rse[k] * r->b_k[k]) * (r->b_k_rse[k] * r->b_k[k]);
         double w = ns + (double)n[k];
-        pooled += (ns * r->b_k[k] + sum[k]) / w;
+        b_new[k] = (ns * r->b_k[k] + sum[k]) / w;
+        pooled += b_new[k];
         var_p += (ns * ns * vs + (double)n[k] * (double)n[k] * vm) / (w * w);
     }
     r->bl_rse = r->bl > 0 ? sqrt(var_l) / r->bl : 0;
@@ -87,9 +88,8 @@ void normalisation_from_large_steps(const struct run_job *rj, struct mlt_result 
     /* each thread's length images into its image, each at its length's new b_k over the one its
      * chain splatted with, scale x P(k): the seed pass's, or a missed length's provisional one */
     for (int k = 1; k <= rj->nk; k++) {
-        double b_new = (ns * r->b_k[k] + sum[k]) / (ns + (double)n[k]);
         double b_old = rj->scale[k - 1] * (rj->kcdf[k] - rj->kcdf[k - 1]);
-        double ratio = b_old > 0 ? b_new / b_old * burn_in_factor(rj, k, r->mutations, it[k], zero[k]) : 0;
+        double ratio = b_old > 0 ? b_new[k] / b_old * burn_in_factor(rj, k, r->mutations, it[k], zero[k]) : 0;
         for (int i = 0; i < rj->o->threads; i++)
             img_accumulate(rj->img[i], rj->len_img[i][k - 1], ratio);
     }

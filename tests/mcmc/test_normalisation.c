@@ -7,6 +7,7 @@
 #include "mc/render.h"
 #include "mcmc/mlt.h"
 #include "path/scene_ready.h"
+#include "support/agree.h"
 #include "support/scenes.h"
 #include <gsl/gsl_cdf.h>
 #include <math.h>
@@ -26,12 +27,6 @@ static struct mlt_opts cornell_opts(const struct scene *sc, enum mlt_method m)
     return o;
 }
 
-static void render(const struct scene *sc, const struct mlt_opts *o, struct mlt_result *r)
-{
-    char err[256];
-    cr_assert(mlt_render(sc, o, r, err, sizeof err), "%s", err);
-}
-
 /* Exactly: the same seed gives the same chain with and without the progressive normalisation (the
  * large steps' targets are recorded, nothing is drawn), so with one length alive the image is the
  * seed-pass one times b(pooled) / b(seed), pixel by pixel, to rounding. PSSMLT (one chain over the
@@ -45,9 +40,9 @@ Test(normalisation, progressive_rescales_the_image_exactly)
         struct mlt_opts o = cornell_opts(sc, ms[i]);
         if (ms[i] != MLT_PSSMLT) o.min_length = o.max_length = 3;
         struct mlt_result a, b;
-        render(sc, &o, &a);
+        mlt_render_ok(sc, &o, &a);
         o.progressive_norm = true;
-        render(sc, &o, &b);
+        mlt_render_ok(sc, &o, &b);
         cr_assert_eq(a.mutations, b.mutations);
         cr_assert(b.b_image != a.b_image, "method %d: the pooled estimate equals the seed pass's", i);
         double ratio = b.b_image / a.b_image, worst = 0;
@@ -80,7 +75,7 @@ Test(normalisation, large_steps_estimate_what_the_seed_pass_does)
     o.seed_paths = 20000;
     o.mutations = 64L * 32 * 32;
     struct mlt_result r;
-    render(sc, &o, &r);
+    mlt_render_ok(sc, &o, &r);
     int live = 0;
     for (int k = 1; k <= o.max_length; k++)
         live += r.b_k[k] > 0;
@@ -122,7 +117,7 @@ Test(normalisation, progressive_finds_the_lengths_a_small_seed_pass_missed)
             o.seed = 100 + (uint64_t)i;
             o.progressive_norm = p;
             struct mlt_result r;
-            render(sc, &o, &r);
+            mlt_render_ok(sc, &o, &r);
             double e = img_mean_luminance(r.img) / want - 1;
             fprintf(stderr, "%s seed %d: image mean %+.1f %%\n", p ? "progressive" : "seed pass  ", i, 100 * e);
             sq[p] += e * e;

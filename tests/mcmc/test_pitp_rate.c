@@ -28,12 +28,6 @@ static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, 
     pss_opts_default(&o->pss, sc->cam.width, sc->cam.height);
 }
 
-static void render(const struct scene *sc, const struct mlt_opts *o, struct mlt_result *r)
-{
-    char err[256];
-    cr_assert(mlt_render(sc, o, r, err, sizeof err), "%s", err);
-}
-
 /* At P = 0 no decision is drawn and the perturbation never runs: the chains draw exactly MMLT's
  * numbers (PITP keeps its path in the chain, which draws nothing), so the image is MMLT's bit for
  * bit. */
@@ -44,9 +38,9 @@ Test(pitp_rate, zero_is_mmlt_bit_for_bit)
     struct mlt_opts o;
     struct mlt_result a, b;
     opts(&o, sc, MLT_PITP, 0, 16L * 32 * 32);
-    render(sc, &o, &a);
+    mlt_render_ok(sc, &o, &a);
     opts(&o, sc, MLT_MMLT, 1, 16L * 32 * 32);
-    render(sc, &o, &b);
+    mlt_render_ok(sc, &o, &b);
     cr_assert_eq(a.stats.total[PROPOSAL_PITP].attempts, 0);
     cr_assert_eq(a.mutations, b.mutations);
     size_t n = (size_t)a.img->w * (size_t)a.img->h * 3;
@@ -69,7 +63,7 @@ Test(pitp_rate, perturbations_precede_a_share_p_of_small_steps)
         struct mlt_opts o;
         struct mlt_result r;
         opts(&o, sc, MLT_PITP, rates[i], 16L * 64 * 64);
-        render(sc, &o, &r);
+        mlt_render_ok(sc, &o, &r);
         double n = (double)r.stats.total[PROPOSAL_SMALL].attempts, x = (double)r.stats.total[PROPOSAL_PITP].attempts;
         double p = rates[i], z = (x - n * p) / sqrt(n * p * (1 - p));
         fprintf(stderr, "pitp rate %g: %.0f perturbations before %.0f small steps (z = %.2f)\n", p, x, n, z);

@@ -76,14 +76,19 @@ int stack_compare(const struct stack *a, const struct stack *b, int families, do
     return fails;
 }
 
+void mlt_render_ok(const struct scene *sc, const struct mlt_opts *o, struct mlt_result *r)
+{
+    char err[256];
+    cr_assert(mlt_render(sc, o, r, err, sizeof err), "%s", err);
+}
+
 struct image *render_mlt(void *p, uint64_t seed)
 {
     struct mlt_ctx *c = p;
     struct mlt_opts o = c->o;
     o.seed = seed;
     struct mlt_result r;
-    char err[256];
-    cr_assert(mlt_render(c->sc, &o, &r, err, sizeof err), "%s", err);
+    mlt_render_ok(c->sc, &o, &r);
     cr_assert_eq(r.nonfinite, 0);
     return r.img;
 }

@@ -25,6 +25,9 @@ void stack_runs(struct stack *out, render_fn render, void *ctx, int reps, uint64
  * receive p-values. */
 int stack_compare(const struct stack *a, const struct stack *b, int families, double *pmean, double *worst);
 
+/* mlt_render, failing the current test with its message when it refuses or finds no light. */
+void mlt_render_ok(const struct scene *sc, const struct mlt_opts *o, struct mlt_result *r);
+
 /* A replicate of an MLT render for stack_runs: ctx is a struct mlt_ctx, rendered with its options
  * and the replicate's seed (asserting success and no non-finite contribution). */
 struct mlt_ctx {
