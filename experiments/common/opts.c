@@ -207,11 +207,20 @@ void opts_parse(const struct opts_spec *s, int argc, char **argv)
             s->fig->prog = s->prog;
             s->fig->paper = s->fig->scale_i == 1;
             s->fig->full = s->fig->scale_i == 2;
+            int scale_k = -1;
             bool has_full = false;
-            for (int k = 0; k < n; k++)
+            for (int k = 0; k < n; k++) {
                 has_full |= s->opts[k].full != NULL;
-            if (s->fig->full && !has_full)
+                if (s->opts[k].dst == &s->fig->scale_i) scale_k = k;
+            }
+            if (s->fig->full && !has_full && scale_k >= 0 && given[scale_k])
                 opts_fail(s->prog, "--scale full: this figure has the scales quick and paper only");
+            if (s->fig->full && !has_full) { /* SCALE=full (`make figures`): this figure's largest run short of paper */
+                fprintf(stderr, "%s: SCALE=full: this figure has no full scale; running it at quick\n", s->prog);
+                s->fig->scale_i = 0;
+                s->fig->full = false;
+                if (s->fig->scale) s->fig->scale = opts_scales[0];
+            }
         }
     }
     free(given);

@@ -287,10 +287,11 @@ Test(cli, scene_without_emitter)
 }
 
 /* --scale full: a figure with full-scale defaults takes them (fig4_6's help lists them), one without
- * refuses it in one line with exit status 2 before it renders anything. */
+ * refuses it in one line with exit status 2 before it renders anything; SCALE=full in the
+ * environment is a preference, which such a figure meets at quick. */
 Test(cli, scale_full_is_taken_or_refused)
 {
-    char err[4096], out[8192], cmd[256], errfile[128];
+    char err[4096], out[8192], cmd[512], errfile[128];
     make_dir();
     cr_assert_eq(run_exe_out(BIN_DIR "/fig4_6", "--help", err, sizeof err, out, sizeof out), 0);
     cr_assert(strstr(out, "(quick 4, paper 600, full 60)") && strstr(out, "(quick 256, paper 16384, full 4096)"), "%s",
@@ -302,5 +303,14 @@ Test(cli, scale_full_is_taken_or_refused)
     cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2, "%s", err);
     cr_assert(!exists("fig4.1"), "fig4_1 --scale full wrote its output folder");
     cr_assert(strstr(err, "fig4_1: --scale full: this figure has the scales quick and paper only") && lines(err) == 1,
+              "%s", err);
+    /* SCALE=full from the environment (`make figures SCALE=full`) runs it at quick and says so: the
+     * missing scene then stops it before it renders */
+    snprintf(cmd, sizeof cmd, "SCALE=full " BIN_DIR "/fig4_1 --scene %s/none.json --out %s/fig4.1 2> %s", dir, dir,
+             errfile);
+    st = system(cmd);
+    read_text(errfile, err, sizeof err);
+    cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2, "%s", err);
+    cr_assert(strstr(err, "fig4_1: SCALE=full: this figure has no full scale; running it at quick") && lines(err) == 2,
               "%s", err);
 }
