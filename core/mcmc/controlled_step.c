@@ -22,31 +22,6 @@ double ctrl_log_phi(double a, double b, double sigma)
     return e0 * inv + log(sum) - log(sigma * sqrt(2 * M_PI));
 }
 
-/* One block of numbers, read or written: inversions put into it (their fresh numbers, the
- * auxiliary xi of the header, come from the chain's generator, so a run stays reproducible from
- * its seed), and a BSDF can sample from it. */
-struct block_io {
-    struct sampler base;
-    double *u;
-    int n;
-    rng *r;
-};
-
-static double bio_next(struct sampler *s, enum dim_kind kind)
-{
-    (void)kind;
-    return ((struct block_io *)s)->u[s->offset];
-}
-static void bio_put(struct sampler *s, enum dim_kind kind, double u)
-{
-    (void)kind;
-    struct block_io *w = (struct block_io *)s;
-    w->u[s->offset] = u;
-    w->n = s->offset + 1;
-}
-static double bio_fresh(struct sampler *s) { return rng_uniform(((struct block_io *)s)->r); }
-static const struct sampler_ops bio_ops = {bio_next, bio_put, bio_fresh};
-
 /* A delta-only BSDF reaches w only by chance: the direction inverted is that of its lobe nearest w
  * on w's side of the surface. Its lobes are found by sampling with extreme numbers, low or high in
  * each of the first three dimensions, which choose the lobe at each level of nesting: a
@@ -60,7 +35,8 @@ static bool delta_lobe_dir(const struct bsdf_ctx *bc, vec3 wi, vec3 w, vec3 *out
         double probe[SAMPLER_BLOCK];
         for (int d = 0; d < SAMPLER_BLOCK; d++)
             probe[d] = (m >> (d < k ? d : k - 1)) & 1 ? 0x1.fffffffffffffp-1 : 0.0;
-        struct block_io in = {{&bio_ops, 0, 0, 0}, probe, 1, NULL};
+        struct sampler_block in;
+        sampler_block_init(&in, probe, NULL);
         struct bsdf_sample bs;
         if (bsdf_sample(bc, wi, &in.base, TRANSPORT_RADIANCE, &bs) && (bs.wo.z > 0) == (w.z > 0) &&
             vdot(bs.wo, w) > best) {
@@ -72,7 +48,9 @@ static bool delta_lobe_dir(const struct bsdf_ctx *bc, vec3 wi, vec3 w, vec3 *out
 }
 
 /* The numbers (*n of them) with which vertex v, entered along v->wi, scatters toward world
- * direction wo. False when wo is outside the support of v's BSDF. */
+ * direction wo. False when wo is outside the support of v's BSDF. The inversion's fresh numbers
+ * (the auxiliary xi of the header) come from the chain's generator r, so a run stays reproducible
+ * from its seed. */
 static bool invert_at(const struct vertex *v, vec3 wo, rng *r, double *u, int *n)
 {
     *n = 0;
@@ -81,7 +59,8 @@ static bool invert_at(const struct vertex *v, vec3 wo, rng *r, double *u, int *n
     if (v->bc.b->dims == 0) return true; /* a mirror draws nothing: the empty vector is its only point */
     vec3 wi = frame_to_local(&v->sh, v->wi), wl = frame_to_local(&v->sh, wo);
     if (v->bc.b->delta_only && !delta_lobe_dir(&v->bc, wi, wl, &wl)) return false;
-    struct block_io out = {{&bio_ops, 0, 0, 0}, u, 0, r};
+    struct sampler_block out;
+    sampler_block_init(&out, u, r);
     return ops->invert(&v->bc, wi, wl, &out.base) && (*n = out.n, true);
 }
 

@@ -137,6 +137,10 @@ void surface_from_hit(const struct scene *sc, vec3 origin, vec3 dir, const struc
 /* Texture coordinates of a sphere primitive at the unit world normal n (README, "Textures"). */
 void sphere_uv(const struct prim *pr, vec3 n, double uv[2]);
 
+/* The camera walk's vertex at infinity, reached along unit d from point p (beta and pdf_fwd 0: the
+ * walk sets them). */
+void env_vertex(const struct scene *sc, vec3 p, vec3 d, struct vertex *out);
+
 /* Density of vertex `to` generated from `from` along unit direction d (either orientation) over
  * squared distance dist2: a solid-angle pdf becomes an area density; toward the environment it
  * stays in solid angle; from the environment, pdf is the origin disc's area density. */

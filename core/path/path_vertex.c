@@ -197,3 +197,15 @@ bool visible(const struct scene *sc, const struct vertex *a, const struct vertex
     if (dist <= ea + eb) return true;
     return !accel_occluded(sc->accel, a->p, d, ea, dist - eb);
 }
+
+void env_vertex(const struct scene *sc, vec3 p, vec3 d, struct vertex *out)
+{
+    *out = (struct vertex){.kind = VK_ENV,
+                           .p = p,
+                           .ng = vneg(d),
+                           .sh = frame_from_normal(vneg(d)),
+                           .front = true,
+                           .prim = sc->env_prim,
+                           .tri = -1,
+                           .wi = vneg(d)};
+}

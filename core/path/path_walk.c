@@ -126,16 +126,9 @@ static int trace(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
         if (!known && !walk_hit(sc, prev, d, cur)) {
             /* A camera subpath that leaves the scene ends on the environment. */
             if (stream == STREAM_CAMERA && sc->env_prim >= 0) {
-                *cur = (struct vertex){.kind = VK_ENV,
-                                       .p = prev->p,
-                                       .ng = vneg(d),
-                                       .sh = frame_from_normal(vneg(d)),
-                                       .front = true,
-                                       .prim = sc->env_prim,
-                                       .tri = -1,
-                                       .wi = vneg(d),
-                                       .beta = beta,
-                                       .pdf_fwd = pdf_sa};
+                env_vertex(sc, prev->p, d, cur);
+                cur->beta = beta;
+                cur->pdf_fwd = pdf_sa;
                 n++;
             }
             break;

@@ -76,3 +76,30 @@ void sampler_replay_init(struct sampler_replay *s, const double (*u)[STREAM_DIMS
     s->base = (struct sampler){&replay_ops, 0, 0, 0};
     s->u = u;
 }
+
+static double block_next(struct sampler *s, enum dim_kind kind)
+{
+    (void)kind;
+    return ((struct sampler_block *)s)->u[s->offset];
+}
+static void block_put(struct sampler *s, enum dim_kind kind, double u)
+{
+    (void)kind;
+    struct sampler_block *b = (struct sampler_block *)s;
+    b->u[s->offset] = u;
+    b->n = s->offset + 1;
+}
+static double block_fresh(struct sampler *s)
+{
+    rng *r = ((struct sampler_block *)s)->r;
+    return r ? rng_uniform(r) : 0.5;
+}
+static const struct sampler_ops block_ops = {block_next, block_put, block_fresh};
+
+void sampler_block_init(struct sampler_block *b, double *u, rng *r)
+{
+    b->base = (struct sampler){&block_ops, 0, 0, 0};
+    b->u = u;
+    b->n = 0;
+    b->r = r;
+}

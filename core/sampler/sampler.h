@@ -10,11 +10,11 @@
  * fresh random numbers xi of Eq. 5.6-5.8 from sampler_fresh().
  *
  * Every implementation (a struct with `struct sampler base` first, and its sampler_ops):
- *   sampler/sampler.c     the independent sampler, the writer (inversion) and the replay
+ *   sampler/sampler.c     the independent sampler, the writer (inversion), the replay, and the
+ *                         one-block sampler an inversion writes and a BSDF reads (sampler_block)
  *   sampler/pss.c         struct pss_sampler: MLT's primary-sample-space state, lazy small steps
  *   mc/render.c           struct pixel_sampler: PT/BDPT's per-pixel numbers, independent or Sobol
- *   mcmc/controlled_step.c struct ctrl_sampler: the controlled and root small steps (thesis §5.3),
- *                         and struct block_io: one block an inversion writes and a BSDF reads
+ *   mcmc/controlled_step.c struct ctrl_sampler: the controlled and root small steps (thesis §5.3)
  *   mcmc/pitp.c           struct block_sampler: a block PITP's inversion writes and its retrace reads
  *   path/path_invert.c    struct tee: passes an inversion's numbers on and replays its block
  *   bsdf/bsdf_nested.c    struct probe_io: a nested BSDF's inverse probed through its forward */
@@ -109,5 +109,17 @@ struct sampler_replay {
     const double (*u)[STREAM_DIMS];
 };
 void sampler_replay_init(struct sampler_replay *s, const double (*u)[STREAM_DIMS]);
+
+/* One block of numbers that an inversion writes (put) and a forward sampling function then reads
+ * (next), whatever stream and vertex either says: the local inverse-then-sample of one vertex
+ * (controlled steps, a path's subpaths re-formed, path/path_form.c). Fresh numbers come from r, or
+ * are 0.5 when r is NULL (where any value gives the same result, and re-forming must not draw). */
+struct sampler_block {
+    struct sampler base;
+    double *u; /* SAMPLER_BLOCK numbers */
+    int n;     /* how many were put */
+    rng *r;
+};
+void sampler_block_init(struct sampler_block *b, double *u, rng *r);
 
 #endif
