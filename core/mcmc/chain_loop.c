@@ -6,6 +6,7 @@
 #include "base/util.h"
 #include "mcmc/mutation.h"
 #include "mcmc/splat_ev.h"
+#include "mcmc/veach.h"
 #include <stdlib.h>
 
 static void worker_init(struct worker *wk, struct run_job *j, int tid)
@@ -29,14 +30,15 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
     wk->ctrl_fail = j->ctrl_fail[tid];
     wk->mix = j->mix ? &j->mix[tid] : NULL;
     wk->pitp = o->method == MLT_PITP;
-    wk->multiplexed = o->method != MLT_PSSMLT;
+    wk->multiplexed = mlt_multiplexed(o->method);
     wk->spare = xmalloc(sizeof *wk->spare);
     wk->pitp_scratch = wk->pitp ? xmalloc(sizeof *wk->pitp_scratch) : NULL;
     if (wk->pitp_scratch) pitp_scratch_init(wk->pitp_scratch, j->sc);
     rng_seed(&wk->r, o->seed,
              0x9E3779B97F4A7C15ULL + (uint64_t)wk->global_tid); /* streams and budgets are the job's global thread's */
-    wk->track = o->method != MLT_PSSMLT && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
+    wk->track = mlt_multiplexed(o->method) && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     wk->ctrl = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *wk->ctrl) : NULL;
+    wk->veach = o->method == MLT_VEACH ? xmalloc(sizeof *wk->veach) : NULL;
     wk->saved = (struct mlt_thread){.ch = wk->ch,
                                     .nk = j->nch,
                                     .r = &wk->r,
@@ -61,7 +63,7 @@ static void chains_start(struct worker *wk)
     for (int ci = 0; ci < j->nch; ci++) {
         struct chain *c = &wk->ch[ci];
         int kk = !one ? ci : j->resume ? 0 : one_chain_first(wk); /* a resumed chain's k is loaded */
-        mutations_chain_alloc(c);
+        mutations_chain_alloc(c, wk->opts);
         c->k = kk + 1;
         c->scale = one ? j->res->b : j->scale[kk];
         c->img = j->len_img ? j->len_img[wk->tid][kk] : wk->img;
@@ -172,6 +174,7 @@ static void worker_finish(struct worker *wk)
         mutations_chain_free(&wk->ch[kk]);
     }
     free(wk->ctrl);
+    free(wk->veach);
     j->done[wk->tid] = wk->n;
     nonfinite_add(&wk->st->nonfinite, &wk->scratch->nf);
     free(wk->pitp_scratch);

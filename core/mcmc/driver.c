@@ -150,7 +150,7 @@ static void run_threads(struct run_job *rj, long counts[5])
     const struct mlt_opts *o = rj->o;
     int T = o->threads;
     rj->t0 = budget_seconds(o->cpu_time, T) - rj->elapsed0;
-    progress_init(&rj->prog, (const char *[]){"pssmlt", "mmlt", "pitp"}[o->method],
+    progress_init(&rj->prog, (const char *[]){"pssmlt", "mmlt", "pitp", "mlt"}[o->method],
                   o->seconds > 0 ? (long)(1000 * o->seconds) : o->mutations / dist_size(), o->progress);
     if (o->ckpt) ckpt_sync_init(&rj->sync, T, o->ckpt->every, mlt_save, rj);
     parallel_run(T, run_worker, rj);
@@ -240,7 +240,7 @@ bool mlt_render(const struct scene *sc, const struct mlt_opts *o_in, struct mlt_
     memset(&rj, 0, sizeof rj);
     rj.sc = sc;
     rj.o = &o;
-    rj.nk = o.method != MLT_PSSMLT ? o.max_length : 1;
+    rj.nk = mlt_multiplexed(o.method) ? o.max_length : 1;
     rj.nch = o.one_chain ? 1 : rj.nk;
     rj.res = r;
     rj.g0 = dist_thread0(o.threads);

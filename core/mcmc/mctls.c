@@ -10,7 +10,7 @@
 
 bool use_mctls(const struct mlt_opts *o, int k)
 {
-    if (o->method == MLT_PSSMLT) return false;
+    if (!mlt_multiplexed(o->method)) return false;
     return o->large_step == LARGE_MCTLS || (o->large_step == LARGE_HYBRID && k >= o->hybrid_length);
 }
 

@@ -37,8 +37,11 @@
 #include "stats/tech_image.h"
 
 /* MLT_PITP: MMLT with the path-invariant technique perturbation before every small step (thesis
- * §5.2, mcmc/pitp.h); every MMLT option applies. */
-enum mlt_method { MLT_PSSMLT, MLT_MMLT, MLT_PITP };
+ * §5.2, mcmc/pitp.h); every MMLT option applies. MLT_VEACH: Veach's MLT, a path-space state and
+ * its mutations (mcmc/veach.h, docs/veach.md), one chain per thread with PSSMLT's seed pass. */
+enum mlt_method { MLT_PSSMLT, MLT_MMLT, MLT_PITP, MLT_VEACH };
+/* One chain per path length (MMLT and PITP), or one over all lengths. */
+static inline bool mlt_multiplexed(enum mlt_method m) { return m == MLT_MMLT || m == MLT_PITP; }
 
 /* MMLT's large step: fresh numbers (MMLT), the multiple correlated-try large step of thesis §4.3
  * (Eq. 4.2-4.7: trace both subpaths to length k, pick one of the k + 1 connections in proportion to
@@ -103,6 +106,7 @@ struct mlt_opts {
      * past their 2 % budget */
     bool mixing_image;
     bool ctrl_unit_ratio; /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
+    bool veach_broken_t;  /* tests only: T(x -> y) of a bidirectional mutation that lengthens x, x1.1 */
     /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a mutation
      * budget a resumed run ends bit-identical to an uninterrupted one; with a time budget it runs
      * for what the checkpointed run had left. The seed pass is not checkpointed (a checkpoint

@@ -76,6 +76,7 @@ struct worker {
     struct mctls_buf *mctls_buf;
     struct pitp_scratch *pitp_scratch; /* PITP only */
     struct ctrl_sampler *ctrl;         /* controlled and root small steps only */
+    struct veach_scratch *veach;       /* Veach's MLT only (veach.h) */
 };
 
 /* The chain index of a length drawn with P(k) (the job's kcdf) by u in [0, 1). */
@@ -97,7 +98,7 @@ static inline uint64_t seed_stream(long i, int nk, int kk) { return (uint64_t)i 
 static inline double eval_state(enum mlt_method m, const struct path_ctx *pc, struct sampler *s, struct scratch *w,
                                 int k, struct mmlt_path *x, struct splat_list *out, int *tech, bool *complete)
 {
-    if (m == MLT_PSSMLT) {
+    if (!mlt_multiplexed(m)) { /* PSSMLT's, and Veach's MLT's seed pass and start */
         *tech = 0;
         *complete = false;
         return pssmlt_eval_state(pc, s, w, out);

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-const char *const mlt_option_methods[] = {"pt", "bdpt", "pssmlt", "mmlt", "pitp", NULL};
+const char *const mlt_option_methods[] = {"pt", "bdpt", "pssmlt", "mmlt", "pitp", "mlt", NULL};
 
 unsigned mlt_method_bit(const char *method)
 {
@@ -20,7 +20,10 @@ unsigned mlt_method_bit(const char *method)
 
 static unsigned method_bit(enum mlt_method m)
 {
-    return m == MLT_PSSMLT ? APPLIES_PSSMLT : m == MLT_MMLT ? APPLIES_MMLT : APPLIES_PITP;
+    return m == MLT_PSSMLT ? APPLIES_PSSMLT
+           : m == MLT_MMLT ? APPLIES_MMLT
+           : m == MLT_PITP ? APPLIES_PITP
+                           : APPLIES_VEACH;
 }
 
 /* ---- the checks between options (mlt_render's; the messages name what each needs) ---- */
@@ -131,7 +134,7 @@ const struct mlt_option mlt_options[] = {
      .help = "constrained discrete choices: small steps keep discrete numbers", .csv_group = MLT_CSV_AFTER_COUNTS,
      .csv_pos = 5, .csv_key = "cdc"},
     {"seed_paths", "--seed-paths", MLT_OPTION_INT, FIELD(seed_paths), .def = "100000", .lo = 1, .hi = 1L << 40,
-     .arg = "N", .methods = APPLIES_MCMC, .numbers = true, .help = "samples of the normalisation seed pass",
+     .arg = "N", .methods = APPLIES_CHAINS, .numbers = true, .help = "samples of the normalisation seed pass",
      .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 6, .csv_key = "seed_paths"},
     {"seed_bdpt", "--seed-bdpt", MLT_OPTION_FLAG, FIELD(seed_bdpt), .methods = APPLIES_MULTIPLEXED, .numbers = true,
      .help = "mmlt, pitp: estimate b_k from BDPT samples, one per seed path and length (every technique; MMLT "
@@ -178,7 +181,7 @@ const struct mlt_option mlt_options[] = {
              "every one; 0: MMLT's small steps). Tungsten's reversible jump (0.05) replaces a step instead: 5 % of "
              "its iterations are a technique move alone, 85 % small steps, so its 0.05 is P = 0.059 per small step "
              "here. Each kernel keeps the target, so any fixed P does"},
-    {"mixing_image", "--mixing-image", MLT_OPTION_FLAG, FIELD(mixing_image), .methods = APPLIES_MCMC,
+    {"mixing_image", "--mixing-image", MLT_OPTION_FLAG, FIELD(mixing_image), .methods = APPLIES_CHAINS,
      .help = "PREFIX.mixing.exr: per pixel, the chains' visits over their iterations there (low: chains sat; "
              "costs 1.4 % of a mutation)"},
     {"angle_stats", "--angle-stats", MLT_OPTION_FLAG, FIELD(angle_stats), .methods = APPLIES_MULTIPLEXED,
@@ -200,22 +203,24 @@ const struct mlt_option mlt_options[] = {
      .help = "MCTLS re-evaluates the current state's trials every step (mlt.h)"},
     {"ctrl_unit_ratio", NULL, MLT_OPTION_FLAG, FIELD(ctrl_unit_ratio), .methods = APPLIES_MULTIPLEXED, .numbers = true,
      .help = "tests only: a broken controlled step"},
-    {"time_proposals", NULL, MLT_OPTION_FLAG, FIELD(time_proposals), .methods = APPLIES_MCMC,
+    {"veach_broken_t", NULL, MLT_OPTION_FLAG, FIELD(veach_broken_t), .methods = APPLIES_VEACH, .numbers = true,
+     .help = "tests only: a broken bidirectional mutation"},
+    {"time_proposals", NULL, MLT_OPTION_FLAG, FIELD(time_proposals), .methods = APPLIES_CHAINS,
      .help = "each proposal's time in the statistics"},
     /* what bin/render's shared options (pt and bdpt read them too) set */
-    {"seed", NULL, MLT_OPTION_INT, FIELD(seed), .lo = 0, .hi = 1e18, .methods = APPLIES_MCMC, .numbers = true,
+    {"seed", NULL, MLT_OPTION_INT, FIELD(seed), .lo = 0, .hi = 1e18, .methods = APPLIES_CHAINS, .numbers = true,
      .help = "random seed"},
-    {"threads", NULL, MLT_OPTION_INT, FIELD(threads), .lo = 1, .hi = 1024, .methods = APPLIES_MCMC, .numbers = true,
+    {"threads", NULL, MLT_OPTION_INT, FIELD(threads), .lo = 1, .hi = 1024, .methods = APPLIES_CHAINS, .numbers = true,
      .help = "worker threads"},
-    {"max_length", NULL, MLT_OPTION_INT, FIELD(max_length), .lo = 1, .hi = MAX_PATH_LENGTH, .methods = APPLIES_MCMC,
+    {"max_length", NULL, MLT_OPTION_INT, FIELD(max_length), .lo = 1, .hi = MAX_PATH_LENGTH, .methods = APPLIES_CHAINS,
      .numbers = true, .help = "maximum path length"},
-    {"min_length", NULL, MLT_OPTION_INT, FIELD(min_length), .lo = 0, .hi = MAX_PATH_LENGTH, .methods = APPLIES_MCMC,
+    {"min_length", NULL, MLT_OPTION_INT, FIELD(min_length), .lo = 0, .hi = MAX_PATH_LENGTH, .methods = APPLIES_CHAINS,
      .numbers = true, .help = "minimum path length"},
-    {"mutations", NULL, MLT_OPTION_INT, FIELD(mutations), .lo = 0, .hi = 1e18, .methods = APPLIES_MCMC, .numbers = true,
-     .help = "mutation budget over all threads"},
-    {"seconds", NULL, MLT_OPTION_DOUBLE, FIELD(seconds), .lo = 0, .hi = 1e9, .methods = APPLIES_MCMC, .numbers = true,
+    {"mutations", NULL, MLT_OPTION_INT, FIELD(mutations), .lo = 0, .hi = 1e18, .methods = APPLIES_CHAINS,
+     .numbers = true, .help = "mutation budget over all threads"},
+    {"seconds", NULL, MLT_OPTION_DOUBLE, FIELD(seconds), .lo = 0, .hi = 1e9, .methods = APPLIES_CHAINS, .numbers = true,
      .help = "time budget"},
-    {"cpu_time", NULL, MLT_OPTION_FLAG, FIELD(cpu_time), .methods = APPLIES_MCMC, .numbers = true,
+    {"cpu_time", NULL, MLT_OPTION_FLAG, FIELD(cpu_time), .methods = APPLIES_CHAINS, .numbers = true,
      .help = "the time budget in CPU seconds per thread"},
 };
 const size_t mlt_options_count = sizeof mlt_options / sizeof mlt_options[0];

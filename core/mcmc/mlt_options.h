@@ -20,10 +20,12 @@ enum {
     APPLIES_PSSMLT = 4,
     APPLIES_MMLT = 8,
     APPLIES_PITP = 16,
-    APPLIES_MCMC = APPLIES_PSSMLT | APPLIES_MMLT | APPLIES_PITP,
+    APPLIES_VEACH = 32,                                          /* --method mlt: Veach's MLT */
+    APPLIES_MCMC = APPLIES_PSSMLT | APPLIES_MMLT | APPLIES_PITP, /* the primary-sample-space chains */
+    APPLIES_CHAINS = APPLIES_MCMC | APPLIES_VEACH,               /* every Markov chain method */
     APPLIES_MULTIPLEXED = APPLIES_MMLT | APPLIES_PITP,
 };
-extern const char *const mlt_option_methods[]; /* pt, bdpt, pssmlt, mmlt, pitp, NULL */
+extern const char *const mlt_option_methods[]; /* pt, bdpt, pssmlt, mmlt, pitp, mlt, NULL */
 /* The bit of a method's name (0 for an unknown one). */
 unsigned mlt_method_bit(const char *method);
 

@@ -4,7 +4,8 @@
  * the first one that is not `before` another ends the iteration. The built-in ones, in order:
  * MCTLS's large step (mctls.c), PITP's technique perturbation before a small step (pitp_step.c),
  * the large step of fresh numbers and the small step (primary-sample-space, controlled or root;
- * pss_step.c). Mutations registered at run time (mutation_register) come before them.
+ * pss_step.c); under --method mlt, Veach's path-space mutations (veach_bidir.c) before all of them,
+ * ending every iteration. Mutations registered at run time (mutation_register) come before them.
  *
  * Adding one: its file, which defines a `const struct mutation` (tests/mcmc/toy_mutation.c is a
  * whole example), and one line in mutation_registry.c's table (or one mutation_register call). Its
@@ -32,6 +33,9 @@ struct mutation {
     /* the step itself: its proposal, acceptance, splats and statistics; t_start for the timings */
     void (*step)(struct worker *wk, struct chain *c, bool large, double t_start);
     size_t chain_state; /* bytes of per-chain state (0: none), zeroed when the chain starts */
+    /* whether a run of these options uses it (NULL: every run); a chain of a run that does not
+     * gets no state of it (NULL), and its save and load see that NULL */
+    bool (*wanted)(const struct mlt_opts *o);
     /* its per-chain state in a checkpoint when not flat bytes (state: the registry's, or NULL);
      * load is false when the bytes do not fit */
     void (*save)(struct ckpt_buf *b, const struct scene *sc, const struct chain *c, const void *state);
@@ -39,7 +43,7 @@ struct mutation {
 };
 
 /* The built-in mutations (their files'). */
-extern const struct mutation mutation_mctls, mutation_pitp, mutation_large, mutation_small;
+extern const struct mutation mutation_veach_bidir, mutation_mctls, mutation_pitp, mutation_large, mutation_small;
 
 /* Adds m before the built-in mutations (before the first mlt_render of the process). Returns its
  * statistics kind (stats/mlt_stats.h), or -1 when the registry or the statistics are full. */
@@ -47,7 +51,7 @@ int mutation_register(const struct mutation *m);
 /* One iteration's steps for chain c (chain_loop.c). */
 void mutations_iterate(struct worker *wk, struct chain *c, bool large, double t_start);
 /* The chains' per-mutation state: allocated, freed, and in and out of checkpoints (chain_checkpoint.c). */
-void mutations_chain_alloc(struct chain *c);
+void mutations_chain_alloc(struct chain *c, const struct mlt_opts *o);
 void mutations_chain_free(struct chain *c);
 void mutations_chain_save(struct ckpt_buf *b, const struct scene *sc, const struct chain *c);
 bool mutations_chain_load(struct ckpt_buf *b, const struct scene *sc, struct chain *c);

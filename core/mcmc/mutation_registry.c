@@ -6,10 +6,11 @@
 
 /* The built-in mutations in the order they are tried: one line each. */
 static const struct mutation *const builtin[] = {
-    &mutation_mctls, /* large steps at MCTLS's lengths (mctls.c) */
-    &mutation_pitp,  /* before every small step under PITP (pitp_step.c) */
-    &mutation_large, /* the other large steps: fresh numbers (pss_step.c) */
-    &mutation_small, /* the small step (pss_step.c) */
+    &mutation_veach_bidir, /* --method mlt: Veach's bidirectional mutation, every iteration (veach_bidir.c) */
+    &mutation_mctls,       /* large steps at MCTLS's lengths (mctls.c) */
+    &mutation_pitp,        /* before every small step under PITP (pitp_step.c) */
+    &mutation_large,       /* the other large steps: fresh numbers (pss_step.c) */
+    &mutation_small,       /* the small step (pss_step.c) */
 };
 #define BUILTIN (int)(sizeof builtin / sizeof builtin[0])
 
@@ -45,10 +46,12 @@ void *mutation_state(const struct chain *c, const struct mutation *m)
     return NULL;
 }
 
-void mutations_chain_alloc(struct chain *c)
+void mutations_chain_alloc(struct chain *c, const struct mlt_opts *o)
 {
-    for (int i = 0; i < count(); i++)
-        if (entry(i)->chain_state && !c->state[i]) c->state[i] = xcalloc(1, entry(i)->chain_state);
+    for (int i = 0; i < count(); i++) {
+        const struct mutation *m = entry(i);
+        if (m->chain_state && !c->state[i] && (!m->wanted || m->wanted(o))) c->state[i] = xcalloc(1, m->chain_state);
+    }
 }
 
 void mutations_chain_free(struct chain *c)

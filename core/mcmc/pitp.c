@@ -4,7 +4,6 @@
  * ratio of refracting paths (Eq. 5.18), and the update of the chain's numbers (technique number:
  * mmlt.h, Eq. 5.6). */
 #include "mcmc/pitp.h"
-#include "bsdf/bsdf_smooth.h"
 #include "camera/camera.h"
 #include "sampling/pick.h"
 #include <math.h>
@@ -213,22 +212,6 @@ bool pitp_target_may_change(const struct mmlt_path *x)
     return false;
 }
 
-/* The factor a refracting vertex carries in radiance mode, (eta on the camera side / eta on the
- * light side)^2 (bsdf_dielectric.c, bsdf_rough_dielectric.c), 1 in importance mode and wherever it
- * does not refract. wc, wl: unit directions toward its camera-side and light-side neighbours. */
-static double radiance_factor(const struct vertex *v, vec3 wc, vec3 wl)
-{
-    if (v->kind != VK_SURFACE || !v->bc.b) return 1;
-    const struct bsdf *b = v->bc.b;
-    if (!b->refracts) return 1; /* b->refracts: a dielectric, also nested in a mixed or transparency BSDF */
-    bool out_c = vdot(wc, v->sh.n) > 0, out_l = vdot(wl, v->sh.n) > 0; /* transmissive: never flipped */
-    if (out_c == out_l) return 1;
-    /* transparency's straight-through lobe crosses without refracting */
-    if (b->pass_through && smooth_same_dir(wc, vneg(wl))) return 1;
-    double ec = out_c ? 1 : b->refract_ior, el = out_l ? 1 : b->refract_ior;
-    return sqr(ec / el);
-}
-
 /* f_j / f_i for the path x in technique i's form: the vertices x_l between the two connections
  * change transport mode (l = i..j-1 from radiance to importance when j > i, the reverse when
  * j < i), and only a refraction's factor depends on the mode. With T(i -> j) = w_j, the MIS
@@ -244,8 +227,8 @@ static double f_ratio(const struct mmlt_path *x, int sj)
     int first = si < sj ? si : sj, end = si < sj ? sj : si;
     for (int l = first > 1 ? first : 1; l < end; l++) {
         double dist2;
-        double factor = radiance_factor(path_vertex[l], edge_dir(path_vertex[l], path_vertex[l + 1], &dist2),
-                                        edge_dir(path_vertex[l], path_vertex[l - 1], &dist2));
+        double factor = vertex_radiance_factor(path_vertex[l], edge_dir(path_vertex[l], path_vertex[l + 1], &dist2),
+                                               edge_dir(path_vertex[l], path_vertex[l - 1], &dist2));
         r = sj > si ? r / factor : r * factor;
     }
     return r;

@@ -8,6 +8,7 @@
 #include "emitter/emitter.h"
 #include "mcmc/mlt_internal.h"
 #include "mcmc/tech_split.h"
+#include "mcmc/veach.h"
 #include "sampling/pick.h"
 #include <math.h>
 #include <stdlib.h>
@@ -181,6 +182,7 @@ void chain_start(struct worker *wk, struct chain *c, int kk)
         c->path = xmalloc(sizeof *c->path);
         ctrl_path_capture(c->path, x0->cam, c->tech, x0->emi, c->k + 1 - c->tech);
     }
+    if (o->method == MLT_VEACH) veach_chain_start(wk, c); /* one of the seed's paths */
     /* The seed's stream reproduced its path; the mutations get a stream of their own, so that two
      * threads starting from the same seed sample do not run identical chains. */
     rng_seed(&c->pss.r, o->seed, (1ULL << 62) | ((uint64_t)wk->global_tid << 24) | (uint64_t)kk);

@@ -89,6 +89,11 @@ int walk_emitter(const struct path_ctx *pc, struct sampler *s, struct vertex *v,
  * numbers (v[n-1].delta and v[n-2].pdf_rev are set as the walk sets them). n < 2 walks afresh.
  * PITP's retrace of the vertices a subpath gains (core/mcmc/pitp.c). */
 int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream);
+/* walk_extend, but a subpath of one vertex keeps it: its direction (the camera's image position, or
+ * the emitter's direction) is drawn from the start of block 0, not after the numbers that chose
+ * the vertex, so the numbers should be fresh ones (Veach's bidirectional mutation extends a kept
+ * endpoint, core/mcmc/veach_bidir.c). Sets v[0].px, py for the camera. */
+int walk_extend_from(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream);
 /* walk_extend by one vertex, expected to be `to` (NULL: no expectation): where the step's direction
  * points at a surface vertex `to` within float noise, the step takes `to`'s point without casting
  * the ray, so `to` must be a vertex of a path whose segment from v[n-1] is known unoccluded
@@ -167,6 +172,13 @@ rgb vertex_emission(const struct scene *sc, const struct vertex *v, vec3 w);
  * Without it light tracing and every s >= 2 technique see a different BSDF than the path tracer.
  * Exactly 1 where the shading normal is the geometric one. */
 double adjoint_shading_factor(const struct vertex *v, vec3 wi, vec3 wo);
+
+/* The factor a refracting vertex carries in radiance mode, (eta on the camera side / eta on the
+ * light side)^2 (bsdf_dielectric.c, bsdf_rough_dielectric.c), 1 in importance mode and wherever it
+ * does not refract: the ratio of a path's contribution with v on a camera subpath to the same with
+ * v on an emitter subpath (PITP's f_j / f_i, Veach's MLT's target). wc, wl: unit directions toward
+ * its camera-side and light-side neighbours. */
+double vertex_radiance_factor(const struct vertex *v, vec3 wc, vec3 wl);
 
 /* The magnitude of p's coordinates, at least 1: what float rounding of a point near p scales with. */
 static inline double coord_scale(vec3 p) { return maxd(fabs(p.z), maxd(fabs(p.y), maxd(fabs(p.x), 1.0))); }

@@ -1,4 +1,5 @@
 /* Vertices from ray hits, density conversion, emission and visibility between vertices. */
+#include "bsdf/bsdf_smooth.h"
 #include "emitter/emitter.h"
 #include "path/path.h"
 #include "scene/accel.h"
@@ -208,4 +209,17 @@ void env_vertex(const struct scene *sc, vec3 p, vec3 d, struct vertex *out)
                            .prim = sc->env_prim,
                            .tri = -1,
                            .wi = vneg(d)};
+}
+
+double vertex_radiance_factor(const struct vertex *v, vec3 wc, vec3 wl)
+{
+    if (v->kind != VK_SURFACE || !v->bc.b) return 1;
+    const struct bsdf *b = v->bc.b;
+    if (!b->refracts) return 1; /* b->refracts: a dielectric, also nested in a mixed or transparency BSDF */
+    bool out_c = vdot(wc, v->sh.n) > 0, out_l = vdot(wl, v->sh.n) > 0; /* transmissive: never flipped */
+    if (out_c == out_l) return 1;
+    /* transparency's straight-through lobe crosses without refracting */
+    if (b->pass_through && smooth_same_dir(wc, vneg(wl))) return 1;
+    double ec = out_c ? 1 : b->refract_ior, el = out_l ? 1 : b->refract_ior;
+    return sqr(ec / el);
 }

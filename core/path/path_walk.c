@@ -147,6 +147,10 @@ static int camera_walk(const struct path_ctx *pc, struct sampler *s, struct vert
                        const struct vertex *to);
 static int emitter_walk(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts,
                         const struct vertex *to);
+static int camera_leave(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts,
+                        const struct vertex *to);
+static int emitter_leave(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts,
+                         const struct vertex *to);
 
 static int extend_walk(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream,
                        const struct vertex *to)
@@ -165,6 +169,18 @@ static int extend_walk(const struct path_ctx *pc, struct sampler *s, struct vert
 int walk_extend(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream)
 {
     return extend_walk(pc, s, v, n, max_verts, stream, NULL);
+}
+
+int walk_extend_from(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int max_verts, int stream)
+{
+    if (n != 1 || max_verts <= 1) return extend_walk(pc, s, v, n, max_verts, stream, NULL);
+    sampler_begin(s, stream, 0);
+    if (stream == STREAM_CAMERA) return camera_leave(pc, s, v, max_verts, NULL);
+    if (v[0].kind == VK_ENV) { /* a direction: its ray's origin is a point of the origin disc, drawn anew */
+        double pdf_disc;
+        v[0].p = env_sample_origin(pc->sc, env_dir(&v[0]), s, &pdf_disc);
+    }
+    return emitter_leave(pc, s, v, max_verts, NULL);
 }
 
 int walk_extend_to(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int n, int stream,
@@ -198,9 +214,19 @@ static int camera_walk(const struct path_ctx *pc, struct sampler *s, struct vert
     /* A lone camera vertex (light tracing's t = 1) gets its raster position from the connection:
      * drawing a direction would cost two numbers (and, under MCMC, two mutations) for nothing. */
     if (max_verts == 1) return 1;
+    return camera_leave(pc, s, v, max_verts, to);
+}
+
+/* The primary ray from the camera vertex v[0] (its image position from the current block), and
+ * the walk from there. */
+static int camera_leave(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts,
+                        const struct vertex *to)
+{
+    const struct camera *cam = &pc->sc->cam;
+    struct vertex *z = &v[0];
     double pdf;
-    vec3 d = thin_lens ? camera_sample_dir_lens(cam, z->p, s, &z->px, &z->py, &pdf)
-                       : camera_sample_dir_pinhole(cam, s, &z->px, &z->py, &pdf);
+    vec3 d = cam->lens_radius > 0 ? camera_sample_dir_lens(cam, z->p, s, &z->px, &z->py, &pdf)
+                                  : camera_sample_dir_pinhole(cam, s, &z->px, &z->py, &pdf);
     return trace(pc, s, v, 1, max_verts, d, pdf, v3s(1), TRANSPORT_RADIANCE, STREAM_CAMERA, to);
 }
 
@@ -256,6 +282,15 @@ static int emitter_walk(const struct path_ctx *pc, struct sampler *s, struct ver
     /* A lone emitter vertex (s = 1) is only connected to: the direction it would emit along is
      * never used (as for the camera in walk_camera). */
     if (max_verts == 1) return 1;
+    return emitter_leave(pc, s, v, max_verts, to);
+}
+
+/* The ray the emitter vertex v[0] emits (its direction from the current block), and the walk
+ * from there. */
+static int emitter_leave(const struct path_ctx *pc, struct sampler *s, struct vertex *v, int max_verts,
+                         const struct vertex *to)
+{
+    const struct scene *sc = pc->sc;
     if (v[0].kind == VK_ENV) {
         /* rays leave the origin disc (area density 1 / (pi R^2), cosine 1) against env_dir */
         double pdf_disc = 1.0 / (M_PI * sqr(env_radius(sc)));

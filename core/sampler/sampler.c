@@ -103,3 +103,16 @@ void sampler_block_init(struct sampler_block *b, double *u, rng *r)
     b->n = 0;
     b->r = r;
 }
+
+static double rng_next(struct sampler *s, enum dim_kind kind)
+{
+    (void)kind;
+    return rng_uniform(((struct sampler_rng *)s)->r);
+}
+static const struct sampler_ops rng_ops = {rng_next, NULL, NULL};
+
+void sampler_rng_init(struct sampler_rng *s, rng *r)
+{
+    s->base = (struct sampler){&rng_ops, 0, 0, 0};
+    s->r = r;
+}

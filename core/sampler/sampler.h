@@ -110,6 +110,15 @@ struct sampler_replay {
 };
 void sampler_replay_init(struct sampler_replay *s, const double (*u)[STREAM_DIMS]);
 
+/* A forward sampler that reads every number from a borrowed generator: the fresh numbers of
+ * Veach's mutations (mcmc/veach_bidir.c, the chain's own generator, checkpointed with it) and the
+ * BSDF tests' draws. */
+struct sampler_rng {
+    struct sampler base;
+    rng *r;
+};
+void sampler_rng_init(struct sampler_rng *s, rng *r);
+
 /* One block of numbers that an inversion writes (put) and a forward sampling function then reads
  * (next), whatever stream and vertex either says: the local inverse-then-sample of one vertex
  * (controlled steps, a path's subpaths re-formed, path/path_form.c). Fresh numbers come from r, or

@@ -10,8 +10,12 @@
 
 /* PROPOSAL_PITP records PITP's technique perturbations (mcmc/pitp.c): "accepted" means carried
  * out; a is 1, or min(1, f_j / f_i) on paths refracting between the connections, and 0 for a
- * failed inversion or retrace (counted in `failed`); technique_changed is j != i. */
-enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_BUILTIN };
+ * failed inversion or retrace (counted in `failed`); technique_changed is j != i. PROPOSAL_BIDIR
+ * records Veach's bidirectional mutation (mcmc/veach_bidir.c) by the current path's length;
+ * technique_changed: the path's length changed; failed: refused before a path was made (a kept end
+ * that scatters through a delta lobe, no room for the added length) or an extension that stopped
+ * short. */
+enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_BIDIR, PROPOSAL_BUILTIN };
 /* Kinds PROPOSAL_BUILTIN.. are the mutations registered at run time (mcmc/mutation.h); a kind
  * without attempts writes no rows, so the CSV of a run without them is unchanged. */
 #define PROPOSAL_KINDS (PROPOSAL_BUILTIN + 4)

@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static const char *const methods[] = {"pt", "bdpt", "pssmlt", "mmlt", "pitp", NULL};
+static const char *const methods[] = {"pt", "bdpt", "pssmlt", "mmlt", "pitp", "mlt", NULL};
 static const char *const samplers[] = {"independent", "sobol", NULL};
 
 /* The small steps' names (mlt_options.c). */
@@ -44,7 +44,7 @@ static const char *help_tail(void)
     static char t[6144];
     snprintf(t, sizeof t,
              "Prints one summary line: method, samples, seconds, samples/s.\n"
-             "pssmlt, mmlt, pitp also write PREFIX.mixing.csv, the chains' mixing diagnostics: a row per path\n"
+             "pssmlt, mmlt, pitp, mlt also write PREFIX.mixing.csv, the chains' mixing diagnostics: a row per path\n"
              "length (mmlt, pitp) and an `all` row (core/mcmc/docs/outputs.md). rhat_contrib, rhat_target:\n"
              "rank-normalised split-R-hat across the chains of where the state splats (its raster column) and\n"
              "of its target; near 1 the chains agree, above 1.01 they do not yet (that length's image is not\n"
@@ -93,10 +93,12 @@ void render_args_parse(int argc, char **argv, struct render_args *a)
     struct mlt_opts *m = &a->mlt;
     const struct opt shared[] = {
         {"--method", OPT_CHOICE, .choices = methods, .str = &a->method, .def = "bdpt",
-         .help = "estimator (pitp: MMLT with the path-invariant technique perturbation, thesis 5.2)"},
+         .help = "estimator (pitp: MMLT with the path-invariant technique perturbation, thesis 5.2; mlt: Veach's MLT, "
+                 "path-space state, the bidirectional mutation: core/mcmc/docs/veach.md)"},
         {"--spp", OPT_INT, OPT_DST(a->mc.spp), .arg = "N", .lo = 1, .hi = 1 << 24,
-         .help = "samples per pixel; for pssmlt/mmlt/pitp mutations per pixel (default: the scene's renderer.spp, else "
-                 "16)"},
+         .help =
+             "samples per pixel; for pssmlt/mmlt/pitp/mlt mutations per pixel (default: the scene's renderer.spp, else "
+             "16)"},
         {"--time", OPT_DOUBLE, OPT_DST(a->mc.seconds), .arg = "SECONDS", .lo = 1e-3, .hi = 1e7,
          .help =
              "equal-time budget instead of --spp: pssmlt/mmlt chains stop at it (the seed pass comes on top); pt/bdpt "
@@ -130,7 +132,7 @@ void render_args_parse(int argc, char **argv, struct render_args *a)
                  "output (images, CSVs), total"},
         {"--checkpoint", OPT_DOUBLE, OPT_DST(a->checkpoint), .arg = "SECONDS", .lo = 1e-3, .hi = 1e9,
          .help = "write the run's whole state to PREFIX.ckpt every SECONDS (atomically; Ctrl-C always leaves one); the "
-                 "seed pass of pssmlt/mmlt/pitp is not checkpointed"},
+                 "seed pass of pssmlt/mmlt/pitp/mlt is not checkpointed"},
         {"--resume", OPT_STRING, OPT_DST(a->resume), .arg = "FILE",
          .help = "continue the run FILE holds; give the same scene and options (it refuses others); with an --spp "
                  "budget the result is bit-identical to an uninterrupted run, with --time the run gets what its budget "
@@ -138,7 +140,9 @@ void render_args_parse(int argc, char **argv, struct render_args *a)
         {"--embree-isa", OPT_CALL, .call = set_isa, .arg = "ISA",
          .help = "Embree's kernels: sse2, sse4.2, avx, avx2 or avx512 (those this CPU runs; default: the best, or the "
                  "environment's PSS_EMBREE_ISA): hit points, so images, differ in the last bits between kernels"},
-        {.type = OPT_TEXT, .help = "MCMC options (pssmlt, mmlt, pitp; the mmlt options apply to pitp too):"},
+        {.type = OPT_TEXT,
+         .help = "MCMC options (pssmlt, mmlt, pitp, mlt; the mmlt options apply to pitp too; mlt takes the seed pass, "
+                 "length, budget and diagnostics options):"},
     };
     /* then the MCMC options, from their descriptors (core/mcmc/mlt_options.h), and the end */
     struct opt opts[sizeof shared / sizeof shared[0] + 32] = {0};
@@ -184,7 +188,10 @@ void render_args_parse(int argc, char **argv, struct render_args *a)
 /* What the MCMC methods take from the shared options and the scene. */
 void render_args_mlt_setup(struct mlt_opts *m, const struct render_args *a, const struct scene *sc)
 {
-    m->method = !strcmp(a->method, "mmlt") ? MLT_MMLT : !strcmp(a->method, "pitp") ? MLT_PITP : MLT_PSSMLT;
+    m->method = !strcmp(a->method, "mmlt")   ? MLT_MMLT
+                : !strcmp(a->method, "pitp") ? MLT_PITP
+                : !strcmp(a->method, "mlt")  ? MLT_VEACH
+                                             : MLT_PSSMLT;
     m->max_length = a->mc.max_length;
     m->min_length = a->mc.min_length;
     m->mutations = (long)a->mc.spp * sc->cam.width * sc->cam.height;

@@ -160,9 +160,9 @@ bool render_write_csv(const struct render_args *a, const struct mlt_result *r, c
     csv_meta(f, "connections_nonzero", "%ld", r->stats.conn_nonzero);
     csv_meta(f, "b", "%.9g", r->b);
     csv_meta(f, "b_rse", "%.6g", r->b_rse);
-    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++)
+    for (int k = 1; k <= m->max_length && mlt_multiplexed(m->method); k++)
         csv_meta(f, NULL, "b_%d %.9g", k, r->b_k[k]);
-    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++)
+    for (int k = 1; k <= m->max_length && mlt_multiplexed(m->method); k++)
         csv_meta(f, NULL, "b_rse_%d %.6g", k, r->b_k_rse[k]);
     /* the large steps' own estimate of the same, and the one the image is scaled to (seed pass, or
      * under --progressive-norm both pooled) */
@@ -172,9 +172,9 @@ bool render_write_csv(const struct render_args *a, const struct mlt_result *r, c
     csv_meta(f, "large_samples", "%ld", nl);
     csv_meta(f, "b_large", "%.9g", r->bl);
     csv_meta(f, "b_large_rse", "%.6g", r->bl_rse);
-    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++)
+    for (int k = 1; k <= m->max_length && mlt_multiplexed(m->method); k++)
         csv_meta(f, NULL, "b_large_%d %.9g", k, r->bl_k[k]);
-    for (int k = 1; k <= m->max_length && m->method != MLT_PSSMLT; k++)
+    for (int k = 1; k <= m->max_length && mlt_multiplexed(m->method); k++)
         csv_meta(f, NULL, "b_large_rse_%d %.6g", k, r->bl_k_rse[k]);
     csv_meta(f, "b_image", "%.9g", r->b_image);
     csv_meta(f, "b_image_rse", "%.6g", r->b_image_rse);

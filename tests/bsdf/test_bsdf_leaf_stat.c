@@ -16,9 +16,9 @@
 #include <criterion/criterion.h>
 #include <gsl/gsl_cdf.h>
 
+#include "sampler/sampler.h"
 #include "support/chi2.h"
 #include "support/leaf_util.h"
-#include "support/rng_sampler.h"
 #include <stdio.h>
 
 #define N_CHI2 1000000L
@@ -27,13 +27,13 @@
 struct dir_case {
     struct bsdf_ctx c;
     vec3 wi;
-    struct rng_sampler s;
+    struct sampler_rng s;
 };
 
 static bool case_sample(void *p, rng *r, vec3 *d)
 {
     struct dir_case *k = p;
-    rng_sampler_init(&k->s, r);
+    sampler_rng_init(&k->s, r);
     sampler_begin(&k->s.base, STREAM_CAMERA, 0);
     struct bsdf_sample o;
     if (!bsdf_sample(&k->c, k->wi, &k->s.base, TRANSPORT_RADIANCE, &o) || o.delta) return false;

@@ -10,7 +10,6 @@
 #include "bsdf/bsdf_nested.h"
 #include "sampler/sampler.h"
 #include "support/nested_util.h"
-#include "support/rng_sampler.h"
 #include <unistd.h>
 
 static struct scene *load_cases(void)
@@ -64,8 +63,8 @@ Test(bsdf_nested, sample_matches_pdf_eval_and_consumes_dims)
     struct scene *s = load_cases();
     rng r;
     rng_seed(&r, 5, 0);
-    struct rng_sampler rs;
-    rng_sampler_init(&rs, &r);
+    struct sampler_rng rs;
+    sampler_rng_init(&rs, &r);
     for (int k = 0; k < N_NESTED_CASES; k++) {
         struct bsdf_ctx c = bsdf_ctx_at(nested_find(s, nested_cases[k].name), NULL);
         for (int j = 0; j < 6; j++) {
@@ -107,8 +106,8 @@ Test(bsdf_nested, inversion_roundtrip)
     sampler_writer_init(&w, 9, 0);
     rng r;
     rng_seed(&r, 7, 0);
-    struct rng_sampler rs;
-    rng_sampler_init(&rs, &r);
+    struct sampler_rng rs;
+    sampler_rng_init(&rs, &r);
     for (int k = 0; k < N_NESTED_CASES; k++) {
         struct bsdf_ctx c = bsdf_ctx_at(nested_find(s, nested_cases[k].name), NULL);
         long sampled = 0, failed = 0;
@@ -221,8 +220,8 @@ Test(bsdf_nested, exact_furnace)
     struct scene *s = load_cases();
     rng r;
     rng_seed(&r, 17, 0);
-    struct rng_sampler rs;
-    rng_sampler_init(&rs, &r);
+    struct sampler_rng rs;
+    sampler_rng_init(&rs, &r);
     const char *names[] = {"mx_white", "tr_white", "mx_white_glass"};
     for (int k = 0; k < 3; k++) {
         struct bsdf_ctx c = bsdf_ctx_at(nested_find(s, names[k]), NULL);

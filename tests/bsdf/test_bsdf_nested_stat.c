@@ -10,9 +10,9 @@
  * CHI2_CASES (support/chi2.h). */
 #include <criterion/criterion.h>
 
+#include "sampler/sampler.h"
 #include "support/chi2.h"
 #include "support/nested_util.h"
-#include "support/rng_sampler.h"
 
 #define CHI2_N 1000000L
 
@@ -37,8 +37,8 @@ static vec3 chi_dir(const struct chi_ctx *c, double u, double v)
 static bool chi_sample(void *p, rng *r, double *u, double *v)
 {
     struct chi_ctx *c = p;
-    struct rng_sampler s;
-    rng_sampler_init(&s, r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, r);
     sampler_begin(&s.base, STREAM_CAMERA, 1);
     struct bsdf_sample out;
     if (!bsdf_sample(&c->c, c->wi, &s.base, TRANSPORT_RADIANCE, &out) || out.delta) return false;
@@ -124,8 +124,8 @@ Test(stat_bsdf_nested, white_furnace)
     cr_assert(s, "%s", err);
     rng r;
     rng_seed(&r, 23, 0);
-    struct rng_sampler rs;
-    rng_sampler_init(&rs, &r);
+    struct sampler_rng rs;
+    sampler_rng_init(&rs, &r);
     const char *names[] = {"mx_white_glass", "mx_white", "tr_white", "sc_white", "rc_white"};
     for (int k = 0; k < 5; k++) {
         struct bsdf_ctx c = bsdf_ctx_at(nested_find(s, names[k]), NULL);

@@ -78,8 +78,8 @@ static void check_sample_consistency(enum bsdf_type type, bool refraction)
     int n = rough_cases(type, cases);
     rng r;
     rng_seed(&r, 21, (uint64_t)type);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     char name[256];
     for (int k = 0; k < n; k++) {
         struct rough_case *rc = &cases[k];
@@ -152,8 +152,8 @@ static void check_inversion(enum bsdf_type type, bool refraction, long per_case)
     int n = rough_cases(type, cases);
     rng r;
     rng_seed(&r, 41, (uint64_t)type);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     sampler_writer_init(&w, 43, (uint64_t)type);
     char name[256];
     double min_rate = 1;
@@ -216,8 +216,8 @@ Test(bsdf_rough, dielectric_refraction_generalized_reciprocity)
     struct bsdf_ctx c = bsdf_ctx_at(&b, NULL);
     rng r;
     rng_seed(&r, 33, 0);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     long tested = 0;
     for (int i = 0; i < 100000; i++) {
         b.dist = (i & 1) ? MF_GGX : MF_BECKMANN;

@@ -87,8 +87,8 @@ static vec3 chi_dir(const struct bsdf_chi_ctx *c, double u, double v)
 static bool bsdf_chi_sample(void *p, rng *r, double *u, double *v)
 {
     struct bsdf_chi_ctx *c = p;
-    struct rng_sampler s;
-    rng_sampler_init(&s, r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, r);
     sampler_begin(&s.base, STREAM_CAMERA, 1);
     struct bsdf_sample out;
     if (!c->k->ops->sample(&c->k->c, c->k->wi, &s.base, c->k->mode, &out)) return false;
@@ -186,8 +186,8 @@ Test(stat_bsdf_rough, conductor_white_furnace)
     int n = rough_cases(BSDF_ROUGH_CONDUCTOR, cases);
     rng r;
     rng_seed(&r, 77, 0);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     char name[256];
     for (int i = 0; i < n; i++) {
         struct rough_case *k = &cases[i];

@@ -22,14 +22,14 @@ struct dir_case {
     struct bsdf_ctx c;
     vec3 wi;
     enum transport mode;
-    struct rng_sampler s;
+    struct sampler_rng s;
     double pdf_scale_half; /* failure demonstration: pdf x this where phi < pi (1 = correct) */
 };
 
 static bool case_sample(void *p, rng *r, vec3 *d)
 {
     struct dir_case *k = p;
-    rng_sampler_init(&k->s, r);
+    sampler_rng_init(&k->s, r);
     sampler_begin(&k->s.base, STREAM_CAMERA, 0);
     struct bsdf_sample o;
     if (!bsdf_sample(&k->c, k->wi, &k->s.base, k->mode, &o) || o.delta) return false;

@@ -7,7 +7,7 @@
 #include "bsdf/bsdf.h"
 #include "bsdf/bsdf_json.h"
 #include "io/oiio.h"
-#include "support/rng_sampler.h"
+#include "sampler/sampler.h"
 #include "support/tmpdir.h"
 #include <stdio.h>
 #include <string.h>
@@ -93,8 +93,8 @@ Test(texture_roughness, rough_bsdfs_sample_evaluate_and_invert_at_textured_point
                                  " \"roughness\": \"r.png\"}");
     rng r;
     rng_seed(&r, 7, 0);
-    struct rng_sampler rs;
-    rng_sampler_init(&rs, &r);
+    struct sampler_rng rs;
+    sampler_rng_init(&rs, &r);
     static struct sampler_writer w;
     sampler_writer_init(&w, 9, 0);
     const double uvs[2][2] = {{0.25, 0.5}, {0.75, 0.5}};

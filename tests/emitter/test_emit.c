@@ -96,8 +96,8 @@ Test(emit, radiance_front_side_only)
     /* mesh triangle normals follow the counter-clockwise winding */
     rng r;
     rng_seed(&r, 5, 0);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     for (int i = 0; i < 100; i++) {
         struct emitter_pos pos;
         sampler_begin(&s.base, STREAM_EMITTER, 0);
@@ -175,8 +175,8 @@ Test(emit, pick_roundtrip)
     fx_init(&f, FX_ENV_MAP, true);
     rng r;
     rng_seed(&r, 1, 0);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     sampler_writer_init(&W, 2, 0);
     for (int i = 0; i < NRT; i++) {
         double prob, prob2;
@@ -200,8 +200,8 @@ static void pos_roundtrip(int prim)
     fx_init(&f, FX_ENV_NONE, false);
     rng r;
     rng_seed(&r, 3 + prim, 0);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     sampler_writer_init(&W, 4, prim);
     long ok = 0;
     for (int i = 0; i < NRT; i++) {
@@ -231,8 +231,8 @@ Test(emit, dir_roundtrip)
 {
     rng r;
     rng_seed(&r, 8, 0);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     sampler_writer_init(&W, 9, 0);
     long ok = 0;
     for (int i = 0; i < NRT; i++) {
@@ -258,8 +258,8 @@ static void env_roundtrip(enum fx_env kind)
     fx_init(&f, kind, true);
     rng r;
     rng_seed(&r, 12, kind);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     sampler_writer_init(&W, 13, kind);
     long ok = 0, ok_o = 0;
     for (int i = 0; i < NRT; i++) {
@@ -299,8 +299,8 @@ static void camera_roundtrip(enum recon_filter f)
     int m = camera_margin(&c);
     rng r;
     rng_seed(&r, 21, 0);
-    struct rng_sampler s;
-    rng_sampler_init(&s, &r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, &r);
     sampler_writer_init(&W, 22, 0);
     long ok = 0;
     for (int i = 0; i < NRT; i++) {

@@ -49,8 +49,8 @@ struct cap_ctx {
 static bool cap_sample(void *ctx, rng *r, double *u, double *v)
 {
     struct cap_ctx *c = ctx;
-    struct rng_sampler s;
-    rng_sampler_init(&s, r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, r);
     sampler_begin(&s.base, STREAM_EMITTER, 0);
     vec3 d;
     double pdf;
@@ -112,8 +112,8 @@ struct shape_ctx {
 static bool disk_sample(void *ctx, rng *r, double *u, double *v)
 {
     struct shape_ctx *c = ctx;
-    struct rng_sampler s;
-    rng_sampler_init(&s, r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, r);
     sampler_begin(&s.base, STREAM_EMITTER, 0);
     struct emitter_pos pos;
     if (!emitter_sample_pos(c->sc, 0, &s.base, &pos)) return false;
@@ -157,8 +157,8 @@ static void cyl_shares(const struct shape_ctx *c, double *cap, double *side, dou
 static bool cyl_sample(void *ctx, rng *r, double *u, double *v)
 {
     struct shape_ctx *c = ctx;
-    struct rng_sampler s;
-    rng_sampler_init(&s, r);
+    struct sampler_rng s;
+    sampler_rng_init(&s, r);
     sampler_begin(&s.base, STREAM_EMITTER, 0);
     struct emitter_pos pos;
     if (!emitter_sample_pos(c->sc, 0, &s.base, &pos)) return false;

@@ -22,9 +22,9 @@ static char buf[512];
         cr_assert((r).pass, "%s", buf);                                                                                \
     } while (0)
 
-static void sampler_at(struct rng_sampler *s, rng *r, int stream)
+static void sampler_at(struct sampler_rng *s, rng *r, int stream)
 {
-    rng_sampler_init(s, r);
+    sampler_rng_init(s, r);
     sampler_begin(&s->base, stream, 0);
 }
 
@@ -32,7 +32,7 @@ static void sampler_at(struct rng_sampler *s, rng *r, int stream)
 static bool pick_sample(void *ctx, rng *r, double *u, double *v)
 {
     (void)ctx;
-    struct rng_sampler s;
+    struct sampler_rng s;
     sampler_at(&s, r, STREAM_EMITTER);
     double p;
     int prim = emitter_pick(&F.sc, &s.base, &p);
@@ -59,7 +59,7 @@ Test(stat_emit, pick_frequencies)
 static bool quad_sample(void *ctx, rng *r, double *u, double *v)
 {
     (void)ctx;
-    struct rng_sampler s;
+    struct sampler_rng s;
     sampler_at(&s, r, STREAM_EMITTER);
     struct emitter_pos p;
     if (!emitter_sample_pos(&F.sc, FX_QUAD, &s.base, &p)) return false;
@@ -90,7 +90,7 @@ Test(stat_emit, quad_position)
 static bool mesh_sample(void *ctx, rng *r, double *u, double *v)
 {
     (void)ctx;
-    struct rng_sampler s;
+    struct sampler_rng s;
     sampler_at(&s, r, STREAM_EMITTER);
     struct emitter_pos p;
     if (!emitter_sample_pos(&F.sc, FX_MESH, &s.base, &p)) return false;
@@ -125,7 +125,7 @@ Test(stat_emit, mesh_position_unequal_triangles)
 static bool sphere_sample(void *ctx, rng *r, vec3 *d)
 {
     (void)ctx;
-    struct rng_sampler s;
+    struct sampler_rng s;
     sampler_at(&s, r, STREAM_EMITTER);
     struct emitter_pos p;
     if (!emitter_sample_pos(&F.sc, FX_SPHERE, &s.base, &p)) return false;
@@ -150,7 +150,7 @@ Test(stat_emit, sphere_position)
 /* ---- emitted direction about a tilted normal ---- */
 static bool edir_sample(void *ctx, rng *r, vec3 *d)
 {
-    struct rng_sampler s;
+    struct sampler_rng s;
     sampler_at(&s, r, STREAM_EMITTER);
     double pdf;
     *d = emitter_sample_dir(*(vec3 *)ctx, &s.base, &pdf);
@@ -182,7 +182,7 @@ static void img_fold(double t, int n, double *out)
 static bool env_sample(void *ctx, rng *r, double *u, double *v)
 {
     (void)ctx;
-    struct rng_sampler s;
+    struct sampler_rng s;
     sampler_at(&s, r, STREAM_EMITTER);
     vec3 d;
     double pdf;
@@ -239,7 +239,7 @@ Test(stat_emit, env_map_rejects_missing_jacobian)
 static bool envc_sample(void *ctx, rng *r, vec3 *d)
 {
     (void)ctx;
-    struct rng_sampler s;
+    struct sampler_rng s;
     sampler_at(&s, r, STREAM_EMITTER);
     double pdf;
     return env_sample_dir(&F.sc, &s.base, d, &pdf);
@@ -262,7 +262,7 @@ Test(stat_emit, env_constant_direction)
 static bool origin_sample(void *ctx, rng *r, double *u, double *v)
 {
     vec3 d = *(vec3 *)ctx;
-    struct rng_sampler s;
+    struct sampler_rng s;
     sampler_at(&s, r, STREAM_EMITTER);
     double pdf;
     vec3 o = env_sample_origin(&F.sc, d, &s.base, &pdf);
@@ -300,7 +300,7 @@ static double bmax(void) { return atan(CAM.tan_half_fov / CAM.aspect * camera_fi
 static bool cam_sample(void *ctx, rng *r, double *u, double *v)
 {
     (void)ctx;
-    struct rng_sampler s;
+    struct sampler_rng s;
     sampler_at(&s, r, STREAM_CAMERA);
     double px, py;
     vec3 d = camera_sample_dir(&CAM, CAM.pos, &s.base, &px, &py, NULL);

@@ -23,7 +23,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-static const char *const method_names[] = {"pssmlt", "mmlt", "pitp"};
+static const char *const method_names[] = {"pssmlt", "mmlt", "pitp", "mlt"};
 
 static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, long mutations)
 {
@@ -85,7 +85,8 @@ static const struct cornell_cfg {
     {"mmlt --power-heuristic", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, true},
     {"mmlt --progressive-norm", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
     {"pitp --progressive-norm", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
-    {"mmlt --one-chain", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false}};
+    {"mmlt --one-chain", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
+    {"mlt", MLT_VEACH, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false}};
 #define CORNELL_CFGS ((int)(sizeof cornell_cfg / sizeof *cornell_cfg))
 
 ParameterizedTestParameters(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
@@ -126,6 +127,32 @@ ParameterizedTest(int *param, stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
             a.mean_se, ref.mean, ref.mean_se, pm, worst);
     cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", cf->name, a.mean,
                  a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    scene_free(sc);
+}
+
+/* Veach's MLT with a deliberately wrong T(x -> y): x1.1 on every bidirectional mutation that
+ * lengthens the path (mlt_opts.veach_broken_t) makes long paths rarer than f says; the Cornell-box
+ * agreement test above (the same reference, runs and alpha), at 64 mutations per pixel, must catch
+ * it. Not in the image mean, which is b whatever the chain does: in the blocks the indirect light
+ * lights (the ceiling). */
+Test(stat_mlt, broken_bidirectional_mutation_fails_the_agreement)
+{
+    struct scene *sc = test_scene("scenes/cornell-box/scene.json");
+    camera_resize(&sc->cam, 64, 64);
+    static struct stack ref, a;
+    struct plain_ctx bd = {sc, METHOD_BDPT, 16};
+    stack_runs_cached(&ref, render_plain_ctx, &bd, 8, 1000, 8, sc, "bdpt spp 16 threads 2 max_length 8");
+    struct mlt_ctx c = {sc, {0}};
+    opts(&c.o, sc, MLT_VEACH, 64L * 64 * 64);
+    c.o.seed_paths = 10000;
+    c.o.veach_broken_t = true;
+    stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * (uint64_t)(CORNELL_CFGS - 1), 8);
+    double pm, worst;
+    int f = stack_compare(&a, &ref, CORNELL_CFGS, &pm, &worst);
+    fprintf(stderr, "cornell mlt, broken T: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%.3g, worst block p=%.3g)\n",
+            a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    cr_assert_gt(f, 0, "a broken T(x -> y) passed: %g +- %g vs BDPT %g +- %g (mean p=%g, worst block p=%g)", a.mean,
+                 a.mean_se, ref.mean, ref.mean_se, pm, worst);
     scene_free(sc);
 }
 
@@ -304,8 +331,8 @@ struct budget {
 };
 static const struct budget SMALL = {64, 16, 64, 16, 16, 0};
 
-/* PT (m = 0), PSSMLT, MMLT or PITP (m = 1, 2, 3) against BDPT: Welch t on 8x8 blocks and the mean,
- * alpha 0.01 Sidak over the comparisons of all 4 methods. PITP runs as long as MMLT. Each method is
+/* PT (m = 0), PSSMLT, MMLT, PITP or Veach's MLT (m = 1..4) against BDPT: Welch t on 8x8 blocks and
+ * the mean, alpha 0.01 Sidak over the comparisons of all 5 methods. PITP and MLT run as long as MMLT. Each method is
  * its own test, so that --jobs spreads them; the BDPT reference they share is rendered once
  * (support/disk_cache.h), with the seeds it had when one test ran all four. */
 static void method_agrees(struct scene *sc, const struct budget *b, uint64_t seed, int m)
@@ -319,7 +346,7 @@ static void method_agrees(struct scene *sc, const struct budget *b, uint64_t see
     double pm, worst;
     if (m == 0) {
         stack_runs(&a, render_plain_ctx, &pt, 8, seed + 100, 8);
-        int f = stack_compare(&a, &ref, 4, &pm, &worst);
+        int f = stack_compare(&a, &ref, 5, &pm, &worst);
         cr_assert_eq(f, 0, "pt: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", a.mean, a.mean_se,
                      ref.mean, ref.mean_se, f, pm, worst);
         return;
@@ -329,7 +356,7 @@ static void method_agrees(struct scene *sc, const struct budget *b, uint64_t see
     opts(&c.o, sc, mm, (long)(mm == 0 ? b->pssmlt_mpp : b->mmlt_mpp) * b->res * b->res);
     c.o.seed_paths = b->seed_paths ? b->seed_paths : 10000;
     stack_runs(&a, render_mlt, &c, 12, seed + 200 + 100 * (uint64_t)mm, 8);
-    int f = stack_compare(&a, &ref, 4, &pm, &worst);
+    int f = stack_compare(&a, &ref, 5, &pm, &worst);
     fprintf(stderr, "%s agreement %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", method_names[mm],
             sc->file, a.mean, a.mean_se, ref.mean, ref.mean_se, pm, worst);
     cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", method_names[mm],
@@ -340,8 +367,8 @@ static void method_agrees(struct scene *sc, const struct budget *b, uint64_t see
 #define METHOD_PARAMS(name)                                                                                            \
     ParameterizedTestParameters(stat_mlt, name)                                                                        \
     {                                                                                                                  \
-        static int m[] = {0, 1, 2, 3};                                                                                 \
-        return cr_make_param_array(int, m, 4);                                                                         \
+        static int m[] = {0, 1, 2, 3, 4};                                                                              \
+        return cr_make_param_array(int, m, 5);                                                                         \
     }
 
 /* scenes/smooth-sphere (interpolated normals on a coarse mesh): agreement holds only with the

@@ -7,7 +7,6 @@
 #include "bsdf/bsdf.h"
 #include "bsdf/bsdf_smooth.h"
 #include "sampler/sampler.h"
-#include "support/rng_sampler.h"
 #include <string.h>
 
 /* Unit direction with the given cos(theta) and phi. */

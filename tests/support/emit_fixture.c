@@ -6,19 +6,6 @@
 #include <stdio.h>
 #include <string.h>
 
-static double rs_next(struct sampler *s, enum dim_kind kind)
-{
-    (void)kind;
-    return rng_uniform(((struct rng_sampler *)s)->r);
-}
-static const struct sampler_ops rs_ops = {rs_next, NULL, NULL};
-
-void rng_sampler_init(struct rng_sampler *s, rng *r)
-{
-    s->base = (struct sampler){&rs_ops, 0, 0, 0};
-    s->r = r;
-}
-
 void fx_init(struct emit_fixture *f, enum fx_env env, bool rotate_env)
 {
     memset(f, 0, sizeof *f);

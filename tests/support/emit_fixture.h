@@ -26,12 +26,6 @@ struct emit_fixture {
 void fx_init(struct emit_fixture *f, enum fx_env env, bool rotate_env);
 void fx_free(struct emit_fixture *f);
 
-struct rng_sampler {
-    struct sampler base;
-    rng *r;
-};
-void rng_sampler_init(struct rng_sampler *s, rng *r);
-
 /* A scene written to DIR/scene.json with one primitive (the JSON object `prim`) and a lambert
  * bsdf "w", loaded by the real loader with its emitter table (asserts success); freed by
  * fx_free_loaded. For emitters the loader builds (disks, cylinders). */

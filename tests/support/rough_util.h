@@ -7,7 +7,6 @@
 #include "bsdf/bsdf.h"
 #include "bsdf/microfacet.h"
 #include "sampler/sampler.h"
-#include "support/rng_sampler.h"
 #include <stdio.h>
 #include <string.h>
 

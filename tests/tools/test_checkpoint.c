@@ -265,6 +265,7 @@ Test(checkpoint, sigkill_and_resume_is_bit_identical_other_mcmc, .timeout = 600)
     kills_of(MCMC "mmlt --large-step hybrid --hybrid-length 3", true, 3, 14);
     kills_of(MCMC "mmlt --progressive-norm --seed-paths 3", true, 3, 15); /* length images; missed lengths */
     kills_of(MCMC "mmlt --one-chain", true, 3, 16);
+    kills_of(MCMC "mlt --spp 800", true, 3, 17); /* Veach's path-space state (veach.c's checkpoint I/O) */
 }
 
 /* SIGKILL in the middle of a checkpoint write, three times per method: every write pauses 150 ms

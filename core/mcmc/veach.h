@@ -1,0 +1,51 @@
+/* Veach's MLT (Veach & Guibas 1997; core/mcmc/docs/veach.md): each chain keeps a path in path space
+ * and changes it with path-space mutations (veach_bidir.c: the bidirectional mutation), accepted
+ * with the path-space densities of the move. The chains start from PSSMLT's seed pool and share its
+ * normalisation (veach.c). */
+#ifndef VEACH_H
+#define VEACH_H
+
+#include "mcmc/mutation.h"
+
+/* A chain's path x[0] (on an emitter) .. x[k] (the camera vertex), in the form of the connection
+ * (s, k + 1 - s) it was last evaluated at: its contribution there in radiance mode (C_s times the
+ * refraction factors of the emitter subpath's vertices, path.h's vertex_radiance_factor: what the
+ * camera measures, whichever side sampled a refracting vertex), raster position, and the density
+ * ratios p_j / p_s of every technique j = 0..k of the path (connect_st's). The vertices' delta flags
+ * are the path's: a delta vertex scatters through a delta lobe toward both neighbours. */
+struct veach_state {
+    int k, s;
+    rgb f;
+    double px, py;
+    double ratios[MAX_PATH_LENGTH + 2];
+    struct vertex x[MAX_SUBPATH_VERTS];
+};
+
+/* A worker's scratch for a proposal (allocated with the worker: the chain loop allocates nothing). */
+struct veach_scratch {
+    struct veach_state y;
+    struct vertex ys[MAX_SUBPATH_VERTS], zs[MAX_SUBPATH_VERTS];
+};
+
+/* The state of connection (s, t) of subpaths y (s vertices) and z (t vertices): false when it has
+ * no finite, positive contribution. */
+bool veach_state_set(struct veach_state *st, const struct path_ctx *pc, const struct vertex *y, int s,
+                     const struct vertex *z, int t);
+/* Refraction factors that turn a connection's contribution at s into radiance mode. */
+double veach_radiance_factor(const struct vertex *const *x, int s);
+/* The state's splat and target into the chain (c->cur, c->f) after the old state is paid for. */
+void veach_move_to(struct chain *c, const struct veach_state *st);
+
+/* A chain's state in and out of a checkpoint (the mutation entry's save and load; state NULL: the
+ * run is not Veach's). Load checks the length that indexes the arrays: a crafted file is refused,
+ * not written through. */
+void veach_state_save(struct ckpt_buf *b, const struct scene *sc, const struct chain *c, const void *state);
+bool veach_state_load(struct ckpt_buf *b, const struct scene *sc, struct chain *c, void *state);
+
+/* Starts chain c from the seed sample chain_start just evaluated (its subpaths in wk->scratch): one
+ * of its connections drawn in proportion to its MIS-weighted luminance, which with the seed drawn
+ * in proportion to its target (the sum of those) draws every path in proportion to w_j C_j: an
+ * importance resampling whose weight is PSSMLT's b (docs/veach.md, "Start and normalisation"). */
+void veach_chain_start(struct worker *wk, struct chain *c);
+
+#endif
