@@ -107,6 +107,10 @@ struct mlt_opts {
     bool mixing_image;
     bool ctrl_unit_ratio; /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
     bool veach_broken_t;  /* tests only: T(x -> y) of a bidirectional mutation that lengthens x, x1.1 */
+    /* Veach's MLT: the probability that an iteration is a lens perturbation (else a bidirectional
+     * mutation); 0 in a zero-initialised struct (mlt_opts_defaults gives 0.5) */
+    double veach_lens;
+    double veach_caustic; /* the same for the caustic perturbation (mlt_opts_defaults: 0.2) */
     /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a mutation
      * budget a resumed run ends bit-identical to an uninterrupted one; with a time budget it runs
      * for what the checkpointed run had left. The seed pass is not checkpointed (a checkpoint

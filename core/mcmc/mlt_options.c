@@ -18,7 +18,7 @@ unsigned mlt_method_bit(const char *method)
     return 0;
 }
 
-static unsigned method_bit(enum mlt_method m)
+unsigned mlt_method_mask(enum mlt_method m)
 {
     return m == MLT_PSSMLT ? APPLIES_PSSMLT
            : m == MLT_MMLT ? APPLIES_MMLT
@@ -73,6 +73,13 @@ static bool mctls_conflict(const struct mlt_opts *o, char *err, size_t errlen)
         return false;
     snprintf(err, errlen, "MCTLS trials: 1..%d, with mmlt or pitp and MCTLS large steps; counting t = 0 needs them",
              MCTLS_MAX_TRIES);
+    return true;
+}
+
+static bool veach_mix_conflict(const struct mlt_opts *o, char *err, size_t errlen)
+{
+    if (o->veach_lens + o->veach_caustic <= 1) return false;
+    snprintf(err, errlen, "--mlt-lens and --mlt-caustic: their sum is the perturbations' share, at most 1");
     return true;
 }
 
@@ -203,6 +210,18 @@ const struct mlt_option mlt_options[] = {
      .help = "MCTLS re-evaluates the current state's trials every step (mlt.h)"},
     {"ctrl_unit_ratio", NULL, MLT_OPTION_FLAG, FIELD(ctrl_unit_ratio), .methods = APPLIES_MULTIPLEXED, .numbers = true,
      .help = "tests only: a broken controlled step"},
+    {"veach_lens", "--mlt-lens", MLT_OPTION_DOUBLE, FIELD(veach_lens), .def = "0.5", .lo = 0, .hi = 1, .arg = "P",
+     .methods = APPLIES_VEACH, .numbers = true,
+     .help = "mlt: probability that an iteration is Veach's lens perturbation (else the bidirectional mutation; the "
+             "harness's default)",
+     .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 7, .csv_key = "mlt_lens", .csv_own = true,
+     .conflict = veach_mix_conflict},
+    {"veach_caustic", "--mlt-caustic", MLT_OPTION_DOUBLE, FIELD(veach_caustic), .def = "0.2", .lo = 0, .hi = 1,
+     .arg = "P", .methods = APPLIES_VEACH, .numbers = true,
+     .help = "mlt: probability that an iteration is Veach's caustic perturbation (the harness's default; with "
+             "--mlt-lens at most 1, the rest bidirectional mutations)",
+     .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 8, .csv_key = "mlt_caustic", .csv_own = true,
+     .conflict = veach_mix_conflict},
     {"veach_broken_t", NULL, MLT_OPTION_FLAG, FIELD(veach_broken_t), .methods = APPLIES_VEACH, .numbers = true,
      .help = "tests only: a broken bidirectional mutation"},
     {"time_proposals", NULL, MLT_OPTION_FLAG, FIELD(time_proposals), .methods = APPLIES_CHAINS,
@@ -285,7 +304,7 @@ bool mlt_option_at_default(const struct mlt_option *d, const struct mlt_opts *o)
 void mlt_option_format(const struct mlt_option *d, const struct mlt_opts *o, bool csv, char *buf, size_t n)
 {
     double v = mlt_option_get(d, o);
-    if (csv && d->csv_effective && !(d->methods & method_bit(o->method))) v = default_value(d);
+    if (csv && d->csv_effective && !(d->methods & mlt_method_mask(o->method))) v = default_value(d);
     if (d->type == MLT_OPTION_CHOICE)
         snprintf(buf, n, "%s", d->choices[(int)v]);
     else if (csv && d->csv_values)

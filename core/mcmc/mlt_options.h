@@ -26,8 +26,9 @@ enum {
     APPLIES_MULTIPLEXED = APPLIES_MMLT | APPLIES_PITP,
 };
 extern const char *const mlt_option_methods[]; /* pt, bdpt, pssmlt, mmlt, pitp, mlt, NULL */
-/* The bit of a method's name (0 for an unknown one). */
+/* The bit of a method's name (0 for an unknown one), and of a run's method. */
 unsigned mlt_method_bit(const char *method);
+unsigned mlt_method_mask(enum mlt_method m);
 
 enum mlt_option_type { MLT_OPTION_FLAG, MLT_OPTION_INT, MLT_OPTION_DOUBLE, MLT_OPTION_CHOICE };
 
@@ -55,6 +56,7 @@ struct mlt_option {
     const char *csv_key;
     const char *const *csv_values;
     bool csv_effective;
+    bool csv_own; /* its line only in the runs of the methods it applies to (the others' CSVs keep theirs) */
     /* When the field is not at its default: true (with a message) when the other options rule it out. */
     bool (*conflict)(const struct mlt_opts *o, char *err, size_t errlen);
 };

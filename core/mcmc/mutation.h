@@ -4,7 +4,7 @@
  * the first one that is not `before` another ends the iteration. The built-in ones, in order:
  * MCTLS's large step (mctls.c), PITP's technique perturbation before a small step (pitp_step.c),
  * the large step of fresh numbers and the small step (primary-sample-space, controlled or root;
- * pss_step.c); under --method mlt, Veach's path-space mutations (veach_bidir.c) before all of them,
+ * pss_step.c); under --method mlt, Veach's path-space mutations (veach.c) before all of them,
  * ending every iteration. Mutations registered at run time (mutation_register) come before them.
  *
  * Adding one: its file, which defines a `const struct mutation` (tests/mcmc/toy_mutation.c is a
@@ -43,7 +43,7 @@ struct mutation {
 };
 
 /* The built-in mutations (their files'). */
-extern const struct mutation mutation_veach_bidir, mutation_mctls, mutation_pitp, mutation_large, mutation_small;
+extern const struct mutation mutation_veach, mutation_mctls, mutation_pitp, mutation_large, mutation_small;
 
 /* Adds m before the built-in mutations (before the first mlt_render of the process). Returns its
  * statistics kind (stats/mlt_stats.h), or -1 when the registry or the statistics are full. */

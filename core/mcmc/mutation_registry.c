@@ -6,11 +6,11 @@
 
 /* The built-in mutations in the order they are tried: one line each. */
 static const struct mutation *const builtin[] = {
-    &mutation_veach_bidir, /* --method mlt: Veach's bidirectional mutation, every iteration (veach_bidir.c) */
-    &mutation_mctls,       /* large steps at MCTLS's lengths (mctls.c) */
-    &mutation_pitp,        /* before every small step under PITP (pitp_step.c) */
-    &mutation_large,       /* the other large steps: fresh numbers (pss_step.c) */
-    &mutation_small,       /* the small step (pss_step.c) */
+    &mutation_veach, /* --method mlt: Veach's mutations, every iteration (veach.c) */
+    &mutation_mctls, /* large steps at MCTLS's lengths (mctls.c) */
+    &mutation_pitp,  /* before every small step under PITP (pitp_step.c) */
+    &mutation_large, /* the other large steps: fresh numbers (pss_step.c) */
+    &mutation_small, /* the small step (pss_step.c) */
 };
 #define BUILTIN (int)(sizeof builtin / sizeof builtin[0])
 

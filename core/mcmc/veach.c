@@ -1,8 +1,10 @@
-/* Veach's MLT's state (veach.h): set from a connection, a chain's start, and the state in and out
- * of checkpoints (the bidirectional mutation's entry, veach_bidir.c, carries them). */
+/* Veach's MLT's state (veach.h): set from a connection, a chain's start, a proposal's end, the
+ * registry's entry that picks the iteration's mutation, and the state in and out of checkpoints. */
 #include "mcmc/veach.h"
 #include "mcmc/splat_ev.h"
 #include "path/path_checkpoint.h"
+#include "path/path_form.h"
+#include <stdlib.h>
 
 double veach_radiance_factor(const struct vertex *const *x, int s)
 {
@@ -35,6 +37,18 @@ bool veach_state_set(struct veach_state *st, const struct path_ctx *pc, const st
     return vfinite(st->f) && isfinite(l) && l > 0;
 }
 
+double veach_f_at(const struct path_ctx *pc, const struct veach_state *x, int j, struct veach_scratch *w)
+{
+    if (x->s == j) return luminance(x->f);
+    const struct vertex *xp[MAX_SUBPATH_VERTS];
+    for (int i = 0; i <= x->k; i++)
+        xp[i] = &x->x[i];
+    if ((j >= 1 && !path_emitter_form(pc, xp, j, w->xs)) || !path_camera_form(pc, xp, x->k, x->k + 1 - j, w->xz) ||
+        !veach_state_set(&w->xm, pc, w->xs, j, w->xz, x->k + 1 - j))
+        return 0;
+    return luminance(w->xm.f);
+}
+
 void veach_move_to(struct chain *c, const struct veach_state *st)
 {
     struct splat_list l = {.n = 0};
@@ -46,7 +60,7 @@ void veach_chain_start(struct worker *wk, struct chain *c)
 {
     const struct path_ctx *pc = &wk->path_ctx;
     const struct scratch *w = wk->scratch;
-    struct veach_state *st = mutation_state(c, &mutation_veach_bidir);
+    struct veach_state *st = mutation_state(c, &mutation_veach);
     /* the connections bdpt_splats summed into the seed's target, each with its share of it */
     double sum = 0, pick = -1;
     for (int pass = 0; pass < 2; pass++) {
@@ -101,3 +115,58 @@ bool veach_state_load(struct ckpt_buf *b, const struct scene *sc, struct chain *
     ckpt_get_vertices(b, sc, x->x, MAX_SUBPATH_VERTS);
     return x->k >= 1 && x->k <= MAX_PATH_LENGTH && x->s >= 0 && x->s <= x->k;
 }
+
+void veach_decide(struct worker *wk, struct chain *c, struct veach_state *x, int kind, bool made, bool refused,
+                  double a, double t_start)
+{
+    const struct veach_state *y = &wk->veach->y;
+    double fy = made ? luminance(y->f) : 0;
+    struct splat_list l = {.n = 0};
+    if (made) splat_push(&l, y->px, y->py, y->f);
+    splat_ev(c->img, c, &l, fy, a);
+    bool acc = made && rng_uniform(&wk->r) < a;
+    int k0 = x->k;
+    if (acc) {
+        x->k = y->k;
+        x->s = y->s;
+        x->f = y->f;
+        x->px = y->px;
+        x->py = y->py;
+        for (int i = 0; i <= x->k; i++) { /* the path's own vertices only: a state is 17 kB */
+            x->ratios[i] = y->ratios[i];
+            x->x[i] = y->x[i];
+        }
+        veach_move_to(c, x);
+    }
+    stats_record_dt(wk->st, (enum proposal_kind)kind, k0, made && y->k != k0, made ? abs(y->k - k0) : 0, refused, a,
+                    acc, fy > 0, mutation_elapsed(wk, t_start));
+}
+
+static bool applies(const struct worker *wk, const struct chain *c, bool large)
+{
+    (void)c, (void)large;
+    return wk->opts->method == MLT_VEACH;
+}
+
+static bool wanted(const struct mlt_opts *o) { return o->method == MLT_VEACH; }
+
+static void step(struct worker *wk, struct chain *c, bool large, double t_start)
+{
+    (void)large;
+    struct veach_state *x = mutation_state(c, &mutation_veach);
+    double u = rng_uniform(&wk->r);
+    if (u < wk->opts->veach_lens)
+        veach_lens_step(wk, c, x, t_start);
+    else if (u < wk->opts->veach_lens + wk->opts->veach_caustic)
+        veach_caustic_step(wk, c, x, t_start);
+    else
+        veach_bidir_step(wk, c, x, t_start);
+}
+
+const struct mutation mutation_veach = {.name = "veach",
+                                        .applies = applies,
+                                        .step = step,
+                                        .chain_state = sizeof(struct veach_state),
+                                        .wanted = wanted,
+                                        .save = veach_state_save,
+                                        .load = veach_state_load};

@@ -21,11 +21,32 @@ struct veach_state {
     struct vertex x[MAX_SUBPATH_VERTS];
 };
 
-/* A worker's scratch for a proposal (allocated with the worker: the chain loop allocates nothing). */
+/* A worker's scratch for a proposal (allocated with the worker: the chain loop allocates nothing):
+ * the proposal y and its subpaths; the current path re-evaluated at another split, and its subpaths. */
 struct veach_scratch {
-    struct veach_state y;
-    struct vertex ys[MAX_SUBPATH_VERTS], zs[MAX_SUBPATH_VERTS];
+    struct veach_state y, xm;
+    struct vertex ys[MAX_SUBPATH_VERTS], zs[MAX_SUBPATH_VERTS], xs[MAX_SUBPATH_VERTS], xz[MAX_SUBPATH_VERTS];
 };
+
+/* The mutations, each one iteration of chain c in state x (veach_bidir.c, veach_lens.c,
+ * veach_caustic.c); the entry in the registry (veach.c) picks one per iteration: the lens
+ * perturbation with probability mlt_opts.veach_lens, the caustic perturbation with
+ * mlt_opts.veach_caustic, else the bidirectional mutation. */
+void veach_bidir_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start);
+void veach_lens_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start);
+void veach_caustic_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start);
+/* lum F_j(x): x's contribution over the density of split j (j emitter vertices), from the state's
+ * own connection when it is at j, else from x's forms connected at j (into w's x scratch); 0 when
+ * the split cannot connect x. */
+double veach_f_at(const struct path_ctx *pc, const struct veach_state *x, int j, struct veach_scratch *w);
+/* The lens and caustic perturbations' x_m (veach_lens.c, veach_caustic.c), or -1 when x is not a
+ * path they move. */
+int veach_lens_vertex(const struct veach_state *x);
+int veach_caustic_vertex(const struct veach_state *x);
+/* A proposal's end (the proposal in wk->veach->y when made): its expected-value splats, the draw
+ * against acceptance a, the move, and its statistics row of `kind` (failed: refused). */
+void veach_decide(struct worker *wk, struct chain *c, struct veach_state *x, int kind, bool made, bool refused,
+                  double a, double t_start);
 
 /* The state of connection (s, t) of subpaths y (s vertices) and z (t vertices): false when it has
  * no finite, positive contribution. */

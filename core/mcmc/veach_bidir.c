@@ -125,18 +125,8 @@ static bool make_path(const struct path_ctx *pc, struct sampler *fresh, const st
     return !(mv->l >= 0 && y->x[mv->l].delta) && !(mv->m <= x->k && y->x[mv->l + mv->ka].delta);
 }
 
-static bool applies(const struct worker *wk, const struct chain *c, bool large)
+void veach_bidir_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start)
 {
-    (void)c, (void)large;
-    return wk->opts->method == MLT_VEACH;
-}
-
-static bool wanted(const struct mlt_opts *o) { return o->method == MLT_VEACH; }
-
-static void step(struct worker *wk, struct chain *c, bool large, double t_start)
-{
-    (void)large;
-    struct veach_state *x = mutation_state(c, &mutation_veach_bidir);
     struct veach_scratch *w = wk->veach;
     struct sampler_rng fresh;
     sampler_rng_init(&fresh, &wk->r);
@@ -146,7 +136,7 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
     bool refused = !draw_move(&wk->r, x->k, wk->path_ctx.max_length, &mv) || mv.l >= x->k ||
                    (mv.l >= 0 && x->x[mv.l].delta) || (mv.m <= x->k && x->x[mv.m].delta);
     bool made = !refused && make_path(&wk->path_ctx, &fresh.base, x, &mv, &w->y, w->ys, w->zs);
-    double a = 0, fy = made ? luminance(w->y.f) : 0;
+    double a = 0;
     if (made) {
         int top_y = mv.l + mv.ka < mv.ky ? mv.l + mv.ka : mv.ky, top_x = mv.m < x->k ? mv.m : x->k;
         double qy = q_of(&w->y, mv.l, top_y), qx = q_of(x, mv.l, top_x);
@@ -154,31 +144,5 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
         a = qx < INFINITY && qy < INFINITY ? fmin(1.0, (qy * mv.rev) / (qx * fwd)) : 0;
         if (!(a >= 0)) a = 0;
     }
-    struct splat_list l = {.n = 0};
-    if (made) splat_push(&l, w->y.px, w->y.py, w->y.f);
-    splat_ev(c->img, c, &l, fy, a);
-    bool acc = made && rng_uniform(&wk->r) < a;
-    int k0 = x->k;
-    if (acc) {
-        x->k = w->y.k;
-        x->s = w->y.s;
-        x->f = w->y.f;
-        x->px = w->y.px;
-        x->py = w->y.py;
-        for (int i = 0; i <= x->k; i++) {
-            x->ratios[i] = w->y.ratios[i];
-            x->x[i] = w->y.x[i];
-        }
-        veach_move_to(c, x);
-    }
-    stats_record_dt(wk->st, PROPOSAL_BIDIR, k0, made && w->y.k != k0, made ? abs(w->y.k - k0) : 0, refused, a, acc,
-                    fy > 0, mutation_elapsed(wk, t_start));
+    veach_decide(wk, c, x, PROPOSAL_BIDIR, made, refused, a, t_start);
 }
-
-const struct mutation mutation_veach_bidir = {.name = "bidir",
-                                              .applies = applies,
-                                              .step = step,
-                                              .chain_state = sizeof(struct veach_state),
-                                              .wanted = wanted,
-                                              .save = veach_state_save,
-                                              .load = veach_state_load};

@@ -57,38 +57,61 @@ static bool delta_lobe(const struct vertex *v, vec3 wi, vec3 wo, enum transport 
     return bsdf_sample(&v->bc, wi, &blk.base, mode, bs) && bs->delta && smooth_same_dir(bs->wo, wo);
 }
 
-/* The step from v[n-1] (n >= 2, a surface) to path vertex `next`: v[n-1].delta as the path says,
- * v[n-2].pdf_rev, and v[n] = next as the walk reaches it, with its beta and pdf_fwd. */
-static bool step_to(const struct path_ctx *pc, struct vertex *v, int n, const struct vertex *next, enum transport mode)
+bool path_leave(const struct path_ctx *pc, struct vertex *v, int n, vec3 d, enum transport mode, rgb *beta,
+                double *pdf_sa)
 {
     const struct scene *sc = pc->sc;
-    struct vertex *prev = &v[n - 2], *cur = &v[n - 1], *out = &v[n];
-    if (!cur->bc.b) return false;
-    double dist2;
-    vec3 d = edge_dir(cur, next, &dist2);
+    struct vertex *cur = &v[n - 1];
+    *pdf_sa = 0;
+    if (cur->kind == VK_ENV) { /* rays leave the origin disc against env_dir (path_walk.c) */
+        *pdf_sa = 1.0 / (M_PI * sqr(env_radius(sc)));
+        *beta = vscale(vmul(cur->beta, env_radiance(sc, env_dir(cur))), 1.0 / *pdf_sa);
+        return vfinite(*beta) && !vzero(*beta);
+    }
+    if (cur->kind == VK_EMITTER) {
+        *pdf_sa = emitter_pdf_dir(cur->ng, d);
+        rgb le = emitter_radiance(sc, cur->prim, cur->ng, d);
+        if (!(*pdf_sa > 0) || vzero(le)) return false;
+        *beta = vscale(vmul(cur->beta, le), fabs(vdot(d, cur->ng)) / *pdf_sa);
+        return vfinite(*beta);
+    }
+    if (n < 2 || cur->kind != VK_SURFACE || !cur->bc.b) return false;
+    struct vertex *prev = &v[n - 2];
     vec3 wi = frame_to_local(&cur->sh, cur->wi), wo = frame_to_local(&cur->sh, d);
     if ((vdot(d, cur->ng) > 0) != (wo.z > 0)) return false;
     rgb w;
-    double pdf_sa = 0, pdf_back = 0;
+    double pdf_back = 0;
     if (cur->delta) {
         struct bsdf_sample bs;
         if (!delta_lobe(cur, wi, wo, mode, &bs)) return false;
         w = bs.weight;
     } else {
-        pdf_sa = bsdf_pdf(&cur->bc, wi, wo);
-        if (!(pdf_sa > 0)) return false;
-        w = vscale(bsdf_eval(&cur->bc, wi, wo, mode), fabs(wo.z) / pdf_sa);
+        *pdf_sa = bsdf_pdf(&cur->bc, wi, wo);
+        if (!(*pdf_sa > 0)) return false;
+        w = vscale(bsdf_eval(&cur->bc, wi, wo, mode), fabs(wo.z) / *pdf_sa);
         pdf_back = bsdf_pdf(&cur->bc, wo, wi);
     }
-    rgb beta = vmul(cur->beta, w);
-    if (mode == TRANSPORT_IMPORTANCE) beta = vscale(beta, adjoint_shading_factor(cur, cur->wi, d));
-    if (vzero(beta) || !vfinite(beta)) return false;
+    *beta = vmul(cur->beta, w);
+    if (mode == TRANSPORT_IMPORTANCE) *beta = vscale(*beta, adjoint_shading_factor(cur, cur->wi, d));
+    if (vzero(*beta) || !vfinite(*beta)) return false;
     prev->pdf_rev = cur->delta ? 0 : edge_pdf(pdf_back, cur, prev, vneg(cur->wi), vlen2(vsub(cur->p, prev->p)));
+    return true;
+}
+
+/* The step from v[n-1] (n >= 1: an emitter vertex or a surface) to path vertex `next`: v[n] = next
+ * as the walk reaches it, with its beta and pdf_fwd (and v[n-2].pdf_rev, path_leave). */
+static bool step_to(const struct path_ctx *pc, struct vertex *v, int n, const struct vertex *next, enum transport mode)
+{
+    struct vertex *cur = &v[n - 1], *out = &v[n];
+    double dist2, pdf_sa;
+    vec3 d = edge_dir(cur, next, &dist2);
+    rgb beta;
+    if (!path_leave(pc, v, n, d, mode, &beta, &pdf_sa)) return false;
     if (next->kind == VK_ENV) {
-        env_vertex(sc, cur->p, d, out);
+        env_vertex(pc->sc, cur->p, d, out);
         out->pdf_fwd = pdf_sa;
     } else {
-        arrive(sc, next, d, out);
+        arrive(pc->sc, next, d, out);
         out->pdf_fwd = cur->delta ? 0 : edge_pdf(pdf_sa, cur, out, d, dist2);
     }
     out->beta = beta;
@@ -96,19 +119,16 @@ static bool step_to(const struct path_ctx *pc, struct vertex *v, int n, const st
 }
 
 /* The emitter subpath's first vertex from path vertex x (an emitter vertex, a camera hit on an
- * emitter, or the environment), and the throughput and density of the edge toward x1. */
-static bool emitter_start(const struct scene *sc, const struct vertex *x, const struct vertex *x1, struct vertex *y,
-                          rgb *beta1, double *pdf_dir)
+ * emitter, or the environment). */
+static bool emitter_start(const struct scene *sc, const struct vertex *x, struct vertex *y)
 {
     double pick = emitter_pick_prob(sc, x->prim);
     if (x->kind == VK_ENV) {
         vertex_start(y, VK_ENV, x->prim, -1);
-        y->p = x1 ? x1->p : x->p; /* a point of the ray (the walk's is on the origin disc): nothing reads it */
+        y->p = x->p; /* a point of the ray (the walk's is on the origin disc): nothing reads it */
         y->ng = y->wi = x->ng;
         y->sh = frame_from_normal(y->ng);
         y->pdf_fwd = pick * env_pdf_dir(sc, env_dir(y));
-        *pdf_dir = 1.0 / (M_PI * sqr(env_radius(sc)));
-        *beta1 = vscale(env_radiance(sc, env_dir(y)), 1.0 / (y->pdf_fwd * *pdf_dir));
     } else {
         vec3 n = x->kind == VK_SURFACE && x->flipped ? vneg(x->ng) : x->ng;
         vertex_start(y, VK_EMITTER, x->prim, x->tri);
@@ -116,14 +136,6 @@ static bool emitter_start(const struct scene *sc, const struct vertex *x, const 
         y->ng = n;
         y->sh = frame_from_normal(n);
         y->pdf_fwd = pick * emitter_pdf_pos(sc, x->prim, x->p);
-        if (x1) { /* a lone emitter vertex (n = 1) emits along no edge of its own */
-            double dist2;
-            vec3 d = edge_dir(y, x1, &dist2);
-            *pdf_dir = emitter_pdf_dir(n, d);
-            rgb le = emitter_radiance(sc, x->prim, n, d);
-            if (!(*pdf_dir > 0) || vzero(le)) return false;
-            *beta1 = vscale(le, fabs(vdot(d, n)) / (y->pdf_fwd * *pdf_dir));
-        }
     }
     y->beta = v3s(1.0 / y->pdf_fwd);
     return y->pdf_fwd > 0 && vfinite(y->beta);
@@ -131,17 +143,8 @@ static bool emitter_start(const struct scene *sc, const struct vertex *x, const 
 
 bool path_emitter_form(const struct path_ctx *pc, const struct vertex *const *x, int n, struct vertex *y)
 {
-    const struct scene *sc = pc->sc;
-    rgb beta1 = v3s(0);
-    double pdf_dir = 0;
-    if (!emitter_start(sc, x[0], n > 1 ? x[1] : NULL, &y[0], &beta1, &pdf_dir)) return false;
-    if (n == 1) return true;
-    double dist2;
-    vec3 d = edge_dir(&y[0], x[1], &dist2);
-    arrive(sc, x[1], d, &y[1]);
-    y[1].beta = beta1;
-    y[1].pdf_fwd = edge_pdf(pdf_dir, &y[0], &y[1], d, dist2);
-    for (int i = 2; i < n; i++)
+    if (!emitter_start(pc->sc, x[0], &y[0])) return false;
+    for (int i = 1; i < n; i++)
         if (!step_to(pc, y, i, x[i], TRANSPORT_IMPORTANCE)) return false;
     return true;
 }

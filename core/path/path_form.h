@@ -27,4 +27,13 @@ bool path_emitter_form(const struct path_ctx *pc, const struct vertex *const *x,
  * raster position of the edge toward x[k-1]). */
 bool path_camera_form(const struct path_ctx *pc, const struct vertex *const *x, int k, int n, struct vertex *z);
 
+/* The step out of v[n-1] along unit d as a walk takes it when its sampling gives d (an emitter
+ * vertex at n = 1: its emission; a surface: its BSDF in `mode`, with the adjoint factor in
+ * importance mode; a delta vertex: its lobe's weight): the throughput *beta the next vertex
+ * receives and the solid-angle density *pdf_sa of sampling d there (0 for a delta lobe; the origin
+ * disc's area density from the environment); sets v[n-2].pdf_rev. False where a walk could not
+ * take the step. Veach's caustic perturbation leaves x_m along a perturbed direction with it. */
+bool path_leave(const struct path_ctx *pc, struct vertex *v, int n, vec3 d, enum transport mode, rgb *beta,
+                double *pdf_sa);
+
 #endif

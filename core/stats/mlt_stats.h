@@ -14,8 +14,18 @@
  * records Veach's bidirectional mutation (mcmc/veach_bidir.c) by the current path's length;
  * technique_changed: the path's length changed; failed: refused before a path was made (a kept end
  * that scatters through a delta lobe, no room for the added length) or an extension that stopped
- * short. */
-enum proposal_kind { PROPOSAL_SMALL, PROPOSAL_LARGE, PROPOSAL_MCTLS, PROPOSAL_PITP, PROPOSAL_BIDIR, PROPOSAL_BUILTIN };
+ * short. PROPOSAL_LENS and PROPOSAL_CAUSTIC record Veach's lens and caustic perturbations
+ * (mcmc/veach_lens.c, veach_caustic.c); failed: a path the perturbation does not move. */
+enum proposal_kind {
+    PROPOSAL_SMALL,
+    PROPOSAL_LARGE,
+    PROPOSAL_MCTLS,
+    PROPOSAL_PITP,
+    PROPOSAL_BIDIR,
+    PROPOSAL_LENS,
+    PROPOSAL_CAUSTIC,
+    PROPOSAL_BUILTIN
+};
 /* Kinds PROPOSAL_BUILTIN.. are the mutations registered at run time (mcmc/mutation.h); a kind
  * without attempts writes no rows, so the CSV of a run without them is unchanged. */
 #define PROPOSAL_KINDS (PROPOSAL_BUILTIN + 4)

@@ -206,6 +206,24 @@ CH6_CHECK_OPTS_mmlt-equal := --study mmlt-equal --methods '$(mmlt-equal_METHODS)
   --max-length 8 --reference-spp 256 --resolution 256x144 --render-args ""
 $(eval $(call CH6_STUDY,mmlt-equal,mmlt-equal,ajar))
 
+# ---- MMLT paper Figs. 1, 4 and 6 against Veach's MLT (claims M-a, M-b, M-c) ----
+# mmlt-equal's setting (ajar, paths of 1 to 8 segments, equal CPU time per method) with Veach's MLT
+# beside BDPT, PSSMLT and MMLT (bin/render --method mlt: the bidirectional mutation and the lens and
+# caustic perturbations, core/mcmc/docs/veach.md). The check: at 16 samples or mutations per pixel, 256x144.
+mmlt-fig4_METHODS := bdpt,pssmlt=--method pssmlt --p-large 0.1,mlt=--method mlt,mmlt=--method mmlt --p-large 0.1
+mmlt-fig4_SOURCE := MMLT paper Figs. 1, 4, 6
+CH6_CHECK_OPTS_mmlt-fig4 := --study mmlt-fig4 --methods '$(mmlt-fig4_METHODS)' --spp 16 --seeds 8 --min-length 1 \
+  --max-length 8 --reference-spp 256 --resolution 256x144 --render-args ""
+$(eval $(call CH6_STUDY,mmlt-fig4,mmlt-fig4,ajar))
+
+# ---- MMLT paper Fig. 9: the diffuse door (claim M-i) ----
+# The same on scenes/ajar-diffuse (ajar with every surface lambert), PSSMLT, MLT and MMLT.
+mmlt-fig9_METHODS := pssmlt=--method pssmlt --p-large 0.1,mlt=--method mlt,mmlt=--method mmlt --p-large 0.1
+mmlt-fig9_SOURCE := MMLT paper Fig. 9
+CH6_CHECK_OPTS_mmlt-fig9 := --study mmlt-fig9 --methods '$(mmlt-fig9_METHODS)' --spp 16 --seeds 8 --min-length 1 \
+  --max-length 8 --reference-spp 256 --resolution 256x144 --render-args ""
+$(eval $(call CH6_STUDY,mmlt-fig9,mmlt-fig9,ajar-diffuse))
+
 # ---- thesis Fig. 3.4: BDPT vs path tracing at equal samples (claim T37) ----
 # ajar at the scale's samples per pixel, seeds and resolution (--study background).
 bdpt-pt_METHODS := pt,bdpt

@@ -61,7 +61,22 @@ static const struct claim {
      "relMSE", "mmlt mctls", "thesis §4.3, §7.1", false, "hybrid"},
     /* MMLT paper §5, Fig. 4 (make mmlt-equal): "MMLT is less noisy than both" BDPT and PSSMLT */
     {"M-b", "MMLT is less noisy than BDPT and PSSMLT at equal time", "mmlt", -1, Q_RELMSE, "relMSE", "bdpt pssmlt",
-     "MMLT paper §5, Fig. 4", false, "mmlt-equal"},
+     "MMLT paper §5, Fig. 4", false, "mmlt-equal mmlt-fig4"},
+    /* MMLT paper Figs. 1 and 6 (make mmlt-fig4): the door scene against Veach's MLT, whose mutations
+     * here are the bidirectional mutation and the lens and caustic perturbations (core/mcmc/docs/veach.md) */
+    {"M-a", "on the door scene PSSMLT is noisy overall (against MLT and MMLT)", "pssmlt", +1, Q_RELMSE, "relMSE",
+     "mlt mmlt", "MMLT paper Fig. 1", false, "mmlt-fig4"},
+    {"M-a", "original MLT shows artifacts (against MMLT; whole image, glossy and diffuse)", "mlt", +1, Q_BLUR8,
+     "error share surviving an 8x8 blur", "mmlt", "MMLT paper Fig. 1", false, "mmlt-fig4"},
+    {"M-c", "original MLT is splotchy (against MMLT)", "mlt", +1, Q_BLUR8, "error share surviving an 8x8 blur", "mmlt",
+     "MMLT paper Fig. 6", false, "mmlt-fig4"},
+    {"M-c", "MMLT converges more uniformly than original MLT", "mmlt", -1, Q_SPREAD, "block-relMSE spread (CV)", "mlt",
+     "MMLT paper Fig. 6", false, "mmlt-fig4"},
+    /* MMLT paper Fig. 9 (make mmlt-fig9): the door scene with every surface diffuse */
+    {"M-i", "on a diffuse door original MLT beats MMLT", "mlt", -1, Q_RELMSE, "relMSE", "mmlt", "MMLT paper Fig. 9",
+     false, "mmlt-fig9"},
+    {"M-i", "on a diffuse door MMLT beats PSSMLT", "mmlt", -1, Q_RELMSE, "relMSE", "pssmlt", "MMLT paper Fig. 9", false,
+     "mmlt-fig9"},
     /* thesis Fig. 3.4 (make bdpt-pt): BDPT has the lower variance at equal samples */
     {"T37", "BDPT has lower variance than path tracing at equal samples", "bdpt", -1, Q_RELMSE, "relMSE", "pt",
      "thesis §3.5, Fig. 3.4", false, "background"},

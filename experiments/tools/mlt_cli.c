@@ -63,6 +63,7 @@ void mlt_cli_csv(FILE *f, const struct mlt_opts *m, enum mlt_csv_group g)
     size_t n = mlt_options_csv(g, d, sizeof d / sizeof d[0]);
     char v[64];
     for (size_t i = 0; i < n; i++) {
+        if (d[i]->csv_own && !(d[i]->methods & mlt_method_mask(m->method))) continue;
         mlt_option_format(d[i], m, true, v, sizeof v);
         csv_meta(f, d[i]->csv_key, "%s", v);
     }

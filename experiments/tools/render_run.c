@@ -9,6 +9,7 @@
 #include "io/checkpoint.h"
 #include "mc/render.h"
 #include "mcmc/mlt.h"
+#include "mcmc/mlt_options.h"
 #include "path/scene_ready.h"
 #include "scene/accel.h"
 #include "scene/scene_hash.h"
@@ -125,6 +126,8 @@ static int run_mcmc(struct render_args *a, const struct scene *sc, const struct 
                   a->mlt.technique_k, a->mlt.min_length > 1 ? a->mlt.min_length : 1, a->mlt.max_length);
     a->mlt.pss.width = camera_film_width(&sc->cam);
     a->mlt.pss.height = camera_film_height(&sc->cam);
+    /* options that rule each other out are bad input: one line and status 2, before any work */
+    if (!mlt_options_check(&a->mlt, err, errlen)) opts_fail("render", "%s", err);
     struct mlt_result r;
     char mixing[1024] = "";
     *ok = mlt_render(sc, &a->mlt, &r, err, errlen);

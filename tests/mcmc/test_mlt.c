@@ -30,6 +30,8 @@ static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, 
     *o = (struct mlt_opts){.method = m,
                            .p_large = 0.1,
                            .pitp_rate = 1,
+                           .veach_lens = 0.4,
+                           .veach_caustic = 0.2,
                            .mutations = mutations,
                            .seed_paths = 20000,
                            .threads = 2,
@@ -146,6 +148,7 @@ Test(stat_mlt, broken_bidirectional_mutation_fails_the_agreement)
     opts(&c.o, sc, MLT_VEACH, 64L * 64 * 64);
     c.o.seed_paths = 10000;
     c.o.veach_broken_t = true;
+    c.o.veach_lens = c.o.veach_caustic = 0; /* every iteration the mutation whose T is broken */
     stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * (uint64_t)(CORNELL_CFGS - 1), 8);
     double pm, worst;
     int f = stack_compare(&a, &ref, CORNELL_CFGS, &pm, &worst);

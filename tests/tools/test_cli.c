@@ -286,6 +286,24 @@ Test(cli, scene_without_emitter)
     }
 }
 
+/* Options of bin/render that rule each other out (mlt_options.c's checks) are bad input: one line
+ * naming them, exit status 2, no output, before the seed pass. */
+Test(cli, conflicting_mcmc_options_are_refused)
+{
+    char err[4096];
+    make_dir();
+    const char *bad[] = {"--method mlt --mlt-lens 0.9 --mlt-caustic 0.2",
+                         "--method mmlt --large-step mctls --power-heuristic"};
+    const char *want[] = {"render: --mlt-lens and --mlt-caustic: their sum", "render: --power-heuristic: mmlt with"};
+    for (int i = 0; i < 2; i++) {
+        char args[512];
+        snprintf(args, sizeof args, "scenes/cornell-box/scene.json %s --spp 1 --out %s/c", bad[i], dir);
+        cr_assert_eq(run(args, err, sizeof err), 2, "%s: %s", bad[i], err);
+        cr_assert(strstr(err, want[i]) && lines(err) == 1, "%s: %s", bad[i], err);
+        cr_assert(!exists("c.exr"), "%s: output written", bad[i]);
+    }
+}
+
 /* --scale full: a figure with full-scale defaults takes them (fig4_6's help lists them), one without
  * refuses it in one line with exit status 2 before it renders anything; SCALE=full in the
  * environment is a preference, which such a figure meets at quick. */

@@ -1,0 +1,76 @@
+/* Veach's caustic perturbation (Veach & Guibas 1997, §5.3.3; docs/veach.md): on a path whose camera
+ * end is x_m S+ x_{k-1} E (x_m, x_{k-1} not delta, at least one delta vertex between), turn the
+ * direction x_m leaves along by an angle theta with density in proportion to 1/theta on
+ * [1e-4, 0.1] rad about it (uniform azimuth: a density in solid angle that depends on the angle
+ * between the two directions only, so symmetric), follow it through as many delta vertices as
+ * before (an emitter walk with fresh numbers for the lobes' choices) to a non-delta x'_{k-1}, and
+ * connect that to the camera vertex.
+ *
+ * The perturbation's density cancels; what remains of T(y -> x) / T(x -> y) is the ratio of the
+ * moved vertices' densities from the direction on, which the emitter side's density at the split
+ * k (k emitter vertices, the camera alone) holds together with the density of x_m's own sampling of
+ * the direction, p(omega): so a = min(1, lum F_k(y) p(omega') / (lum F_k(x) p(omega))). */
+#include "mcmc/veach.h"
+#include "path/path_form.h"
+#include <math.h>
+
+int veach_caustic_vertex(const struct veach_state *x)
+{
+    int k = x->k;
+    if (k < 3 || x->x[k - 1].delta || !x->x[k - 2].delta) return -1;
+    int m = k - 2;
+    while (m >= 0 && x->x[m].delta)
+        m--;
+    /* the environment's direction is its position: turning it would move x_0 */
+    return m >= 0 && x->x[m].kind != VK_ENV ? m : -1;
+}
+
+/* omega turned by theta at azimuth phi */
+static vec3 turn(vec3 w, double theta, double phi)
+{
+    frame f = frame_from_normal(w);
+    return vnorm(frame_to_world(&f, v3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta))));
+}
+
+/* The perturbed path into w->y; *p_old, *p_new: x_m's densities of sampling the old and the new
+ * direction. False when the new one does not keep x's structure or leaves the film. */
+static bool perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m, struct veach_scratch *w,
+                    double *p_old, double *p_new)
+{
+    const struct vertex *xp[MAX_SUBPATH_VERTS];
+    for (int i = 0; i <= x->k; i++)
+        xp[i] = &x->x[i];
+    struct vertex *y = w->ys;
+    if (!path_emitter_form(pc, xp, m + 1, y)) return false;
+    double d2;
+    vec3 omega = edge_dir(&y[m], xp[m + 1], &d2);
+    rgb beta;
+    if (!path_leave(pc, y, m + 1, omega, TRANSPORT_IMPORTANCE, &beta, p_old)) return false;
+    const double t1 = 1e-4, t2 = 0.1; /* radians: the harness's choice, Veach gives the shape */
+    double theta = t1 * pow(t2 / t1, rng_uniform(r)), phi = 2 * M_PI * rng_uniform(r);
+    vec3 d = turn(omega, theta, phi);
+    if (!path_leave(pc, y, m + 1, d, TRANSPORT_IMPORTANCE, &beta, p_new) || !walk_hit(pc->sc, &y[m], d, &y[m + 1]))
+        return false;
+    y[m + 1].beta = beta;
+    y[m + 1].pdf_fwd = edge_pdf(*p_new, &y[m], &y[m + 1], d, vlen2(vsub(y[m + 1].p, y[m].p)));
+    struct sampler_rng fresh;
+    sampler_rng_init(&fresh, r);
+    if (walk_extend(pc, &fresh.base, y, m + 2, x->k, STREAM_EMITTER) != x->k) return false;
+    for (int i = m + 1; i < x->k - 1; i++)
+        if (!y[i].delta) return false; /* as many delta vertices, then x'_{k-1} */
+    return path_camera_form(pc, xp, x->k, 1, w->zs) && veach_state_set(&w->y, pc, y, x->k, w->zs, 1);
+}
+
+void veach_caustic_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start)
+{
+    struct veach_scratch *w = wk->veach;
+    int m = veach_caustic_vertex(x);
+    double p_old = 0, p_new = 0, a = 0;
+    bool refused = m < 0;
+    bool made = !refused && perturb(&wk->path_ctx, &wk->r, x, m, w, &p_old, &p_new);
+    if (made) {
+        double fx = veach_f_at(&wk->path_ctx, x, x->k, w);
+        a = fx > 0 && p_old > 0 ? fmin(1.0, luminance(w->y.f) * p_new / (fx * p_old)) : 0;
+    }
+    veach_decide(wk, c, x, PROPOSAL_CAUSTIC, made, refused, a, t_start);
+}
