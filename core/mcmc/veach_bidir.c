@@ -10,7 +10,6 @@
  * A kept end that scatters through a delta lobe is refused (in x, or in y after the extension):
  * the MIS code gives such a vertex's density in solid angle, not area, so the kept densities would
  * not cancel; refusing it in y as in x keeps the move and its reverse possible together. */
-#include "mcmc/splat_ev.h"
 #include "mcmc/veach.h"
 #include "path/path_form.h"
 #include <math.h>
