@@ -31,6 +31,8 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
     wk->mix = j->mix ? &j->mix[tid] : NULL;
     wk->pitp = o->method == MLT_PITP;
     wk->multiplexed = mlt_multiplexed(o->method);
+    bool fused = wk->multiplexed && o->fused != FUSED_NONE;
+    wk->keep_path = wk->pitp || fused;
     wk->spare = xmalloc(sizeof *wk->spare);
     wk->pitp_scratch = wk->pitp ? xmalloc(sizeof *wk->pitp_scratch) : NULL;
     if (wk->pitp_scratch) pitp_scratch_init(wk->pitp_scratch, j->sc);
@@ -38,7 +40,7 @@ static void worker_init(struct worker *wk, struct run_job *j, int tid)
              0x9E3779B97F4A7C15ULL + (uint64_t)wk->global_tid); /* streams and budgets are the job's global thread's */
     wk->track = mlt_multiplexed(o->method) && (o->small_step != SMALL_STEP_PSS || o->angle_stats);
     wk->ctrl = o->small_step != SMALL_STEP_PSS ? xmalloc(sizeof *wk->ctrl) : NULL;
-    wk->veach = o->method == MLT_VEACH ? xmalloc(sizeof *wk->veach) : NULL;
+    wk->veach = o->method == MLT_VEACH || fused ? xmalloc(sizeof *wk->veach) : NULL;
     wk->saved = (struct mlt_thread){.ch = wk->ch,
                                     .nk = j->nch,
                                     .r = &wk->r,
@@ -76,7 +78,7 @@ static void chains_start(struct worker *wk)
         }
         if (!(c->scale > 0)) continue; /* a length without light: never started */
         pss_init(&c->pss, &wk->opts->pss, wk->opts->seed, 0);
-        if (wk->pitp) c->x = xmalloc(sizeof *c->x);
+        if (wk->keep_path) c->x = xmalloc(sizeof *c->x);
         if (wk->track) c->path = xmalloc(sizeof *c->path);
     }
 }

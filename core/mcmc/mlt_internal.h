@@ -66,6 +66,7 @@ struct worker {
     long *ctrl_fail;         /* [2]: forward, reverse */
     struct pixel_mixing *mix;
     bool pitp, multiplexed;
+    bool keep_path;  /* chains keep their path in its technique's form (chain.x): PITP, --fused */
     bool track;      /* chains keep their subpaths (controlled steps, angle statistics) */
     int tech_before; /* the current chain's technique when the iteration began */
     struct mlt_thread saved;
@@ -76,7 +77,7 @@ struct worker {
     struct mctls_buf *mctls_buf;
     struct pitp_scratch *pitp_scratch; /* PITP only */
     struct ctrl_sampler *ctrl;         /* controlled and root small steps only */
-    struct veach_scratch *veach;       /* Veach's MLT only (veach.h) */
+    struct veach_scratch *veach;       /* Veach's MLT and --fused only (veach.h) */
 };
 
 /* The chain index of a length drawn with P(k) (the job's kcdf) by u in [0, 1). */

@@ -83,6 +83,9 @@ static bool veach_mix_conflict(const struct mlt_opts *o, char *err, size_t errle
     return true;
 }
 
+/* the fused perturbations' lines only in the runs that make them: the others' CSVs keep theirs */
+static bool fused_on(const struct mlt_opts *o) { return o->fused != FUSED_NONE; }
+
 static bool progressive_conflict(const struct mlt_opts *o, char *err, size_t errlen)
 {
     /* the rescale is per length: a chain that changes its length has no length's image to rescale */
@@ -119,6 +122,7 @@ static const char *const seed_estimators[] = {"pool", "bdpt"};
 static const char *const mis_names[] = {"balance", "maximum"};
 static const char *const normalisations[] = {"seed", "progressive"};
 static const char *const chain_layouts[] = {"per_length", "one"};
+static const char *const fused_moves[] = {"none", "lens", "caustic", "lens+caustic", NULL};
 
 const struct mlt_option mlt_options[] = {
     /* bin/render's, in its --help order */
@@ -222,6 +226,19 @@ const struct mlt_option mlt_options[] = {
              "--mlt-lens at most 1, the rest bidirectional mutations)",
      .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 8, .csv_key = "mlt_caustic", .csv_own = true,
      .conflict = veach_mix_conflict},
+    {"fused", "--fused", MLT_OPTION_CHOICE, FIELD(fused), .choices = fused_moves, .arg = "LIST",
+     .methods = APPLIES_MULTIPLEXED, .numbers = true,
+     .help = "mmlt, pitp: fused perturbations (Otsu et al. 2017): none, lens, caustic or lens+caustic (half each): "
+             "Veach's perturbation of the chain's path, mapped back to primary sample space by the inverse of its "
+             "technique; PREFIX.csv rows fused-lens, fused-caustic",
+     .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 9, .csv_key = "fused", .csv_own = true, .csv_if = fused_on},
+    {"fused_rate", "--fused-rate", MLT_OPTION_DOUBLE, FIELD(fused_rate), .def = "0.5", .lo = 0, .hi = 1, .arg = "P",
+     .methods = APPLIES_MULTIPLEXED, .numbers = true,
+     .help = "mmlt, pitp with --fused: the share of small steps that are a fused perturbation (the harness's "
+             "default, half: Otsu et al. state no value)",
+     .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 10, .csv_key = "fused_rate", .csv_own = true, .csv_if = fused_on},
+    {"fused_broken_t", NULL, MLT_OPTION_FLAG, FIELD(fused_broken_t), .methods = APPLIES_MULTIPLEXED, .numbers = true,
+     .help = "tests only: a broken fused perturbation"},
     {"veach_broken_t", NULL, MLT_OPTION_FLAG, FIELD(veach_broken_t), .methods = APPLIES_VEACH, .numbers = true,
      .help = "tests only: a broken bidirectional mutation"},
     {"time_proposals", NULL, MLT_OPTION_FLAG, FIELD(time_proposals), .methods = APPLIES_CHAINS,

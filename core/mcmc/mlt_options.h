@@ -57,6 +57,7 @@ struct mlt_option {
     const char *const *csv_values;
     bool csv_effective;
     bool csv_own; /* its line only in the runs of the methods it applies to (the others' CSVs keep theirs) */
+    bool (*csv_if)(const struct mlt_opts *o); /* its line only when this is true (NULL: always) */
     /* When the field is not at its default: true (with a message) when the other options rule it out. */
     bool (*conflict)(const struct mlt_opts *o, char *err, size_t errlen);
 };

@@ -5,7 +5,9 @@
  * MCTLS's large step (mctls.c), PITP's technique perturbation before a small step (pitp_step.c),
  * the large step of fresh numbers and the small step (primary-sample-space, controlled or root;
  * pss_step.c); under --method mlt, Veach's path-space mutations (veach.c) before all of them,
- * ending every iteration. Mutations registered at run time (mutation_register) come before them.
+ * ending every iteration; under --fused, the fused perturbations (fused.c) before the small step,
+ * which makes the small steps it does not replace. Mutations registered at run time (mutation_register) come before
+ * them.
  *
  * Adding one: its file, which defines a `const struct mutation` (tests/mcmc/toy_mutation.c is a
  * whole example), and one line in mutation_registry.c's table (or one mutation_register call). Its
@@ -18,11 +20,12 @@
 
 /* A proposal evaluated: its target (0 after an impossible inversion), the kernel's ratio
  * T(v->u) / T(u->v), its path length (the chain's, but for --one-chain's large steps), its
- * technique and whether its subpaths are complete. */
+ * technique, whether its subpaths are complete, and whether it was refused before it was made (its
+ * statistics row's `failed`). */
 struct proposal {
     double f, tr;
     int k, tech;
-    bool complete;
+    bool complete, failed;
 };
 
 struct mutation {
@@ -43,7 +46,8 @@ struct mutation {
 };
 
 /* The built-in mutations (their files'). */
-extern const struct mutation mutation_veach, mutation_mctls, mutation_pitp, mutation_large, mutation_small;
+extern const struct mutation mutation_veach, mutation_mctls, mutation_pitp, mutation_fused, mutation_large,
+    mutation_small;
 
 /* Adds m before the built-in mutations (before the first mlt_render of the process). Returns its
  * statistics kind (stats/mlt_stats.h), or -1 when the registry or the statistics are full. */

@@ -9,6 +9,7 @@ static const struct mutation *const builtin[] = {
     &mutation_veach, /* --method mlt: Veach's mutations, every iteration (veach.c) */
     &mutation_mctls, /* large steps at MCTLS's lengths (mctls.c) */
     &mutation_pitp,  /* before every small step under PITP (pitp_step.c) */
+    &mutation_fused, /* --fused: a share of the small steps, the others made by it (fused.c) */
     &mutation_large, /* the other large steps: fresh numbers (pss_step.c) */
     &mutation_small, /* the small step (pss_step.c) */
 };

@@ -34,6 +34,7 @@ void mutation_propose(struct worker *wk, struct chain *c, bool large, struct pro
     wk->scratch->conn_tried = wk->scratch->conn_nonzero = 0; /* the chain starts' and seed pass's are not counted */
     pr->k = c->k;
     pr->tr = 1;
+    pr->failed = false;
     if (large && o->one_chain) one_chain_length(wk, pr);
     pr->f = eval_state(o->method, &wk->path_ctx, cs ? &cs->base : &c->pss.base, wk->scratch, pr->k, wk->spare,
                        &wk->prop, &pr->tech, &pr->complete);
@@ -72,7 +73,7 @@ void mutation_decide(struct worker *wk, struct chain *c, int kind, const struct 
         move_to(c->img, c, &wk->prop, pr->f);
         c->xsum_valid = false;
         if (wk->track) ctrl_path_capture(c->path, wk->spare->cam, pr->tech, wk->spare->emi, pr->k + 1 - pr->tech);
-        if (wk->pitp) {
+        if (wk->keep_path) {
             struct mmlt_path *t = c->x;
             c->x = wk->spare;
             wk->spare = t;
@@ -83,7 +84,7 @@ void mutation_decide(struct worker *wk, struct chain *c, int kind, const struct 
     bool m = wk->multiplexed;
     int tech0 = wk->tech_before;
     stats_record_dt(wk->st, (enum proposal_kind)kind, m ? pr->k : 0, m && pr->tech != tech0,
-                    m ? abs(pr->tech - tech0) : 0, false, a, acc, pr->f > 0, mutation_elapsed(wk, t_start));
+                    m ? abs(pr->tech - tech0) : 0, pr->failed, a, acc, pr->f > 0, mutation_elapsed(wk, t_start));
     if (acc) {
         c->tech = pr->tech;
         c->k = pr->k;

@@ -171,8 +171,8 @@ void chain_start(struct worker *wk, struct chain *c, int kk)
     uint64_t stream = j->cdf[kk] ? seed_stream(pick_cdf(j->cdf[kk], o->seed_paths, rng_uniform(&wk->r)), j->nk, kk)
                                  : (1ULL << 60) | ((uint64_t)wk->global_tid << 24) | (uint64_t)kk;
     pss_init(&c->pss, &o->pss, o->seed, stream);
-    if (wk->pitp) c->x = xmalloc(sizeof *c->x);
-    struct mmlt_path *x0 = wk->pitp ? c->x : wk->spare;
+    if (wk->keep_path) c->x = xmalloc(sizeof *c->x);
+    struct mmlt_path *x0 = wk->keep_path ? c->x : wk->spare;
     bool complete;
     c->f = eval_state(o->method, &wk->path_ctx, &c->pss.base, wk->scratch, c->k, x0, &c->cur, &c->tech, &complete);
     if (wk->tech)

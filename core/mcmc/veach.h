@@ -43,6 +43,16 @@ double veach_f_at(const struct path_ctx *pc, const struct veach_state *x, int j,
  * path they move. */
 int veach_lens_vertex(const struct veach_state *x);
 int veach_caustic_vertex(const struct veach_state *x);
+/* The perturbations themselves (of x at that m), with the generator r: the perturbed path's
+ * vertices x'_0..x'_k into yp (pointing into x and w: the lens perturbation's camera subpath w->zs,
+ * t = k + 1 - m vertices; the caustic one's emitter subpath w->ys, k vertices), false when it leaves
+ * the film or does not keep x's structure. Not connected: Veach's steps connect y at the split
+ * their acceptance needs (m, k), the fused perturbations (fused.c) invert it. *p_old, *p_new: x_m's
+ * densities of sampling the old and the new direction. */
+bool veach_lens_perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m, struct veach_scratch *w,
+                        const struct vertex **yp);
+bool veach_caustic_perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m,
+                           struct veach_scratch *w, double *p_old, double *p_new, const struct vertex **yp);
 /* A proposal's end (the proposal in wk->veach->y when made): its expected-value splats, the draw
  * against acceptance a, the move, and its statistics row of `kind` (failed: refused). */
 void veach_decide(struct worker *wk, struct chain *c, struct veach_state *x, int kind, bool made, bool refused,

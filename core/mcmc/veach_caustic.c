@@ -32,10 +32,8 @@ static vec3 turn(vec3 w, double theta, double phi)
     return vnorm(frame_to_world(&f, v3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta))));
 }
 
-/* The perturbed path into w->y; *p_old, *p_new: x_m's densities of sampling the old and the new
- * direction. False when the new one does not keep x's structure or leaves the film. */
-static bool perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m, struct veach_scratch *w,
-                    double *p_old, double *p_new)
+bool veach_caustic_perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m,
+                           struct veach_scratch *w, double *p_old, double *p_new, const struct vertex **yp)
 {
     const struct vertex *xp[MAX_SUBPATH_VERTS];
     for (int i = 0; i <= x->k; i++)
@@ -58,7 +56,9 @@ static bool perturb(const struct path_ctx *pc, rng *r, const struct veach_state 
     if (walk_extend(pc, &fresh.base, y, m + 2, x->k, STREAM_EMITTER) != x->k) return false;
     for (int i = m + 1; i < x->k - 1; i++)
         if (!y[i].delta) return false; /* as many delta vertices, then x'_{k-1} */
-    return path_camera_form(pc, xp, x->k, 1, w->zs) && veach_state_set(&w->y, pc, y, x->k, w->zs, 1);
+    for (int i = 0; i <= x->k; i++)
+        yp[i] = i < x->k ? &y[i] : xp[i];
+    return true;
 }
 
 void veach_caustic_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start)
@@ -67,7 +67,10 @@ void veach_caustic_step(struct worker *wk, struct chain *c, struct veach_state *
     int m = veach_caustic_vertex(x);
     double p_old = 0, p_new = 0, a = 0;
     bool refused = m < 0;
-    bool made = !refused && perturb(&wk->path_ctx, &wk->r, x, m, w, &p_old, &p_new);
+    const struct vertex *yp[MAX_SUBPATH_VERTS];
+    bool made = !refused && veach_caustic_perturb(&wk->path_ctx, &wk->r, x, m, w, &p_old, &p_new, yp) &&
+                path_camera_form(&wk->path_ctx, yp, x->k, 1, w->zs) &&
+                veach_state_set(&w->y, &wk->path_ctx, w->ys, x->k, w->zs, 1);
     if (made) {
         double fx = veach_f_at(&wk->path_ctx, x, x->k, w);
         a = fx > 0 && p_old > 0 ? fmin(1.0, luminance(w->y.f) * p_new / (fx * p_old)) : 0;

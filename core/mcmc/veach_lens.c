@@ -47,9 +47,8 @@ static void radius_bounds(const struct camera *c, double *r1, double *r2)
     *r2 = 0.1 * (c->width > c->height ? c->width : c->height);
 }
 
-/* The perturbed path into y (its camera subpath traced through the new raster position); false
- * when it leaves the film or does not keep x's structure. */
-static bool perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m, struct veach_scratch *w)
+bool veach_lens_perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m, struct veach_scratch *w,
+                        const struct vertex **yp)
 {
     const struct camera *cam = &pc->sc->cam;
     double r1, r2;
@@ -70,7 +69,9 @@ static bool perturb(const struct path_ctx *pc, rng *r, const struct veach_state 
         return false;
     for (int j = 1; j < t - 1; j++)
         if (!w->zs[j].delta) return false; /* the same number of delta vertices, then x'_m */
-    return path_emitter_form(pc, xp, m, w->ys) && veach_state_set(&w->y, pc, w->ys, m, w->zs, t);
+    for (int i = 0; i <= x->k; i++)
+        yp[i] = i < m ? xp[i] : &w->zs[x->k - i];
+    return true;
 }
 
 void veach_lens_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start)
@@ -78,7 +79,10 @@ void veach_lens_step(struct worker *wk, struct chain *c, struct veach_state *x, 
     struct veach_scratch *w = wk->veach;
     int m = veach_lens_vertex(x);
     bool refused = m < 0;
-    bool made = !refused && perturb(&wk->path_ctx, &wk->r, x, m, w);
+    const struct vertex *yp[MAX_SUBPATH_VERTS];
+    bool made = !refused && veach_lens_perturb(&wk->path_ctx, &wk->r, x, m, w, yp) &&
+                path_emitter_form(&wk->path_ctx, yp, m, w->ys) &&
+                veach_state_set(&w->y, &wk->path_ctx, w->ys, m, w->zs, x->k - m + 1);
     double fy = made ? luminance(w->y.f) : 0, a = 0;
     if (made) {
         double fx = veach_f_at(&wk->path_ctx, x, m, w);

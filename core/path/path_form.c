@@ -119,13 +119,16 @@ static bool step_to(const struct path_ctx *pc, struct vertex *v, int n, const st
 }
 
 /* The emitter subpath's first vertex from path vertex x (an emitter vertex, a camera hit on an
- * emitter, or the environment). */
-static bool emitter_start(const struct scene *sc, const struct vertex *x, struct vertex *y)
+ * emitter, or the environment), followed by next (or NULL). */
+static bool emitter_start(const struct scene *sc, const struct vertex *x, const struct vertex *next, struct vertex *y)
 {
     double pick = emitter_pick_prob(sc, x->prim);
     if (x->kind == VK_ENV) {
         vertex_start(y, VK_ENV, x->prim, -1);
-        y->p = x->p; /* a point of the ray (the walk's is on the origin disc): nothing reads it */
+        /* a point of the ray, which only the inversion reads (it projects it onto the origin disc
+         * along the direction): the vertex the ray reaches, when there is one, since a path moved
+         * at x_1 (a fused lens perturbation) keeps x_0's direction but not its ray */
+        y->p = next ? next->p : x->p;
         y->ng = y->wi = x->ng;
         y->sh = frame_from_normal(y->ng);
         y->pdf_fwd = pick * env_pdf_dir(sc, env_dir(y));
@@ -143,7 +146,7 @@ static bool emitter_start(const struct scene *sc, const struct vertex *x, struct
 
 bool path_emitter_form(const struct path_ctx *pc, const struct vertex *const *x, int n, struct vertex *y)
 {
-    if (!emitter_start(pc->sc, x[0], &y[0])) return false;
+    if (!emitter_start(pc->sc, x[0], n > 1 ? x[1] : NULL, &y[0])) return false;
     for (int i = 1; i < n; i++)
         if (!step_to(pc, y, i, x[i], TRANSPORT_IMPORTANCE)) return false;
     return true;

@@ -15,7 +15,10 @@
  * technique_changed: the path's length changed; failed: refused before a path was made (a kept end
  * that scatters through a delta lobe, no room for the added length) or an extension that stopped
  * short. PROPOSAL_LENS and PROPOSAL_CAUSTIC record Veach's lens and caustic perturbations
- * (mcmc/veach_lens.c, veach_caustic.c); failed: a path the perturbation does not move. */
+ * (mcmc/veach_lens.c, veach_caustic.c); failed: a path the perturbation does not move. The
+ * PROPOSAL_FUSED_ kinds record the same perturbations fused into MMLT and PITP (mcmc/fused.c) by
+ * the chain's length; failed: refused as Veach's are, or the perturbed path not invertible by the
+ * chain's technique (an inversion or its retrace failed). */
 enum proposal_kind {
     PROPOSAL_SMALL,
     PROPOSAL_LARGE,
@@ -24,6 +27,8 @@ enum proposal_kind {
     PROPOSAL_BIDIR,
     PROPOSAL_LENS,
     PROPOSAL_CAUSTIC,
+    PROPOSAL_FUSED_LENS,
+    PROPOSAL_FUSED_CAUSTIC,
     PROPOSAL_BUILTIN
 };
 /* Kinds PROPOSAL_BUILTIN.. are the mutations registered at run time (mcmc/mutation.h); a kind

@@ -224,6 +224,26 @@ CH6_CHECK_OPTS_mmlt-fig9 := --study mmlt-fig9 --methods '$(mmlt-fig9_METHODS)' -
   --max-length 8 --reference-spp 256 --resolution 256x144 --render-args ""
 $(eval $(call CH6_STUDY,mmlt-fig9,mmlt-fig9,ajar-diffuse))
 
+# ---- Veach's perturbations fused into MMLT and PITP through the inverse (Otsu et al. 2017; thesis §7.1) ----
+# mmlt-fig4's setting (equal CPU time, paths of 1 to 8 segments) on a door scene (ajar: diffuse and
+# glossy paths through a gap) and a caustic one (glass-marble: caustics on diffuse walls): MMLT, PITP,
+# Veach's MLT, and MMLT and PITP with both fused perturbations (bin/render --fused lens+caustic,
+# core/mcmc/docs/fused.md). `make fused` runs both; each has its check at 16 mutations per pixel.
+FUSED_METHODS := mmlt=--method mmlt --p-large 0.1,pitp=--method pitp --p-large 0.1,mlt=--method mlt,mmlt-fused=--method mmlt --p-large 0.1 --fused lens+caustic,pitp-fused=--method pitp --p-large 0.1 --fused lens+caustic
+fused-door_METHODS := $(FUSED_METHODS)
+fused-door_SOURCE := Otsu et al. 2017; thesis §7.1
+CH6_CHECK_OPTS_fused-door := --study fused-door --methods '$(FUSED_METHODS)' --spp 16 --seeds 8 --min-length 1 \
+  --max-length 8 --reference-spp 256 --resolution 256x144 --render-args ""
+$(eval $(call CH6_STUDY,fused-door,fused-door,ajar))
+fused-caustic_METHODS := $(FUSED_METHODS)
+fused-caustic_SOURCE := Otsu et al. 2017; thesis §7.1
+CH6_CHECK_OPTS_fused-caustic := --study fused-caustic --methods '$(FUSED_METHODS)' --spp 16 --seeds 8 --min-length 1 \
+  --max-length 8 --reference-spp 256 --resolution 256x144 --render-args ""
+$(eval $(call CH6_STUDY,fused-caustic,fused-caustic,glass-marble))
+.PHONY: fused check-fused
+fused: fused-door fused-caustic
+check-fused: check-fused-door check-fused-caustic
+
 # ---- thesis Fig. 3.4: BDPT vs path tracing at equal samples (claim T37) ----
 # ajar at the scale's samples per pixel, seeds and resolution (--study background).
 bdpt-pt_METHODS := pt,bdpt

@@ -77,6 +77,20 @@ static const struct claim {
      false, "mmlt-fig9"},
     {"M-i", "on a diffuse door MMLT beats PSSMLT", "mmlt", -1, Q_RELMSE, "relMSE", "pssmlt", "MMLT paper Fig. 9", false,
      "mmlt-fig9"},
+    /* make fused: Veach's perturbations fused into MMLT and PITP through the inverse (Otsu et al.
+     * 2017, not one of the three sources: the harness's rows). Their paper: MLT wins on a door
+     * scene, MMLT on a caustic one, the fused chain is robust on both; and the thesis's §7.1 asks
+     * whether "other perturbations ... can make use of such an approach" */
+    {"harness", "on the door scene original MLT beats MMLT (Otsu et al. 2017)", "mlt", -1, Q_RELMSE, "relMSE", "mmlt",
+     "Otsu et al. 2017, §6", false, "fused-door"},
+    {"harness", "on the caustic scene MMLT beats original MLT (Otsu et al. 2017)", "mmlt", -1, Q_RELMSE, "relMSE",
+     "mlt", "Otsu et al. 2017, §6", false, "fused-caustic"},
+    {"harness", "fused perturbations are robust: MMLT+fused beats MMLT (Otsu et al. 2017)", "mmlt-fused", -1, Q_RELMSE,
+     "relMSE", "mmlt", "Otsu et al. 2017, §6", false, "fused-door fused-caustic"},
+    {"harness", "fused perturbations are robust: MMLT+fused beats original MLT (Otsu et al. 2017)", "mmlt-fused", -1,
+     Q_RELMSE, "relMSE", "mlt", "Otsu et al. 2017, §6", false, "fused-door fused-caustic"},
+    {"harness", "other perturbations through the inverse help PITP: PITP+fused beats PITP (thesis §7.1's question)",
+     "pitp-fused", -1, Q_RELMSE, "relMSE", "pitp", "thesis §7.1", false, "fused-door fused-caustic"},
     /* thesis Fig. 3.4 (make bdpt-pt): BDPT has the lower variance at equal samples */
     {"T37", "BDPT has lower variance than path tracing at equal samples", "bdpt", -1, Q_RELMSE, "relMSE", "pt",
      "thesis §3.5, Fig. 3.4", false, "background"},

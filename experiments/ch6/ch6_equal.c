@@ -89,8 +89,9 @@ static void parse_insets(struct ch6_equal *e)
 
 static const char *parse(struct ch6_equal *e, int argc, char **argv)
 {
-    static const char *const studies[] = {"equal-time", "ratio",       "hybrid",    "mmlt-equal", "background", "cdc",
-                                          "mis",        "mmlt-design", "pitp-rate", "mmlt-fig4",  "mmlt-fig9",  NULL};
+    static const char *const studies[] = {"equal-time", "ratio",      "hybrid",        "mmlt-equal", "background",
+                                          "cdc",        "mis",        "mmlt-design",   "pitp-rate",  "mmlt-fig4",
+                                          "mmlt-fig9",  "fused-door", "fused-caustic", NULL};
     const char *methods, *extra, *render = NULL, *res = NULL;
     double t0 = -1;
     int study;
@@ -152,7 +153,8 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
          .help = "whose scales --scale applies and whose claims the runs test: equal-time (make "
                  "fig6.2-6.7), ratio (make mmlt-ratio), hybrid (make hybrid-study), mmlt-equal (make mmlt-equal), "
                  "background (make bdpt-pt), cdc (make cdc-ch6), mis (make mis-robust), mmlt-design (make "
-                 "mmlt-design), pitp-rate (make pitp-rate), mmlt-fig4 (make mmlt-fig4) or mmlt-fig9 (make mmlt-fig9)"},
+                 "mmlt-design), pitp-rate (make pitp-rate), mmlt-fig4 (make mmlt-fig4), mmlt-fig9 (make mmlt-fig9), "
+                 "fused-door or fused-caustic (make fused)"},
         {"--checkpoint", OPT_DOUBLE, OPT_DST(e->ckpt_every), .arg = "S", .lo = 0, .hi = 1e6, .def = "0",
          .help = "every render (reference too) checkpoints every S seconds, and a rerun after an interruption keeps "
                  "the completed runs and resumes the interrupted one (0: off)"},

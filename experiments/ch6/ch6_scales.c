@@ -15,7 +15,8 @@
  * 4 s, 60 s or 300 s, 4 or 8 seeds, 256x144 (full and paper: 512x288), paths of 1 to 8 segments, a
  * 256-, 4096- or 16 384-spp reference; no --render-args (the target gives each method its own).
  * mmlt-fig4 and mmlt-fig9 (make mmlt-fig4, mmlt-fig9: the MMLT paper's Figs. 1, 4, 6 and 9 against
- * Veach's MLT, on ajar and on ajar-diffuse) take mmlt-equal's rows.
+ * Veach's MLT, on ajar and on ajar-diffuse) and fused-door and fused-caustic (make fused: the fused
+ * perturbations on ajar and on glass-marble) take mmlt-equal's rows.
  * cdc (make cdc-ch6, thesis §4.2): the equal-time study's budgets, seeds, lengths, references and
  * resolutions, PSSMLT with and without constrained discrete choices.
  * mis (make mis-robust, thesis Figs. 3.3, 3.5): paths of 2 segments (direct light), equal samples,
@@ -114,17 +115,17 @@ static const struct {
      "full paper",
      ALL_SCENES,
      {"--spp", "64", "--seeds", "8", "--resolution", "256x144", "--reference-spp", "4096", "--render-args", ""}},
-    {"mmlt-equal mmlt-fig4 mmlt-fig9",
+    {"mmlt-equal mmlt-fig4 mmlt-fig9 fused-door fused-caustic",
      "quick",
      ALL_SCENES,
      {"--time", "4", "--seeds", "4", "--resolution", "256x144", "--min-length", "1", "--max-length", "8",
       "--reference-spp", "256", "--render-args", ""}},
-    {"mmlt-equal mmlt-fig4 mmlt-fig9",
+    {"mmlt-equal mmlt-fig4 mmlt-fig9 fused-door fused-caustic",
      "full",
      ALL_SCENES,
      {"--time", "60", "--seeds", "8", "--resolution", "512x288", "--min-length", "1", "--max-length", "8",
       "--reference-spp", "4096", "--checkpoint", "60", "--render-args", ""}},
-    {"mmlt-equal mmlt-fig4 mmlt-fig9",
+    {"mmlt-equal mmlt-fig4 mmlt-fig9 fused-door fused-caustic",
      "paper",
      ALL_SCENES,
      {"--time", "300", "--seeds", "8", "--resolution", "512x288", "--min-length", "1", "--max-length", "8",

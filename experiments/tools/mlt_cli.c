@@ -64,6 +64,7 @@ void mlt_cli_csv(FILE *f, const struct mlt_opts *m, enum mlt_csv_group g)
     char v[64];
     for (size_t i = 0; i < n; i++) {
         if (d[i]->csv_own && !(d[i]->methods & mlt_method_mask(m->method))) continue;
+        if (d[i]->csv_if && !d[i]->csv_if(m)) continue;
         mlt_option_format(d[i], m, true, v, sizeof v);
         csv_meta(f, d[i]->csv_key, "%s", v);
     }

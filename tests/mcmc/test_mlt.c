@@ -23,7 +23,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-static const char *const method_names[] = {"pssmlt", "mmlt", "pitp", "mlt"};
+static const char *const method_names[] = {"pssmlt", "mmlt", "pitp", "mlt", "mmlt --fused lens+caustic"};
 
 static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, long mutations)
 {
@@ -58,7 +58,7 @@ static struct image *render_plain_ctx(void *p, uint64_t seed)
 
 /* Cornell box at 64x64: 8 BDPT renders of 16 spp against 12 independent MCMC runs of 16 mutations
  * per pixel (each with its own 10k-path seed pass) per configuration; Welch t on 8x8 blocks and on
- * the image mean, alpha 0.01 Sidak over the 65 comparisons of each of the 15 configurations. Each
+ * the image mean, alpha 0.01 Sidak over the 65 comparisons of each of the CORNELL_CFGS configurations. Each
  * configuration is its own test; the reference is rendered once (support/disk_cache.h) and is the
  * one stat_mctls_tries compares against. */
 static const struct cornell_cfg {
@@ -88,8 +88,23 @@ static const struct cornell_cfg {
     {"mmlt --progressive-norm", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
     {"pitp --progressive-norm", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
     {"mmlt --one-chain", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
-    {"mlt", MLT_VEACH, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false}};
+    {"mlt", MLT_VEACH, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
+    {"mmlt --fused lens", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
+    {"pitp --fused lens+caustic --fused-rate 0.8", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false,
+     false, false}};
 #define CORNELL_CFGS ((int)(sizeof cornell_cfg / sizeof *cornell_cfg))
+#define CORNELL_MLT 15 /* Veach's MLT's configuration: the broken-mutation test's seeds */
+
+/* --fused and --fused-rate from a configuration's name (the fields do not carry them). */
+static void fused_from_name(struct mlt_opts *o, const char *name)
+{
+    o->fused = strstr(name, "--fused lens+caustic") ? FUSED_BOTH
+               : strstr(name, "--fused lens")       ? FUSED_LENS
+               : strstr(name, "--fused caustic")    ? FUSED_CAUSTIC
+                                                    : FUSED_NONE;
+    const char *r = strstr(name, "--fused-rate ");
+    o->fused_rate = r ? atof(r + 13) : 0.5;
+}
 
 ParameterizedTestParameters(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
 {
@@ -122,6 +137,7 @@ ParameterizedTest(int *param, stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
     c.o.power_heuristic = cf->power;
     c.o.progressive_norm = strstr(cf->name, "--progressive-norm") != NULL; /* flags the fields do not carry */
     c.o.one_chain = strstr(cf->name, "--one-chain") != NULL;
+    fused_from_name(&c.o, cf->name);
     stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * (uint64_t)i, 8);
     double pm, worst;
     int f = stack_compare(&a, &ref, CORNELL_CFGS, &pm, &worst);
@@ -132,30 +148,54 @@ ParameterizedTest(int *param, stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
     scene_free(sc);
 }
 
+/* A deliberately broken chain (c's options) against the Cornell-box agreement test above (the same
+ * reference, runs and alpha) at mpp mutations per pixel: the comparison must fail. The image mean
+ * cannot show it (it is b whatever the chain does): the blocks do. */
+static void broken_chain_fails(struct scene *sc, struct mlt_ctx *c, long mpp, uint64_t seed, const char *what)
+{
+    static struct stack ref, a;
+    struct plain_ctx bd = {sc, METHOD_BDPT, 16};
+    stack_runs_cached(&ref, render_plain_ctx, &bd, 8, 1000, 8, sc, "bdpt spp 16 threads 2 max_length 8");
+    c->o.mutations = mpp * 64 * 64;
+    c->o.seed_paths = 10000;
+    stack_runs(&a, render_mlt, c, 12, seed, 8);
+    double pm, worst;
+    int f = stack_compare(&a, &ref, CORNELL_CFGS, &pm, &worst);
+    fprintf(stderr, "cornell %s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%.3g, worst block p=%.3g)\n", what,
+            a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    cr_assert_gt(f, 0, "%s passed: %g +- %g vs BDPT %g +- %g (mean p=%g, worst block p=%g)", what, a.mean, a.mean_se,
+                 ref.mean, ref.mean_se, pm, worst);
+}
+
 /* Veach's MLT with a deliberately wrong T(x -> y): x1.1 on every bidirectional mutation that
- * lengthens the path (mlt_opts.veach_broken_t) makes long paths rarer than f says; the Cornell-box
- * agreement test above (the same reference, runs and alpha), at 64 mutations per pixel, must catch
- * it. Not in the image mean, which is b whatever the chain does: in the blocks the indirect light
- * lights (the ceiling). */
+ * lengthens the path (mlt_opts.veach_broken_t) makes long paths rarer than f says: in the blocks the
+ * indirect light lights (the ceiling). */
 Test(stat_mlt, broken_bidirectional_mutation_fails_the_agreement)
 {
     struct scene *sc = test_scene("scenes/cornell-box/scene.json");
     camera_resize(&sc->cam, 64, 64);
-    static struct stack ref, a;
-    struct plain_ctx bd = {sc, METHOD_BDPT, 16};
-    stack_runs_cached(&ref, render_plain_ctx, &bd, 8, 1000, 8, sc, "bdpt spp 16 threads 2 max_length 8");
     struct mlt_ctx c = {sc, {0}};
-    opts(&c.o, sc, MLT_VEACH, 64L * 64 * 64);
-    c.o.seed_paths = 10000;
+    opts(&c.o, sc, MLT_VEACH, 0);
     c.o.veach_broken_t = true;
     c.o.veach_lens = c.o.veach_caustic = 0; /* every iteration the mutation whose T is broken */
-    stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * (uint64_t)(CORNELL_CFGS - 1), 8);
-    double pm, worst;
-    int f = stack_compare(&a, &ref, CORNELL_CFGS, &pm, &worst);
-    fprintf(stderr, "cornell mlt, broken T: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%.3g, worst block p=%.3g)\n",
-            a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
-    cr_assert_gt(f, 0, "a broken T(x -> y) passed: %g +- %g vs BDPT %g +- %g (mean p=%g, worst block p=%g)", a.mean,
-                 a.mean_se, ref.mean, ref.mean_se, pm, worst);
+    broken_chain_fails(sc, &c, 64, 2000 + 100 * (uint64_t)CORNELL_MLT, "mlt, broken T");
+    scene_free(sc);
+}
+
+/* MMLT whose every small step is a fused lens perturbation with a wrong T(x -> y): x1.1 on the moves
+ * toward larger raster x (mlt_opts.fused_broken_t), which drifts the chains' mass to the left; at
+ * 1024 mutations per pixel and 1 % large steps. */
+Test(stat_mlt, broken_fused_perturbation_fails_the_agreement)
+{
+    struct scene *sc = test_scene("scenes/cornell-box/scene.json");
+    camera_resize(&sc->cam, 64, 64);
+    struct mlt_ctx c = {sc, {0}};
+    opts(&c.o, sc, MLT_MMLT, 0);
+    c.o.fused = FUSED_LENS;
+    c.o.fused_rate = 1;
+    c.o.p_large = 0.01;                                  /* fewer fresh starts, so the chains drift further */
+    c.o.fused_broken_t = getenv("FUSED_INTACT") == NULL; /* FUSED_INTACT=1: the same runs unbroken */
+    broken_chain_fails(sc, &c, 1024, 2000 + 100 * (uint64_t)(CORNELL_CFGS - 2), "mmlt --fused lens, broken T");
     scene_free(sc);
 }
 
@@ -334,8 +374,9 @@ struct budget {
 };
 static const struct budget SMALL = {64, 16, 64, 16, 16, 0};
 
-/* PT (m = 0), PSSMLT, MMLT, PITP or Veach's MLT (m = 1..4) against BDPT: Welch t on 8x8 blocks and
- * the mean, alpha 0.01 Sidak over the comparisons of all 5 methods. PITP and MLT run as long as MMLT. Each method is
+/* PT (m = 0), PSSMLT, MMLT, PITP, Veach's MLT or MMLT with both fused perturbations (m = 1..5)
+ * against BDPT: Welch t on 8x8 blocks and the mean, alpha 0.01 Sidak over the comparisons of all 6
+ * methods. PITP, MLT and fused MMLT run as long as MMLT. Each method is
  * its own test, so that --jobs spreads them; the BDPT reference they share is rendered once
  * (support/disk_cache.h), with the seeds it had when one test ran all four. */
 static void method_agrees(struct scene *sc, const struct budget *b, uint64_t seed, int m)
@@ -349,29 +390,31 @@ static void method_agrees(struct scene *sc, const struct budget *b, uint64_t see
     double pm, worst;
     if (m == 0) {
         stack_runs(&a, render_plain_ctx, &pt, 8, seed + 100, 8);
-        int f = stack_compare(&a, &ref, 5, &pm, &worst);
+        int f = stack_compare(&a, &ref, 6, &pm, &worst);
         cr_assert_eq(f, 0, "pt: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", a.mean, a.mean_se,
                      ref.mean, ref.mean_se, f, pm, worst);
         return;
     }
     struct mlt_ctx c = {sc, {0}};
-    enum mlt_method mm = (enum mlt_method)(m - 1);
+    const char *name = method_names[m - 1];
+    enum mlt_method mm = m == 5 ? MLT_MMLT : (enum mlt_method)(m - 1);
     opts(&c.o, sc, mm, (long)(mm == 0 ? b->pssmlt_mpp : b->mmlt_mpp) * b->res * b->res);
     c.o.seed_paths = b->seed_paths ? b->seed_paths : 10000;
-    stack_runs(&a, render_mlt, &c, 12, seed + 200 + 100 * (uint64_t)mm, 8);
-    int f = stack_compare(&a, &ref, 5, &pm, &worst);
-    fprintf(stderr, "%s agreement %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", method_names[mm],
-            sc->file, a.mean, a.mean_se, ref.mean, ref.mean_se, pm, worst);
-    cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", method_names[mm],
-                 a.mean, a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
+    fused_from_name(&c.o, name);
+    stack_runs(&a, render_mlt, &c, 12, seed + 200 + 100 * (uint64_t)(m - 1), 8);
+    int f = stack_compare(&a, &ref, 6, &pm, &worst);
+    fprintf(stderr, "%s agreement %s: %g +- %g vs BDPT %g +- %g (mean p=%.3g, worst block p=%.3g)\n", name, sc->file,
+            a.mean, a.mean_se, ref.mean, ref.mean_se, pm, worst);
+    cr_assert_eq(f, 0, "%s: %g +- %g vs BDPT %g +- %g: %d failing (mean p=%g, worst block p=%g)", name, a.mean,
+                 a.mean_se, ref.mean, ref.mean_se, f, pm, worst);
 }
 
 /* One test per method of method_agrees: the parameter m. */
 #define METHOD_PARAMS(name)                                                                                            \
     ParameterizedTestParameters(stat_mlt, name)                                                                        \
     {                                                                                                                  \
-        static int m[] = {0, 1, 2, 3, 4};                                                                              \
-        return cr_make_param_array(int, m, 5);                                                                         \
+        static int m[] = {0, 1, 2, 3, 4, 5};                                                                           \
+        return cr_make_param_array(int, m, 6);                                                                         \
     }
 
 /* scenes/smooth-sphere (interpolated normals on a coarse mesh): agreement holds only with the
