@@ -1,15 +1,17 @@
 /* Fused perturbations (Otsu, Kaplanyan, Hanika, Dachsbacher and Hachisuka 2017, "Fusing state spaces
  * for Markov chain Monte Carlo rendering"; thesis §7.1's open door; docs/fused.md): a share
  * mlt_opts.fused_rate of an MMLT or PITP chain's small steps perturbs the chain's path in path space
- * with Veach's lens or caustic perturbation (veach_lens.c, veach_caustic.c), and the inverse of the
+ * with Veach's lens, caustic or multi-chain perturbation (veach_lens.c, veach_caustic.c,
+ * veach_multichain.c), and the inverse of the
  * chain's technique (path_invert.c) maps the perturbed path y back to primary sample space: the
  * proposal is those numbers, with the technique number and every number the path does not use kept.
  *
  * Acceptance. The chain's target in primary sample space is (k + 1) w_t C_t = (k + 1) w_t f / p_t,
  * and the inverse's numbers have density T(x -> y) / p_t(y) (the inverse is measure-preserving, the
  * thesis's Eq. 5.9-5.14), so p_t cancels: a = f(y) w_t(y) T(y -> x) / (f(x) w_t(x) T(x -> y)).
- * Veach's perturbations give T(y -> x) / T(x -> y) = p_j(x) / p_j(y) times 1 (lens, split j = m) or
- * p(omega') / p(omega) (caustic, j = k): with the targets' ratio that is
+ * Veach's perturbations give T(y -> x) / T(x -> y) = p_j(x) / p_j(y) times 1 (lens, split j = m),
+ * p(omega') / p(omega) (caustic, j = k) or the product of those over the turned vertices
+ * (multi-chain, j = m): with the targets' ratio that is
  * a = target(y) / target(x) * (p_j / p_t)(x) / (p_j / p_t)(y) * that factor,
  * from the density ratios both evaluations already hold. A path the technique cannot produce (an
  * inversion that fails, or numbers whose walk does not retrace y) is refused: such a y is never a
@@ -104,8 +106,11 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
         mutation_small.step(wk, c, large, t_start);
         return;
     }
-    /* which perturbation: the listed one, or either with probability one half */
-    bool lens = o->fused == FUSED_LENS || (o->fused == FUSED_BOTH && u < 0.5 * o->fused_rate);
+    /* which perturbation: one of the set's, with equal probabilities */
+    int set[3], n = 0;
+    for (int b = 0; b < 3; b++)
+        if (o->fused & (1 << b)) set[n++] = 1 << b;
+    int i = (int)(n * u / o->fused_rate), move = set[i < n ? i : n - 1];
     const struct path_ctx *pc = &wk->path_ctx;
     struct veach_scratch *w = wk->veach;
     struct veach_state *xs = &w->xm;
@@ -113,11 +118,15 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
     pss_begin(&c->pss, false);
     if (c->f > 0 && c->cur.n > 0) {
         fused_state_of(xs, c->x, c->cur.s[0].px, c->cur.s[0].py);
-        int m = lens ? veach_lens_vertex(xs) : veach_caustic_vertex(xs), j = lens ? m : xs->k;
+        int m = move == FUSED_LENS      ? veach_lens_vertex(xs)
+                : move == FUSED_CAUSTIC ? veach_caustic_vertex(xs)
+                                        : veach_multichain_vertex(xs);
+        int j = move == FUSED_CAUSTIC ? xs->k : m;
         double p_old = 1, p_new = 1;
         const struct vertex *yp[MAX_SUBPATH_VERTS];
-        bool made = m >= 0 && (lens ? veach_lens_perturb(pc, &wk->r, xs, m, w, yp)
-                                    : veach_caustic_perturb(pc, &wk->r, xs, m, w, &p_old, &p_new, yp));
+        bool made = m >= 0 && (move == FUSED_LENS      ? veach_lens_perturb(pc, &wk->r, xs, m, w, yp)
+                               : move == FUSED_CAUSTIC ? veach_caustic_perturb(pc, &wk->r, xs, m, w, &p_old, &p_new, yp)
+                                                       : veach_multichain_perturb(pc, &wk->r, xs, m, w, &p_new, yp));
         /* the one edge no ray of the perturbation followed, x'_{j-1} x'_j: occluded, y has no
          * contribution, and neither inversion nor trace is needed to refuse it */
         bool seen = made && visible(pc->sc, yp[j - 1], yp[j]);
@@ -126,12 +135,16 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
             double rx = c->x->ratios[j], ry = wk->spare->ratios[j];
             pr.failed = !(rx > 0 && ry > 0 && p_old > 0);
             pr.tr = pr.failed ? 0 : rx / ry * p_new / p_old;
-            if (o->fused_broken_t && wk->prop.n > 0 && wk->prop.s[0].px > xs->px)
+            if (o->lens_broken_t && wk->prop.n > 0 && wk->prop.s[0].px > xs->px)
                 pr.tr /= 1.1; /* tests only: a wrong T(x -> y) */
         }
     }
     if (pr.failed) pr.f = 0;
-    mutation_decide(wk, c, lens ? PROPOSAL_FUSED_LENS : PROPOSAL_FUSED_CAUSTIC, &pr, t_start);
+    mutation_decide(wk, c,
+                    move == FUSED_LENS      ? PROPOSAL_FUSED_LENS
+                    : move == FUSED_CAUSTIC ? PROPOSAL_FUSED_CAUSTIC
+                                            : PROPOSAL_FUSED_MULTICHAIN,
+                    &pr, t_start);
 }
 
 const struct mutation mutation_fused = {.name = "fused", .applies = applies, .step = step};

@@ -49,9 +49,9 @@ static inline bool mlt_multiplexed(enum mlt_method m) { return m == MLT_MMLT || 
  * MCTLS from it on. */
 enum large_step { LARGE_MMLT, LARGE_MCTLS, LARGE_HYBRID };
 
-/* The fused perturbations a multiplexed chain makes (mcmc/fused.c): none, Veach's lens or caustic
- * perturbation, or either (half each). */
-enum fused_moves { FUSED_NONE, FUSED_LENS, FUSED_CAUSTIC, FUSED_BOTH };
+/* The fused perturbations a multiplexed chain makes (mcmc/fused.c), a set of Veach's perturbations:
+ * each fused step makes one of those in it, with equal probabilities. */
+enum fused_moves { FUSED_NONE = 0, FUSED_LENS = 1, FUSED_CAUSTIC = 2, FUSED_MULTICHAIN = 4, FUSED_ALL = 7 };
 
 struct mlt_opts {
     enum mlt_method method;
@@ -112,16 +112,19 @@ struct mlt_opts {
     bool ctrl_unit_ratio; /* tests only: T(v->u) / T(u->v) replaced by 1 (a broken chain) */
     bool veach_broken_t;  /* tests only: T(x -> y) of a bidirectional mutation that lengthens x, x1.1 */
     /* Veach's MLT: the probability that an iteration is a lens perturbation (else a bidirectional
-     * mutation); 0 in a zero-initialised struct (mlt_opts_defaults gives 0.5) */
+     * mutation); 0 in a zero-initialised struct (mlt_opts_defaults gives 0.4) */
     double veach_lens;
-    double veach_caustic; /* the same for the caustic perturbation (mlt_opts_defaults: 0.2) */
+    double veach_caustic;      /* the same for the caustic perturbation (mlt_opts_defaults: 0.2) */
+    double veach_lens_subpath; /* ... for the lens subpath mutation (mlt_opts_defaults: 0.1) */
+    double veach_multichain;   /* ... and for the multi-chain perturbation (mlt_opts_defaults: 0.1) */
     /* Fused perturbations (Otsu et al. 2017; mcmc/fused.c, docs/fused.md): on mmlt and pitp, a share
      * fused_rate of the small steps is a path-space perturbation of the chain's path mapped back
      * into primary sample space by the inverse of the chain's technique. FUSED_NONE in a
      * zero-initialised struct; mlt_opts_defaults gives fused_rate 0.5 */
     enum fused_moves fused;
     double fused_rate;
-    bool fused_broken_t; /* tests only: T(x -> y) of a fused move toward larger raster x, x1.1 */
+    bool lens_broken_t; /* tests only: T(x -> y) of a lens perturbation (Veach's or fused) toward larger raster x, x1.1
+                         */
     /* Checkpoints (checkpoint.h): periodic, at an interruption, and resuming. With a mutation
      * budget a resumed run ends bit-identical to an uninterrupted one; with a time budget it runs
      * for what the checkpointed run had left. The seed pass is not checkpointed (a checkpoint

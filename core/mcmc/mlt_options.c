@@ -78,8 +78,10 @@ static bool mctls_conflict(const struct mlt_opts *o, char *err, size_t errlen)
 
 static bool veach_mix_conflict(const struct mlt_opts *o, char *err, size_t errlen)
 {
-    if (o->veach_lens + o->veach_caustic <= 1) return false;
-    snprintf(err, errlen, "--mlt-lens and --mlt-caustic: their sum is the perturbations' share, at most 1");
+    if (o->veach_lens + o->veach_caustic + o->veach_lens_subpath + o->veach_multichain <= 1) return false;
+    snprintf(err, errlen,
+             "--mlt-lens, --mlt-caustic, --mlt-lens-subpath and --mlt-multichain: their sum is the shares of the "
+             "mutations other than the bidirectional one, at most 1");
     return true;
 }
 
@@ -122,7 +124,16 @@ static const char *const seed_estimators[] = {"pool", "bdpt"};
 static const char *const mis_names[] = {"balance", "maximum"};
 static const char *const normalisations[] = {"seed", "progressive"};
 static const char *const chain_layouts[] = {"per_length", "one"};
-static const char *const fused_moves[] = {"none", "lens", "caustic", "lens+caustic", NULL};
+/* indexed by the set's bits (enum fused_moves) */
+static const char *const fused_moves[] = {"none",
+                                          "lens",
+                                          "caustic",
+                                          "lens+caustic",
+                                          "multichain",
+                                          "lens+multichain",
+                                          "caustic+multichain",
+                                          "lens+caustic+multichain",
+                                          NULL};
 
 const struct mlt_option mlt_options[] = {
     /* bin/render's, in its --help order */
@@ -214,7 +225,7 @@ const struct mlt_option mlt_options[] = {
      .help = "MCTLS re-evaluates the current state's trials every step (mlt.h)"},
     {"ctrl_unit_ratio", NULL, MLT_OPTION_FLAG, FIELD(ctrl_unit_ratio), .methods = APPLIES_MULTIPLEXED, .numbers = true,
      .help = "tests only: a broken controlled step"},
-    {"veach_lens", "--mlt-lens", MLT_OPTION_DOUBLE, FIELD(veach_lens), .def = "0.5", .lo = 0, .hi = 1, .arg = "P",
+    {"veach_lens", "--mlt-lens", MLT_OPTION_DOUBLE, FIELD(veach_lens), .def = "0.3", .lo = 0, .hi = 1, .arg = "P",
      .methods = APPLIES_VEACH, .numbers = true,
      .help = "mlt: probability that an iteration is Veach's lens perturbation (else the bidirectional mutation; the "
              "harness's default)",
@@ -223,22 +234,36 @@ const struct mlt_option mlt_options[] = {
     {"veach_caustic", "--mlt-caustic", MLT_OPTION_DOUBLE, FIELD(veach_caustic), .def = "0.2", .lo = 0, .hi = 1,
      .arg = "P", .methods = APPLIES_VEACH, .numbers = true,
      .help = "mlt: probability that an iteration is Veach's caustic perturbation (the harness's default; with "
-             "--mlt-lens at most 1, the rest bidirectional mutations)",
+             "--mlt-lens and --mlt-lens-subpath at most 1, the rest bidirectional mutations)",
      .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 8, .csv_key = "mlt_caustic", .csv_own = true,
+     .conflict = veach_mix_conflict},
+    {"veach_lens_subpath", "--mlt-lens-subpath", MLT_OPTION_DOUBLE, FIELD(veach_lens_subpath), .def = "0.1", .lo = 0,
+     .hi = 1, .arg = "P", .methods = APPLIES_VEACH, .numbers = true,
+     .help = "mlt: probability that an iteration is Veach's lens subpath mutation (a new camera subpath through a "
+             "uniform raster position; the harness's default)",
+     .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 11, .csv_key = "mlt_lens_subpath", .csv_own = true,
+     .conflict = veach_mix_conflict},
+    {"veach_multichain", "--mlt-multichain", MLT_OPTION_DOUBLE, FIELD(veach_multichain), .def = "0.1", .lo = 0, .hi = 1,
+     .arg = "P", .methods = APPLIES_VEACH, .numbers = true,
+     .help = "mlt: probability that an iteration is Veach's multi-chain perturbation (the lens perturbation through "
+             "specular chains between non-delta vertices, each turned as the caustic one; the harness's default)",
+     .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 12, .csv_key = "mlt_multichain", .csv_own = true,
      .conflict = veach_mix_conflict},
     {"fused", "--fused", MLT_OPTION_CHOICE, FIELD(fused), .choices = fused_moves, .arg = "LIST",
      .methods = APPLIES_MULTIPLEXED, .numbers = true,
-     .help = "mmlt, pitp: fused perturbations (Otsu et al. 2017): none, lens, caustic or lens+caustic (half each): "
-             "Veach's perturbation of the chain's path, mapped back to primary sample space by the inverse of its "
-             "technique; PREFIX.csv rows fused-lens, fused-caustic",
+     .help =
+         "mmlt, pitp: fused perturbations (Otsu et al. 2017): none, or a +-joined set of lens, caustic and "
+         "multichain in that order (e.g. lens+caustic+multichain; equal shares): Veach's perturbation of the chain's "
+         "path, mapped back to primary sample space by the inverse of its technique; PREFIX.csv rows fused-lens, "
+         "fused-caustic, fused-multichain",
      .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 9, .csv_key = "fused", .csv_own = true, .csv_if = fused_on},
     {"fused_rate", "--fused-rate", MLT_OPTION_DOUBLE, FIELD(fused_rate), .def = "0.5", .lo = 0, .hi = 1, .arg = "P",
      .methods = APPLIES_MULTIPLEXED, .numbers = true,
      .help = "mmlt, pitp with --fused: the share of small steps that are a fused perturbation (the harness's "
              "default, half: Otsu et al. state no value)",
      .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 10, .csv_key = "fused_rate", .csv_own = true, .csv_if = fused_on},
-    {"fused_broken_t", NULL, MLT_OPTION_FLAG, FIELD(fused_broken_t), .methods = APPLIES_MULTIPLEXED, .numbers = true,
-     .help = "tests only: a broken fused perturbation"},
+    {"lens_broken_t", NULL, MLT_OPTION_FLAG, FIELD(lens_broken_t), .methods = APPLIES_MULTIPLEXED | APPLIES_VEACH,
+     .numbers = true, .help = "tests only: a broken lens perturbation"},
     {"veach_broken_t", NULL, MLT_OPTION_FLAG, FIELD(veach_broken_t), .methods = APPLIES_VEACH, .numbers = true,
      .help = "tests only: a broken bidirectional mutation"},
     {"time_proposals", NULL, MLT_OPTION_FLAG, FIELD(time_proposals), .methods = APPLIES_CHAINS,

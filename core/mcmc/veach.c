@@ -159,6 +159,11 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
         veach_lens_step(wk, c, x, t_start);
     else if (u < wk->opts->veach_lens + wk->opts->veach_caustic)
         veach_caustic_step(wk, c, x, t_start);
+    else if (u < wk->opts->veach_lens + wk->opts->veach_caustic + wk->opts->veach_lens_subpath)
+        veach_lens_subpath_step(wk, c, x, t_start);
+    else if (u <
+             wk->opts->veach_lens + wk->opts->veach_caustic + wk->opts->veach_lens_subpath + wk->opts->veach_multichain)
+        veach_multichain_step(wk, c, x, t_start);
     else
         veach_bidir_step(wk, c, x, t_start);
 }

@@ -31,9 +31,12 @@ struct veach_scratch {
 /* The mutations, each one iteration of chain c in state x (veach_bidir.c, veach_lens.c,
  * veach_caustic.c); the entry in the registry (veach.c) picks one per iteration: the lens
  * perturbation with probability mlt_opts.veach_lens, the caustic perturbation with
- * mlt_opts.veach_caustic, else the bidirectional mutation. */
+ * mlt_opts.veach_caustic, the lens subpath mutation with mlt_opts.veach_lens_subpath, the
+ * multi-chain perturbation with mlt_opts.veach_multichain, else the bidirectional mutation. */
 void veach_bidir_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start);
 void veach_lens_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start);
+void veach_lens_subpath_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start);
+void veach_multichain_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start);
 void veach_caustic_step(struct worker *wk, struct chain *c, struct veach_state *x, double t_start);
 /* lum F_j(x): x's contribution over the density of split j (j emitter vertices), from the state's
  * own connection when it is at j, else from x's forms connected at j (into w's x scratch); 0 when
@@ -53,6 +56,21 @@ bool veach_lens_perturb(const struct path_ctx *pc, rng *r, const struct veach_st
                         const struct vertex **yp);
 bool veach_caustic_perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m,
                            struct veach_scratch *w, double *p_old, double *p_new, const struct vertex **yp);
+/* Veach's multi-chain perturbation (veach_multichain.c): x_m as veach_multichain_vertex gives it,
+ * the perturbed path into yp (its camera subpath w->zs, k + 1 - m vertices) and *ratio, the product
+ * over the perturbed intermediate vertices of their densities of sampling the new direction over
+ * the old one (the caustic perturbation's p(omega') / p(omega), once per chain). */
+int veach_multichain_vertex(const struct veach_state *x);
+bool veach_multichain_perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m,
+                              struct veach_scratch *w, double *ratio, const struct vertex **yp);
+/* The pieces the perturbations share: the lens perturbation's raster offset (veach_lens.c), x's
+ * camera subpath traced anew through (px, py) to x'_m, as many delta vertices between, into yp
+ * (the camera subpath in w->zs); the caustic perturbation's turn of a direction (density in
+ * proportion to 1/theta on [1e-4, 0.1] rad, uniform azimuth: symmetric; veach_caustic.c). */
+void veach_lens_offset(const struct camera *cam, rng *r, const struct veach_state *x, double *px, double *py);
+bool veach_lens_trace(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m, struct veach_scratch *w,
+                      double px, double py, const struct vertex **yp);
+vec3 veach_turn(vec3 w, rng *r);
 /* A proposal's end (the proposal in wk->veach->y when made): its expected-value splats, the draw
  * against acceptance a, the move, and its statistics row of `kind` (failed: refused). */
 void veach_decide(struct worker *wk, struct chain *c, struct veach_state *x, int kind, bool made, bool refused,

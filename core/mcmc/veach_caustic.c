@@ -25,9 +25,10 @@ int veach_caustic_vertex(const struct veach_state *x)
     return m >= 0 && x->x[m].kind != VK_ENV ? m : -1;
 }
 
-/* omega turned by theta at azimuth phi */
-static vec3 turn(vec3 w, double theta, double phi)
+vec3 veach_turn(vec3 w, rng *r)
 {
+    const double t1 = 1e-4, t2 = 0.1; /* radians: the harness's choice, Veach gives the shape */
+    double theta = t1 * pow(t2 / t1, rng_uniform(r)), phi = 2 * M_PI * rng_uniform(r);
     frame f = frame_from_normal(w);
     return vnorm(frame_to_world(&f, v3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta))));
 }
@@ -44,9 +45,7 @@ bool veach_caustic_perturb(const struct path_ctx *pc, rng *r, const struct veach
     vec3 omega = edge_dir(&y[m], xp[m + 1], &d2);
     rgb beta;
     if (!path_leave(pc, y, m + 1, omega, TRANSPORT_IMPORTANCE, &beta, p_old)) return false;
-    const double t1 = 1e-4, t2 = 0.1; /* radians: the harness's choice, Veach gives the shape */
-    double theta = t1 * pow(t2 / t1, rng_uniform(r)), phi = 2 * M_PI * rng_uniform(r);
-    vec3 d = turn(omega, theta, phi);
+    vec3 d = veach_turn(omega, r);
     if (!path_leave(pc, y, m + 1, d, TRANSPORT_IMPORTANCE, &beta, p_new) || !walk_hit(pc->sc, &y[m], d, &y[m + 1]))
         return false;
     y[m + 1].beta = beta;

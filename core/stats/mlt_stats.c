@@ -5,8 +5,9 @@
 #include <math.h>
 #include <string.h>
 
-static const char *kind_names[PROPOSAL_KINDS] = {"small", "large",   "mctls",      "pitp",         "bidir",
-                                                 "lens",  "caustic", "fused-lens", "fused-caustic"};
+static const char *kind_names[PROPOSAL_KINDS] = {"small",         "large",        "mctls",      "pitp",
+                                                 "bidir",         "lens",         "caustic",    "fused-lens",
+                                                 "fused-caustic", "lens-subpath", "multichain", "fused-multichain"};
 static int kinds = PROPOSAL_BUILTIN;
 const char *proposal_name(enum proposal_kind k) { return kind_names[k]; }
 

@@ -18,7 +18,9 @@
  * (mcmc/veach_lens.c, veach_caustic.c); failed: a path the perturbation does not move. The
  * PROPOSAL_FUSED_ kinds record the same perturbations fused into MMLT and PITP (mcmc/fused.c) by
  * the chain's length; failed: refused as Veach's are, or the perturbed path not invertible by the
- * chain's technique (an inversion or its retrace failed). */
+ * chain's technique (an inversion or its retrace failed). PROPOSAL_LENS_SUBPATH records Veach's lens
+ * subpath mutation (veach_lens.c), failed as the lens perturbation's, and PROPOSAL_MULTICHAIN its
+ * multi-chain perturbation (veach_multichain.c). */
 enum proposal_kind {
     PROPOSAL_SMALL,
     PROPOSAL_LARGE,
@@ -29,6 +31,9 @@ enum proposal_kind {
     PROPOSAL_CAUSTIC,
     PROPOSAL_FUSED_LENS,
     PROPOSAL_FUSED_CAUSTIC,
+    PROPOSAL_LENS_SUBPATH,
+    PROPOSAL_MULTICHAIN,
+    PROPOSAL_FUSED_MULTICHAIN,
     PROPOSAL_BUILTIN
 };
 /* Kinds PROPOSAL_BUILTIN.. are the mutations registered at run time (mcmc/mutation.h); a kind

@@ -227,9 +227,9 @@ $(eval $(call CH6_STUDY,mmlt-fig9,mmlt-fig9,ajar-diffuse))
 # ---- Veach's perturbations fused into MMLT and PITP through the inverse (Otsu et al. 2017; thesis §7.1) ----
 # mmlt-fig4's setting (equal CPU time, paths of 1 to 8 segments) on a door scene (ajar: diffuse and
 # glossy paths through a gap) and a caustic one (glass-marble: caustics on diffuse walls): MMLT, PITP,
-# Veach's MLT, and MMLT and PITP with both fused perturbations (bin/render --fused lens+caustic,
+# Veach's MLT, and MMLT and PITP with the three fused perturbations (bin/render --fused lens+caustic+multichain,
 # core/mcmc/docs/fused.md). `make fused` runs both; each has its check at 16 mutations per pixel.
-FUSED_METHODS := mmlt=--method mmlt --p-large 0.1,pitp=--method pitp --p-large 0.1,mlt=--method mlt,mmlt-fused=--method mmlt --p-large 0.1 --fused lens+caustic,pitp-fused=--method pitp --p-large 0.1 --fused lens+caustic
+FUSED_METHODS := mmlt=--method mmlt --p-large 0.1,pitp=--method pitp --p-large 0.1,mlt=--method mlt,mmlt-fused=--method mmlt --p-large 0.1 --fused lens+caustic+multichain,pitp-fused=--method pitp --p-large 0.1 --fused lens+caustic+multichain
 fused-door_METHODS := $(FUSED_METHODS)
 fused-door_SOURCE := Otsu et al. 2017; thesis §7.1
 CH6_CHECK_OPTS_fused-door := --study fused-door --methods '$(FUSED_METHODS)' --spp 16 --seeds 8 --min-length 1 \

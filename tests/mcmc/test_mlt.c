@@ -23,15 +23,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-static const char *const method_names[] = {"pssmlt", "mmlt", "pitp", "mlt", "mmlt --fused lens+caustic"};
+static const char *const method_names[] = {"pssmlt", "mmlt", "pitp", "mlt", "mmlt --fused lens+caustic+multichain"};
 
 static void opts(struct mlt_opts *o, const struct scene *sc, enum mlt_method m, long mutations)
 {
     *o = (struct mlt_opts){.method = m,
                            .p_large = 0.1,
                            .pitp_rate = 1,
-                           .veach_lens = 0.4,
+                           .veach_lens = 0.3,
                            .veach_caustic = 0.2,
+                           .veach_lens_subpath = 0.1,
+                           .veach_multichain = 0.1,
                            .mutations = mutations,
                            .seed_paths = 20000,
                            .threads = 2,
@@ -98,10 +100,11 @@ static const struct cornell_cfg {
 /* --fused and --fused-rate from a configuration's name (the fields do not carry them). */
 static void fused_from_name(struct mlt_opts *o, const char *name)
 {
-    o->fused = strstr(name, "--fused lens+caustic") ? FUSED_BOTH
-               : strstr(name, "--fused lens")       ? FUSED_LENS
-               : strstr(name, "--fused caustic")    ? FUSED_CAUSTIC
-                                                    : FUSED_NONE;
+    o->fused = strstr(name, "--fused lens+caustic+multichain") ? FUSED_ALL
+               : strstr(name, "--fused lens+caustic")          ? FUSED_LENS | FUSED_CAUSTIC
+               : strstr(name, "--fused lens")                  ? FUSED_LENS
+               : strstr(name, "--fused caustic")               ? FUSED_CAUSTIC
+                                                               : FUSED_NONE;
     const char *r = strstr(name, "--fused-rate ");
     o->fused_rate = r ? atof(r + 13) : 0.5;
 }
@@ -177,13 +180,13 @@ Test(stat_mlt, broken_bidirectional_mutation_fails_the_agreement)
     struct mlt_ctx c = {sc, {0}};
     opts(&c.o, sc, MLT_VEACH, 0);
     c.o.veach_broken_t = true;
-    c.o.veach_lens = c.o.veach_caustic = 0; /* every iteration the mutation whose T is broken */
+    c.o.veach_lens = c.o.veach_caustic = c.o.veach_lens_subpath = c.o.veach_multichain = 0; /* only the broken one */
     broken_chain_fails(sc, &c, 64, 2000 + 100 * (uint64_t)CORNELL_MLT, "mlt, broken T");
     scene_free(sc);
 }
 
 /* MMLT whose every small step is a fused lens perturbation with a wrong T(x -> y): x1.1 on the moves
- * toward larger raster x (mlt_opts.fused_broken_t), which drifts the chains' mass to the left; at
+ * toward larger raster x (mlt_opts.lens_broken_t), which drifts the chains' mass to the left; at
  * 1024 mutations per pixel and 1 % large steps. */
 Test(stat_mlt, broken_fused_perturbation_fails_the_agreement)
 {
@@ -193,9 +196,24 @@ Test(stat_mlt, broken_fused_perturbation_fails_the_agreement)
     opts(&c.o, sc, MLT_MMLT, 0);
     c.o.fused = FUSED_LENS;
     c.o.fused_rate = 1;
-    c.o.p_large = 0.01;                                  /* fewer fresh starts, so the chains drift further */
-    c.o.fused_broken_t = getenv("FUSED_INTACT") == NULL; /* FUSED_INTACT=1: the same runs unbroken */
+    c.o.p_large = 0.01;                                /* fewer fresh starts, so the chains drift further */
+    c.o.lens_broken_t = getenv("LENS_INTACT") == NULL; /* LENS_INTACT=1: the same runs unbroken */
     broken_chain_fails(sc, &c, 1024, 2000 + 100 * (uint64_t)(CORNELL_CFGS - 2), "mmlt --fused lens, broken T");
+    scene_free(sc);
+}
+
+/* Veach's MLT with the same wrong T(x -> y) on its lens perturbation: 70 % lens perturbations, the
+ * rest bidirectional mutations, 1024 mutations per pixel. */
+Test(stat_mlt, broken_lens_perturbation_fails_the_agreement)
+{
+    struct scene *sc = test_scene("scenes/cornell-box/scene.json");
+    camera_resize(&sc->cam, 64, 64);
+    struct mlt_ctx c = {sc, {0}};
+    opts(&c.o, sc, MLT_VEACH, 0);
+    c.o.veach_lens = 0.7;
+    c.o.veach_caustic = c.o.veach_lens_subpath = c.o.veach_multichain = 0;
+    c.o.lens_broken_t = getenv("LENS_INTACT") == NULL; /* LENS_INTACT=1: the same runs unbroken */
+    broken_chain_fails(sc, &c, 1024, 2000 + 100 * (uint64_t)CORNELL_MLT, "mlt lens, broken T");
     scene_free(sc);
 }
 

@@ -294,7 +294,8 @@ Test(cli, conflicting_mcmc_options_are_refused)
     make_dir();
     const char *bad[] = {"--method mlt --mlt-lens 0.9 --mlt-caustic 0.2",
                          "--method mmlt --large-step mctls --power-heuristic"};
-    const char *want[] = {"render: --mlt-lens and --mlt-caustic: their sum", "render: --power-heuristic: mmlt with"};
+    const char *want[] = {"render: --mlt-lens, --mlt-caustic, --mlt-lens-subpath and --mlt-multichain: their sum",
+                          "render: --power-heuristic: mmlt with"};
     for (int i = 0; i < 2; i++) {
         char args[512];
         snprintf(args, sizeof args, "scenes/cornell-box/scene.json %s --spp 1 --out %s/c", bad[i], dir);
