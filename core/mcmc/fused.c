@@ -57,39 +57,53 @@ void fused_state_of(struct veach_state *st, const struct mmlt_path *x, double px
     st->py = py;
 }
 
-bool fused_retraced(const struct mmlt_path *y, const struct veach_scratch *w, double tol)
+/* Whether the emitter subpath of a path of x's technique, moved from x'_lo on, has a moved vertex:
+ * else its numbers and vertices are kept, and neither formed nor inverted. */
+static bool emitter_moved(const struct mmlt_path *x, int lo) { return x->s > 0 && (lo == 0 || x->s > lo); }
+
+bool fused_retraced(const struct mmlt_path *y, int lo, const struct veach_scratch *w, double tol)
 {
     for (int i = 0; i < y->t; i++)
         if (!vertex_same(&y->cam[i], &w->xz[i], tol)) return false;
-    for (int i = 0; i < y->s; i++)
+    for (int i = 0; emitter_moved(y, lo) && i < y->s; i++)
         if (!vertex_same(&y->emi[i], &w->xs[i], tol)) return false;
     return true;
 }
 
-bool fused_invert(const struct path_ctx *pc, const struct mmlt_path *x, const struct vertex *const *yp,
+bool fused_invert(const struct path_ctx *pc, const struct mmlt_path *x, const struct vertex *const *yp, int lo,
                   struct veach_scratch *w, struct sampler *wr)
 {
-    return path_camera_form(pc, yp, x->k, x->t, w->xz) && (x->s == 0 || path_emitter_form(pc, yp, x->s, w->xs)) &&
-           invert_camera(pc, w->xz, x->t, 0, wr) && (x->s == 0 || invert_emitter(pc, w->xs, x->s, 0, wr));
+    /* the emitter subpath's blocks before the one that reaches x'_lo keep their numbers: its
+     * vertices up to x_{lo-1} are x's, which those numbers reach */
+    int from = lo > 0 ? lo - 1 : 0;
+    bool emitter = emitter_moved(x, lo);
+    return path_camera_form(pc, yp, x->k, x->t, w->xz) && (!emitter || path_emitter_form(pc, yp, x->s, w->xs)) &&
+           invert_camera(pc, w->xz, x->t, 0, wr) && (!emitter || invert_emitter(pc, w->xs, x->s, from, wr));
 }
 
-/* The perturbed path yp inverted into the proposal's numbers (the technique number kept) and
- * traced forward into wk->spare; pr->f its target. False when the technique cannot produce it. */
-static bool invert_and_trace(struct worker *wk, struct chain *c, const struct vertex *const *yp, struct proposal *pr)
+/* The perturbed path yp (moved from x'_lo on) inverted into the proposal's numbers, every other
+ * number kept (the technique number, the blocks before the move), and traced forward into
+ * wk->spare; pr->f its target. False when the technique cannot produce it. */
+static bool invert_and_trace(struct worker *wk, struct chain *c, const struct vertex *const *yp, int lo,
+                             struct proposal *pr)
 {
     const struct path_ctx *pc = &wk->path_ctx;
     struct pss_writer pw = {{&writer_ops, 0, 0, 0}, &c->pss};
-    pss_set(&c->pss, STREAM_TECHNIQUE, 0, pss_current(&c->pss, STREAM_TECHNIQUE, 0));
-    if (!fused_invert(pc, c->x, yp, wk->veach, &pw.base)) return false;
-    int set = c->pss.ntouched;
+    const struct mmlt_path *x = c->x;
+    if (!fused_invert(pc, x, yp, lo, wk->veach, &pw.base)) return false;
+    /* an emitter subpath before the first moved vertex keeps its numbers, so its walk would give
+     * its vertices bit for bit: they are copied, not traced */
+    bool keep = !emitter_moved(x, lo);
     wk->scratch->conn_tried = wk->scratch->conn_nonzero = 0;
-    pr->f = eval_state(wk->opts->method, pc, &c->pss.base, wk->scratch, pr->k, wk->spare, &wk->prop, &pr->tech,
-                       &pr->complete);
+    pr->f = mmlt_eval_state_keep(pc, &c->pss.base, pr->k, keep ? x : NULL, wk->spare, &wk->prop, &wk->scratch->nf);
+    pr->tech = wk->spare->t;
+    pr->complete = wk->spare->complete;
+    wk->scratch->conn_tried += pr->complete;
+    wk->scratch->conn_nonzero += pr->complete && pr->f > 0;
     mutation_take_connections(wk);
-    /* a number the inversion did not write was read (and moved by the lazy small step): not this move */
-    if (c->pss.ntouched != set || pr->tech != c->tech || !pr->complete) return false;
+    if (pr->tech != c->tech || !pr->complete) return false;
     double tol = 1e-4 * maxd(1.0, vlen(vsub(pc->sc->bbox_max, pc->sc->bbox_min)));
-    return fused_retraced(wk->spare, wk->veach, tol);
+    return fused_retraced(wk->spare, lo, wk->veach, tol);
 }
 
 static bool applies(const struct worker *wk, const struct chain *c, bool large)
@@ -115,7 +129,7 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
     struct veach_scratch *w = wk->veach;
     struct veach_state *xs = &w->xm;
     struct proposal pr = {.f = 0, .tr = 1, .k = c->k, .tech = c->tech, .complete = false, .failed = true};
-    pss_begin(&c->pss, false);
+    pss_begin_kept(&c->pss);
     if (c->f > 0 && c->cur.n > 0) {
         fused_state_of(xs, c->x, c->cur.s[0].px, c->cur.s[0].py);
         int m = move == FUSED_LENS      ? veach_lens_vertex(xs)
@@ -131,7 +145,8 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
          * contribution, and neither inversion nor trace is needed to refuse it */
         bool seen = made && visible(pc->sc, yp[j - 1], yp[j]);
         if (made && !seen) pr.failed = false;
-        if (seen && invert_and_trace(wk, c, yp, &pr)) {
+        /* the first moved vertex: x'_m, or after the caustic perturbation's x_m x'_{m+1} */
+        if (seen && invert_and_trace(wk, c, yp, move == FUSED_CAUSTIC ? m + 1 : m, &pr)) {
             double rx = c->x->ratios[j], ry = wk->spare->ratios[j];
             pr.failed = !(rx > 0 && ry > 0 && p_old > 0);
             pr.tr = pr.failed ? 0 : rx / ry * p_new / p_old;

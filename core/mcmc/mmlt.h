@@ -47,5 +47,11 @@ static inline rgb mmlt_contribution(const struct connection *c, int k) { return 
  * none). */
 double mmlt_eval_state(const struct path_ctx *pc, struct sampler *s, int k, struct mmlt_path *x, struct splat_list *out,
                        struct nonfinite *nf);
+/* The same with keep's emitter subpath copied instead of walked when the state's technique has as
+ * many emitter vertices: a proposal that keeps the numbers that walk reads (a fused perturbation
+ * that moves only camera-side vertices, core/mcmc/fused.c), whose walk would give those vertices
+ * bit for bit. keep NULL: mmlt_eval_state. */
+double mmlt_eval_state_keep(const struct path_ctx *pc, struct sampler *s, int k, const struct mmlt_path *keep,
+                            struct mmlt_path *x, struct splat_list *out, struct nonfinite *nf);
 
 #endif

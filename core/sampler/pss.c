@@ -89,6 +89,15 @@ void pss_begin(struct pss_sampler *p, bool large)
 {
     p->iteration++;
     p->large = large;
+    p->kept = false;
+    p->ntouched = 0;
+}
+
+void pss_begin_kept(struct pss_sampler *p)
+{
+    p->stamp++;
+    p->large = false;
+    p->kept = true;
     p->ntouched = 0;
 }
 
@@ -97,13 +106,16 @@ static void touch(struct pss_sampler *p, int stream, int idx)
     struct pss_dim *d = &p->d[stream][idx];
     d->saved = d->value;
     d->saved_modified = d->modified;
+    d->stamp = p->stamp;
     p->touched[p->ntouched++] = (uint16_t)(stream * STREAM_DIMS + idx);
 }
 
 void pss_set(struct pss_sampler *p, int stream, int index, double u)
 {
     struct pss_dim *d = &p->d[stream][index];
-    if (d->modified != p->iteration) touch(p, stream, index);
+    /* saved once per proposal: in a kept one, a number the state read last has modified ==
+     * iteration already */
+    if (p->kept ? d->stamp != p->stamp : d->modified != p->iteration) touch(p, stream, index);
     d->value = u;
     d->modified = p->iteration;
 }
@@ -147,7 +159,7 @@ void pss_accept(struct pss_sampler *p)
 {
     /* Only an accepted large step makes the numbers it did not read stale (fresh when next read). */
     if (p->large) p->last_large = p->iteration;
-    p->large = false;
+    p->large = p->kept = false;
     p->ntouched = 0;
 }
 
@@ -162,8 +174,9 @@ void pss_reject(struct pss_sampler *p)
     p->ntouched = 0;
     p->large = false;
     /* The rejected proposal did not happen: the next one reuses its iteration number, so lazy
-     * catch-up counts only accepted iterations. */
-    p->iteration--;
+     * catch-up counts only accepted iterations (a kept proposal took none). */
+    if (!p->kept) p->iteration--;
+    p->kept = false;
 }
 
 double pss_current(struct pss_sampler *p, int stream, int index)

@@ -32,6 +32,7 @@ void pss_opts_default(struct pss_opts *o, int width, int height);
 struct pss_dim {
     double value, saved;
     uint64_t modified, saved_modified;
+    uint64_t stamp; /* the kept proposal that last saved it (pss_begin_kept) */
 };
 
 struct pss_sampler {
@@ -40,6 +41,8 @@ struct pss_sampler {
     rng r;
     uint64_t iteration, last_large;
     bool large;
+    bool kept;               /* the proposal keeps the numbers it does not set (pss_begin_kept) */
+    uint64_t stamp;          /* kept proposals begun */
     double scale_x, scale_y; /* image-dim step factors */
     /* Kelemen's kernel: |step| = s2 (s1/s2)^xi. xi's top 8 bits index kelemen[] = s2 (s1/s2)^(j/256),
      * its next 8 kelemen_fine[] = (s1/s2)^((i + 2^-16) / 2^16) (the offset centres m's cells); its
@@ -53,6 +56,12 @@ struct pss_sampler {
 /* The state starts as if after a large step: every number fresh when first read. */
 void pss_init(struct pss_sampler *p, const struct pss_opts *o, uint64_t seed, uint64_t stream);
 void pss_begin(struct pss_sampler *p, bool large);
+/* A proposal that sets its numbers itself (pss_set) and keeps every other number: not an iteration
+ * (as pss_replace's changes are not), so a number it reads that the state read last is its value,
+ * and one it does not read catches up later as if it had not happened. A fused perturbation's
+ * numbers from an inversion (core/mcmc/fused.c), which may keep a whole subpath's numbers without
+ * reading them. Ends with pss_accept or pss_reject. */
+void pss_begin_kept(struct pss_sampler *p);
 void pss_accept(struct pss_sampler *p);
 void pss_reject(struct pss_sampler *p);
 /* Sets a number as part of the current proposal (restored by pss_reject), e.g. the technique

@@ -21,18 +21,19 @@ struct counts {
     long made[3], inverted[3], retraced[3]; /* [0] lens, [1] caustic, [2] multi-chain */
 };
 
-/* 0: the inversion failed; 1: inverted, the walks went elsewhere; 2: inverted and retraced. */
-static int invert_and_replay(const struct path_ctx *pc, const struct mmlt_path *x, const struct vertex *const *yp,
-                             struct veach_scratch *w, struct sampler_writer *wr, struct mmlt_path *y, double tol)
+/* yp (moved from x'_lo on; 0: inverted whole) inverted over the state's numbers (pss) and replayed.
+ * 0: the inversion failed; 1: inverted, the walks went elsewhere; 2: inverted and retraced. */
+static int invert_and_replay(const struct path_ctx *pc, const struct mmlt_path *x, const struct pss_sampler *pss,
+                             const struct vertex *const *yp, int lo, struct veach_scratch *w, struct sampler_writer *wr,
+                             struct mmlt_path *y, double tol)
 {
-    sampler_writer_clear(wr);
-    if (!fused_invert(pc, x, yp, w, &wr->base)) return 0;
-    wr->u[STREAM_TECHNIQUE][0] = mmlt_technique_number(x->t, x->k, 0.5);
-    struct sampler_replay rp; /* aborts on a number the inversion did not write */
+    pss_export(pss, wr->u); /* the numbers the inversion keeps, the technique number among them */
+    if (!fused_invert(pc, x, yp, lo, w, &wr->base)) return 0;
+    struct sampler_replay rp; /* aborts on a number neither the state nor the inversion has */
     sampler_replay_init(&rp, (const double(*)[STREAM_DIMS])wr->u);
     struct connection c;
     mmlt_eval(pc, &rp.base, x->k, y, &c);
-    return y->complete && y->t == x->t && fused_retraced(y, w, tol) ? 2 : 1;
+    return y->complete && y->t == x->t && fused_retraced(y, lo, w, tol) ? 2 : 1;
 }
 
 /* MMLT states with a contribution, lengths 2..7 from fresh numbers, until `want` of them; each
@@ -63,7 +64,7 @@ static void resample_on_scene(const char *path, long want, struct counts *r)
         const struct vertex *yp[MAX_SUBPATH_VERTS];
         for (int j = 0; j <= k; j++)
             yp[j] = &w.xm.x[j]; /* the state's own path, unperturbed */
-        r->own_ok += invert_and_replay(&pc, &x, yp, &w, &wr, &y, tol) == 2;
+        r->own_ok += invert_and_replay(&pc, &x, &pss, yp, 0, &w, &wr, &y, tol) == 2;
         for (int p = 0; p < 3; p++) {
             int m = p == 0   ? veach_lens_vertex(&w.xm)
                     : p == 1 ? veach_caustic_vertex(&w.xm)
@@ -79,7 +80,7 @@ static void resample_on_scene(const char *path, long want, struct counts *r)
                        : path_emitter_form(&pc, yp, m, w.ys) && veach_state_set(&w.y, &pc, w.ys, m, w.zs, k + 1 - m);
             if (!lit) continue;
             r->made[p]++;
-            int res = invert_and_replay(&pc, &x, yp, &w, &wr, &y, tol);
+            int res = invert_and_replay(&pc, &x, &pss, yp, p == 1 ? m + 1 : m, &w, &wr, &y, tol);
             r->inverted[p] += res > 0;
             r->retraced[p] += res == 2;
         }
