@@ -234,7 +234,7 @@ const struct mlt_option mlt_options[] = {
     {"veach_caustic", "--mlt-caustic", MLT_OPTION_DOUBLE, FIELD(veach_caustic), .def = "0.2", .lo = 0, .hi = 1,
      .arg = "P", .methods = APPLIES_VEACH, .numbers = true,
      .help = "mlt: probability that an iteration is Veach's caustic perturbation (the harness's default; with "
-             "--mlt-lens and --mlt-lens-subpath at most 1, the rest bidirectional mutations)",
+             "--mlt-lens, --mlt-lens-subpath and --mlt-multichain at most 1, the rest bidirectional mutations)",
      .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 8, .csv_key = "mlt_caustic", .csv_own = true,
      .conflict = veach_mix_conflict},
     {"veach_lens_subpath", "--mlt-lens-subpath", MLT_OPTION_DOUBLE, FIELD(veach_lens_subpath), .def = "0.1", .lo = 0,

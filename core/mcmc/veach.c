@@ -154,18 +154,22 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
 {
     (void)large;
     struct veach_state *x = mutation_state(c, &mutation_veach);
-    double u = rng_uniform(&wk->r);
-    if (u < wk->opts->veach_lens)
-        veach_lens_step(wk, c, x, t_start);
-    else if (u < wk->opts->veach_lens + wk->opts->veach_caustic)
-        veach_caustic_step(wk, c, x, t_start);
-    else if (u < wk->opts->veach_lens + wk->opts->veach_caustic + wk->opts->veach_lens_subpath)
-        veach_lens_subpath_step(wk, c, x, t_start);
-    else if (u <
-             wk->opts->veach_lens + wk->opts->veach_caustic + wk->opts->veach_lens_subpath + wk->opts->veach_multichain)
-        veach_multichain_step(wk, c, x, t_start);
-    else
-        veach_bidir_step(wk, c, x, t_start);
+    const struct mlt_opts *o = wk->opts;
+    /* the mixture: each mutation its option's share of the iterations, the rest bidirectional */
+    const struct {
+        double share;
+        void (*step)(struct worker *, struct chain *, struct veach_state *, double);
+    } mix[] = {{o->veach_lens, veach_lens_step},
+               {o->veach_caustic, veach_caustic_step},
+               {o->veach_lens_subpath, veach_lens_subpath_step},
+               {o->veach_multichain, veach_multichain_step}};
+    double u = rng_uniform(&wk->r), below = 0;
+    for (size_t i = 0; i < sizeof mix / sizeof mix[0]; i++)
+        if (u < (below += mix[i].share)) {
+            mix[i].step(wk, c, x, t_start);
+            return;
+        }
+    veach_bidir_step(wk, c, x, t_start);
 }
 
 const struct mutation mutation_veach = {.name = "veach",

@@ -95,7 +95,8 @@ static const struct cornell_cfg {
     {"pitp --fused lens+caustic --fused-rate 0.8", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false,
      false, false}};
 #define CORNELL_CFGS ((int)(sizeof cornell_cfg / sizeof *cornell_cfg))
-#define CORNELL_MLT 15 /* Veach's MLT's configuration: the broken-mutation test's seeds */
+#define CORNELL_MLT 15        /* Veach's MLT's configuration: the broken-mutation tests' seeds */
+#define CORNELL_FUSED_LENS 16 /* mmlt --fused lens: the broken fused perturbation test's seeds */
 
 /* --fused and --fused-rate from a configuration's name (the fields do not carry them). */
 static void fused_from_name(struct mlt_opts *o, const char *name)
@@ -198,7 +199,7 @@ Test(stat_mlt, broken_fused_perturbation_fails_the_agreement)
     c.o.fused_rate = 1;
     c.o.p_large = 0.01;                                /* fewer fresh starts, so the chains drift further */
     c.o.lens_broken_t = getenv("LENS_INTACT") == NULL; /* LENS_INTACT=1: the same runs unbroken */
-    broken_chain_fails(sc, &c, 1024, 2000 + 100 * (uint64_t)(CORNELL_CFGS - 2), "mmlt --fused lens, broken T");
+    broken_chain_fails(sc, &c, 1024, 2000 + 100 * (uint64_t)CORNELL_FUSED_LENS, "mmlt --fused lens, broken T");
     scene_free(sc);
 }
 
