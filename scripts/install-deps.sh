@@ -6,7 +6,8 @@ set -euo pipefail
 pkgs=(
   build-essential pkg-config
   libembree-dev            # ray casting (Embree 3)
-  libopenimageio-dev openimageio-tools   # EXR/PNG I/O, image comparison tools
+  libopenimageio-dev openimageio-tools   # reading images (textures, references), image comparison tools
+  libopenexr-dev libpng-dev              # writing EXR and PNG (core/io/image_encode.h)
   libgsl-dev               # statistics: chi-square, normal quantiles
   libcjson-dev             # scene JSON
   libcriterion-dev         # test framework

@@ -1,6 +1,7 @@
 /* Framebuffers, splatting and atomic EXR/PNG output. */
 #include "io/image.h"
 #include "base/util.h"
+#include "io/image_encode.h"
 #include "io/oiio.h"
 #include "io/texels.h"
 #include <stdio.h>
@@ -37,15 +38,23 @@ rgb img_get(const struct image *im, int x, int y)
     return v3(p[0], p[1], p[2]);
 }
 
+typedef bool (*encode_fn)(int w, int h, const float *px, unsigned char **bytes, size_t *len, char *err, size_t errlen);
+
 struct write_job {
     int w, h;
     float *px;
+    encode_fn encode;
 };
 
-static bool write_oiio(const char *tmp, void *ctx, char *err, size_t errlen)
+static bool write_encoded(const char *tmp, void *ctx, char *err, size_t errlen)
 {
     struct write_job *j = ctx;
-    return oiio_write(tmp, j->w, j->h, 3, j->px, err, errlen);
+    unsigned char *bytes = NULL;
+    size_t len = 0;
+    bool ok = j->encode(j->w, j->h, j->px, &bytes, &len, err, errlen) &&
+              write_chunks(tmp, &(struct chunk){bytes, len}, 1, err, errlen);
+    free(bytes);
+    return ok;
 }
 
 static double srgb(double x)
@@ -57,12 +66,12 @@ static double srgb(double x)
 static bool write_scaled(const struct image *im, double scale, bool tonemap, const char *path, char *err, size_t errlen)
 {
     size_t n = (size_t)im->w * im->h * 3;
-    struct write_job j = {im->w, im->h, xmalloc(n * sizeof(float))};
+    struct write_job j = {im->w, im->h, xmalloc(n * sizeof(float)), tonemap ? png_encode_rgb8 : exr_encode_rgb};
     for (size_t i = 0; i < n; i++) {
         double v = im->px[i] * scale;
         j.px[i] = (float)(tonemap ? srgb(v) : v);
     }
-    bool ok = atomic_write(path, write_oiio, &j, err, errlen);
+    bool ok = atomic_write(path, write_encoded, &j, err, errlen);
     free(j.px);
     return ok;
 }

@@ -1,7 +1,7 @@
 // OpenImageIO has no C API; this file wraps the two calls the harness needs. It is built as its own
 // shared object (oiio.so next to each executable), which core/io/oiio_load.c opens on the first image
-// read or write: Debian's OpenImageIO pulls in about 260 libraries, 120 MB resident and 0.2 s of
-// dynamic linking, which runs that only compute statistics should not pay.
+// read (or oiio_write, which only tests call): Debian's OpenImageIO pulls in about 260 libraries, 120 MB resident and
+// 0.2 s of dynamic linking, which runs that only compute statistics should not pay.
 #include "io/oiio.h"
 #include "io/texels.h"
 

@@ -3,7 +3,8 @@
  * oiio_write and oiio_read_channels (core/io/oiio_load.c) open the module oiio.so, which holds
  * oiio.cpp, on first use and forward to its oiio_module_* functions. The module is looked for in
  * the directory of the running executable, where the build puts a copy; if it cannot be opened the
- * call fails with an error naming the file. */
+ * call fails with an error naming the file. The harness's own EXR and PNG outputs do not come here
+ * (io/image_encode.h); oiio_write serves the tests, which make textures in other formats. */
 #ifndef OIIO_H
 #define OIIO_H
 

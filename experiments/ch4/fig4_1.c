@@ -141,7 +141,7 @@ static void parse(struct fig41 *t, int argc, char **argv)
                argc, argv);
     if (t->maxlag >= t->res[0] || t->maxlag >= t->res[1])
         opts_fail(prog, "--max-lag %d: must be below the image's width and height", t->maxlag);
-    opts_require_image_output(prog);
+    opts_require_image_input(prog);
     snprintf(t->defref, sizeof t->defref, "results/reference/wall-pt-%dx%d-%d.exr", t->res[0], t->res[1], t->refspp);
     if (!t->refpath) t->refpath = t->defref;
 }

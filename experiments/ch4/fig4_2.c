@@ -137,7 +137,7 @@ static void parse(struct fig42 *t, int argc, char **argv)
         {0}};
     opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_2 [options]\n", .opts = opts, .fig = &t->fo},
                argc, argv);
-    opts_require_image_output(prog);
+    opts_require_image_input(prog);
 }
 
 /* The diffuse wall's configurations over the seeds, each against the PT reference of its

@@ -85,7 +85,7 @@ static void parse(struct fig43 *t, int argc, char **argv)
         {0}};
     opts_parse(&(struct opts_spec){.prog = prog, .usage = "usage: fig4_3 [options]\n", .opts = opts, .fig = &t->fo},
                argc, argv);
-    opts_require_image_output(prog);
+    opts_require_image_input(prog);
 }
 
 /* One run of method m; the first seed's image (and MCMC statistics) into OUT. */

@@ -101,7 +101,7 @@ static void parse(struct fig46 *t, int argc, char **argv)
         {0}};
     opts_parse(&(struct opts_spec){.prog = "fig4_6", .usage = "usage: fig4_6 [options]\n", .opts = opts, .fig = &t->fo},
                argc, argv);
-    opts_require_image_output("fig4_6");
+    opts_require_image_input("fig4_6");
     snprintf(t->defref, sizeof t->defref, "results/reference/ajar-bdpt-%d.exr", t->refspp);
     if (!t->refpath) t->refpath = t->defref;
     if (t->mutations)

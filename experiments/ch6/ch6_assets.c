@@ -127,7 +127,6 @@ int main(int argc, char **argv)
     int w = size[0], h = size[1];
     if (!skyp == !woodp) opts_fail(prog, "give exactly one of --sky or --wood (see --help)");
     if (skyp && !have_sun) opts_fail(prog, "--sky needs --sun X,Y,Z");
-    opts_require_image_output(prog);
     char err[1024];
     bool ok;
     if (skyp) {

@@ -190,7 +190,7 @@ int main(int argc, char **argv)
     dist_refuse_ranks();
     const char *methods = parse(&e, argc, argv);
     names(&e, sname, sizeof sname);
-    opts_require_image_output(e.prog);
+    opts_require_image_input(e.prog);
     ch6_methods_parse(&e, methods);
     snprintf(e.runsdir, sizeof e.runsdir, "%s/runs", e.out);
     outdir_require(e.prog, e.runsdir);

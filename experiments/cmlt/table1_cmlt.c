@@ -558,7 +558,7 @@ int main(int argc, char **argv)
     }
     signal(SIGINT, on_sigint);
     outdir_require("table1_cmlt", o.out);
-    opts_require_image_output("table1_cmlt");
+    opts_require_image_input("table1_cmlt");
     double t_start = now();
     struct cmlt_ref_result rr;
     struct image *ref = get_reference(&o, &rr);

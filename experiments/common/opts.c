@@ -21,7 +21,7 @@ void opts_fail(const char *prog, const char *fmt, ...)
     vdie(DIE_USAGE, prog, fmt, ap);
 }
 
-void opts_require_image_output(const char *prog)
+void opts_require_image_input(const char *prog)
 {
     char err[1024];
     if (!oiio_module_present(err, sizeof err)) die(DIE_RUNTIME, prog, "%s", err);

@@ -84,9 +84,10 @@ void opts_help(const struct opts_spec *s, FILE *f);
 
 /* Prints "PROG: message" to stderr and exits with status 2. */
 _Noreturn void opts_fail(const char *prog, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-/* Tools that write images call this before their run: a missing OpenImageIO module (core/io/oiio.h)
- * is reported at once, as "PROG: message" and exit status 1, not after the run. */
-void opts_require_image_output(const char *prog);
+/* Tools that read images back (cached references, their runs' images) call this before their run: a
+ * missing OpenImageIO module (core/io/oiio.h) is reported at once, as "PROG: message" and exit
+ * status 1, not after the run. Writing needs no module (io/image_encode.h). */
+void opts_require_image_input(const char *prog);
 
 /* ---- shared groups ---------------------------------------------------------------------------- */
 

@@ -274,7 +274,6 @@ int render_run(int argc, char **argv)
     render_args_parse(argc, argv, &a);
     const char *inject = getenv("PSS_INJECT_NONFINITE"); /* tests only (path/splat.h) */
     if (inject) nonfinite_inject_every = atol(inject);
-    opts_require_image_output("render");
     int rc;
     struct scene *sc = load(&a, &rc);
     if (!sc) return rc;

@@ -35,7 +35,7 @@ $(FUZZ_BUILD)/libfuzzcore.a: $(FUZZ_OBJ)
 	ar rcs $@ $^
 
 $(FUZZ_BUILD)/fuzz-%: $(FUZZ_BUILD)/entry/%.c.o $(FUZZ_BUILD)/libfuzzcore.a
-	$(FUZZ_CC) -fsanitize=fuzzer $(FUZZ_SAN) -pthread $^ -lembree3 -lcjson -lgsl -lgslcblas -lm -ldl -o $@
+	$(FUZZ_CC) -fsanitize=fuzzer $(FUZZ_SAN) -pthread $^ $(CORE_LIBS) -o $@
 
 $(FUZZ_BUILD)/ckpt_seed: tests/fuzz/main/ckpt_seed.c
 	@mkdir -p $(dir $@)

@@ -25,5 +25,5 @@ cc -I"$d" -I"$root/core" -I"$root/experiments" -I"$root/build" -D_DEFAULT_SOURCE
   -o "$d/scan" "$root/experiments/cmlt/geometry_scan/scan.c" \
   "$d"/cmlt/cmlt_charts.c "$d"/cmlt/cmlt_mcmc.c "$d"/cmlt/cmlt_reference.c "$d"/cmlt/cmlt_scene.c \
   "$root/experiments/common/die.c" \
-  "$root/build/libcore.a" -lembree3 -lcjson -lgsl -lgslcblas -lm -ldl
+  "$root/build/libcore.a" -lembree3 -lcjson -lgsl -lgslcblas -lOpenEXRCore -lpng -lm -ldl
 echo "[$*] $("$d/scan" "$nm" "$ns" "$spp")"
