@@ -16,8 +16,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 args() { echo "$scene --method pitp --pitp-rate $1 --p-large $2 --resolution 48x48 --threads 1 --seed 1 --seed-paths 10000 --spp $3"; }
 # ir NAME RATE P_LARGE SPP: the run's instructions up to its image's writing (callgrind dumps them
-# there: writing loads OpenImageIO, whose libhwy probes the CPU with an instruction valgrind 3.19
-# does not know, and dies; nothing after it is counted)
+# there; the encoding is not counted)
 ir() {
   # shellcheck disable=SC2046
   valgrind --tool=callgrind --dump-before=img_write_exr_png --callgrind-out-file="$tmp/$1.out" "$bin/render" \

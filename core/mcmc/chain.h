@@ -27,6 +27,7 @@ struct chain {
     double scale;      /* b_k / P(k): the chain's splat weight */
     struct image *img; /* where its splats go: the thread's image, or its length's (progressive_norm) */
     double xsum;       /* MCTLS: sum over techniques of the current numbers' targets */
+    double mis_pl;     /* --large-step-mis: p_large, the large steps' density in every weight; else 0 */
     double pending;    /* expected-value weight (sum of 1 - a) owed to `cur`, splatted when it changes */
     bool xsum_valid;
     struct ctrl_path *path;     /* controlled steps and angle statistics: the current subpaths */

@@ -68,6 +68,7 @@ static void chains_start(struct worker *wk)
         mutations_chain_alloc(c, wk->opts);
         c->k = kk + 1;
         c->scale = one ? j->res->b : j->scale[kk];
+        c->mis_pl = wk->opts->large_step_mis ? wk->opts->p_large : 0;
         c->img = j->len_img ? j->len_img[wk->tid][kk] : wk->img;
         c->dropped = &wk->scratch->nf.len[by_length ? c->k : 0];
         c->trace = &j->trace[wk->tid][ci];

@@ -92,8 +92,11 @@ struct mlt_opts {
     /* MMLT paper §4's alternative: one chain per thread over all lengths, the length changed by the
      * large steps only (one_chain.c), instead of one chain per length */
     bool one_chain;
-    bool time_proposals;  /* record each proposal's time in the statistics (two clock reads) */
-    bool max_heuristic;   /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */
+    bool time_proposals; /* record each proposal's time in the statistics (two clock reads) */
+    bool max_heuristic;  /* PSSMLT: Kelemen's maximum heuristic instead of the balance heuristic */
+    /* PSSMLT: Kelemen et al.'s combination of the large steps, independent samples of the uniform
+     * density, with the chain's expected values (splat_ev.h), as Tungsten's kelemen_mlt does */
+    bool large_step_mis;
     bool power_heuristic; /* MMLT: the power heuristic (beta = 2) in the target (MMLT paper §6) */
     /* MMLT's small step: the lazy primary-sample-space step, or thesis §5.3's controlled step
      * (Alg. 4) or root perturbation (Alg. 3), see controlled_step.h. Controlled and root need the

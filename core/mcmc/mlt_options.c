@@ -87,6 +87,7 @@ static bool veach_mix_conflict(const struct mlt_opts *o, char *err, size_t errle
 
 /* the fused perturbations' lines only in the runs that make them: the others' CSVs keep theirs */
 static bool fused_on(const struct mlt_opts *o) { return o->fused != FUSED_NONE; }
+static bool large_step_mis_on(const struct mlt_opts *o) { return o->large_step_mis; }
 
 static bool progressive_conflict(const struct mlt_opts *o, char *err, size_t errlen)
 {
@@ -262,6 +263,12 @@ const struct mlt_option mlt_options[] = {
      .help = "mmlt, pitp with --fused: the share of small steps that are a fused perturbation (the harness's "
              "default, half: Otsu et al. state no value)",
      .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 10, .csv_key = "fused_rate", .csv_own = true, .csv_if = fused_on},
+    {"large_step_mis", "--large-step-mis", MLT_OPTION_FLAG, FIELD(large_step_mis), .methods = APPLIES_PSSMLT,
+     .numbers = true,
+     .help = "pssmlt: Kelemen et al.'s weights, the large steps also counted as independent samples: a state's "
+             "splat weighs (a + [large]) / (f / b + p_large) instead of a / (f / b) (Tungsten's kelemen_mlt)",
+     .csv_group = MLT_CSV_AFTER_COUNTS, .csv_pos = 13, .csv_key = "large_step_mis", .csv_own = true,
+     .csv_if = large_step_mis_on},
     {"lens_broken_t", NULL, MLT_OPTION_FLAG, FIELD(lens_broken_t), .methods = APPLIES_MULTIPLEXED | APPLIES_VEACH,
      .numbers = true, .help = "tests only: a broken lens perturbation"},
     {"veach_broken_t", NULL, MLT_OPTION_FLAG, FIELD(veach_broken_t), .methods = APPLIES_VEACH, .numbers = true,

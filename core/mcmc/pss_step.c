@@ -65,7 +65,7 @@ static void record_angle(struct worker *wk, const struct chain *c, const struct 
 void mutation_decide(struct worker *wk, struct chain *c, int kind, const struct proposal *pr, double t_start)
 {
     double a = c->f > 0 ? mind(pr->f * pr->tr / c->f, 1.0) : 1.0;
-    splat_ev(c->img, c, &wk->prop, pr->f, a);
+    splat_ev_step(c->img, c, &wk->prop, pr->f, a, kind == PROPOSAL_LARGE);
     bool acc = rng_uniform(&wk->r) < a;
     if (wk->tech) tech_acc_step(wk->tech, a, acc, pr->f, c->f, c->scale);
     if (acc) {

@@ -14,6 +14,16 @@ void splat_ev(struct image *img, struct chain *c, const struct splat_list *l, do
     owe_current(c, a);
 }
 
+void splat_ev_step(struct image *img, struct chain *c, const struct splat_list *l, double f, double a, bool large)
+{
+    if (!(c->mis_pl > 0)) {
+        splat_ev(img, c, l, f, a);
+        return;
+    }
+    if (f > 0) splat_list_weighted(img, l, (a + (large ? 1 : 0)) / (f / c->scale + c->mis_pl), c->dropped);
+    owe_current(c, a);
+}
+
 void owe_current(struct chain *c, double a)
 {
     if (c->f > 0) c->pending += 1 - a;
@@ -21,7 +31,10 @@ void owe_current(struct chain *c, double a)
 
 void pay_current(struct image *img, struct chain *c)
 {
-    if (c->f > 0) splat_list_weighted(img, &c->cur, c->pending * c->scale / c->f, c->dropped);
+    if (c->f > 0)
+        splat_list_weighted(img, &c->cur,
+                            c->mis_pl > 0 ? c->pending / (c->f / c->scale + c->mis_pl) : c->pending * c->scale / c->f,
+                            c->dropped);
     c->pending = 0;
 }
 

@@ -183,8 +183,8 @@ static struct technique_cost technique_cost(const struct scene *sc, int runs, do
     return c;
 }
 
-/* Peak memory once an image has been written: the first write opens the OpenImageIO module, whose
- * Debian build maps ~260 libraries (core/io/oiio.h). Until then the figure above is the renderer's. */
+/* Peak memory once an image has been written (OpenEXR and libpng, io/image_encode.h; until
+ * 2026-12-06 the first write opened the OpenImageIO module, ~260 libraries and 115 MB). */
 static double image_io_peak_mb(const struct scene *sc)
 {
     char dir[] = "/tmp/bench-XXXXXX", prefix[64], err[1024];
@@ -295,7 +295,7 @@ static void report(const char *path, const struct scene *sc, int runs, double se
     printf("%-44s %12.3f   pitp P = 1 minus P = 0 per perturbation, %.2fx a small step (CPU, 1 thread)\n",
            "technique move (us)", tc.move_us, tc.move_us / tc.small_us);
     printf("%-44s %12.1f\n", "peak resident memory (MB)", ru.ru_maxrss / 1024.0);
-    printf("%-44s %12.1f   (OpenImageIO loaded)\n", "  after writing EXR + PNG (MB)", io_mb);
+    printf("%-44s %12.1f\n", "  after writing EXR + PNG (MB)", io_mb);
 }
 
 /* One Markdown row per scene, 1-thread figures only. */

@@ -93,7 +93,9 @@ static const struct cornell_cfg {
     {"mlt", MLT_VEACH, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
     {"mmlt --fused lens", MLT_MMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false, false, false},
     {"pitp --fused lens+caustic --fused-rate 0.8", MLT_PITP, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.1, false,
-     false, false}};
+     false, false},
+    {"pssmlt --large-step-mis --p-large 0.3", MLT_PSSMLT, false, false, KERNEL_KELEMEN, LARGE_MMLT, 0.3, false, false,
+     false}};
 #define CORNELL_CFGS ((int)(sizeof cornell_cfg / sizeof *cornell_cfg))
 #define CORNELL_MLT 15        /* Veach's MLT's configuration: the broken-mutation tests' seeds */
 #define CORNELL_FUSED_LENS 16 /* mmlt --fused lens: the broken fused perturbation test's seeds */
@@ -115,6 +117,10 @@ ParameterizedTestParameters(stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
     static int idx[CORNELL_CFGS];
     for (int i = 0; i < CORNELL_CFGS; i++)
         idx[i] = i;
+    /* CORNELL_CFG=N: only configuration N (a developer's rerun of one; the alpha stays the family's) */
+    const char *one = getenv("CORNELL_CFG");
+    int n = one ? atoi(one) : -1;
+    if (n >= 0 && n < CORNELL_CFGS) return cr_make_param_array(int, idx + n, 1);
     return cr_make_param_array(int, idx, CORNELL_CFGS);
 }
 
@@ -141,6 +147,7 @@ ParameterizedTest(int *param, stat_mlt, mcmc_agrees_with_bdpt_on_cornell_box)
     c.o.power_heuristic = cf->power;
     c.o.progressive_norm = strstr(cf->name, "--progressive-norm") != NULL; /* flags the fields do not carry */
     c.o.one_chain = strstr(cf->name, "--one-chain") != NULL;
+    c.o.large_step_mis = strstr(cf->name, "--large-step-mis") != NULL;
     fused_from_name(&c.o, cf->name);
     stack_runs(&a, render_mlt, &c, 12, 2000 + 100 * (uint64_t)i, 8);
     double pm, worst;
