@@ -25,22 +25,24 @@ static double pdf_to_prev(const struct scene *sc, const struct vertex *at, vec3 
 static vec3 emit_normal(const struct vertex *v) { return v->flipped ? vneg(v->ng) : v->ng; }
 
 /* d: unit direction from y_{s-1} to z_{t-1}, dist2 their squared distance (s >= 1); cam_pdf: for
- * t = 1, the camera's density toward y_{s-1}, already known from the raster lookup. */
-static void densities(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t, vec3 d,
+ * t = 1, the camera's density toward y_{s-1}, already known from the raster lookup. Returns whether
+ * any vertex of either subpath is delta: without one there is no chain to unfold. */
+static bool densities(const struct path_ctx *pc, const struct vertex *y, int s, const struct vertex *z, int t, vec3 d,
                       double dist2, double cam_pdf, struct mis_path *m)
 {
     const struct scene *sc = pc->sc;
     int k = s + t - 1;
     m->k = k;
+    bool any_delta = false;
     for (int i = 0; i < s; i++) {
         m->pl[i] = y[i].pdf_fwd;
         m->pc[i] = y[i].pdf_rev;
-        m->delta[i] = y[i].delta;
+        any_delta |= m->delta[i] = y[i].delta;
     }
     for (int j = 0; j < t; j++) {
         m->pc[k - j] = z[j].pdf_fwd;
         m->pl[k - j] = z[j].pdf_rev;
-        m->delta[k - j] = z[j].delta;
+        any_delta |= m->delta[k - j] = z[j].delta;
     }
     const struct vertex *zc = &z[t - 1];
     if (s == 0) {
@@ -58,7 +60,7 @@ static void densities(const struct path_ctx *pc, const struct vertex *y, int s, 
             }
         }
         m->delta[0] = false;
-        return;
+        return any_delta;
     }
     const struct vertex *yc = &y[s - 1];
     vec3 back = vneg(d);
@@ -69,6 +71,7 @@ static void densities(const struct path_ctx *pc, const struct vertex *y, int s, 
     /* emitter side generating z_{t-1}, then z_{t-2} */
     m->pl[s] = edge_pdf(scatter_pdf(sc, yc, yc->wi, d), yc, zc, d, dist2);
     if (t >= 2) m->pl[s + 1] = pdf_to_prev(sc, zc, back, &z[t - 2]);
+    return any_delta;
 }
 
 /* f at a connection endpoint: the BSDF (no cosine), the emitted radiance, or the importance. */
@@ -123,11 +126,12 @@ bool connect_st(const struct path_ctx *pc, const struct vertex *y, int s, const 
     }
     if (vzero(out->f)) return false;
     struct mis_path m;
-    densities(pc, y, s, z, t, d, dist2, cam_pdf, &m);
-    const struct vertex *x[MAX_PATH_LENGTH + 2];
-    for (int i = 0; i <= m.k; i++)
-        x[i] = i < s ? &y[i] : &z[m.k - i];
-    mis_unfold_delta_chains(&m, x);
+    if (densities(pc, y, s, z, t, d, dist2, cam_pdf, &m)) { /* no delta vertex: no chain to unfold */
+        const struct vertex *x[MAX_PATH_LENGTH + 2];
+        for (int i = 0; i <= m.k; i++)
+            x[i] = i < s ? &y[i] : &z[m.k - i];
+        mis_unfold_delta_chains(&m, x);
+    }
     double r[MAX_PATH_LENGTH + 2];
     double *rat = ratios ? ratios : r;
     out->w = mis_weights(&m, s, max_s, rat);
