@@ -19,8 +19,9 @@
 #
 # OUT_DIR holds
 #   hashes.txt        one line per image (EXR and PNG): run/file, size, channels, type, SHA-1 of the
-#                     pixel data (oiiotool --hash). EXR bytes are not reproducible (OpenImageIO
-#                     writes a DateTime attribute), so files are never hashed as bytes.
+#                     pixel data (oiiotool --hash). Files are never hashed as bytes: EXRs written
+#                     through OpenImageIO (before 2026-12-06) carried a DateTime attribute, so a
+#                     record of either writer compares with the other.
 #   text/RUN/...      every CSV, Markdown table, reference key and check_stats verdict, with the
 #                     timing removed (below)
 #   exit-status.txt   each run's exit status (compared, one output per run)
