@@ -6,8 +6,9 @@
 # with adaptive sampling), PSSMLT / kelemen_mlt (ours as the thesis splats, and with
 # --large-step-mis, Kelemen et al.'s weights, which kelemen_mlt uses), MMLT / multiplexed_mlt,
 # PITP / reversible_jump_mlt;
-# MLT pools as the issue measured them: Tungsten's MMLT and reversible jump draw 300 000 candidates,
-# ours 100 000 seed paths (the default), PSSMLT 10 000 on both sides. Time is the process's CPU time
+# normalisation pools of about equal size: Tungsten's MMLT and reversible jump take 300 000 candidate
+# connections (every (s, t) of its BDPT samples: some 10 000 samples), ours 10 000 seed paths (one
+# state per length each; the default is 100 000), PSSMLT 10 000 BDPT samples on both sides. Time is the process's CPU time
 # (user + system, /usr/bin/time), which a loaded machine inflates far less than wall time.
 # relMSE per channel, (I - R)^2 / (R^2 + 0.01), against Tungsten's own BDPT at REF_SPP on 2 threads,
 # cached in OUT. Efficiency = 1 / (mean relMSE x mean time). Needs `tungsten` on PATH
@@ -56,7 +57,7 @@ ours_args() {
     bdpt) echo "--method bdpt" ;; bdpt-sobol) echo "--method bdpt --sampler sobol" ;;
     pssmlt) echo "--method pssmlt --seed-paths 10000" ;;
     pssmlt-mis) echo "--method pssmlt --seed-paths 10000 --large-step-mis" ;;
-    mmlt) echo "--method mmlt" ;; pitp) echo "--method pitp" ;;
+    mmlt) echo "--method mmlt --seed-paths 10000" ;; pitp) echo "--method pitp --seed-paths 10000" ;;
   esac
 }
 tungsten_type() {
