@@ -327,6 +327,12 @@ bench: deps all $(BENCH_TARGETS)
 	bash scripts/bench-technique-ir.sh $(BIN)
 	$(if $(filter 1,$(MPI)),bash scripts/bench-mpi.sh $(BIN)/render)
 
+# Error x time against Tungsten 0.2.2 per method pair, whole one-thread processes (scripts/bench-tungsten.sh;
+# `tungsten` on PATH, ../shared/README.md builds it; SEEDS, SPP, REF_SPP, SCENES from the environment).
+.PHONY: bench-tungsten
+bench-tungsten: deps $(BIN)/render
+	bash scripts/bench-tungsten.sh $(BIN) results/bench-tungsten
+
 # 1 rank x 2 threads against 2 ranks x 1 thread (scripts/bench-mpi.sh), in the MPI=1 build.
 .PHONY: bench-mpi
 ifeq ($(MPI),1)
