@@ -2,8 +2,8 @@
 # The full-scale runs' text outputs, kept in git: a full-scale ledger takes ~8 h of 2 cores, more than
 # one sitting, and results/ is not committed. `save DIR...` copies every CSV and Markdown file under
 # each results/ folder given (per-run files included, images left out) into results/baselines/full-record/,
-# mirrored; `restore` copies them back into results/ (newer than the scenes, so make takes the
-# targets as done), so that `make report SCALE=full` can show runs from several sittings. Each file
+# mirrored; `restore` copies them back into results/ (newer than the scenes, so make does not redo
+# the runs), so that `make report SCALE=full` can show runs from several sittings. Each file
 # keeps its `#` metadata lines (command, commit, seed, scale, threads, seconds).
 # usage: full-record.sh save results/ch6-full/ajar ... | restore
 set -euo pipefail
