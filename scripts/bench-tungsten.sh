@@ -49,7 +49,8 @@ cpu_of() {
 # relmse IMAGE REF: mean over pixels and channels of (I - R)^2 / (R^2 + 0.01)
 relmse() {
   oiiotool "$1" "$2" --sub --powc 2 "$2" --powc 2 --addc 0.01 --div --printstats 2>/dev/null |
-    awk '/Stats Avg:/ { s = 0; for (i = 3; i <= NF; i++) s += $i; print s / (NF - 2); exit }'
+    awk '/Stats Avg:/ { s = 0; n = 0; for (i = 3; i <= NF; i++) if ($i ~ /^[-+0-9.eE]+$/) { s += $i; n++ }
+                        print s / n; exit }'
 }
 
 ours_args() {
