@@ -34,8 +34,6 @@ scene_json() {
       -e "s|\"integrator\": {.*}|\"integrator\": {\"type\": \"$2\", \"min_bounces\": 0, \"max_bounces\": $bounces, \"enable_two_sided_shading\": true$3}|" \
       -e "s|\"renderer\": {.*}|\"renderer\": {\"spp\": $4, \"output_file\": \"$6.png\", \"hdr_output_file\": \"$6.pfm\"}|" \
       "$src" > "$dst"
-  # a textured scene's paths are relative to its folder
-  sed -i "s|\"file\": \"|\"file\": \"$(realpath scenes/$1)/|g" "$dst"
   echo "$dst"
 }
 
