@@ -23,16 +23,18 @@ static uint32_t laine_karras(uint32_t x, uint32_t seed)
     return x;
 }
 
-static uint32_t owen_scramble(uint32_t x, uint32_t seed) { return reverse_bits(laine_karras(reverse_bits(x), seed)); }
-
-/* Sobol's second dimension: the generator matrix is Pascal's triangle mod 2, column k the
- * direction number v_k = v_{k-1} ^ (v_{k-1} >> 1), v_0 = 2^31. */
-static uint32_t sobol_dim1(uint32_t index)
+/* Sobol's second dimension is the Pascal matrix mod 2 applied to the index: bit r of the reversed
+ * result is the parity of the index bits k with C(k, r) odd, i.e. (Lucas) with k a bit-superset of
+ * r. That sum over supersets of r takes five shift-xor steps instead of a loop over 32 direction
+ * numbers; the result stays bit-reversed, which is the order the scramble below works in. */
+static uint32_t sobol_dim1_reversed(uint32_t index)
 {
-    uint32_t x = 0, v = 0x80000000u;
-    for (; index; index >>= 1, v ^= v >> 1)
-        if (index & 1) x ^= v;
-    return x;
+    index ^= (index >> 1) & 0x55555555u;
+    index ^= (index >> 2) & 0x33333333u;
+    index ^= (index >> 4) & 0x0F0F0F0Fu;
+    index ^= (index >> 8) & 0x00FF00FFu;
+    index ^= index >> 16;
+    return index;
 }
 
 static uint32_t mix(uint64_t key, uint32_t salt)
@@ -46,10 +48,12 @@ static uint32_t mix(uint64_t key, uint32_t salt)
     return (uint32_t)h;
 }
 
+/* Both Owen scrambles work on reversed bits; van der Corput is the reversal itself, so the index's
+ * scramble is left reversed and the point's is reversed once at the end. */
 double sobol02_sample(uint64_t key, uint32_t index, uint32_t dim)
 {
     uint32_t pair = dim >> 1;
-    uint32_t i = owen_scramble(index, mix(key, 2 * pair + 0x40000000u));
-    uint32_t x = dim & 1 ? sobol_dim1(i) : reverse_bits(i);
-    return owen_scramble(x, mix(key, dim)) * (1.0 / 4294967296.0);
+    uint32_t i = laine_karras(reverse_bits(index), mix(key, 2 * pair + 0x40000000u));
+    uint32_t x = dim & 1 ? sobol_dim1_reversed(reverse_bits(i)) : reverse_bits(i);
+    return reverse_bits(laine_karras(x, mix(key, dim))) * (1.0 / 4294967296.0);
 }
