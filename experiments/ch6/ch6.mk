@@ -41,6 +41,9 @@ ch6-assets: deps $(BIN)/ch6_assets
 # stopped.
 CH6_METHODS ?= pssmlt,mmlt,pitp
 CH6_OUT := results/ch6-$(SCALE)
+# Figure targets share identical runs through one cache (common/run_cache.h: keyed by the build,
+# the scene's content and the render's options); checks render their own.
+CH6_RUN_CACHE := --run-cache results/run-cache
 # SEEDS=N: N seeds (at most 64) instead of the scale's, for every bin/ch6_equal target here: an
 # undecided row says how many seeds would decide it. With the full scale's checkpoints the runs
 # already complete are kept, so a finished run grows by the new seeds only; while SEEDS is given
@@ -57,7 +60,7 @@ CH6_ajar_ARGS := --source 'thesis Figs. 6.4 and 6.7' --command 'make fig6.4 SCAL
 # The tools are order-only: every commit relinks them (version.h), which must not rerun minutes of
 # renders; a changed scene does. `make ch6-clean` reruns everything.
 $(CH6_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
-	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CH6_OUT)/$* --methods $(CH6_METHODS) --scale $(SCALE) $(CH6_$*_ARGS) $(CH6_SEEDS)
+	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(CH6_OUT)/$* --methods $(CH6_METHODS) --scale $(SCALE) $(CH6_$*_ARGS) $(CH6_SEEDS) $(CH6_RUN_CACHE)
 	bash scripts/plot.sh scripts/ch6-time.gp $@ $(CH6_OUT)/$*/error-vs-time "name='$*'"
 
 .PHONY: fig6.2 fig6.3 fig6.4 fig6.5 fig6.6 fig6.7 ch6-clean
@@ -106,9 +109,9 @@ $(eval $(call CH6_CHECK,fig6.4,ajar))
 .PHONY: ch6-baselines
 ch6-baselines: ch6-baseline-fig6.2 ch6-baseline-fig6.3 ch6-baseline-fig6.4
 
-# Rerun the chapter-6 experiments from scratch (the references stay cached).
+# Rerun the chapter-6 experiments from scratch (the references stay cached; the run cache goes).
 ch6-clean:
-	rm -rf $(CH6_OUT) results/mmlt-ratio $(HYB_OUT)
+	rm -rf $(CH6_OUT) results/mmlt-ratio $(HYB_OUT) results/run-cache
 
 # ---- MMLT paper §5: the fraction of proposals with non-zero contribution, PSSMLT vs MMLT (vs PITP) ----
 # Read from the fig6 runs of the three scenes (their render CSVs count every proposal's contribution;
@@ -130,7 +133,7 @@ $(TECH_OUT)/tech.md: scenes/ajar/scene.json | deps $(BIN)/render $(BIN)/ch6_tech
 RATIO_OUT := results/mmlt-ratio/$(SCALE)/ajar-direct
 $(RATIO_OUT)/summary.csv: scenes/ajar/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
 	$(BIN)/ch6_equal --scene scenes/ajar/scene.json --name ajar-direct --out $(RATIO_OUT) --min-length 2 --reference-spp 0 \
-	  --study ratio --scale $(SCALE) --source 'MMLT paper §5' --command 'make mmlt-ratio SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) >/dev/null
+	  --study ratio --scale $(SCALE) --source 'MMLT paper §5' --command 'make mmlt-ratio SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) $(CH6_RUN_CACHE) >/dev/null
 
 # make check-mmlt-ratio: the paper's setting (ajar, paths of length >= 2, no reference) at a fixed
 # 16 mutations per pixel at 256x144, seeds 101-108 against the baseline's 1-8: the non-zero
@@ -157,7 +160,7 @@ HYB_OUT := results/hybrid-study-$(SCALE)
 
 $(HYB_OUT)/%/summary.csv: scenes/%/scene.json $(CH6_SEEDS_FORCE) | deps $(BIN)/ch6_equal $(BIN)/render
 	$(BIN)/ch6_equal --scene scenes/$*/scene.json --out $(HYB_OUT)/$* --methods '$(HYB_METHODS)' --study hybrid --scale $(SCALE) \
-	  --source 'thesis §4.3, §7.1' --command 'make hybrid-study SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS)
+	  --source 'thesis §4.3, §7.1' --command 'make hybrid-study SCALE=$(SCALE)$(CH6_SEEDS_CMD)' $(CH6_SEEDS) $(CH6_RUN_CACHE)
 
 .PHONY: hybrid-study
 FIGURE_TARGETS += hybrid-study
@@ -184,7 +187,7 @@ define CH6_STUDY
 $(1)_OUT := results/$(1)-$$(SCALE)
 $$($(1)_OUT)/%/summary.csv: scenes/%/scene.json $$(CH6_SEEDS_FORCE) | deps $$(BIN)/ch6_equal $$(BIN)/render
 	$$(BIN)/ch6_equal --scene scenes/$$*/scene.json --out $$($(1)_OUT)/$$* --methods '$$($(1)_METHODS)' --study $(2) \
-	  --scale $$(SCALE) --source '$$($(1)_SOURCE)' --command 'make $(1) SCALE=$$(SCALE)$$(CH6_SEEDS_CMD)' $$(CH6_SEEDS) >/dev/null
+	  --scale $$(SCALE) --source '$$($(1)_SOURCE)' --command 'make $(1) SCALE=$$(SCALE)$$(CH6_SEEDS_CMD)' $$(CH6_SEEDS) $$(CH6_RUN_CACHE) >/dev/null
 .PHONY: $(1)
 FIGURE_TARGETS += $(1)
 $(1): deps $$(patsubst %,$$($(1)_OUT)/%/summary.csv,$(3))

@@ -163,6 +163,11 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
                  "(default: the scale's, for the chapter-6 scenes)"},
         {"--reuse", OPT_FLAG, OPT_DST(e->reuse),
          .help = "keep the run files already in OUT/runs (same names) instead of rendering"},
+        {"--run-cache", OPT_STRING, OPT_DST(e->run_cache_dir), .arg = "DIR",
+         .help = "share runs with other studies through DIR: a run whose build, scene content and bin/render "
+                 "options (output options aside) match an entry there is linked from it instead of rendered, and "
+                 "every run rendered is added (common/run_cache.h); not with --render (make's figure targets give "
+                 "results/run-cache)"},
         {0}};
     const struct opts_spec spec = {
         .prog = e->prog, .usage = "usage: ch6_equal --scene FILE --out DIR [options]\n", .opts = opts};
@@ -197,6 +202,7 @@ int main(int argc, char **argv)
     snprintf(e.minlen_s, sizeof e.minlen_s, "%d", e.minlen);
     snprintf(e.maxlen_s, sizeof e.maxlen_s, "%d", e.maxlen);
     snprintf(e.thr, sizeof e.thr, "%d", e.threads);
+    ch6_scene_identity(&e);
     ch6_reference(&e);
     ch6_runs(&e);
     ch6_write_tables(&e);

@@ -6,6 +6,7 @@
 
 #include "ch6/ch6_claims.h"
 #include "common/proc.h"
+#include "common/run_cache.h"
 #include <stdbool.h>
 
 #define CH6_MAX_METHODS 16
@@ -38,7 +39,10 @@ struct ch6_equal {
     char maxlen_s[16];
     double T, ckpt_every;
     bool reuse, wall;
+    const char *run_cache_dir; /* --run-cache */
     /* derived */
+    struct run_cache cache;    /* runs shared with other studies (common/run_cache.h); dir NULL: off */
+    uint64_t scene_hash;       /* ckpt_scene_hash of the scene, for the reference's key and the cache's */
     struct proc_prog renderer; /* how a run executes (common/proc.h) */
     char *extra_argv[CH6_MAX_ARGS], extra_buf[1024];
     int extra_c;
@@ -65,6 +69,10 @@ char **ch6_with_scale(const struct opts_spec *spec, int *argc, char **argv);
 /* ch6_methods.c: the --methods list parsed into e->ms and probed (bin/render M --help), the
  * --render-args split. */
 void ch6_methods_parse(struct ch6_equal *e, const char *methods);
+/* ch6_reference.c: the scene's content hash (for the reference's and the run cache's keys; the scene
+ * is loaded only when either is used) and the run cache opened when --run-cache names one and the
+ * runs are in-process. */
+void ch6_scene_identity(struct ch6_equal *e);
 /* ch6_reference.c: the cached BDPT reference (common/refcache.h) into e->ref (NULL with
  * --reference-spp 0), its statistics, and OUT/reference.png. */
 void ch6_reference(struct ch6_equal *e);

@@ -41,6 +41,20 @@ static struct image *render_reference(void *ctx, const char *path, char *err, si
     return img_read(path, err, errlen);
 }
 
+void ch6_scene_identity(struct ch6_equal *e)
+{
+    if (!e->refspp && !e->run_cache_dir) return;
+    char err[4200];
+    struct scene *sc = scene_load(e->scene, err, sizeof err);
+    if (!sc) die(DIE_USAGE, e->prog, "%s", err);
+    e->scene_hash = ckpt_scene_hash(sc);
+    scene_free(sc);
+    if (e->run_cache_dir && !e->renderer.path) /* in-process runs: this executable renders them */
+        e->cache = (struct run_cache){
+            .dir = e->run_cache_dir, .build = run_cache_file_hash("/proc/self/exe"), .scene = e->scene_hash};
+    if (e->cache.dir && !e->cache.build) die(DIE_RUNTIME, e->prog, "--run-cache: cannot read /proc/self/exe");
+}
+
 void ch6_reference(struct ch6_equal *e)
 {
     char err[4200], settings[256], path[4096], maxs[32] = "";
@@ -54,11 +68,7 @@ void ch6_reference(struct ch6_equal *e)
         }
         snprintf(settings, sizeof settings, "bdpt spp=%d seed=%s min_length=%d resolution=%s%s%s", e->refspp, REF_SEED,
                  e->minlen, e->res ? e->res : "native", e->maxlen ? " max_length=" : "", e->maxlen ? e->maxlen_s : "");
-        struct refcache rc = {.path = e->refpath, .settings = settings};
-        struct scene *sc = scene_load(e->scene, err, sizeof err);
-        if (!sc) die(DIE_USAGE, e->prog, "%s", err);
-        rc.scene_hash = ckpt_scene_hash(sc);
-        scene_free(sc);
+        struct refcache rc = {.path = e->refpath, .scene_hash = e->scene_hash, .settings = settings};
         e->ref = refcache_get(&rc, render_reference, e, err, sizeof err);
         if (!e->ref) die(DIE_RUNTIME, e->prog, "%s", err);
     }

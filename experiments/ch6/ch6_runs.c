@@ -186,10 +186,25 @@ static void render_run(struct ch6_equal *e, const struct ch6_method *m, const ch
     snprintf(csvp, sizeof csvp, "%.4000s.csv", prefix);
     bool keep =
         e->reuse ? !access(exr, R_OK) && !access(csvp, R_OK) : e->ckpt_every > 0 && run_complete(exr, csvp, e->scene);
+    char key[8192], err[4200];
+    bool cached = false;
+    if (!keep && e->cache.dir) {
+        if (!run_cache_key(&e->cache, rv, c, key, sizeof key))
+            die(DIE_RUNTIME, e->prog, "a run's cache key is too long");
+        keep = cached = run_cache_fetch(&e->cache, key, prefix);
+    }
     fprintf(stderr, "%s: %s %s seed %d, %g %s%s\n", e->prog, e->name, m->name, seed, budget,
-            e->spp > 0 ? "mutations per pixel" : "s", keep ? " (kept from an earlier run)" : "");
-    if (!keep && proc_render_resumable(e->prog, &e->renderer, rv, c, prefix, e->ckpt_every, log) != 0)
-        die(DIE_RUNTIME, e->prog, "a render failed; see %s", log);
+            e->spp > 0 ? "mutations per pixel" : "s",
+            cached ? " (from the run cache)"
+            : keep ? " (kept from an earlier run)"
+                   : "");
+    if (!keep) {
+        if (proc_render_resumable(e->prog, &e->renderer, rv, c, prefix, e->ckpt_every, log) != 0)
+            die(DIE_RUNTIME, e->prog, "a render failed; see %s", log);
+        /* only what this build rendered: a run kept from an earlier invocation may be another build's */
+        if (e->cache.dir && !run_cache_store(&e->cache, key, prefix, err, sizeof err))
+            die(DIE_RUNTIME, e->prog, "--run-cache: %s", err);
+    }
     if (keep && e->ckpt_every > 0) {
         /* an interrupt between the render's end and our removal of its checkpoint leaves one
          * beside complete outputs: stale, so it goes now */
