@@ -5,6 +5,7 @@
 #include "common/die.h"
 #include "common/proc.h"
 #include "common/refcache.h"
+#include "io/checkpoint.h"
 #include "io/image.h"
 #include "path/scene_ready.h"
 #include "scene/scene_hash.h"
@@ -50,9 +51,10 @@ void ch6_scene_identity(struct ch6_equal *e)
     e->scene_hash = ckpt_scene_hash(sc);
     scene_free(sc);
     if (e->run_cache_dir && !e->renderer.path) /* in-process runs: this executable renders them */
-        e->cache = (struct run_cache){
-            .dir = e->run_cache_dir, .build = run_cache_file_hash("/proc/self/exe"), .scene = e->scene_hash};
-    if (e->cache.dir && !e->cache.build) die(DIE_RUNTIME, e->prog, "--run-cache: cannot read /proc/self/exe");
+        e->cache = (struct run_cache){.dir = e->run_cache_dir, .build = ckpt_build_hash(), .scene = e->scene_hash};
+    if (e->cache.dir && !e->cache.build)
+        die(DIE_RUNTIME, e->prog,
+            "--run-cache: cannot read the running executable (/proc/self/exe) to identify the build");
 }
 
 void ch6_reference(struct ch6_equal *e)

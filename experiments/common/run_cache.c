@@ -2,6 +2,7 @@
 #include "common/run_cache.h"
 #include "base/util.h"
 #include "common/outdir.h"
+#include "io/checkpoint.h"
 #include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
@@ -9,29 +10,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-uint64_t run_cache_file_hash(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return 0;
-    uint64_t h = 0xcbf29ce484222325ull;
-    unsigned char buf[1 << 16];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
-        for (size_t i = 0; i < n; i++)
-            h = (h ^ buf[i]) * 0x100000001b3ull;
-    bool bad = ferror(f);
-    fclose(f);
-    return bad ? 0 : h;
-}
-
-static uint64_t text_hash(const char *s)
-{
-    uint64_t h = 0xcbf29ce484222325ull;
-    for (; *s; s++)
-        h = (h ^ (unsigned char)*s) * 0x100000001b3ull;
-    return h;
-}
 
 /* Options that say where and how a run writes, not what it renders. */
 static bool output_only(const char *opt)
@@ -76,7 +54,7 @@ bool run_cache_key(const struct run_cache *rc, char *const *argv, int argc, char
 
 static void entry_path(const struct run_cache *rc, const char *key, char *out, size_t n)
 {
-    snprintf(out, n, "%s/%016llx", rc->dir, (unsigned long long)text_hash(key));
+    snprintf(out, n, "%s/%016llx", rc->dir, (unsigned long long)hash64(0, key, strlen(key)));
 }
 
 /* src to dst: a hard link, or where the file system refuses one, a copy under a temporary name

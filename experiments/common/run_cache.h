@@ -12,7 +12,7 @@
  * (PREFIX.exr, .csv, .png, .log, .mixing.csv, ...), hard links where the file system allows, so a
  * cached run costs no space beside the study's copy.
  *
- *   struct run_cache rc = {.dir = "results/run-cache", .build = run_cache_file_hash("/proc/self/exe"),
+ *   struct run_cache rc = {.dir = "results/run-cache", .build = ckpt_build_hash(),
  *                          .scene = ckpt_scene_hash(sc)};
  *   run_cache_key(&rc, argv, argc, key, sizeof key);
  *   if (!run_cache_fetch(&rc, key, prefix)) { render argv; run_cache_store(&rc, key, prefix, ...); }
@@ -28,12 +28,9 @@
 
 struct run_cache {
     const char *dir; /* NULL: no cache */
-    uint64_t build;  /* the renderer's executable (run_cache_file_hash) */
+    uint64_t build;  /* the renderer's executable (ckpt_build_hash, io/checkpoint.h) */
     uint64_t scene;  /* the scene's content */
 };
-
-/* A 64-bit hash (FNV-1a) of a file's bytes; 0 when it cannot be read. */
-uint64_t run_cache_file_hash(const char *path);
 
 /* The key text of the render command argv[0..argc-1] (argv[0] the program, argv[1] the scene);
  * false when it does not fit in n. */
