@@ -42,6 +42,7 @@ static double diffuse_fresnel_inside(double ior)
 void bsdf_prepare(struct bsdf *b)
 {
     if (b->type == BSDF_PLASTIC || b->type == BSDF_ROUGH_PLASTIC) b->diffuse_fresnel = diffuse_fresnel_inside(b->ior);
+    b->coat_T = exp(-2 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3);
     const struct bsdf_ops *ops = bsdf_ops_for(b->type);
     b->dims = ops ? ops->dims : 0;
     b->transmissive = ops && ops->transmissive;

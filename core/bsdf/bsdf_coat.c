@@ -40,8 +40,7 @@ static bool coat_enter(const struct bsdf *b, vec3 wi, struct coat_in *k)
     double eta = 1 / b->ior;
     k->Fi = fresnel_dielectric(wi.z, b->ior, &k->cos_ti);
     k->wi_s = v3(eta * wi.x, eta * wi.y, k->cos_ti);
-    double T = exp(-2 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3);
-    double den = k->Fi + T * (1 - k->Fi);
+    double den = k->Fi + b->coat_T * (1 - k->Fi);
     k->P = den > 0 ? k->Fi / den : 1;
     return true;
 }

@@ -20,12 +20,7 @@ static double coat_fresnel(const struct bsdf *b, double cos_out)
     return fresnel_dielectric(cos_out, b->ior, &ct);
 }
 
-static double p_coat(const struct bsdf_ctx *c, double Fi)
-{
-    const struct bsdf *b = c->b;
-    return coat_choice_prob(Fi, exp(-2.0 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3.0),
-                            c->albedo);
-}
+static double p_coat(const struct bsdf_ctx *c, double Fi) { return coat_choice_prob(Fi, c->b->coat_T, c->albedo); }
 
 static rgb diffuse_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo, double Fi)
 {

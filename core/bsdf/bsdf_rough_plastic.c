@@ -30,8 +30,7 @@ static double fr_out(double cos_t, double ior)
 static double coat_prob(const struct bsdf_ctx *c, double wiz)
 {
     const struct bsdf *b = c->b;
-    double T = exp(-2 * b->thickness * (b->sigma_a.x + b->sigma_a.y + b->sigma_a.z) / 3);
-    return coat_choice_prob(fr_out(wiz, b->ior), T, c->albedo);
+    return coat_choice_prob(fr_out(wiz, b->ior), b->coat_T, c->albedo);
 }
 
 static rgb rp_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
@@ -47,10 +46,12 @@ static rgb rp_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
     }
     double eta = 1 / b->ior, Fi = fr_out(wi.z, b->ior), Fo = fr_out(wo.z, b->ior);
     rgb A = c->albedo, tau = vscale(b->sigma_a, b->thickness);
-    double k = 1 / wi.z + 1 / wo.z;
-    rgb base = v3(A.x / (1 - A.x * b->diffuse_fresnel) * exp(-tau.x * k),
-                  A.y / (1 - A.y * b->diffuse_fresnel) * exp(-tau.y * k),
-                  A.z / (1 - A.z * b->diffuse_fresnel) * exp(-tau.z * k));
+    rgb base = v3(A.x / (1 - A.x * b->diffuse_fresnel), A.y / (1 - A.y * b->diffuse_fresnel),
+                  A.z / (1 - A.z * b->diffuse_fresnel));
+    if (vmax(tau) > 0) { /* most scenes' coats absorb nothing: three exp calls of 0 per evaluation */
+        double k = 1 / wi.z + 1 / wo.z;
+        base = vmul(base, v3(exp(-tau.x * k), exp(-tau.y * k), exp(-tau.z * k)));
+    }
     return vadd(f, vscale(base, (1 - Fi) * (1 - Fo) * eta * eta * INV_PI));
 }
 

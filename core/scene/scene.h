@@ -101,6 +101,8 @@ struct bsdf {
     struct texture *bump_tex;
     /* Derived by bsdf_prepare() after loading (children first); never read from JSON. */
     double diffuse_fresnel; /* plastics: hemispherical average of the coat's Fresnel (inside) */
+    double coat_T;          /* plastics, coats: exp(-2 thickness mean(sigma_a)), the layer's transmittance
+                             * in the lobe choice; a constant that every pdf call would recompute */
     int dims;               /* numbers sample() consumes (nested types: their own + children's) */
     bool transmissive;      /* some lobe scatters to the other side: no two-sided flip */
     bool delta_only;        /* every lobe is a Dirac delta: never connect to it */
