@@ -71,6 +71,11 @@ void veach_lens_offset(const struct camera *cam, rng *r, const struct veach_stat
 bool veach_lens_trace(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m, struct veach_scratch *w,
                       double px, double py, const struct vertex **yp);
 vec3 veach_turn(vec3 w, rng *r);
+/* The caustic and multi-chain perturbations' common move: from v[n - 1], leave along omega turned
+ * (veach_turn), then walk on with fresh numbers from r through delta vertices only to v[to - 1];
+ * *p_new: the density of the turned direction. False when the walk ends elsewhere. */
+bool veach_leave_turned(const struct path_ctx *pc, rng *r, struct vertex *v, int n, vec3 omega, int to,
+                        enum transport mode, int stream, double *p_new);
 /* A proposal's end (the proposal in wk->veach->y when made): its expected-value splats, the draw
  * against acceptance a, the move, and its statistics row of `kind` (failed: refused). */
 void veach_decide(struct worker *wk, struct chain *c, struct veach_state *x, int kind, bool made, bool refused,

@@ -24,15 +24,28 @@ static double w_add(int d)
     return d == 0 ? 0.5 : d == 1 ? 0.15 : 0.2 * ldexp(1.0, -d);
 }
 
-/* The probability of deleting edges l..m (k_d = m - l) from a path of length k: k_d in proportion to
- * w_del over 1..k + 2, then l uniform over the k + 3 - k_d places. */
-static double p_del(int k, int kd)
+/* The sum of w(a - shift) over a = lo..hi, and the a that u in [0, 1) picks in proportion to it
+ * (the last when rounding leaves u past the sum): the draws and the probabilities of the moves
+ * and of their reverses share them. */
+static double w_sum(double (*w)(int), int lo, int hi, int shift)
 {
     double z = 0;
-    for (int i = 1; i <= k + 2; i++)
-        z += w_del(i);
-    return w_del(kd) / z / (k + 3 - kd);
+    for (int a = lo; a <= hi; a++)
+        z += w(a - shift);
+    return z;
 }
+static int w_pick(double (*w)(int), int lo, int hi, int shift, double u)
+{
+    u *= w_sum(w, lo, hi, shift);
+    int a = lo;
+    while (a < hi && (u -= w(a - shift)) >= 0)
+        a++;
+    return a;
+}
+
+/* The probability of deleting edges l..m (k_d = m - l) from a path of length k: k_d in proportion to
+ * w_del over 1..k + 2, then l uniform over the k + 3 - k_d places. */
+static double p_del(int k, int kd) { return w_del(kd) / w_sum(w_del, 1, k + 2, 0) / (k + 3 - kd); }
 
 /* The added lengths a move deleting k_d edges at l..m of a path of length k may add: a new camera
  * vertex needs an edge (m = k + 1), a new path at least one edge, and the result at most max_len;
@@ -44,13 +57,7 @@ static void add_range(int k, int l, int m, int kd, int max_len, int *lo, int *hi
     *hi = max_len - (k - kd);
 }
 
-static double p_add(int ka, int kd, int lo, int hi)
-{
-    double z = 0;
-    for (int a = lo; a <= hi; a++)
-        z += w_add(a - kd);
-    return w_add(ka - kd) / z;
-}
+static double p_add(int ka, int kd, int lo, int hi) { return w_add(ka - kd) / w_sum(w_add, lo, hi, kd); }
 
 /* Q of a path over the splits j = l + 1 .. hi of the segment it has between x_l and x_m. */
 static double q_of(const struct veach_state *st, int l, int hi)
@@ -70,26 +77,14 @@ struct bidir_move {
  * can be added there. */
 static bool draw_move(rng *r, int k, int max_len, struct bidir_move *mv)
 {
-    double z = 0, u;
-    for (int i = 1; i <= k + 2; i++)
-        z += w_del(i);
-    u = rng_uniform(r) * z;
-    mv->kd = 1;
-    while (mv->kd < k + 2 && (u -= w_del(mv->kd)) >= 0)
-        mv->kd++;
+    mv->kd = w_pick(w_del, 1, k + 2, 0, rng_uniform(r));
     mv->l = -1 + (int)(rng_uniform(r) * (k + 3 - mv->kd));
     if (mv->l > k + 1 - mv->kd) mv->l = k + 1 - mv->kd;
     mv->m = mv->l + mv->kd;
     int lo, hi;
     add_range(k, mv->l, mv->m, mv->kd, max_len, &lo, &hi);
     if (lo > hi) return false;
-    z = 0;
-    for (int a = lo; a <= hi; a++)
-        z += w_add(a - mv->kd);
-    u = rng_uniform(r) * z;
-    mv->ka = lo;
-    while (mv->ka < hi && (u -= w_add(mv->ka - mv->kd)) >= 0)
-        mv->ka++;
+    mv->ka = w_pick(w_add, lo, hi, mv->kd, rng_uniform(r));
     mv->ky = k - mv->kd + mv->ka;
     int top_y = mv->l + mv->ka < mv->ky ? mv->l + mv->ka : mv->ky, top_x = mv->m < k ? mv->m : k;
     int ny = top_y - mv->l, nx = top_x - mv->l; /* the splits each path's segment has */

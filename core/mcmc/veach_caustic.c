@@ -33,6 +33,23 @@ vec3 veach_turn(vec3 w, rng *r)
     return vnorm(frame_to_world(&f, v3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta))));
 }
 
+bool veach_leave_turned(const struct path_ctx *pc, rng *r, struct vertex *v, int n, vec3 omega, int to,
+                        enum transport mode, int stream, double *p_new)
+{
+    rgb beta;
+    vec3 d = veach_turn(omega, r);
+    if (!path_leave(pc, v, n, d, mode, &beta, p_new) || !(*p_new > 0) || !walk_hit(pc->sc, &v[n - 1], d, &v[n]))
+        return false;
+    v[n].beta = beta;
+    v[n].pdf_fwd = edge_pdf(*p_new, &v[n - 1], &v[n], d, vlen2(vsub(v[n].p, v[n - 1].p)));
+    struct sampler_rng fresh;
+    sampler_rng_init(&fresh, r);
+    if (walk_extend(pc, &fresh.base, v, n + 1, to, stream) != to) return false;
+    for (int i = n; i < to - 1; i++)
+        if (!v[i].delta) return false; /* as many delta vertices as before, then a non-delta one */
+    return true;
+}
+
 bool veach_caustic_perturb(const struct path_ctx *pc, rng *r, const struct veach_state *x, int m,
                            struct veach_scratch *w, double *p_old, double *p_new, const struct vertex **yp)
 {
@@ -44,17 +61,9 @@ bool veach_caustic_perturb(const struct path_ctx *pc, rng *r, const struct veach
     double d2;
     vec3 omega = edge_dir(&y[m], xp[m + 1], &d2);
     rgb beta;
-    if (!path_leave(pc, y, m + 1, omega, TRANSPORT_IMPORTANCE, &beta, p_old)) return false;
-    vec3 d = veach_turn(omega, r);
-    if (!path_leave(pc, y, m + 1, d, TRANSPORT_IMPORTANCE, &beta, p_new) || !walk_hit(pc->sc, &y[m], d, &y[m + 1]))
+    if (!path_leave(pc, y, m + 1, omega, TRANSPORT_IMPORTANCE, &beta, p_old) ||
+        !veach_leave_turned(pc, r, y, m + 1, omega, x->k, TRANSPORT_IMPORTANCE, STREAM_EMITTER, p_new))
         return false;
-    y[m + 1].beta = beta;
-    y[m + 1].pdf_fwd = edge_pdf(*p_new, &y[m], &y[m + 1], d, vlen2(vsub(y[m + 1].p, y[m].p)));
-    struct sampler_rng fresh;
-    sampler_rng_init(&fresh, r);
-    if (walk_extend(pc, &fresh.base, y, m + 2, x->k, STREAM_EMITTER) != x->k) return false;
-    for (int i = m + 1; i < x->k - 1; i++)
-        if (!y[i].delta) return false; /* as many delta vertices, then x'_{k-1} */
     for (int i = 0; i <= x->k; i++)
         yp[i] = i < x->k ? &y[i] : xp[i];
     return true;

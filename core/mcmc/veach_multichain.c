@@ -47,8 +47,6 @@ bool veach_multichain_perturb(const struct path_ctx *pc, rng *r, const struct ve
         xp[i] = &x->x[i];
     /* x's camera subpath down to x_m: the old directions' densities */
     if (!path_camera_form(pc, xp, k, k + 1 - m, w->xz)) return false;
-    struct sampler_rng fresh;
-    sampler_rng_init(&fresh, r);
     struct vertex *z = w->zs;
     *ratio = 1;
     for (int n = k + 1 - c; c > m; n = k + 1 - c) { /* z[n - 1] = x'_c */
@@ -56,17 +54,9 @@ bool veach_multichain_perturb(const struct path_ctx *pc, rng *r, const struct ve
         double d2, p_old, p_new;
         rgb beta;
         vec3 omega = edge_dir(xp[c], xp[c - 1], &d2);
-        if (!path_leave(pc, w->xz, n, omega, TRANSPORT_RADIANCE, &beta, &p_old) || !(p_old > 0)) return false;
-        vec3 d = veach_turn(omega, r);
-        if (!path_leave(pc, z, n, d, TRANSPORT_RADIANCE, &beta, &p_new) || !(p_new > 0) ||
-            !walk_hit(pc->sc, &z[n - 1], d, &z[n]))
+        if (!path_leave(pc, w->xz, n, omega, TRANSPORT_RADIANCE, &beta, &p_old) || !(p_old > 0) ||
+            !veach_leave_turned(pc, r, z, n, omega, k + 1 - next, TRANSPORT_RADIANCE, STREAM_CAMERA, &p_new))
             return false;
-        z[n].beta = beta;
-        z[n].pdf_fwd = edge_pdf(p_new, &z[n - 1], &z[n], d, vlen2(vsub(z[n].p, z[n - 1].p)));
-        int to = k + 1 - next;
-        if (walk_extend(pc, &fresh.base, z, n + 1, to, STREAM_CAMERA) != to) return false;
-        for (int i = n; i < to - 1; i++)
-            if (!z[i].delta) return false; /* as many delta vertices, then x'_next */
         *ratio *= p_new / p_old;
         c = next;
     }
