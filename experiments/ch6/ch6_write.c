@@ -10,6 +10,41 @@
 #include <math.h>
 #include <stdio.h>
 
+/* Every per-run quantity (ch6_claims.h), in the tables' column order: its name, its format in
+ * runs.csv, and whether stats.csv (make check-fig6.N) holds it: not the quantities that depend on
+ * the machine's speed or count the run's work (mutations, their rate, ESS per second, the mixing
+ * warning). A quantity is added here once; the three tables follow. */
+static const struct quantity {
+    enum ch6_q q;
+    const char *name, *fmt;
+    bool checked;
+} quantities[] = {
+    {Q_MUTATIONS, "mutations", "%.0f", false},
+    {Q_MPS, "mutations_per_s", "%.0f", false},
+    {Q_RELMSE, "relmse", "%.6g", true},
+    {Q_SPREAD, "block_spread", "%.6g", true},
+    {Q_NONZERO, "nonzero", "%.6g", true},
+    {Q_LARGE_NONZERO, "large_nonzero", "%.6g", true},
+    {Q_BLOCK_MEDIAN, "block_median_relmse", "%.6g", true},
+    {Q_TRIMMED, "trimmed_relmse", "%.6g", true},
+    {Q_BLUR4, "blur4_share", "%.6g", true},
+    {Q_BLUR8, "blur8_share", "%.6g", true},
+    {Q_CORRLEN, "corr_length", "%.6g", true},
+    {Q_NONZERO_CONN, "nonzero_per_connection", "%.6g", true},
+    {Q_RELMSE_SCALED, "relmse_scaled", "%.6g", true},
+    {Q_B_RSE, "b_rse", "%.6g", true},
+    {Q_INSET_SPREAD, "inset_block_spread", "%.6g", true},
+    {Q_INSET_BLUR8, "inset_blur8_share", "%.6g", true},
+    {Q_RHAT, "rhat", "%.4g", true},
+    {Q_ESS_PER_S, "ess_per_s", "%.4g", false},
+    {Q_STUCK, "stuck_share", "%.4g", true},
+    {Q_MIX_WARN, "mixing_warning", "%.0f", false},
+    {Q_NORM_ERR, "norm_error", "%.6g", true},
+    {Q_B_IMAGE_RSE, "b_image_rse", "%.6g", true},
+};
+enum { NQ = sizeof quantities / sizeof *quantities };
+_Static_assert((int)NQ == (int)Q_COUNT, "every quantity of enum ch6_q has a column");
+
 /* A row of runs.csv */
 struct run_row {
     const char *scene, *method;
@@ -23,35 +58,6 @@ static double run_seconds(const void *row, int q)
     (void)q;
     return ((const struct run_row *)row)->r->seconds;
 }
-#define RUN_Q(name, fmt, q) COL_COMPUTED(name, fmt, run_q, q)
-static const struct column run_cols[] = {COL_STRING(struct run_row, "scene", scene),
-                                         COL_STRING(struct run_row, "method", method),
-                                         COL_INT(struct run_row, "seed", "%d", seed),
-                                         COL_DOUBLE(struct run_row, "budget", "%g", budget),
-                                         COL_COMPUTED("seconds", "%.3f", run_seconds, 0),
-                                         RUN_Q("mutations", "%.0f", Q_MUTATIONS),
-                                         RUN_Q("mutations_per_s", "%.0f", Q_MPS),
-                                         RUN_Q("relmse", "%.6g", Q_RELMSE),
-                                         RUN_Q("block_spread", "%.6g", Q_SPREAD),
-                                         RUN_Q("nonzero", "%.6g", Q_NONZERO),
-                                         RUN_Q("large_nonzero", "%.6g", Q_LARGE_NONZERO),
-                                         RUN_Q("block_median_relmse", "%.6g", Q_BLOCK_MEDIAN),
-                                         RUN_Q("trimmed_relmse", "%.6g", Q_TRIMMED),
-                                         RUN_Q("blur4_share", "%.6g", Q_BLUR4),
-                                         RUN_Q("blur8_share", "%.6g", Q_BLUR8),
-                                         RUN_Q("corr_length", "%.6g", Q_CORRLEN),
-                                         RUN_Q("nonzero_per_connection", "%.6g", Q_NONZERO_CONN),
-                                         RUN_Q("relmse_scaled", "%.6g", Q_RELMSE_SCALED),
-                                         RUN_Q("b_rse", "%.6g", Q_B_RSE),
-                                         RUN_Q("inset_block_spread", "%.6g", Q_INSET_SPREAD),
-                                         RUN_Q("inset_blur8_share", "%.6g", Q_INSET_BLUR8),
-                                         RUN_Q("rhat", "%.4g", Q_RHAT),
-                                         RUN_Q("ess_per_s", "%.4g", Q_ESS_PER_S),
-                                         RUN_Q("stuck_share", "%.4g", Q_STUCK),
-                                         RUN_Q("mixing_warning", "%.0f", Q_MIX_WARN),
-                                         RUN_Q("norm_error", "%.6g", Q_NORM_ERR),
-                                         RUN_Q("b_image_rse", "%.6g", Q_B_IMAGE_RSE),
-                                         {0}};
 
 /* A row of summary.csv: each quantity's mean and its standard error over seeds */
 struct summary_row {
@@ -60,34 +66,38 @@ struct summary_row {
     int seeds;
     double mean[Q_COUNT], se[Q_COUNT];
 };
-#define SUM_Q(name, q)                                                                                                 \
-    COL_DOUBLE(struct summary_row, name, "%.6g", mean[q]), COL_DOUBLE(struct summary_row, name "_se", "%.3g", se[q])
-static const struct column summary_cols[] = {COL_STRING(struct summary_row, "scene", scene),
-                                             COL_STRING(struct summary_row, "method", method),
-                                             COL_DOUBLE(struct summary_row, "budget", "%g", budget),
-                                             COL_INT(struct summary_row, "seeds", "%d", seeds),
-                                             SUM_Q("relmse", Q_RELMSE),
-                                             SUM_Q("block_spread", Q_SPREAD),
-                                             SUM_Q("mutations_per_s", Q_MPS),
-                                             SUM_Q("nonzero", Q_NONZERO),
-                                             SUM_Q("large_nonzero", Q_LARGE_NONZERO),
-                                             SUM_Q("block_median_relmse", Q_BLOCK_MEDIAN),
-                                             SUM_Q("trimmed_relmse", Q_TRIMMED),
-                                             SUM_Q("blur4_share", Q_BLUR4),
-                                             SUM_Q("blur8_share", Q_BLUR8),
-                                             SUM_Q("corr_length", Q_CORRLEN),
-                                             SUM_Q("nonzero_per_connection", Q_NONZERO_CONN),
-                                             SUM_Q("relmse_scaled", Q_RELMSE_SCALED),
-                                             SUM_Q("b_rse", Q_B_RSE),
-                                             SUM_Q("inset_block_spread", Q_INSET_SPREAD),
-                                             SUM_Q("inset_blur8_share", Q_INSET_BLUR8),
-                                             SUM_Q("rhat", Q_RHAT),
-                                             SUM_Q("ess_per_s", Q_ESS_PER_S),
-                                             SUM_Q("stuck_share", Q_STUCK),
-                                             SUM_Q("mixing_warning", Q_MIX_WARN),
-                                             SUM_Q("norm_error", Q_NORM_ERR),
-                                             SUM_Q("b_image_rse", Q_B_IMAGE_RSE),
-                                             {0}};
+static double sum_mean(const void *row, int q) { return ((const struct summary_row *)row)->mean[q]; }
+static double sum_se(const void *row, int q) { return ((const struct summary_row *)row)->se[q]; }
+
+/* The column lists of runs.csv and summary.csv: their leading columns, then one (runs) or two
+ * (summary: the mean and "_se") per quantity; the "_se" columns' names are kept in se_names. */
+struct ch6_columns {
+    struct column run[5 + NQ + 1], summary[4 + 2 * NQ + 1]; /* each ends with {0} */
+    char se_names[NQ][48];
+};
+static void build_columns(struct ch6_columns *c)
+{
+    *c = (struct ch6_columns){0};
+    const struct column run_head[] = {
+        COL_STRING(struct run_row, "scene", scene), COL_STRING(struct run_row, "method", method),
+        COL_INT(struct run_row, "seed", "%d", seed), COL_DOUBLE(struct run_row, "budget", "%g", budget),
+        COL_COMPUTED("seconds", "%.3f", run_seconds, 0)};
+    const struct column sum_head[] = {
+        COL_STRING(struct summary_row, "scene", scene), COL_STRING(struct summary_row, "method", method),
+        COL_DOUBLE(struct summary_row, "budget", "%g", budget), COL_INT(struct summary_row, "seeds", "%d", seeds)};
+    int nr = 0, ns = 0;
+    for (size_t i = 0; i < sizeof run_head / sizeof *run_head; i++)
+        c->run[nr++] = run_head[i];
+    for (size_t i = 0; i < sizeof sum_head / sizeof *sum_head; i++)
+        c->summary[ns++] = sum_head[i];
+    for (int i = 0; i < NQ; i++) {
+        const struct quantity *k = &quantities[i];
+        snprintf(c->se_names[i], sizeof c->se_names[i], "%s_se", k->name);
+        c->run[nr++] = (struct column)COL_COMPUTED(k->name, k->fmt, run_q, k->q);
+        c->summary[ns++] = (struct column)COL_COMPUTED(k->name, "%.6g", sum_mean, k->q);
+        c->summary[ns++] = (struct column)COL_COMPUTED(c->se_names[i], "%.3g", sum_se, k->q);
+    }
+}
 
 /* A row of stats.csv */
 struct stat_row {
@@ -110,10 +120,10 @@ static void save(const struct ch6_equal *e, struct table *t, const char *file)
     if (!table_save(t, path, err, sizeof err)) die(DIE_RUNTIME, e->prog, "%s", err);
 }
 
-static void write_runs(const struct ch6_equal *e)
+static void write_runs(const struct ch6_equal *e, const struct column *cols)
 {
     struct table t;
-    FILE *f = table_open(&t, run_cols);
+    FILE *f = table_open(&t, cols);
     csv_meta(f, NULL, "ch6_equal: equal-time renders of %s", e->scene);
     csv_meta_commit(f);
     if (e->ref)
@@ -140,10 +150,10 @@ static void write_runs(const struct ch6_equal *e)
 }
 
 /* summary.csv; the means and errors at the largest budget into e->sum */
-static void write_summary(struct ch6_equal *e)
+static void write_summary(struct ch6_equal *e, const struct column *cols)
 {
     struct table t;
-    FILE *f = table_open(&t, summary_cols);
+    FILE *f = table_open(&t, cols);
     csv_meta(f, NULL, "mean +- standard error over %d seeds", e->seeds);
     if (e->insets) csv_meta(f, "insets", "%s", e->insets); /* for scripts/ch6-figure.sh */
     for (int mi = 0; mi < e->nm; mi++)
@@ -167,36 +177,16 @@ static void write_summary(struct ch6_equal *e)
  * runs define it. */
 static void write_stats(const struct ch6_equal *e)
 {
-    static const struct {
-        enum ch6_q q;
-        const char *name;
-    } st[] = {{Q_RELMSE, "relmse"},
-              {Q_RELMSE_SCALED, "relmse_scaled"},
-              {Q_BLOCK_MEDIAN, "block_median_relmse"},
-              {Q_TRIMMED, "trimmed_relmse"},
-              {Q_SPREAD, "block_spread"},
-              {Q_BLUR4, "blur4_share"},
-              {Q_BLUR8, "blur8_share"},
-              {Q_CORRLEN, "corr_length"},
-              {Q_NONZERO, "nonzero"},
-              {Q_LARGE_NONZERO, "large_nonzero"},
-              {Q_NONZERO_CONN, "nonzero_per_connection"},
-              {Q_B_RSE, "b_rse"},
-              {Q_INSET_SPREAD, "inset_block_spread"},
-              {Q_INSET_BLUR8, "inset_blur8_share"},
-              {Q_RHAT, "rhat"},
-              {Q_STUCK, "stuck_share"},
-              {Q_NORM_ERR, "norm_error"},
-              {Q_B_IMAGE_RSE, "b_image_rse"}}; /* not ESS per second: it depends on the machine's speed */
     struct table t;
     FILE *f = table_open(&t, stat_cols);
     csv_meta(f, NULL, "ch6_equal: mean +- standard error over %d seeds at the largest budget", e->seeds);
     for (int mi = 0; mi < e->nm; mi++)
-        for (size_t k = 0; e->ms[mi].available && k < sizeof st / sizeof *st; k++) {
+        for (int k = 0; e->ms[mi].available && k < NQ; k++) {
+            if (!quantities[k].checked) continue;
             double v[CH6_MAX_SEEDS];
-            struct stat_row row = {e->name, e->ms[mi].name, st[k].name, 0, 0, 0};
+            struct stat_row row = {e->name, e->ms[mi].name, quantities[k].name, 0, 0, 0};
             for (int s = 0; s < e->seeds; s++) {
-                double x = e->R[mi][e->nb - 1][s].q[st[k].q];
+                double x = e->R[mi][e->nb - 1][s].q[quantities[k].q];
                 if (isfinite(x)) v[row.seeds++] = x;
             }
             if (row.seeds < 2) continue;
@@ -208,7 +198,9 @@ static void write_stats(const struct ch6_equal *e)
 
 void ch6_write_tables(struct ch6_equal *e)
 {
-    write_runs(e);
-    write_summary(e);
+    struct ch6_columns cols;
+    build_columns(&cols);
+    write_runs(e, cols.run);
+    write_summary(e, cols.summary);
     write_stats(e);
 }
