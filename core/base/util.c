@@ -143,27 +143,44 @@ bool atomic_write(const char *path, write_fn write, void *ctx, char *err, size_t
     return ok;
 }
 
-static bool write_text(const char *tmp, void *ctx, char *err, size_t errlen)
+static bool write_chunk(const char *tmp, void *ctx, char *err, size_t errlen)
 {
-    struct chunk c = {ctx, strlen(ctx)};
-    return write_chunks(tmp, &c, 1, err, errlen);
+    return write_chunks(tmp, ctx, 1, err, errlen);
+}
+
+bool write_bytes_atomic(const char *path, const void *p, size_t n, char *err, size_t errlen)
+{
+    struct chunk c = {p, n};
+    return atomic_write(path, write_chunk, &c, err, errlen);
 }
 
 bool write_text_atomic(const char *path, const char *text, char *err, size_t errlen)
 {
-    return atomic_write(path, write_text, (void *)text, err, errlen);
+    return write_bytes_atomic(path, text, strlen(text), err, errlen);
 }
 
-char *read_whole_file(const char *path)
+void *read_file_bytes(const char *path, size_t *n)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return NULL;
     fseek(f, 0, SEEK_END);
-    long n = ftell(f);
+    long len = ftell(f);
     fseek(f, 0, SEEK_SET);
-    char *s = n >= 0 ? xmalloc((size_t)n + 1) : NULL;
-    size_t r = s ? fread(s, 1, (size_t)n, f) : 0;
-    if (s) s[r] = 0;
+    char *s = len >= 0 ? xmalloc((size_t)len + 1) : NULL;
+    size_t r = s ? fread(s, 1, (size_t)len, f) : 0;
+    bool ok = s && r == (size_t)len && !ferror(f);
     fclose(f);
+    if (!ok) {
+        free(s);
+        return NULL;
+    }
+    s[r] = 0;
+    *n = r;
     return s;
+}
+
+char *read_whole_file(const char *path)
+{
+    size_t n;
+    return read_file_bytes(path, &n);
 }

@@ -36,8 +36,11 @@ struct chunk {
 bool write_chunks(const char *path, const struct chunk *c, int n, char *err, size_t errlen);
 /* A whole file as a NUL-terminated string (the caller frees it), or NULL when it cannot be read. */
 char *read_whole_file(const char *path);
+/* The same for any file: its bytes (NUL-terminated too) and their number in *n. */
+void *read_file_bytes(const char *path, size_t *n);
 
 #endif
 
-/* Atomically writes a NUL-terminated text buffer to `path`. */
+/* Atomically writes a NUL-terminated text buffer, or n bytes, to `path`. */
 bool write_text_atomic(const char *path, const char *text, char *err, size_t errlen);
+bool write_bytes_atomic(const char *path, const void *p, size_t n, char *err, size_t errlen);

@@ -63,19 +63,11 @@ static bool link_or_copy(const char *src, const char *dst)
 {
     unlink(dst);
     if (link(src, dst) == 0) return true;
-    char tmp[4200];
-    snprintf(tmp, sizeof tmp, "%s.tmp%ld", dst, (long)getpid());
-    FILE *in = fopen(src, "rb"), *out = in ? fopen(tmp, "wb") : NULL;
-    bool ok = in && out;
-    unsigned char buf[1 << 16];
-    size_t k;
-    while (ok && (k = fread(buf, 1, sizeof buf, in)) > 0)
-        ok = fwrite(buf, 1, k, out) == k;
-    ok = ok && !ferror(in);
-    if (in) fclose(in);
-    if (out && fclose(out) != 0) ok = false;
-    if (ok && rename(tmp, dst) != 0) ok = false;
-    if (!ok) unlink(tmp);
+    size_t n; /* another file system: a copy, written atomically */
+    void *bytes = read_file_bytes(src, &n);
+    char err[4400];
+    bool ok = bytes && write_bytes_atomic(dst, bytes, n, err, sizeof err);
+    free(bytes);
     return ok;
 }
 
