@@ -97,6 +97,42 @@ Test(run_cache, a_stored_run_is_fetched_under_its_key_only)
     tmpdir_remove(dir);
 }
 
+/* Where no hard link can be made (another file system, forced here), store and fetch copy the
+ * files whole, as new files. */
+Test(run_cache, without_hard_links_the_files_are_copied_whole)
+{
+    char dir[256], cache[300], err[512], prefix[300], other[300];
+    tmpdir_make(dir, sizeof dir, "run-cache-copy");
+    snprintf(cache, sizeof cache, "%s/cache", dir);
+    struct run_cache rc = {.dir = cache, .build = 1, .scene = 2};
+    static unsigned char bytes[200000]; /* binary, with NULs, longer than one buffer of stdio */
+    for (size_t i = 0; i < sizeof bytes; i++)
+        bytes[i] = (unsigned char)(i * 2654435761u >> 13);
+    snprintf(prefix, sizeof prefix, "%s/pt-s1-spp2", dir);
+    snprintf(other, sizeof other, "%s/q-s1-spp2", dir);
+    char p[400];
+    snprintf(p, sizeof p, "%s.exr", prefix);
+    cr_assert(write_bytes_atomic(p, bytes, sizeof bytes, err, sizeof err), "%s", err);
+    put(dir, "pt-s1-spp2.csv", "# commit x\n");
+    const char *key = "run-cache-v1 build=1 scene=2\n--method pt\n";
+    setenv("PSS_TEST_NO_HARDLINK", "1", 1);
+    bool stored = run_cache_store(&rc, key, prefix, err, sizeof err), fetched = run_cache_fetch(&rc, key, other);
+    unsetenv("PSS_TEST_NO_HARDLINK");
+    cr_assert(stored, "%s", err);
+    cr_assert(fetched);
+    cr_assert_neq(inode(dir, "q-s1-spp2.exr"), inode(dir, "pt-s1-spp2.exr"));
+    size_t n = 0;
+    snprintf(p, sizeof p, "%s.exr", other);
+    void *got = read_file_bytes(p, &n);
+    cr_assert(got && n == sizeof bytes && !memcmp(got, bytes, n), "the copy differs (%zu bytes)", n);
+    free(got);
+    snprintf(p, sizeof p, "%s.csv", other);
+    char *csv = read_whole_file(p);
+    cr_assert(csv && !strcmp(csv, "# commit x\n"));
+    free(csv);
+    tmpdir_remove(dir);
+}
+
 /* Two ch6_equal studies share a run: the second writes its methods' options in another order and
  * another output folder, and links both runs of its first method from the first study's cache,
  * renders its second (a value differs), and adds it. */
