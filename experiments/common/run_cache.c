@@ -57,10 +57,8 @@ static void entry_path(const struct run_cache *rc, const char *key, char *out, s
     snprintf(out, n, "%s/%016llx", rc->dir, (unsigned long long)hash64(0, key, strlen(key)));
 }
 
-/* src to dst: a hard link, or where the file system refuses one, a copy under a temporary name
- * renamed into place. */
-/* A hard link, or a copy where none can be made (another file system; tests force the copy with
- * PSS_TEST_NO_HARDLINK set). */
+/* src to dst: a hard link, or a copy where none can be made (another file system; tests force the
+ * copy with PSS_TEST_NO_HARDLINK set). */
 static bool link_or_copy(const char *src, const char *dst)
 {
     unlink(dst);
