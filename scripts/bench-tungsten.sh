@@ -2,10 +2,10 @@
 # Error x time against Tungsten 0.2.2 (issue 44): whole processes, one thread each, SEEDS seeds at SPP
 # samples or mutations per pixel, on an ajar-like interior (scenes/ajar at 240x160, paths of up to 8
 # segments) and on scenes/glass-marble (200x150, its own 8). Pairs: BDPT / bidirectional_path_tracer
-# (ours with independent numbers and with --sampler sobol; Tungsten's default is its Sobol sampler,
-# with adaptive sampling), PSSMLT / kelemen_mlt (ours as the thesis splats, and with
-# --large-step-mis, Kelemen et al.'s weights, which kelemen_mlt uses), MMLT / multiplexed_mlt,
-# PITP / reversible_jump_mlt;
+# (ours with independent numbers and with --sampler sobol; Tungsten's default is its Sobol sampler;
+# its adaptive sampling, on by default, is read by its path tracer only), PSSMLT / kelemen_mlt
+# (ours as the thesis splats, and with --large-step-mis, Kelemen et al.'s weights, which kelemen_mlt
+# uses), MMLT / multiplexed_mlt, PITP / reversible_jump_mlt;
 # normalisation pools of about equal size: Tungsten's MMLT and reversible jump take 300 000 candidate
 # connections (every (s, t) of its BDPT samples: some 10 000 samples), ours 10 000 seed paths (one
 # state per length each; the default is 100 000), PSSMLT 10 000 BDPT samples on both sides. Time is the process's CPU time

@@ -45,13 +45,6 @@ static bool coat_enter(const struct bsdf *b, vec3 wi, struct coat_in *k)
     return true;
 }
 
-static rgb coat_absorb(const struct bsdf *b, double cos_ti, double cos_to)
-{
-    if (!(vmax(b->sigma_a) > 0)) return v3s(1);
-    double len = b->thickness * (1 / cos_ti + 1 / cos_to);
-    return v3(exp(-b->sigma_a.x * len), exp(-b->sigma_a.y * len), exp(-b->sigma_a.z * len));
-}
-
 /* The substrate's share of f and of the pdf (without P) at an outside wo; false when wo does not
  * reach the substrate (below the horizon). *wo_s, *cos_to: wo refracted into the layer. */
 static bool coat_substrate(const struct bsdf_ctx *c, const struct coat_in *k, vec3 wo, enum transport mode, rgb *f,
@@ -66,7 +59,8 @@ static bool coat_substrate(const struct bsdf_ctx *c, const struct coat_in *k, ve
     struct bsdf_ctx s = bsdf_child_ctx(c, 0);
     if (f) {
         double scale = eta * eta * (1 - k->Fi) * (1 - Fo);
-        *f = vmul(vscale(bsdf_eval(&s, k->wi_s, *wo_s, mode), scale), coat_absorb(b, k->cos_ti, cos_to));
+        *f = vmul(vscale(bsdf_eval(&s, k->wi_s, *wo_s, mode), scale),
+                  layer_transmittance(b->sigma_a, b->thickness, k->cos_ti, cos_to));
     }
     if (pdf) *pdf = bsdf_pdf(&s, k->wi_s, *wo_s) * eta * eta * wo.z / cos_to;
     return true;
@@ -85,7 +79,8 @@ static bool coat_sample_substrate(const struct bsdf_ctx *c, const struct coat_in
     double Fo = fresnel_dielectric(bs.wo.z, 1 / b->ior, &cos_t);
     if (Fo >= 1) return false; /* total internal reflection: Tungsten drops it too */
     out->wo = v3(bs.wo.x * b->ior, bs.wo.y * b->ior, cos_t);
-    out->weight = vmul(vscale(bs.weight, (1 - k->Fi) * (1 - Fo)), coat_absorb(b, k->cos_ti, bs.wo.z));
+    out->weight = vmul(vscale(bs.weight, (1 - k->Fi) * (1 - Fo)),
+                       layer_transmittance(b->sigma_a, b->thickness, k->cos_ti, bs.wo.z));
     /* a delta keeps its discrete probability; a density takes Snell's compression d omega' / d omega */
     out->pdf = bs.delta ? bs.pdf : bs.pdf * cos_t / (sqr(b->ior) * bs.wo.z);
     out->delta = bs.delta;

@@ -30,11 +30,7 @@ static rgb diffuse_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo, double Fi)
     double s = (1.0 - Fi) * (1.0 - Fo) / (b->ior * b->ior) * INV_PI;
     double fdr = b->diffuse_fresnel;
     rgb f = v3(s * a.x / (1.0 - a.x * fdr), s * a.y / (1.0 - a.y * fdr), s * a.z / (1.0 - a.z * fdr));
-    if (vmax(b->sigma_a) > 0) {
-        double len = b->thickness * (1.0 / wi.z + 1.0 / wo.z);
-        f = vmul(f, v3(exp(-b->sigma_a.x * len), exp(-b->sigma_a.y * len), exp(-b->sigma_a.z * len)));
-    }
-    return f;
+    return vmul(f, layer_transmittance(b->sigma_a, b->thickness, wi.z, wo.z));
 }
 
 static bool plastic_sample(const struct bsdf_ctx *c, vec3 wi, struct sampler *s, enum transport mode,

@@ -45,13 +45,10 @@ static rgb rp_f(const struct bsdf_ctx *c, vec3 wi, vec3 wo)
                     (4 * wi.z * wo.z));
     }
     double eta = 1 / b->ior, Fi = fr_out(wi.z, b->ior), Fo = fr_out(wo.z, b->ior);
-    rgb A = c->albedo, tau = vscale(b->sigma_a, b->thickness);
+    rgb A = c->albedo;
     rgb base = v3(A.x / (1 - A.x * b->diffuse_fresnel), A.y / (1 - A.y * b->diffuse_fresnel),
                   A.z / (1 - A.z * b->diffuse_fresnel));
-    if (vmax(tau) > 0) { /* most scenes' coats absorb nothing: three exp calls of 0 per evaluation */
-        double k = 1 / wi.z + 1 / wo.z;
-        base = vmul(base, v3(exp(-tau.x * k), exp(-tau.y * k), exp(-tau.z * k)));
-    }
+    base = vmul(base, layer_transmittance(b->sigma_a, b->thickness, wi.z, wo.z));
     return vadd(f, vscale(base, (1 - Fi) * (1 - Fo) * eta * eta * INV_PI));
 }
 

@@ -1,6 +1,6 @@
 /* The worker thread's iteration loop (MMLT paper Alg. 1-2; thesis §3.7 step 3). One iteration:
  * pick a chain (MMLT: a length k with probability P(k)), draw the step kind (large with
- * probability p_large), and hand the chain to the registry of mutations (mutation.h), which makes
+ * probability p_large; Veach's MLT has none), and hand the chain to the registry of mutations (mutation.h), which makes
  * the step: MCTLS's or fresh numbers for a large step, the small step (under PITP preceded by the
  * technique perturbation). Around it: the budget, the checkpoints' rendezvous, the progress. */
 #include "base/util.h"
@@ -127,7 +127,8 @@ static void iterate(struct worker *wk)
 {
     const struct mlt_opts *o = wk->opts;
     struct chain *c = pick_chain(wk);
-    bool large = rng_uniform(&wk->r) < o->p_large;
+    /* Veach's mutations have no large step (his bidirectional mutation is his independence move) */
+    bool large = o->method != MLT_VEACH && rng_uniform(&wk->r) < o->p_large;
     double t_start = o->time_proposals ? now_seconds() : 0;
     double px0 = c->cur.s[0].px, py0 = c->cur.s[0].py;
     if (wk->job->len_img) { /* progressive_norm.c discards a missed length's iterations without light */

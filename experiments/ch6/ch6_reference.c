@@ -1,6 +1,7 @@
 /* bin/ch6_equal's BDPT reference (ch6_equal.h): cached by common/refcache.h's rule, keyed by the
  * scene's content (its file, meshes and textures: ckpt_scene_hash) and the settings that change its
- * pixels (samples per pixel, seed, shortest length, resolution), rendered like the runs. */
+ * pixels (samples per pixel, seed, shortest length, resolution), rendered like the runs. The scene's
+ * content hash is computed here once and shared with the run cache's key (ch6_scene_identity). */
 #include "ch6/ch6_equal.h"
 #include "common/die.h"
 #include "common/proc.h"
