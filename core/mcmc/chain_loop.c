@@ -1,8 +1,9 @@
 /* The worker thread's iteration loop (MMLT paper Alg. 1-2; thesis §3.7 step 3). One iteration:
  * pick a chain (MMLT: a length k with probability P(k)), draw the step kind (large with
- * probability p_large; Veach's MLT has none), and hand the chain to the registry of mutations (mutation.h), which makes
- * the step: MCTLS's or fresh numbers for a large step, the small step (under PITP preceded by the
- * technique perturbation). Around it: the budget, the checkpoints' rendezvous, the progress. */
+ * probability p_large; Veach's MLT has none), and hand the chain to the registry of mutations
+ * (mutation.h), which makes the step: MCTLS's or fresh numbers for a large step, the small step
+ * (under PITP preceded by the technique perturbation). Around it: the budget, the checkpoints'
+ * rendezvous, the progress. */
 #include "base/util.h"
 #include "mcmc/mutation.h"
 #include "mcmc/splat_ev.h"

@@ -11,7 +11,8 @@
  * fewer than 16000 proposals are left out), and OUT/fig6.1-pitp.csv: per length, PITP's perturbations, the fraction
  * with j != i, the inversion failures and the mean |j - i|; OUT/fig6.1-mixing.csv: each run's chains'
  * mixing diagnostics per length (common/mixing_runs.h; a warning on stderr as bin/render's); and OUT/claims.csv,
- * OUT/claims.md: the thesis's claims on Fig. 6.1 decided from the runs' means and their standard error over the runs.
+ * OUT/claims.md: the thesis's claims on Fig. 6.1 decided from the runs' means and their standard error over the runs
+ * (fig6_1_claims.c).
  */
 #include "base/parallel.h"
 #include "base/util.h"
