@@ -3,6 +3,7 @@
 #include "base/util.h"
 #include "common/outdir.h"
 #include "io/checkpoint.h"
+#include "mcmc/mlt_options.h"
 #include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
@@ -22,6 +23,26 @@ static bool output_only(const char *opt)
 
 static bool is_option(const char *s) { return s[0] == '-' && s[1] == '-'; }
 
+/* An MCMC option given once with its default value ("--p-large 0.1", "--pitp-rate 1"): the same
+ * render as without it, so left out of the key; otherwise a study that spells a default out would
+ * not meet one that leaves it to bin/render. Given twice, the later wins in bin/render, so neither
+ * is left out. */
+static bool given_once_at_default(char *const *argv, int argc, int i, int count)
+{
+    if (count != 2) return false;
+    for (int j = 2; j < argc; j++)
+        if (j != i && !strcmp(argv[j], argv[i])) return false;
+    for (size_t k = 0; k < mlt_options_count; k++) {
+        const struct mlt_option *d = &mlt_options[k];
+        if (!d->cli || strcmp(d->cli, argv[i])) continue;
+        if (!d->def || (d->type != MLT_OPTION_INT && d->type != MLT_OPTION_DOUBLE)) return false;
+        char *end;
+        double v = strtod(argv[i + 1], &end);
+        return end != argv[i + 1] && !*end && v == strtod(d->def, NULL);
+    }
+    return false;
+}
+
 bool run_cache_key(const struct run_cache *rc, char *const *argv, int argc, char *key, size_t n)
 {
     enum { MAX_ITEMS = 128 };
@@ -31,7 +52,7 @@ bool run_cache_key(const struct run_cache *rc, char *const *argv, int argc, char
         if (is_option(argv[i]))
             while (j < argc && !is_option(argv[j]))
                 j++;
-        if (!output_only(argv[i])) {
+        if (!output_only(argv[i]) && !given_once_at_default(argv, argc, i, j - i)) {
             if (m == MAX_ITEMS) return false;
             first[m] = i;
             count[m++] = j - i;

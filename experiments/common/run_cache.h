@@ -7,7 +7,9 @@
  * reuses a run of the old code), the scene's content (ckpt_scene_hash: file, meshes, textures), and
  * bin/render's options in a canonical order (an option and its values as one item, sorted by the
  * option's name, stably, so a repeated option keeps its order; the scene's path and the options
- * that only say where and how to write, --out, --quiet, --checkpoint and --resume, left out). That
+ * that only say where and how to write, --out, --quiet, --checkpoint and --resume, left out, and so
+ * is an MCMC option given once at its default, mcmc/mlt_options.h: "--method mmlt" and "--method
+ * mmlt --p-large 0.1" are one render). That
  * text is the key; the entry is DIR/<64-bit hash of the key>/ holding the key and the run's files
  * (PREFIX.exr, .csv, .png, .log, .mixing.csv, ...), hard links where the file system allows, so a
  * cached run costs no space beside the study's copy.

@@ -23,16 +23,16 @@ Test(run_cache, the_key_is_the_options_in_canonical_order)
 {
     static char k[4][4096];
     struct run_cache rc = {.dir = "x", .build = 1, .scene = 2};
-    char *a[] = {"render", "scenes/a.json", "--method", "mmlt", "--p-large",  "0.1", "--seed",
+    char *a[] = {"render", "scenes/a.json", "--method", "mmlt", "--p-large",  "0.2", "--seed",
                  "3",      "--quiet",       "--out",    "o/x",  "--cpu-time", "60"};
     char *b[] = {
         "bin/render", "other/path.json", "--cpu-time", "60",           "--seed", "3", "--out", "p/y", "--p-large",
-        "0.1",        "--method",        "mmlt",       "--checkpoint", "60"};
+        "0.2",        "--method",        "mmlt",       "--checkpoint", "60"};
     const char *ka = key_of(&rc, a, 13, k[0]);
     cr_assert_str_eq(ka, key_of(&rc, b, 14, k[1])); /* order, program, scene path, output options */
     cr_assert_str_eq(ka, "run-cache-v1 build=0000000000000001 scene=0000000000000002\n--cpu-time 60\n--method "
-                         "mmlt\n--p-large 0.1\n--seed 3\n");
-    char *c[] = {"render", "s", "--method", "mmlt", "--p-large", "0.2", "--seed", "3", "--cpu-time", "60"};
+                         "mmlt\n--p-large 0.2\n--seed 3\n");
+    char *c[] = {"render", "s", "--method", "mmlt", "--p-large", "0.3", "--seed", "3", "--cpu-time", "60"};
     cr_assert_str_neq(ka, key_of(&rc, c, 10, k[1])); /* a value */
     struct run_cache other_build = rc, other_scene = rc;
     other_build.build = 9;
@@ -44,6 +44,29 @@ Test(run_cache, the_key_is_the_options_in_canonical_order)
     cr_assert_str_neq(key_of(&rc, d1, 6, k[2]), key_of(&rc, d2, 6, k[3]));
     char *flag1[] = {"render", "s", "--one-chain", "--seed", "1"}, *flag2[] = {"render", "s", "--seed", "1"};
     cr_assert_str_neq(key_of(&rc, flag1, 5, k[2]), key_of(&rc, flag2, 4, k[3])); /* a flag without a value */
+}
+
+/* An MCMC option given once at its default is the render without it: the figures' "--method mmlt"
+ * meets the design studies' "--method mmlt --p-large 0.1" (and PITP's "--pitp-rate 1"); a value
+ * that differs, or the option given twice (the later wins), keeps it in the key. */
+Test(run_cache, an_option_at_its_default_is_the_render_without_it)
+{
+    static char k[3][4096];
+    struct run_cache rc = {.dir = "x", .build = 1, .scene = 2};
+    char *bare[] = {"render", "s", "--method", "pitp", "--seed", "3"};
+    char *spelt[] = {"render", "s", "--method", "pitp", "--p-large", "0.10", "--pitp-rate", "1", "--seed", "3"};
+    const char *kb = key_of(&rc, bare, 6, k[0]);
+    cr_assert_str_eq(kb, key_of(&rc, spelt, 10, k[1]));
+    char *other[] = {"render", "s", "--method", "pitp", "--p-large", "0.3", "--seed", "3"};
+    const char *ko = key_of(&rc, other, 8, k[1]);
+    cr_assert_str_neq(kb, ko);
+    /* bin/render renders this at 0.1: its key must be neither 0.3's nor the bare one */
+    char *twice[] = {"render", "s", "--method", "pitp", "--p-large", "0.3", "--p-large", "0.1", "--seed", "3"};
+    const char *kt = key_of(&rc, twice, 10, k[2]);
+    cr_assert_str_neq(kt, ko);
+    cr_assert_str_neq(kt, kb);
+    char *bad[] = {"render", "s", "--method", "pitp", "--p-large", "0.1x", "--seed", "3"};
+    cr_assert_str_neq(kb, key_of(&rc, bad, 8, k[2])); /* not a number: bin/render refuses it, the key keeps it */
 }
 
 static void put(const char *dir, const char *name, const char *text)
