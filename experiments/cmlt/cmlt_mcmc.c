@@ -1,12 +1,12 @@
 /* The six MCMC algorithms of CMLT §5; see cmlt_mcmc.h for the equations each one follows. */
 #include "cmlt/cmlt_mcmc.h"
+#include "base/parallel.h"
 #include "base/rng.h"
 #include "base/util.h"
 #include "cmlt/cmlt_charts.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 const char *const cmlt_algo_names[CMLT_NALGO] = {"PSS-MLT-1",   "PSS-MLT-2", "PSS-MLT-AVG",
                                                  "PSS-MLT-MIX", "CMLT-EPSM", "CMLT"};
@@ -272,19 +272,12 @@ static void seed_pass(struct ctx *cx, struct chain *ch, int nch, uint64_t n_seed
 
 /* ---- driver ------------------------------------------------------------------------------- */
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
 #define BATCH 65536u
 
 void cmlt_run(enum cmlt_algo a, const struct cmlt_config *cfg, uint64_t seed, uint64_t stream, double *img,
               struct cmlt_stats *st, _Atomic uint64_t *progress, const volatile sig_atomic_t *stop)
 {
-    double t0 = now();
+    double t0 = now_seconds();
     memset(st, 0, sizeof *st);
     struct ctx *cx = xmalloc(sizeof *cx);
     cx->w = cfg->w;
@@ -355,5 +348,5 @@ void cmlt_run(enum cmlt_algo a, const struct cmlt_config *cfg, uint64_t seed, ui
     for (size_t i = 0; i < 3 * (size_t)cfg->w * cfg->h; i++)
         img[i] *= scale;
     free(cx);
-    st->seconds = now() - t0;
+    st->seconds = now_seconds() - t0;
 }
