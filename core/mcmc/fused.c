@@ -146,7 +146,10 @@ static void step(struct worker *wk, struct chain *c, bool large, double t_start)
         bool seen = made && visible(pc->sc, yp[j - 1], yp[j]);
         if (made && !seen) pr.failed = false;
         /* the first moved vertex: x'_m, or after the caustic perturbation's x_m x'_{m+1} */
-        if (seen && invert_and_trace(wk, c, yp, move == FUSED_CAUSTIC ? m + 1 : m, &pr)) {
+        bool inverted = seen && invert_and_trace(wk, c, yp, move == FUSED_CAUSTIC ? m + 1 : m, &pr);
+        wk->st->fused_inverted += seen;
+        wk->st->fused_not_inverted += seen && !inverted;
+        if (inverted) {
             double rx = c->x->ratios[j], ry = wk->spare->ratios[j];
             pr.failed = !(rx > 0 && ry > 0 && p_old > 0);
             pr.tr = pr.failed ? 0 : rx / ry * p_new / p_old;

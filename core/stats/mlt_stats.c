@@ -88,6 +88,8 @@ void stats_merge(struct mlt_stats *dst, const struct mlt_stats *src)
     nonfinite_add(&dst->nonfinite, &src->nonfinite);
     dst->conn_tried += src->conn_tried;
     dst->conn_nonzero += src->conn_nonzero;
+    dst->fused_inverted += src->fused_inverted;
+    dst->fused_not_inverted += src->fused_not_inverted;
     for (int l = 0; l < STATS_LENGTHS; l++) {
         dst->large[l].sum += src->large[l].sum;
         dst->large[l].sq += src->large[l].sq;

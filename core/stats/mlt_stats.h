@@ -18,9 +18,9 @@
  * (mcmc/veach_lens.c, veach_caustic.c); failed: a path the perturbation does not move. The
  * PROPOSAL_FUSED_ kinds record the same perturbations fused into MMLT and PITP (mcmc/fused.c) by
  * the chain's length; failed: refused as Veach's are, or the perturbed path not invertible by the
- * chain's technique (an inversion or its retrace failed). PROPOSAL_LENS_SUBPATH records Veach's lens
- * subpath mutation (veach_lens.c), failed as the lens perturbation's, and PROPOSAL_MULTICHAIN its
- * multi-chain perturbation (veach_multichain.c). */
+ * chain's technique (an inversion or its retrace failed; those alone in fused_not_inverted).
+ * PROPOSAL_LENS_SUBPATH records Veach's lens subpath mutation (veach_lens.c), failed as the lens
+ * perturbation's, and PROPOSAL_MULTICHAIN its multi-chain perturbation (veach_multichain.c). */
 enum proposal_kind {
     PROPOSAL_SMALL,
     PROPOSAL_LARGE,
@@ -69,6 +69,10 @@ struct mlt_stats {
     struct accept_cell total[PROPOSAL_KINDS];
     struct nonfinite nonfinite;    /* by length, as the rows (path/splat.h) */
     long conn_tried, conn_nonzero; /* connections the chains evaluated, and those with a contribution */
+    /* fused perturbations (mcmc/fused.c) made with their new edge unoccluded, so inverted under the
+     * chain's technique, and of those the ones whose inversion or retrace failed: the rows' `failed`
+     * counts these with the refusals before inversion */
+    long fused_inverted, fused_not_inverted;
     struct target_sum large[STATS_LENGTHS];
     /* progressive_norm only: iterations of each length's chains, and those spent at a state
      * without light (a length the seed pass missed starts there) */

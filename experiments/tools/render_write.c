@@ -155,6 +155,10 @@ bool render_write_csv(const struct render_args *a, const struct mlt_result *r, c
         csv_meta(f, "pitp_failures", "%ld", pc->failed);
         csv_meta(f, "pitp_failure_fraction", "%.9g", pc->attempts ? (double)pc->failed / pc->attempts : 0.0);
     }
+    if (m->fused != FUSED_NONE) { /* how often the chain's technique could not invert a perturbed path */
+        csv_meta(f, "fused_inverted", "%ld", r->stats.fused_inverted);
+        csv_meta(f, "fused_inversion_failures", "%ld", r->stats.fused_not_inverted);
+    }
     /* MMLT paper §5: PSSMLT evaluates every connection of a sample, MMLT one per proposal */
     csv_meta(f, "connections_evaluated", "%ld", r->stats.conn_tried);
     csv_meta(f, "connections_nonzero", "%ld", r->stats.conn_nonzero);
