@@ -56,9 +56,9 @@ struct table1_summary {
     int partial;
 };
 
-/* The error line of a failed write: "table1_cmlt: ..." and exit status 1. */
+/* table1_write.c, for both: the error line of a failed write ("table1_cmlt: ...", exit status 1),
+ * and n as the tables and file names write it (16M, 1024k, 1500). */
 void table1_save_or_die(bool ok, const char *err);
-/* n as the tables and file names write it: 16M, 1024k, 1500. */
 const char *table1_fmt_n(uint64_t n, char *buf, size_t len);
 
 /* table1_runs.c: the reference, loaded from OUT/reference.exr when OUT/reference.key names this
