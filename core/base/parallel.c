@@ -124,6 +124,7 @@ void progress_init(struct progress *p, const char *label, long total, bool enabl
     atomic_init(&p->last_draw_ms, 0);
     p->start = now_seconds();
     p->enabled = enabled;
+    p->tty = isatty(2);
     atomic_init(&p->drawn, false);
 }
 
@@ -136,7 +137,8 @@ static void draw(struct progress *p, long done)
         b[i] = i < bar ? '#' : '.';
     b[30] = 0;
     double eta = f > 0 ? el * (1 - f) / f : 0;
-    fprintf(stderr, "\r%s [%s] %5.1f%%  %.0fs elapsed, ~%.0fs left ", p->label, b, 100 * f, el, eta);
+    fprintf(stderr, "%s%s [%s] %5.1f%%  %.0fs elapsed, ~%.0fs left%s", p->tty ? "\r" : "", p->label, b, 100 * f, el,
+            eta, p->tty ? " " : "\n");
     p->drawn = true;
 }
 
@@ -155,7 +157,8 @@ static void maybe_draw(struct progress *p, long done)
     if (!p->enabled) return;
     long ms = (long)((now_seconds() - p->start) * 1000);
     long last = atomic_load(&p->last_draw_ms);
-    if (ms < 1000 || ms - last < 100) return;
+    long every = p->tty ? 100 : 10000;
+    if (ms < 1000 || ms - last < every) return;
     if (atomic_compare_exchange_strong(&p->last_draw_ms, &last, ms)) draw(p, done);
 }
 
@@ -163,7 +166,7 @@ void progress_finish(struct progress *p)
 {
     if (p->enabled && p->drawn) {
         draw(p, atomic_load(&p->done));
-        fputc('\n', stderr);
+        if (p->tty) fputc('\n', stderr);
     }
 }
 

@@ -27,14 +27,16 @@ void pass_barrier_init(struct pass_barrier *b, int threads, bool (*decide)(void 
 bool pass_barrier_arrive(struct pass_barrier *b);
 void pass_barrier_destroy(struct pass_barrier *b);
 
-/* Progress over `total` units; drawn only after one second and at most ten times a second. */
+/* Progress over `total` units. On a terminal a bar redrawn in place, after one second and at most
+ * ten times a second; into a log (stderr not a terminal) a line every ten seconds, so that a long
+ * batch run's log says how far it got. */
 struct progress {
     const char *label;
     long total;
     atomic_long done;
     atomic_long last_draw_ms;
     double start;
-    bool enabled;
+    bool enabled, tty;
     atomic_bool drawn;
 };
 void progress_init(struct progress *p, const char *label, long total, bool enabled);

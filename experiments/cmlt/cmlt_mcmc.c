@@ -275,7 +275,7 @@ static void seed_pass(struct ctx *cx, struct chain *ch, int nch, uint64_t n_seed
 #define BATCH 65536u
 
 void cmlt_run(enum cmlt_algo a, const struct cmlt_config *cfg, uint64_t seed, uint64_t stream, double *img,
-              struct cmlt_stats *st, _Atomic uint64_t *progress, const volatile sig_atomic_t *stop)
+              struct cmlt_stats *st, struct progress *progress, const volatile sig_atomic_t *stop)
 {
     double t0 = now_seconds();
     memset(st, 0, sizeof *st);
@@ -335,7 +335,7 @@ void cmlt_run(enum cmlt_algo a, const struct cmlt_config *cfg, uint64_t seed, ui
             }
         }
         done += m;
-        if (progress) atomic_fetch_add(progress, m * (uint64_t)nch);
+        if (progress) progress_add(progress, (long)(m * (uint64_t)nch));
         if (stop && *stop) {
             st->partial = 1;
             break;

@@ -23,8 +23,9 @@
 #define CMLT_MCMC_H
 
 #include <signal.h>
-#include <stdatomic.h>
 #include <stdint.h>
+
+struct progress; /* base/parallel.h */
 
 enum cmlt_algo { CMLT_PSS1, CMLT_PSS2, CMLT_PSS_AVG, CMLT_PSS_MIX, CMLT_EPSM, CMLT_CMLT, CMLT_NALGO };
 extern const char *const cmlt_algo_names[CMLT_NALGO];
@@ -54,10 +55,10 @@ void cmlt_config_default(struct cmlt_config *c);
 
 /* Runs algorithm `a` with a generator seeded by (seed, stream); writes the image estimate (3
  * doubles per pixel, row 0 on top, pixel value = radiance averaged over the pixel) into img, which
- * must hold w*h*3 doubles. Allocates only at start. `progress` (may be NULL) receives chain steps as
+ * must hold w*h*3 doubles. Allocates only at start. `progress` (may be NULL) counts chain steps as
  * they are done; a non-zero *stop (may be NULL) ends the chains early (stats->partial = 1). */
 void cmlt_run(enum cmlt_algo a, const struct cmlt_config *c, uint64_t seed, uint64_t stream, double *img,
-              struct cmlt_stats *stats, _Atomic uint64_t *progress, const volatile sig_atomic_t *stop);
+              struct cmlt_stats *stats, struct progress *progress, const volatile sig_atomic_t *stop);
 
 /* Replica-exchange chart swap ratio (Eq. 22 with Eq. 24, i.e. Eq. 25 written with path densities,
  * r_i = 1/p_i): chain i holds x1, chain j holds x2; the swap gives chain i the path x2 and chain j

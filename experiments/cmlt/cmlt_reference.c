@@ -1,5 +1,6 @@
 /* Reference image of the CMLT toy; see cmlt_reference.h. */
 #include "cmlt/cmlt_reference.h"
+#include "base/parallel.h"
 #include "base/rng.h"
 #include "base/util.h"
 #include "cmlt/cmlt_scene.h"
@@ -13,7 +14,7 @@ struct ref_job {
     uint64_t seed;
     double *img, *var;
     double b[3];
-    _Atomic uint64_t *progress;
+    struct progress *progress;
 };
 
 static inline void add_b(double *b, const struct cmlt_eval *e, double k)
@@ -91,13 +92,13 @@ static void *ref_worker(void *arg)
                 J->var[3 * ((size_t)j * J->w + i) + q] = fmax(0.0, sum2[q] / n - m * m) / n;
             }
         }
-        if (J->progress) atomic_fetch_add(J->progress, (uint64_t)J->w * n);
+        if (J->progress) progress_add(J->progress, (long)J->w * n);
     }
     return NULL;
 }
 
 void cmlt_reference(int w, int h, int spp, uint64_t seed, int threads, double *img, struct cmlt_ref_result *res,
-                    _Atomic uint64_t *progress)
+                    struct progress *progress)
 {
     if (threads < 1) threads = 1;
     double *var = xmalloc(sizeof(double) * 3 * (size_t)w * h);

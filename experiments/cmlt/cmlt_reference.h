@@ -9,8 +9,9 @@
 #ifndef CMLT_REFERENCE_H
 #define CMLT_REFERENCE_H
 
-#include <stdatomic.h>
 #include <stdint.h>
+
+struct progress; /* base/parallel.h */
 
 struct cmlt_ref_result {
     double b[3];       /* integrals of f*, w_1 f*, w_2 f* over path space */
@@ -19,6 +20,6 @@ struct cmlt_ref_result {
 
 /* img: w*h*3 doubles. Rows are spread over `threads` threads; deterministic for a given seed. */
 void cmlt_reference(int w, int h, int spp, uint64_t seed, int threads, double *img, struct cmlt_ref_result *res,
-                    _Atomic uint64_t *progress);
+                    struct progress *progress);
 
 #endif

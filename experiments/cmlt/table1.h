@@ -4,6 +4,7 @@
 #ifndef TABLE1_H
 #define TABLE1_H
 
+#include "base/parallel.h"
 #include "cmlt/cmlt_claims.h"
 #include "cmlt/cmlt_mcmc.h"
 #include "cmlt/cmlt_reference.h"
@@ -40,9 +41,7 @@ struct table1_pool {
     struct table1_job *jobs;
     int njobs;
     _Atomic int next;
-    _Atomic uint64_t progress;
-    _Atomic int finished;
-    _Atomic int running;
+    struct progress progress;
     const volatile sig_atomic_t *stop; /* set by the caller's SIGINT handler: chains end early */
     double **keep;                     /* [bidx * CMLT_NALGO + algo]: image of seed 0 */
 };

@@ -6,48 +6,16 @@
 #include "cmlt/cmlt_scene.h"
 #include "cmlt/table1.h"
 #include <math.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
 
-/* Progress bar on stderr while `progress` climbs to `total`; returns when *finished is set. */
-static void progress_bar(const char *what, _Atomic uint64_t *progress, uint64_t total, _Atomic int *finished, double t0)
+/* The bar (or, into a log, a line every 10 s) ends with the phase's time, which the logs of long
+ * paper-scale runs are read for. */
+static void table1_progress_done(struct progress *prog)
 {
-    int tty = isatty(2);
-    double last = -1;
-    while (!atomic_load(finished)) {
-        struct timespec ts = {0, 200 * 1000 * 1000};
-        nanosleep(&ts, NULL);
-        double t = now_seconds() - t0;
-        if (!tty && t - last < 10) continue; /* logs: a line every 10 s */
-        last = t;
-        double f = total ? (double)atomic_load(progress) / total : 1;
-        if (f > 1) f = 1;
-        int w = 30, k = (int)(f * w);
-        fprintf(stderr, "%s%s [%.*s%*s] %5.1f%% %6.1fs%s", tty ? "\r" : "", what, k, "##############################",
-                w - k, "", 100 * f, t, tty ? "" : "\n");
-    }
-    fprintf(stderr, "%s%s done in %.1fs%*s\n", tty ? "\r" : "", what, now_seconds() - t0, 30, "");
-}
-
-struct ref_thread {
-    int w, h, spp, threads;
-    uint64_t seed;
-    double *img;
-    struct cmlt_ref_result res;
-    _Atomic uint64_t progress;
-    _Atomic int finished;
-};
-
-static void *ref_thread_main(void *arg)
-{
-    struct ref_thread *r = arg;
-    cmlt_reference(r->w, r->h, r->spp, r->seed, r->threads, r->img, &r->res, &r->progress);
-    atomic_store(&r->finished, 1);
-    return NULL;
+    progress_finish(prog);
+    fprintf(stderr, "%s done in %.1fs\n", prog->label, now_seconds() - prog->start);
 }
 
 struct image *table1_reference(const struct table1_opts *o, struct cmlt_ref_result *res)
@@ -77,17 +45,11 @@ struct image *table1_reference(const struct table1_opts *o, struct cmlt_ref_resu
         }
     }
     struct image *im = img_create(o->res, o->res);
-    struct ref_thread rt = {
-        .w = o->res, .h = o->res, .spp = o->ref_spp, .threads = o->threads, .seed = 0xC3117ull, .img = im->px};
-    atomic_init(&rt.progress, 0);
-    atomic_init(&rt.finished, 0);
     int sq = (int)sqrt((double)o->ref_spp);
-    pthread_t t;
-    double t0 = now_seconds();
-    ASSERT(pthread_create(&t, NULL, ref_thread_main, &rt) == 0);
-    progress_bar("reference", &rt.progress, (uint64_t)o->res * o->res * sq * sq, &rt.finished, t0);
-    pthread_join(t, NULL);
-    *res = rt.res;
+    struct progress prog;
+    progress_init(&prog, "reference", (long)o->res * o->res * sq * sq, true);
+    cmlt_reference(o->res, o->res, o->ref_spp, 0xC3117ull, o->threads, im->px, res, &prog);
+    table1_progress_done(&prog);
     table1_save_or_die(img_write_exr(im, 1.0, path, err, sizeof err), err);
     snprintf(path, sizeof path, "%s/reference.png", o->out);
     table1_save_or_die(img_write_png(im, 1.0, path, err, sizeof err), err);
@@ -106,8 +68,9 @@ static double rmse(const double *a, const double *b, size_t n)
     return sqrt(s / n);
 }
 
-static void *worker(void *arg)
+static void worker(int tid, void *arg)
 {
+    (void)tid;
     struct table1_pool *p = arg;
     const struct table1_opts *o = p->o;
     size_t npx = 3 * (size_t)o->res * o->res;
@@ -131,8 +94,6 @@ static void *worker(void *arg)
         J->rmse = p->ref ? rmse(img, p->ref->px, npx) : 0;
     }
     free(scratch);
-    if (atomic_fetch_sub(&p->running, 1) == 1) atomic_store(&p->finished, 1);
-    return NULL;
 }
 
 static int cmp_job(const void *a, const void *b)
@@ -178,15 +139,7 @@ void table1_pool_run(struct table1_pool *p, const char *what)
             p->jobs[i].n %
                 (p->jobs[i].algo == CMLT_PSS1 || p->jobs[i].algo == CMLT_PSS2 || p->jobs[i].algo == CMLT_EPSM ? 1 : 2);
     atomic_init(&p->next, 0);
-    atomic_init(&p->progress, 0);
-    atomic_init(&p->finished, 0);
-    atomic_init(&p->running, o->threads);
-    pthread_t *t = xmalloc(sizeof *t * (size_t)o->threads);
-    double t0 = now_seconds();
-    for (int i = 0; i < o->threads; i++)
-        ASSERT(pthread_create(&t[i], NULL, worker, p) == 0);
-    progress_bar(what, &p->progress, total, &p->finished, t0);
-    for (int i = 0; i < o->threads; i++)
-        pthread_join(t[i], NULL);
-    free(t);
+    progress_init(&p->progress, what, (long)total, true);
+    parallel_run(o->threads, worker, p);
+    table1_progress_done(&p->progress);
 }
