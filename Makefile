@@ -172,10 +172,12 @@ $(BUILD)/%.cpp.o: %.cpp $(OIIO_FLAGS_FILE) | deps
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
 
 # The sub-make brings the instrumented renderer up to date; only when it changed is it retrained
-# and the stamp touched, which recompiles every release object against the new profiles.
+# and the stamp touched, which recompiles every release object against the new profiles. Its own
+# BUILD and BIN on its command line: a `make BUILD=DIR` passes DIR down, which would otherwise put
+# the instrumented objects where the release ones go.
 .PHONY: FORCE
 build/pgo.stamp: FORCE | deps
-	@$(MAKE) --no-print-directory PGO_STAGE=gen MPI=0 build/pgo-gen/bin/render
+	@$(MAKE) --no-print-directory PGO_STAGE=gen MPI=0 BUILD=build/pgo-gen BIN=build/pgo-gen/bin build/pgo-gen/bin/render
 	@if [ ! -e $@ ] || [ build/pgo-gen/bin/render -nt $@ ]; then \
 	  set -e; rm -rf $(PGO_DIR); mkdir -p $(PGO_DIR); \
 	  echo "training the profile-guided build (scripts/pgo-train.sh)"; \
