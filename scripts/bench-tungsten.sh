@@ -13,12 +13,14 @@
 # relMSE per channel, (I - R)^2 / (R^2 + 0.01), against Tungsten's own BDPT at REF_SPP on 2 threads,
 # cached in OUT. Efficiency = 1 / (mean relMSE x mean time). Needs `tungsten` on PATH
 # (../shared/README.md builds it); without it, says so and exits 0.
-# usage: bench-tungsten.sh BIN_DIR [OUT] (env: SEEDS=4 SPP=256 REF_SPP=8192 SCENES="ajar glass-marble")
+# usage: bench-tungsten.sh BIN_DIR [OUT] (env: SEEDS=4 SPP=256 REF_SPP=8192 SCENES="ajar glass-marble"
+#        PAIRS="bdpt bdpt-sobol pssmlt pssmlt-mis mmlt pitp"; a variant needs its base pair before it)
 set -euo pipefail
 [ $# -ge 1 ] || { echo "usage: bench-tungsten.sh BIN_DIR [OUT]" >&2; exit 2; }
 bin=$1 out=${2:-results/bench-tungsten}
 command -v tungsten >/dev/null || { echo "bench-tungsten: no tungsten on PATH: not measured"; exit 0; }
 SEEDS=${SEEDS:-4} SPP=${SPP:-256} REF_SPP=${REF_SPP:-8192} SCENES=${SCENES:-"ajar glass-marble"}
+PAIRS=${PAIRS:-"bdpt bdpt-sobol pssmlt pssmlt-mis mmlt pitp"}
 mkdir -p "$out"
 
 # scene_json SCENE INTEGRATOR_TYPE EXTRA SPP SEED NAME: a copy of the scene at the benchmark's size
@@ -67,6 +69,8 @@ tungsten_type() {
   esac
 }
 
+runs=$out/runs.csv # every run of this invocation: the medians below, and per-seed reading
+echo "scene,pair,renderer,seed,relmse,cpu_s" > "$runs"
 printf "| scene | pair | ours relMSE | Tungsten relMSE | ours CPU s | Tungsten CPU s | relMSE, ours / Tungsten | time, Tungsten / ours | efficiency, ours / Tungsten |\n"
 printf "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
 for scene in $SCENES; do
@@ -75,7 +79,7 @@ for scene in $SCENES; do
     j=$(scene_json "$scene" bidirectional_path_tracer "" "$REF_SPP" 1000 "$scene-ref")
     (cd "$out" && tungsten -t 2 -s 1000 "$(basename "$j")" >/dev/null 2>&1)
   fi
-  for pair in bdpt bdpt-sobol pssmlt pssmlt-mis mmlt pitp; do
+  for pair in $PAIRS; do
     base=${pair%-*} # a variant (-sobol, -mis) is compared with its base pair's Tungsten runs
     tp=$(tungsten_type "$base")
     o_err=0 o_t=0 t_err=0 t_t=0
@@ -84,11 +88,13 @@ for scene in $SCENES; do
       # shellcheck disable=SC2046
       c=$(cpu_of "$bin/render" "$j" $(ours_args "$pair") --spp "$SPP" --seed "$s" --threads 1 --out "$out/$scene-$pair-ours-$s" --quiet)
       e=$(relmse "$out/$scene-$pair-ours-$s.exr" "$ref")
+      echo "$scene,$pair,ours,$s,$e,$c" >> "$runs"
       o_err=$(awk -v a="$o_err" -v b="$e" 'BEGIN { print a + b }') o_t=$(awk -v a="$o_t" -v b="$c" 'BEGIN { print a + b }')
       [ "$pair" != "$base" ] && continue
       j=$(scene_json "$scene" "${tp%%|*}" "${tp#*|}" "$SPP" "$s" "$scene-$pair-tungsten-$s")
       c=$(cd "$out" && cpu_of tungsten -t 1 -s "$s" "$(basename "$j")")
       e=$(relmse "$out/$scene-$pair-tungsten-$s.pfm" "$ref")
+      echo "$scene,$pair,tungsten,$s,$e,$c" >> "$runs"
       t_err=$(awk -v a="$t_err" -v b="$e" 'BEGIN { print a + b }') t_t=$(awk -v a="$t_t" -v b="$c" 'BEGIN { print a + b }')
     done
     if [ "$pair" != "$base" ]; then t_err=$b_t_err t_t=$b_t_t; else b_t_err=$t_err b_t_t=$t_t; fi
@@ -96,5 +102,19 @@ for scene in $SCENES; do
       oe /= n; ot /= n; te /= n; tt /= n
       printf "| %s | %s | %.4g | %.4g | %.2f | %.2f | %.2f | %.2f | %.2f |\n", sc, p, oe, te, ot, tt, oe / te, tt / ot, (te * tt) / (oe * ot)
     }'
+  done
+done
+# One stuck chain can decide an MCMC mean over a few seeds: the same efficiency on median relMSE
+# (times stay means; a variant's Tungsten runs are its base pair's)
+printf "\n| scene | pair | ours median relMSE | Tungsten median relMSE | efficiency on medians, ours / Tungsten |\n| --- | --- | ---: | ---: | ---: |\n"
+# med|mean SCENE PAIR RENDERER: the median relMSE, the mean CPU seconds of those runs
+med() { awk -F, -v sc="$1" -v p="$2" -v r="$3" '$1 == sc && $2 == p && $3 == r { print $5 }' "$runs" | sort -g |
+  awk '{ v[NR] = $1 } END { print NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+mean() { awk -F, -v sc="$1" -v p="$2" -v r="$3" '$1 == sc && $2 == p && $3 == r { s += $6; n++ } END { print s / n }' "$runs"; }
+for scene in $SCENES; do
+  for pair in $PAIRS; do
+    base=${pair%-*}
+    awk -v sc="$scene" -v p="$pair" -v oe="$(med "$scene" "$pair" ours)" -v te="$(med "$scene" "$base" tungsten)" \
+        -v ot="$(mean "$scene" "$pair" ours)" -v tt="$(mean "$scene" "$base" tungsten)" 'BEGIN { printf "| %s | %s | %.4g | %.4g | %.2f |\n", sc, p, oe, te, (te * tt) / (oe * ot) }'
   done
 done
