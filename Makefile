@@ -330,7 +330,8 @@ bench: deps all $(BENCH_TARGETS)
 	$(if $(filter 1,$(MPI)),bash scripts/bench-mpi.sh $(BIN)/render)
 
 # Error x time against Tungsten 0.2.2 per method pair, whole one-thread processes (scripts/bench-tungsten.sh;
-# `tungsten` on PATH, ../shared/README.md builds it; SEEDS, SPP, REF_SPP, SCENES from the environment).
+# `tungsten` on PATH, ../shared/README.md builds it; SEEDS, SPP, REF_SPP, SCENES, PAIRS from the environment;
+# every run in results/bench-tungsten/runs.csv).
 .PHONY: bench-tungsten
 bench-tungsten: deps $(BIN)/render
 	bash scripts/bench-tungsten.sh $(BIN) results/bench-tungsten
