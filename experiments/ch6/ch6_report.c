@@ -32,9 +32,17 @@ static const char *mixing_cell(const double (*q)[2], char *cell, size_t n)
     return cell;
 }
 
+/* One budget has no slope: its cell is a dash, not "nan". */
+static const char *slope_cell(const struct ch6_equal *e, int mi, char *cell, size_t n)
+{
+    if (e->nb < 2) return "—";
+    snprintf(cell, n, "%.2f", relmse_slope(e, mi));
+    return cell;
+}
+
 static void table_rows(const struct ch6_equal *e, FILE *f)
 {
-    char cell[96];
+    char cell[96], slope[32];
     for (int mi = 0; mi < e->nm; mi++) {
         if (!e->ms[mi].available) {
             fprintf(f, "| %s | not available in this build | | | | | | | | | | | |\n", e->ms[mi].name);
@@ -43,12 +51,14 @@ static void table_rows(const struct ch6_equal *e, FILE *f)
         const double(*q)[2] = e->sum[mi];
         fprintf(f,
                 "| %s | %.4g ± %.2g | %.4g ± %.2g | %.3g ± %.2g | %.3g ± %.2g | %.2f ± %.2f | %.0f ± %.0f | %.4f ± "
-                "%.4f | %.4f ± %.4f | %.2f | %.0f %% | %.2f %% | %s |\n",
+                "%.4f | %.4f ± %.4f | %s | %.0f %% | %.2f %% | %s |\n",
                 e->ms[mi].name, q[Q_RELMSE][0], q[Q_RELMSE][1], q[Q_BLOCK_MEDIAN][0], q[Q_BLOCK_MEDIAN][1],
                 q[Q_SPREAD][0], q[Q_SPREAD][1], q[Q_BLUR8][0], q[Q_BLUR8][1], q[Q_CORRLEN][0], q[Q_CORRLEN][1],
                 q[Q_MPS][0], q[Q_MPS][1], q[Q_NONZERO][0], q[Q_NONZERO][1], q[Q_LARGE_NONZERO][0],
-                q[Q_LARGE_NONZERO][1], relmse_slope(e, mi), 100 * (1 - q[Q_RELMSE_SCALED][0] / q[Q_RELMSE][0]) + 0.0,
-                100 * q[Q_B_RSE][0], mixing_cell(q, cell, sizeof cell));
+                q[Q_LARGE_NONZERO][1], slope_cell(e, mi, slope, sizeof slope),
+                /* rounded first, so that a share just below zero prints as 0, not -0 */
+                round(100 * (1 - q[Q_RELMSE_SCALED][0] / q[Q_RELMSE][0])) + 0.0, 100 * q[Q_B_RSE][0],
+                mixing_cell(q, cell, sizeof cell));
     }
 }
 
