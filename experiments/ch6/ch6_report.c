@@ -23,10 +23,10 @@ static double relmse_slope(const struct ch6_equal *e, int mi)
 }
 
 /* The mixing diagnostics' cell: the largest R-hat and the ESS per second (means over the seeds), the
- * share of stuck chains, and how many of the seeds' runs warn; empty for a method without chains. */
+ * share of stuck chains, and how many of the seeds' runs warn; a dash for a method without chains. */
 static const char *mixing_cell(const double (*q)[2], char *cell, size_t n)
 {
-    if (isnan(q[Q_RHAT][0])) return "";
+    if (isnan(q[Q_RHAT][0])) return "—";
     snprintf(cell, n, "%.3f / %.3g / %.0f %%%s", q[Q_RHAT][0], q[Q_ESS_PER_S][0], 100 * q[Q_STUCK][0],
              q[Q_MIX_WARN][0] > 0 ? " ⚠" : "");
     return cell;
@@ -40,25 +40,34 @@ static const char *slope_cell(const struct ch6_equal *e, int mi, char *cell, siz
     return cell;
 }
 
+/* A statistic a method does not have (the non-zero shares and the seed pass of BDPT or PT) is a dash. */
+static const char *stat_cell(const double q[2], double scale, const char *fmt, char *cell, size_t n)
+{
+    if (isnan(q[0])) return "—";
+    snprintf(cell, n, fmt, scale * q[0], scale * q[1]);
+    return cell;
+}
+
 static void table_rows(const struct ch6_equal *e, FILE *f)
 {
-    char cell[96], slope[32];
+    char cell[96], slope[32], nz[64], lnz[64], brse[32];
     for (int mi = 0; mi < e->nm; mi++) {
         if (!e->ms[mi].available) {
             fprintf(f, "| %s | not available in this build | | | | | | | | | | | |\n", e->ms[mi].name);
             continue;
         }
         const double(*q)[2] = e->sum[mi];
-        fprintf(f,
-                "| %s | %.4g ± %.2g | %.4g ± %.2g | %.3g ± %.2g | %.3g ± %.2g | %.2f ± %.2f | %.0f ± %.0f | %.4f ± "
-                "%.4f | %.4f ± %.4f | %s | %.0f %% | %.2f %% | %s |\n",
-                e->ms[mi].name, q[Q_RELMSE][0], q[Q_RELMSE][1], q[Q_BLOCK_MEDIAN][0], q[Q_BLOCK_MEDIAN][1],
-                q[Q_SPREAD][0], q[Q_SPREAD][1], q[Q_BLUR8][0], q[Q_BLUR8][1], q[Q_CORRLEN][0], q[Q_CORRLEN][1],
-                q[Q_MPS][0], q[Q_MPS][1], q[Q_NONZERO][0], q[Q_NONZERO][1], q[Q_LARGE_NONZERO][0],
-                q[Q_LARGE_NONZERO][1], slope_cell(e, mi, slope, sizeof slope),
-                /* rounded first, so that a share just below zero prints as 0, not -0 */
-                round(100 * (1 - q[Q_RELMSE_SCALED][0] / q[Q_RELMSE][0])) + 0.0, 100 * q[Q_B_RSE][0],
-                mixing_cell(q, cell, sizeof cell));
+        fprintf(
+            f,
+            "| %s | %.4g ± %.2g | %.4g ± %.2g | %.3g ± %.2g | %.3g ± %.2g | %.2f ± %.2f | %.0f ± %.0f | %s | %s | %s "
+            "| %.0f %% | %s | %s |\n",
+            e->ms[mi].name, q[Q_RELMSE][0], q[Q_RELMSE][1], q[Q_BLOCK_MEDIAN][0], q[Q_BLOCK_MEDIAN][1], q[Q_SPREAD][0],
+            q[Q_SPREAD][1], q[Q_BLUR8][0], q[Q_BLUR8][1], q[Q_CORRLEN][0], q[Q_CORRLEN][1], q[Q_MPS][0], q[Q_MPS][1],
+            stat_cell(q[Q_NONZERO], 1, "%.4f ± %.4f", nz, sizeof nz),
+            stat_cell(q[Q_LARGE_NONZERO], 1, "%.4f ± %.4f", lnz, sizeof lnz), slope_cell(e, mi, slope, sizeof slope),
+            /* rounded first, so that a share just below zero prints as 0, not -0 */
+            round(100 * (1 - q[Q_RELMSE_SCALED][0] / q[Q_RELMSE][0])) + 0.0,
+            stat_cell(q[Q_B_RSE], 100, "%.2f %%", brse, sizeof brse), mixing_cell(q, cell, sizeof cell));
     }
 }
 
