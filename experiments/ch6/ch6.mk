@@ -264,15 +264,15 @@ CH6_CHECK_OPTS_cdc-ch6 := --study cdc --methods '$(cdc-ch6_METHODS)' --spp 16 --
   --reference-spp 256 --resolution 256x144 --render-args ""
 $(eval $(call CH6_STUDY,cdc-ch6,cdc,ajar living-room staircase))
 
-# ---- thesis Figs. 3.3 and 3.5: MIS against each technique alone (claim T38) ----
-# BDPT's balance-heuristic combination and its three techniques of paths of 2 segments (direct
-# light) alone, unweighted (bin/render --technique-s S --technique-t T), at equal samples on the
-# Cornell box (--study mis).
-mis-robust_METHODS := bdpt,s0t3=--method bdpt --technique-s 0 --technique-t 3,s1t2=--method bdpt --technique-s 1 --technique-t 2,s2t1=--method bdpt --technique-s 2 --technique-t 1
-mis-robust_SOURCE := thesis Figs. 3.3, 3.5
-CH6_CHECK_OPTS_mis-robust := --study mis --methods '$(mis-robust_METHODS)' --spp 16 --seeds 8 --resolution 128x128 \
+# ---- thesis Fig. 3.3: MIS of path tracing and next-event estimation against each alone (claim T38) ----
+# Paths of 2 segments (direct light) on scenes/veach-mis, Veach's plates and lights, at equal
+# samples: bin/render's path tracer (the two techniques, balance heuristic), and BDPT's s = 0, t = 3
+# (the BSDF-sampled ray hitting a light) and s = 1, t = 2 (a light sample) alone, unweighted.
+mis-robust_METHODS := mis=--method pt,bsdf=--method bdpt --technique-s 0 --technique-t 3,nee=--method bdpt --technique-s 1 --technique-t 2
+mis-robust_SOURCE := thesis Fig. 3.3
+CH6_CHECK_OPTS_mis-robust := --study mis --methods '$(mis-robust_METHODS)' --spp 16 --seeds 8 --resolution 128x96 \
   --min-length 2 --max-length 2 --reference-spp 1024 --render-args ""
-$(eval $(call CH6_STUDY,mis-robust,mis,cornell-box))
+$(eval $(call CH6_STUDY,mis-robust,mis,veach-mis))
 
 # ---- MMLT paper §4: the normalisation once or progressively (claim M-j), one chain per length or
 # one over all lengths (claim M-k) ----

@@ -32,6 +32,7 @@ enum ch6_q {
     Q_MIX_WARN,      /* 1 when its mixing diagnostics warn (R-hat > 1.01, ESS < 100 or a stuck chain), else 0 */
     Q_NORM_ERR,      /* |image mean luminance / the reference's - 1|: the normalisation's error (and the reference's) */
     Q_B_IMAGE_RSE,   /* the relative standard error of the b the image is scaled to (seed pass or pooled) */
+    Q_BLOCK_MAX,     /* log10 of the largest per-block relMSE: the error of the image's worst region */
     Q_COUNT
 };
 

@@ -19,8 +19,9 @@
  * perturbations on ajar and on glass-marble) take mmlt-equal's rows.
  * cdc (make cdc-ch6, thesis §4.2): the equal-time study's budgets, seeds, lengths, references and
  * resolutions, PSSMLT with and without constrained discrete choices.
- * mis (make mis-robust, thesis Figs. 3.3, 3.5): paths of 2 segments (direct light), equal samples,
- * 16 (full, paper: 64) per pixel, 4 or 8 seeds, 128x128 (256x256), a 1024- (4096-) spp reference.
+ * mis (make mis-robust, thesis Fig. 3.3): paths of 2 segments (direct light), equal samples, 16
+ * (full, paper: 64) per pixel, 8 seeds (the worst block of a technique alone is heavy-tailed, and a
+ * run takes a second), 128x96 (256x192), a 1024- (4096-) spp reference.
  * background (make bdpt-pt, thesis Fig. 3.4): equal samples, 16 (full, paper: 64) per pixel, 4 or 8
  * seeds, 128x72 (256x144), a 1024- (4096-) spp reference. mmlt-design (make mmlt-design, the MMLT
  * paper's §4: b_k once or progressively, one chain per length or one over all): the cdc study's
@@ -100,12 +101,12 @@ static const struct {
     {"mis",
      "quick",
      ALL_SCENES,
-     {"--spp", "16", "--seeds", "4", "--resolution", "128x128", "--min-length", "2", "--max-length", "2",
+     {"--spp", "16", "--seeds", "8", "--resolution", "128x96", "--min-length", "2", "--max-length", "2",
       "--reference-spp", "1024", "--render-args", ""}},
     {"mis",
      "full paper",
      ALL_SCENES,
-     {"--spp", "64", "--seeds", "8", "--resolution", "256x256", "--min-length", "2", "--max-length", "2",
+     {"--spp", "64", "--seeds", "8", "--resolution", "256x192", "--min-length", "2", "--max-length", "2",
       "--reference-spp", "4096", "--render-args", ""}},
     {"background",
      "quick",

@@ -41,6 +41,7 @@ static const struct quantity {
     {Q_MIX_WARN, "mixing_warning", "%.0f", false},
     {Q_NORM_ERR, "norm_error", "%.6g", true},
     {Q_B_IMAGE_RSE, "b_image_rse", "%.6g", true},
+    {Q_BLOCK_MAX, "block_max_log10_relmse", "%.6g", true},
 };
 enum { NQ = sizeof quantities / sizeof *quantities };
 _Static_assert((int)NQ == (int)Q_COUNT, "every quantity of enum ch6_q has a column");
