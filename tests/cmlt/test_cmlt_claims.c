@@ -1,0 +1,55 @@
+/* experiments/cmlt/cmlt_claims: §5's orderings are said of Table 1, of the paper's 16M and 128M
+ * samples, so only a run at those budgets writes them under their own IDs; at quick's 1M and 8M
+ * they are the harness's rows. */
+#include <criterion/criterion.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cmlt/cmlt_claims.h"
+#include "support/claims_rows.h"
+#include "support/tmpdir.h"
+
+Test(cmlt_claims, orderings_carry_their_ids_only_at_the_papers_budgets)
+{
+    static const uint64_t budgets[2] = {1000000, 16000000};
+    /* the paper's 16M row of Table 1, every ordering of §5 holding */
+    static const double rmse[CMLT_NALGO] = {8.29e-2, 4.07e-2, 4.11e-2, 3.66e-2, 3.92e-2, 3.50e-2};
+    double mean[2][CMLT_NALGO], se[2][CMLT_NALGO], acc[2][CMLT_MAX_BUDGETS][CMLT_NALGO] = {{{0}}},
+                                                   rate[2][CMLT_MAX_BUDGETS][CMLT_NALGO] = {{{0}}};
+    for (int b = 0; b < 2; b++)
+        for (int a = 0; a < CMLT_NALGO; a++) {
+            mean[b][a] = rmse[a] * (b ? 1 : 4), se[b][a] = 1e-4 * mean[b][a];
+            acc[0][b][a] = a == CMLT_PSS_MIX || a == CMLT_CMLT ? 0.5 : 0.3, acc[1][b][a] = 0.001;
+            rate[0][b][a] = 1e7, rate[1][b][a] = 1e4;
+        }
+    char dir[64], err[256];
+    tmpdir_make(dir, sizeof dir, "cmlt-claims");
+    struct cmlt_claims_in in = {.dir = dir,
+                                .scale = "quick",
+                                .command = "test",
+                                .seeds = 8,
+                                .nbudgets = 2,
+                                .budgets = budgets,
+                                .mean = (const double(*)[CMLT_NALGO])mean,
+                                .se = (const double(*)[CMLT_NALGO])se,
+                                .acc = (const double(*)[CMLT_MAX_BUDGETS][CMLT_NALGO])acc,
+                                .rate = (const double(*)[CMLT_MAX_BUDGETS][CMLT_NALGO])rate};
+    char *md = cmlt_write_claims(&in, err, sizeof err);
+    cr_assert(md, "%s", err);
+    free(md);
+    char *csv = claims_rows_read(dir);
+    tmpdir_remove(dir);
+    static const char *const ids[] = {"C-a", "C-b", "C-c", "C-d", "C-e"};
+    for (int k = 0; k < 5; k++) {
+        char hid[32];
+        snprintf(hid, sizeof hid, "harness:%s", ids[k]);
+        const char *v = claims_rows_verdict(csv, ids[k], "n = 16M");
+        cr_assert(v && !strcmp(v, "holds"), "%s at 16M: %s\n%s", ids[k], v ? v : "no row", csv);
+        cr_assert(!claims_rows_verdict(csv, ids[k], "n = 1M"), "%s at 1M under its own ID\n%s", ids[k], csv);
+        cr_assert(claims_rows_verdict(csv, hid, "n = 1M"), "no %s at 1M\n%s", hid, csv);
+    }
+    /* the mechanism's rows are not said of a budget */
+    cr_assert(claims_rows_verdict(csv, "C-g", "n = 1M") && claims_rows_verdict(csv, "C-h", "n = 1M"));
+    free(csv);
+}
