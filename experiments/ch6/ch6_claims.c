@@ -28,11 +28,13 @@ static const struct claim {
      false, "equal-time"},
     {"T33", "at equal time PSSMLT produces fewer samples than MMLT", "pssmlt", -1, Q_MPS, "mutations per second",
      "mmlt", NULL, false, "equal-time"},
-    /* "In contrast, PITP ...": MMLT's artifacts against PITP, in the figures' insets and whole */
+    /* "In contrast, PITP ...": MMLT's artifacts against PITP, "such as on the couch in Figure 6.2 (red
+     * inset), the floor in Figure 6.3 (red inset), or the golden teapot in Figure 6.4 (yellow inset)":
+     * in the inset named (--named-inset); over the whole image the rows are the harness's */
     {"T34", "(2) MMLT shows streaky or splotchy artifacts (against PITP)", "mmlt", +1, Q_INSET_BLUR8,
-     "error share surviving an 8x8 blur, in the figure's insets", "pitp", NULL, false, "equal-time"},
+     "error share surviving an 8x8 blur, in the inset the thesis names", "pitp", NULL, false, "equal-time"},
     {"T34", "(2) MMLT shows streaky or splotchy artifacts (against PITP)", "mmlt", +1, Q_INSET_SPREAD,
-     "block-relMSE spread (CV), in the figure's insets", "pitp", NULL, false, "equal-time"},
+     "block-relMSE spread (CV), in the inset the thesis names", "pitp", NULL, false, "equal-time"},
     {"harness:T34", "(2) MMLT shows streaky or splotchy artifacts over the whole image (against PITP)", "mmlt", +1,
      Q_BLUR8, "error share surviving an 8x8 blur", "pitp", NULL, false, "equal-time"},
     {"harness:T34", "(2) MMLT shows streaky or splotchy artifacts over the whole image (against PITP)", "mmlt", +1,
@@ -40,7 +42,7 @@ static const struct claim {
     {"harness:T34", "(2) MMLT shows streaky or splotchy artifacts over the whole image (against PITP)", "mmlt", +1,
      Q_CORRLEN, "error correlation length (pixels)", "pitp", NULL, false, "equal-time"},
     {"T35", "(3) PITP's noise is more uniform than MMLT's", "pitp", -1, Q_INSET_SPREAD,
-     "block-relMSE spread (CV), in the figure's insets", "mmlt", NULL, false, "equal-time"},
+     "block-relMSE spread (CV), in the inset the thesis names", "mmlt", NULL, false, "equal-time"},
     {"T35", "(3) PITP's noise is more uniform than MMLT's", "pitp", -1, Q_SPREAD, "block-relMSE spread (CV)", "mmlt",
      NULL, false, "equal-time"},
     {"T35", "(3) PITP's noise is more uniform than MMLT's", "pitp", -1, Q_BLUR8, "error share surviving an 8x8 blur",

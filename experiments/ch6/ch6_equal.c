@@ -161,6 +161,9 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
         {"--insets", OPT_STRING, OPT_DST(e->insets), .arg = "'X,Y,W,H X,Y,W,H'",
          .help = "the figure's two inset rectangles in pixels, recorded in summary.csv for scripts/ch6-figure.sh "
                  "(default: the scale's, for the chapter-6 scenes)"},
+        {"--named-inset", OPT_INT, OPT_DST(e->named_inset), .arg = "N", .lo = 0, .hi = 2, .def = "0",
+         .help = "the inset statistics over inset N alone, the one the source points at (1 or 2; 0: both together; "
+                 "default: the scale's, for the chapter-6 scenes)"},
         {"--reuse", OPT_FLAG, OPT_DST(e->reuse),
          .help = "keep the run files already in OUT/runs (same names) instead of rendering"},
         {"--run-cache", OPT_STRING, OPT_DST(e->run_cache_dir), .arg = "DIR",

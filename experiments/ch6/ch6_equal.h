@@ -35,6 +35,7 @@ struct ch6_equal {
     char render[4096], extra_s[1024]; /* render: --render, or "render" (in-process) */
     int seeds, refspp, blk, threads, minlen, spp, first_seed;
     int inset[2][4], ninsets; /* --insets parsed: {x, y, w, h} each; 0 or 2 */
+    int named_inset;          /* --named-inset: 1 or 2, the inset the source points at; 0 both */
     int maxlen;               /* --max-length for the reference and every run (0: bin/render's default) */
     char maxlen_s[16];
     double T, ckpt_every;

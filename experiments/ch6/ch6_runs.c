@@ -28,22 +28,24 @@ static bool run_complete(const char *exr, const char *csvp, const char *scene)
     return done;
 }
 
-/* The splotch statistics within the figure's two insets (--insets), where the thesis points at
- * MMLT's artifacts: the spread of the blocks of both together, and the mean of the two blur shares
- * (the image scaled as a whole, so that an error spread over an inset is not scaled away). */
+/* The splotch statistics within the figure's insets (--insets), where the thesis points at MMLT's
+ * artifacts: in the one it names (--named-inset) or both together, the spread of the blocks, and
+ * the mean of the blur shares (the image scaled as a whole, so that an error spread over an inset is
+ * not scaled away). */
 static void inset_statistics(const struct ch6_equal *e, struct ch6_run *r, const struct image *im)
 {
     if (!e->ninsets) return;
-    int n = 0;
+    int n = 0, first = e->named_inset ? e->named_inset - 1 : 0, last = e->named_inset ? e->named_inset - 1 : 1;
     r->q[Q_INSET_BLUR8] = 0;
-    for (int i = 0; i < 2; i++) {
+    for (int i = first; i <= last; i++) {
         const int *rc = e->inset[i];
         if (rc[0] + rc[2] > im->w || rc[1] + rc[3] > im->h)
             die(DIE_USAGE, e->prog, "--insets: rectangle %d (%d,%d,%d,%d) lies outside the %dx%d image", i + 1, rc[0],
                 rc[1], rc[2], rc[3], im->w, im->h);
         int m = block_relmse_in(im, e->ref, e->blk, e->eps, rc, e->blocks + n, e->cap - n);
         n += m < e->cap - n ? m : e->cap - n;
-        r->q[Q_INSET_BLUR8] += 0.5 * error_blur_share_in(im, e->ref, e->eps, 8, rc, mean_lum_scale(im, e->ref));
+        r->q[Q_INSET_BLUR8] +=
+            error_blur_share_in(im, e->ref, e->eps, 8, rc, mean_lum_scale(im, e->ref)) / (last - first + 1);
     }
     r->q[Q_INSET_SPREAD] = block_spread(e->blocks, n);
 }

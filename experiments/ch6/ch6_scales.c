@@ -6,18 +6,17 @@
  * paths, checkpoints each minute (an interrupted make continues), every scene at twice the quick
  * resolution; paper: 300 s from 18.75 s, 8 seeds, a 40 000-spp reference and 1M seed paths (the
  * thesis's normalisation); all: paths of length >= 3 only, as the thesis (no direct lighting), and
- * each scene's two insets (the figures' enlargements) at its resolution. ratio (make mmlt-ratio, the
- * MMLT paper's §5 setting without a reference; the target adds --min-length 2 --reference-spp 0):
- * one budget of 4 s, 60 s or 300 s, 4 or 8 seeds, ajar at 256x144 (full: 512x288). hybrid (make
- * hybrid-study, thesis §4.3 / §7.1): 3 s per run (paper: 120 s), 8 seeds, 128x72, a 256-spp
- * reference (paper: 16 384 and 1M seed paths). mmlt-equal (make mmlt-equal, the MMLT paper's §5 and
- * Fig. 4: BDPT, PSSMLT and MMLT at equal time, up to 8 bounces, direct light included): one budget of
- * 4 s, 60 s or 300 s, 4 or 8 seeds, 256x144 (full and paper: 512x288), paths of 1 to 8 segments, a
- * 256-, 4096- or 16 384-spp reference; no --render-args (the target gives each method its own).
- * mmlt-fig4 and mmlt-fig9 (make mmlt-fig4, mmlt-fig9: the MMLT paper's Figs. 1, 4, 6 and 9 against
- * Veach's MLT, on ajar and on ajar-diffuse) and fused-door and fused-caustic (make fused: the fused
- * perturbations on ajar and on glass-marble) take mmlt-equal's rows.
- * cdc (make cdc-ch6, thesis §4.2): the equal-time study's budgets, seeds, lengths, references and
+ * each scene's two insets (the figures' enlargements) at its resolution, with the one §6 points at
+ * (the couch, the floor, the golden teapot: red, red, yellow) named for the inset statistics. ratio (make mmlt-ratio,
+ * the MMLT paper's §5 setting without a reference; the target adds --min-length 2 --reference-spp 0): one budget of 4
+ * s, 60 s or 300 s, 4 or 8 seeds, ajar at 256x144 (full: 512x288). hybrid (make hybrid-study, thesis §4.3 / §7.1): 3 s
+ * per run (paper: 120 s), 8 seeds, 128x72, a 256-spp reference (paper: 16 384 and 1M seed paths). mmlt-equal (make
+ * mmlt-equal, the MMLT paper's §5 and Fig. 4: BDPT, PSSMLT and MMLT at equal time, up to 8 bounces, direct light
+ * included): one budget of 4 s, 60 s or 300 s, 4 or 8 seeds, 256x144 (full and paper: 512x288), paths of 1 to 8
+ * segments, a 256-, 4096- or 16 384-spp reference; no --render-args (the target gives each method its own). mmlt-fig4
+ * and mmlt-fig9 (make mmlt-fig4, mmlt-fig9: the MMLT paper's Figs. 1, 4, 6 and 9 against Veach's MLT, on ajar and on
+ * ajar-diffuse) and fused-door and fused-caustic (make fused: the fused perturbations on ajar and on glass-marble) take
+ * mmlt-equal's rows. cdc (make cdc-ch6, thesis §4.2): the equal-time study's budgets, seeds, lengths, references and
  * resolutions, PSSMLT with and without constrained discrete choices.
  * mis (make mis-robust, thesis Fig. 3.3): paths of 2 segments (direct light), equal samples, 16
  * (full, paper: 64) per pixel, 8 seeds (the worst block of a technique alone is heavy-tailed, and a
@@ -45,17 +44,29 @@ static const struct {
      ALL_SCENES,
      {"--time", "4", "--t0", "0.5", "--seeds", "4", "--min-length", "3", "--reference-spp", "256", "--render-args",
       "--p-large 0.1"}},
-    {"equal-time", "quick paper", "living-room", {"--insets", "12,50,64,36 50,100,64,36"}},
-    {"equal-time", "quick paper", "staircase", {"--insets", "56,0,36,64 55,130,36,64"}},
-    {"equal-time", "quick paper", "ajar", {"--resolution", "256x144", "--insets", "160,70,64,36 40,60,64,36"}},
+    {"equal-time", "quick paper", "living-room", {"--insets", "12,50,64,36 50,100,64,36", "--named-inset", "1"}},
+    {"equal-time", "quick paper", "staircase", {"--insets", "56,0,36,64 55,130,36,64", "--named-inset", "1"}},
+    {"equal-time",
+     "quick paper",
+     "ajar",
+     {"--resolution", "256x144", "--insets", "160,70,64,36 40,60,64,36", "--named-inset", "2"}},
     {"equal-time",
      "full",
      ALL_SCENES,
      {"--time", "60", "--seeds", "8", "--min-length", "3", "--reference-spp", "4096", "--checkpoint", "60",
       "--render-args", "--p-large 0.1 --seed-paths 1000000"}},
-    {"equal-time", "full", "living-room", {"--resolution", "512x288", "--insets", "24,100,128,72 100,200,128,72"}},
-    {"equal-time", "full", "staircase", {"--resolution", "288x512", "--insets", "112,0,72,128 110,260,72,128"}},
-    {"equal-time", "full", "ajar", {"--resolution", "512x288", "--insets", "320,140,128,72 80,120,128,72"}},
+    {"equal-time",
+     "full",
+     "living-room",
+     {"--resolution", "512x288", "--insets", "24,100,128,72 100,200,128,72", "--named-inset", "1"}},
+    {"equal-time",
+     "full",
+     "staircase",
+     {"--resolution", "288x512", "--insets", "112,0,72,128 110,260,72,128", "--named-inset", "1"}},
+    {"equal-time",
+     "full",
+     "ajar",
+     {"--resolution", "512x288", "--insets", "320,140,128,72 80,120,128,72", "--named-inset", "2"}},
     {"equal-time",
      "paper",
      ALL_SCENES,

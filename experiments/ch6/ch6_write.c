@@ -157,6 +157,8 @@ static void write_summary(struct ch6_equal *e, const struct column *cols)
     FILE *f = table_open(&t, cols);
     csv_meta(f, NULL, "mean +- standard error over %d seeds", e->seeds);
     if (e->insets) csv_meta(f, "insets", "%s", e->insets); /* for scripts/ch6-figure.sh */
+    if (e->insets && e->named_inset)
+        csv_meta(f, "named_inset", "%d (the inset statistics are its own)", e->named_inset);
     for (int mi = 0; mi < e->nm; mi++)
         for (int bi = 0; e->ms[mi].available && bi < e->nb; bi++) {
             struct summary_row row = {e->name, e->ms[mi].name, e->budgets[bi], e->seeds, {0}, {0}};

@@ -63,7 +63,7 @@ Test(ch6_claims, mmlt_artifacts_are_judged_against_pitp)
     q[Q_BLUR8][M_PSS] = 0.5, q[Q_BLUR8][M_MMLT] = 0.3, q[Q_BLUR8][M_PITP] = 0.1;
     q[Q_INSET_BLUR8][M_PSS] = 0.5, q[Q_INSET_BLUR8][M_MMLT] = 0.3, q[Q_INSET_BLUR8][M_PITP] = 0.1;
     char *csv = claims_of((const double(*)[NM])q, 3);
-    const char *v = claims_rows_verdict(csv, "T34", "8x8 blur; in the figure's insets");
+    const char *v = claims_rows_verdict(csv, "T34", "8x8 blur; in the inset the thesis names");
     cr_assert(v && !strcmp(v, "holds"), "T34: %s\n%s", v ? v : "no row", csv);
     v = claims_rows_verdict(csv, "harness:T34", "over the whole image (against PITP)");
     cr_assert(v && !strcmp(v, "holds"), "harness:T34 against PITP: %s\n%s", v ? v : "no row", csv);
