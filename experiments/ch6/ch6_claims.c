@@ -71,10 +71,12 @@ static const struct claim {
      * here are the bidirectional mutation and the lens and caustic perturbations (core/mcmc/docs/veach.md) */
     {"M-a", "on the door scene PSSMLT is noisy overall (against MLT and MMLT)", "pssmlt", +1, Q_RELMSE, "relMSE",
      "mlt mmlt", "MMLT paper Fig. 1", false, "mmlt-fig4"},
-    {"M-a", "original MLT shows artifacts (against MMLT; whole image, glossy and diffuse)", "mlt", +1, Q_BLUR8,
+    /* "distracting artifacts on glossy surfaces", "splotchy artifacts on glossy surfaces": measured
+     * over the whole image, glossy and diffuse, the rows are the harness's */
+    {"harness:M-a", "original MLT shows artifacts (against MMLT; whole image, glossy and diffuse)", "mlt", +1, Q_BLUR8,
      "error share surviving an 8x8 blur", "mmlt", "MMLT paper Fig. 1", false, "mmlt-fig4"},
-    {"M-c", "original MLT is splotchy (against MMLT)", "mlt", +1, Q_BLUR8, "error share surviving an 8x8 blur", "mmlt",
-     "MMLT paper Fig. 6", false, "mmlt-fig4"},
+    {"harness:M-c", "original MLT is splotchy (against MMLT; whole image, glossy and diffuse)", "mlt", +1, Q_BLUR8,
+     "error share surviving an 8x8 blur", "mmlt", "MMLT paper Fig. 6", false, "mmlt-fig4"},
     {"M-c", "MMLT converges more uniformly than original MLT", "mmlt", -1, Q_SPREAD, "block-relMSE spread (CV)", "mlt",
      "MMLT paper Fig. 6", false, "mmlt-fig4"},
     /* MMLT paper Fig. 9 (make mmlt-fig9): the door scene with every surface diffuse */
@@ -109,9 +111,10 @@ static const struct claim {
     {"harness:T38", "MIS of path tracing and next-event estimation has the lowest error over the whole image", "mis",
      -1, Q_RELMSE, "relMSE", "bsdf nee", "thesis Fig. 3.3", false, "mis"},
     /* MMLT paper §6 (make mmlt-equal): no weighting function found beats the balance heuristic in
-     * MMLT's target; against the power heuristic (beta = 2) */
-    {"M-l", "no weighting function beats the balance heuristic in MMLT's target (against the power heuristic)", "mmlt",
-     -1, Q_RELMSE, "relMSE", "mmlt-power", "MMLT paper §6", false, "mmlt-equal"},
+     * MMLT's target; against the power heuristic (beta = 2). The source's "not better" is the ratio
+     * row below; the balance heuristic significantly better is the harness's stronger reading */
+    {"harness:M-l", "no weighting function beats the balance heuristic in MMLT's target (against the power heuristic)",
+     "mmlt", -1, Q_RELMSE, "relMSE", "mmlt-power", "MMLT paper §6", false, "mmlt-equal"},
     /* MMLT paper §4 (make mmlt-design): b_k estimated progressively "is less likely to miss rare
      * bounces" than once at the start; the image's mean is where a missed bounce shows */
     {"M-j", "b_k estimated progressively is less likely to miss rare bounces than once at the start",
@@ -205,28 +208,33 @@ static int find(const struct ch6_claims_in *in, const char *method)
     return -1;
 }
 
-/* Claims of a ratio of two methods' means: a / b within ±25 % of `target`, or with `at_least`, a / b
- * at least 0.75 `target` (a one-sided statement: "not much better"). */
+/* Claims of a ratio of two methods' means: a / b within ±25 % of `target` (side 0), or one-sided, at
+ * least 0.75 `target` (side +1: "not much better") or at most 1.25 `target` (side -1: "not worse"). */
 static const struct ratio_claim {
     const char *id, *source, *text, *statistic, *a, *b;
     enum ch6_q q;
     double target;
-    bool at_least;
+    int side;
     bool direct;         /* as struct claim's */
     const char *studies; /* as struct claim's */
 } ratio_claims[] = {
     /* MMLT paper §5: "an improvement of approximately 2.5 times" in the share of non-zero samples */
     {"harness:M-e", "MMLT paper §5", "MMLT's share of non-zero samples is about 2.5 times PSSMLT's",
-     "non-zero fraction per proposal", "mmlt", "pssmlt", Q_NONZERO, 2.5, false, false, "equal-time ratio"},
+     "non-zero fraction per proposal", "mmlt", "pssmlt", Q_NONZERO, 2.5, 0, false, "equal-time ratio"},
     {"M-e", "MMLT paper §5", "MMLT's share of non-zero samples is about 2.5 times PSSMLT's",
-     "non-zero fraction per connection", "mmlt", "pssmlt", Q_NONZERO_CONN, 2.5, false, true, "equal-time ratio"},
+     "non-zero fraction per connection", "mmlt", "pssmlt", Q_NONZERO_CONN, 2.5, 0, true, "equal-time ratio"},
     /* thesis §4.2 (make cdc-ch6): "in other scenes the effect of CDC is usually subtle" */
     {"T11", "thesis §4.2", "CDC's effect is usually subtle in other scenes (relMSE within ±25 %)", "relMSE",
-     "pssmlt-cdc", "pssmlt", Q_RELMSE, 1, false, false, "cdc"},
+     "pssmlt-cdc", "pssmlt", Q_RELMSE, 1, 0, false, "cdc"},
     /* MMLT paper §5, Fig. 4: "PSSMLT does not improve the efficiency much over BPT" at equal time:
      * one-sided, a PSSMLT far worse than BDPT does not contradict it */
     {"M-b", "MMLT paper §5, Fig. 4", "PSSMLT does not improve much on BDPT at equal time", "relMSE", "pssmlt", "bdpt",
-     Q_RELMSE, 1, true, false, "mmlt-equal"},
+     Q_RELMSE, 1, +1, false, "mmlt-equal"},
+    /* MMLT paper §6: "we did not find a weighting function with better performance than the balance
+     * heuristic": the power heuristic not better, the balance heuristic's relMSE at most 1.25x its */
+    {"M-l", "MMLT paper §6",
+     "no weighting function beats the balance heuristic in MMLT's target (against the power heuristic)", "relMSE",
+     "mmlt", "mmlt-power", Q_RELMSE, 1, -1, false, "mmlt-equal"},
 };
 
 /* The ratio claims whose two methods ran; the ratio's first-order standard error. */
@@ -241,11 +249,11 @@ static void ratio_rows(struct claims *out, const struct ch6_claims_in *in, const
         double r = a / b, rse = r * sqrt(pow(in->se[ai][rc->q] / a, 2) + pow(in->se[bi][rc->q] / b, 2));
         char zs[64], md[128], idbuf[64], stat[160];
         struct verdict v;
-        if (rc->at_least) {
-            double m[2] = {r, 0.75 * rc->target}, e[2] = {rse, 0}, z[2];
-            v = verdict_extreme(m, e, (const bool[2]){true, true}, 2, 0, +1, in->seeds, z);
-            snprintf(zs, sizeof zs, "%gx=%.2f", 0.75 * rc->target, v.zmin);
-            snprintf(md, sizeof md, "at least %g (z = %.1f)", 0.75 * rc->target, v.zmin);
+        if (rc->side) {
+            double bound = (rc->side > 0 ? 0.75 : 1.25) * rc->target, m[2] = {r, bound}, e[2] = {rse, 0}, z[2];
+            v = verdict_extreme(m, e, (const bool[2]){true, true}, 2, 0, rc->side, in->seeds, z);
+            snprintf(zs, sizeof zs, "%gx=%.2f", bound, v.zmin);
+            snprintf(md, sizeof md, "at %s %g (z = %.1f)", rc->side > 0 ? "least" : "most", bound, v.zmin);
         } else {
             v = verdict_similar(r, rse, rc->target, 0, 0.25, in->seeds);
             snprintf(zs, sizeof zs, "%gx=%.2f", rc->target, v.zmin);

@@ -134,6 +134,28 @@ Test(ch6_claims, pitp_rate_divides_the_shared_normalisation_out)
     free(csv);
 }
 
+/* M-l's "we did not find a weighting function with better performance than the balance heuristic":
+ * a tie with the power heuristic holds it (the stronger "balance is better" stays the harness's,
+ * undecided), the power heuristic at half the relMSE contradicts it. */
+Test(ch6_claims, balance_heuristic_not_beaten_is_one_sided)
+{
+    static const char names[NM][64] = {"mmlt", "mmlt-power", "bdpt"};
+    const double balance[2] = {0.5, 1.0};
+    const char *want[2] = {"holds", "contradicted"};
+    for (int c = 0; c < 2; c++) {
+        static double q[Q_COUNT][NM];
+        q[Q_RELMSE][0] = balance[c], q[Q_RELMSE][1] = 0.5, q[Q_RELMSE][2] = 3;
+        char *csv = study_claims_of("mmlt-equal", names, (const double(*)[NM])q, 1);
+        const char *v = claims_rows_verdict(csv, "M-l", "mmlt / mmlt-power");
+        cr_assert(v && !strcmp(v, want[c]), "balance %g, power 0.5: %s\n%s", balance[c], v ? v : "no row", csv);
+        if (c == 0) {
+            v = claims_rows_verdict(csv, "harness:M-l", "relMSE");
+            cr_assert(v && !strcmp(v, "undecided"), "harness:M-l: %s\n%s", v ? v : "no row", csv);
+        }
+        free(csv);
+    }
+}
+
 /* Thesis Fig. 3.3 (make mis-robust): "robust over all combinations" is the worst region's error,
  * not the whole image's. Next-event estimation alone with the lower relMSE but a worst block 50x the
  * combination's: T38 holds, the whole-image reading (the harness's row) is contradicted. */

@@ -49,6 +49,9 @@ Test(cmlt_claims, orderings_carry_their_ids_only_at_the_papers_budgets)
         cr_assert(!claims_rows_verdict(csv, ids[k], "n = 1M"), "%s at 1M under its own ID\n%s", ids[k], csv);
         cr_assert(claims_rows_verdict(csv, hid, "n = 1M"), "no %s at 1M\n%s", hid, csv);
     }
+    /* "just slightly worse": 3.92 / 3.66 = 1.07, within the 25 % */
+    const char *v = claims_rows_verdict(csv, "C-c", "RMSE ratio CMLT-EPSM / PSS-MLT-MIX at n = 16M");
+    cr_assert(v && !strcmp(v, "holds"), "C-c slightly: %s\n%s", v ? v : "no row", csv);
     /* the mechanism's rows are not said of a budget */
     cr_assert(claims_rows_verdict(csv, "C-g", "n = 1M") && claims_rows_verdict(csv, "C-h", "n = 1M"));
     free(csv);
