@@ -47,6 +47,12 @@ Test(fig4_5_claims, low_at_every_length_is_a_level)
     cr_assert_str_eq(word(csv, "T13"), "holds", "%s", csv);
     cr_assert_str_eq(word(csv, "T15"), "holds"); /* MCTLS's slope */
     cr_assert(claims_rows_verdict(csv, "T16", ""), "the thesis names length 11: a row there");
+    /* the thesis's MMLT large step draws among k + 2 techniques: T14 and T16 compare with that one,
+     * the harness's k + 1 are its own rows */
+    cr_assert(claims_rows_verdict(csv, "T14", "mctls-tries1-t0=") && !claims_rows_verdict(csv, "T14", "mmlt-large="),
+              "%s", csv);
+    cr_assert(claims_rows_verdict(csv, "harness:T14", "mmlt-large=") && !claims_rows_verdict(csv, "T16", "mmlt-large"),
+              "%s", csv);
     free(csv);
     csv = claims_of(0.003, 7, 0.2); /* one length far above "low" */
     cr_assert_str_eq(word(csv, "T13"), "contradicted", "%s", csv);
