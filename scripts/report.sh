@@ -12,7 +12,7 @@ page_only=
 scale=${1:-quick}
 out=${REPORT_DIR:-results/report} # tests write elsewhere
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
-ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k4-$scale meq=results/mmlt-equal-$scale
+ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k6-$scale meq=results/mmlt-equal-$scale
 bg=results/bdpt-pt-$scale cdc=results/cdc-ch6-$scale mis=results/mis-robust-$scale md=results/mmlt-design-$scale
 pr=results/pitp-rate-$scale
 # The claims ledger's files: every claims.csv of the figures at this scale.
