@@ -66,11 +66,12 @@ static void image_statistics(struct ch6_equal *e, struct ch6_run *r, const struc
     if (n > e->cap) n = e->cap;
     r->q[Q_SPREAD] = block_spread(e->blocks, n);
     /* A technique that fails in a region fails there by a firefly or two, so its worst block's
-     * relMSE is heavy-tailed over seeds; its logarithm is not, and its mean is the geometric mean's. */
-    double worst = n > 0 ? e->blocks[0] : NAN;
-    for (int i = 1; i < n; i++)
+     * relMSE is heavy-tailed over seeds; its logarithm is not, and its mean is the geometric mean's
+     * (an image without error has no worst region: nan, not -inf in the mean) */
+    double worst = 0;
+    for (int i = 0; i < n; i++)
         worst = fmax(worst, e->blocks[i]);
-    r->q[Q_BLOCK_MAX] = log10(worst);
+    r->q[Q_BLOCK_MAX] = worst > 0 ? log10(worst) : NAN;
     r->q[Q_BLOCK_MEDIAN] = median_of(e->blocks, n);
     r->q[Q_TRIMMED] = trimmed_relmse(im, ref, e->eps, 0.001);
     r->q[Q_BLUR4] = error_blur_share(im, ref, e->eps, 4);
