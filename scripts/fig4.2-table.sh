@@ -35,5 +35,12 @@ END {
                 ((g, "small_accept") in m) ? f(g, "small_accept", 4) : "(scaling 1: as PSSMLT)"
         }
     }
+    if (("glossy-pssmlt-256-quarter", "relmse") in m) {
+        print "\nGlossy-to-glossy at 256²: relMSE against mutations (T7).\n"
+        print "| mutations | PSSMLT | `--rap-resolution` |"
+        print "| --- | ---: | ---: |"
+        printf "| a quarter | %s | %s |\n", f("glossy-pssmlt-256-quarter", "relmse", 5), f("glossy-rap-resolution-256-quarter", "relmse", 5)
+        printf "| all | %s | %s |\n", f("glossy-pssmlt-256", "relmse", 5), f("glossy-rap-resolution-256", "relmse", 5)
+    }
     print "\nThesis: smaller images get smaller steps in pixels, so the chain lingers on a pixel longer and the noise is blotchier (higher error at equal mutations per pixel); scaling the steps to the resolution (d) removes it; in glossy-to-glossy transport such scaling lowers acceptance as the resolution decreases."
 }' "$1"

@@ -16,7 +16,7 @@ const struct fig4_5_variant fig4_5_variants[NV] = {
 void fig4_5_ratio(const struct accept_table *t, int a, int b, int k, double *r, double *se)
 {
     *r = t->mean[a][k] / t->mean[b][k];
-    *se = *r * sqrt(pow(t->se[a][k] / t->mean[a][k], 2) + pow(t->se[b][k] / t->mean[b][k], 2));
+    *se = ratio_se(t->mean[a][k], t->se[a][k], t->mean[b][k], t->se[b][k]);
 }
 
 /* A claim that run a's acceptance over run b's at length k is `target` within ±25 %. */
@@ -87,13 +87,11 @@ static void claims_predicted(struct claims *cl, const struct accept_table *t, co
 static struct verdict worst_over_lengths(const struct accept_table *t, int m, int other, double level, int sign,
                                          int *at)
 {
-    const bool both[2] = {true, true};
     struct verdict worst = {"holds", INFINITY, -1, 0};
     *at = 2;
     for (int k = 2; k <= t->K; k++) {
         double o = other >= 0 ? t->mean[other][k] : level, os = other >= 0 ? t->se[other][k] : 0;
-        double mv[2] = {t->mean[m][k], o}, e[2] = {t->se[m][k], os}, z[2];
-        struct verdict v = verdict_extreme(mv, e, both, 2, 0, sign, 1, z);
+        struct verdict v = verdict_pair(t->mean[m][k], t->se[m][k], o, os, sign, 1);
         if (v.zmin < worst.zmin) worst = v, *at = k;
     }
     return worst;
@@ -153,11 +151,9 @@ static void claims_source(struct claims *cl, const struct accept_table *t)
     }
     double sl, sls;
     slope_over_lengths(t, V_MCTLS, &sl, &sls);
-    const bool both[2] = {true, true};
-    double m[2] = {sl, 0}, e[2] = {sls, 0}, z[2];
-    v = verdict_extreme(m, e, both, 2, 0, +1, 1, z);
-    snprintf(zs, sizeof zs, "zero=%.2f", z[1]);
-    snprintf(md, sizeof md, "a slope of 0 (z = %.1f)", z[1]);
+    v = verdict_pair(sl, sls, 0, 0, +1, 1);
+    snprintf(zs, sizeof zs, "zero=%.2f", v.zmin);
+    snprintf(md, sizeof md, "a slope of 0 (z = %.1f)", v.zmin);
     snprintf(stat, sizeof stat, "slope of MCTLS's acceptance over lengths 2-%d (per length)", t->K);
     claims_row(cl, "T15", "thesis §4.3", "MCTLS's acceptance increases with the path length", stat, "mctls", sl, sls,
                zs, md, &v);
@@ -234,11 +230,9 @@ static void claims_trials(struct claims *cl, const struct accept_table *t)
      * a factor that grows with length (longest length against length 3) */
     fig4_5_light_ratio(t, t->K, &r, &rse);
     fig4_5_light_ratio(t, 3, &r3, &rse3);
-    double lm[2] = {r, r3}, ls[2] = {rse, rse3}, lz[2];
-    const bool two[2] = {true, true};
-    v = verdict_extreme(lm, ls, two, 2, 0, +1, 1, lz);
-    snprintf(zs, sizeof zs, "length3=%.2f", lz[1]);
-    snprintf(md, sizeof md, "length 3: %.3g ± %.2g (z = %.1f)", r3, rse3, lz[1]);
+    v = verdict_pair(r, rse, r3, rse3, +1, 1);
+    snprintf(zs, sizeof zs, "length3=%.2f", v.zmin);
+    snprintf(md, sizeof md, "length 3: %.3g ± %.2g (z = %.1f)", r3, rse3, v.zmin);
     snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
     claims_row(cl, "T17", "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
                "mctls", r, rse, zs, md, &v);

@@ -252,23 +252,22 @@ static void cost_rows(struct claims *cl, const struct fig46 *t, int m, const cha
 {
     const double(*mean)[3] = t->mean, (*se)[3] = t->se;
     char zs[128], md[256], stat[160];
-    double ratio = mean[m][1] / mean[0][1],
-           ratio_se = ratio * sqrt(pow(se[m][1] / mean[m][1], 2) + pow(se[0][1] / mean[0][1], 2));
-    struct verdict v = verdict_similar(ratio, ratio_se, 5, 0, 0.25, t->seeds);
+    double ratio = mean[m][1] / mean[0][1], rse = ratio_se(mean[m][1], se[m][1], mean[0][1], se[0][1]);
+    struct verdict v = verdict_similar(ratio, rse, 5, 0, 0.25, t->seeds);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% (z = %.1f)", v.zmin);
     snprintf(stat, sizeof stat, "CPU time per proposal, %s / MMLT", names[m]);
-    claims_row(cl, id, "thesis §4.3.1", "an MCTLS step costs about 5x an MMLT large step", stat, names[m], ratio,
-               ratio_se, zs, md, &v);
+    claims_row(cl, id, "thesis §4.3.1", "an MCTLS step costs about 5x an MMLT large step", stat, names[m], ratio, rse,
+               zs, md, &v);
     if (!recompute[m]) return;
     ratio = t->rays[m] / t->rays[0];
-    ratio_se = ratio * sqrt(pow(t->rays_se[m] / t->rays[m], 2) + pow(t->rays_se[0] / t->rays[0], 2));
-    v = verdict_similar(ratio, ratio_se, 5, 0, 0.25, RAY_RUNS);
+    rse = ratio_se(t->rays[m], t->rays_se[m], t->rays[0], t->rays_se[0]);
+    v = verdict_similar(ratio, rse, 5, 0, 0.25, RAY_RUNS);
     snprintf(zs, sizeof zs, "5x=%.2f", v.zmin);
     snprintf(md, sizeof md, "5 within ±25 %% (z = %.1f)", v.zmin);
     snprintf(stat, sizeof stat, "rays per proposal, %s / MMLT (%d runs of 20000 proposals)", names[m], RAY_RUNS);
     claims_row(cl, id, "thesis §4.3.1", "an MCTLS step costs about 5x an MMLT large step (the thesis's ray count)",
-               stat, names[m], ratio, ratio_se, zs, md, &v);
+               stat, names[m], ratio, rse, zs, md, &v);
 }
 
 /* "At equal time both images are similarly noisy" (T19) for MCTLS method m: relMSE within ±25 %. */

@@ -38,15 +38,15 @@ char *ch6_tech_claims(const struct ch6_tech_claims_in *in, char *err, size_t err
     claims_begin(&cl, in->scale, in->command, "The MMLT paper's Fig. 5 claim at path length %d, %d runs per method",
                  in->k, c[0]->nrows);
     for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
-        double m[2], s[2], z[2];
+        double m[2], s[2];
         if (!column_mean(c[0], rows[i].col, &m[0], &s[0], err, errlen) ||
             !column_mean(c[1], rows[i].col, &m[1], &s[1], err, errlen))
             goto done;
         int seeds = c[0]->nrows < c[1]->nrows ? c[0]->nrows : c[1]->nrows;
-        struct verdict v = verdict_extreme(m, s, (const bool[2]){true, true}, 2, 0, rows[i].sign, seeds, z);
+        struct verdict v = verdict_pair(m[0], s[0], m[1], s[1], rows[i].sign, seeds);
         char zs[64], vs[128];
-        snprintf(zs, sizeof zs, "pssmlt=%.2f", z[1]);
-        snprintf(vs, sizeof vs, "pssmlt %.4g ± %.2g (z = %.1f)", m[1], s[1], z[1]);
+        snprintf(zs, sizeof zs, "pssmlt=%.2f", v.zmin);
+        snprintf(vs, sizeof vs, "pssmlt %.4g ± %.2g (z = %.1f)", m[1], s[1], v.zmin);
         claims_row(&cl, "M-f", "MMLT paper §5, Fig. 5", rows[i].claim, rows[i].statistic, "mmlt", m[0], s[0], zs, vs,
                    &v);
     }

@@ -16,13 +16,12 @@ static void keep_worst(struct verdict *worst, int *at, struct verdict v, int k)
  * its keeps, (1) PITP's changes within 25 % of its keeps, (2) PITP's changes above MMLT's. */
 static int decide(const struct fig6_1_cells *t, int c, int kmin, struct verdict *w)
 {
-    const bool both[2] = {true, true};
     int at = -1;
     for (int k = kmin; k <= t->K; k++) {
-        double z[2];
         if (c == 0 && t->have[0][k][0] && t->have[0][k][1]) {
-            double m[2] = {t->mean[0][k][0], t->mean[0][k][1]}, e[2] = {t->se[0][k][0], t->se[0][k][1]};
-            keep_worst(w, &at, verdict_extreme(m, e, both, 2, 1, -1, FIG6_1_RUNS, z), k);
+            keep_worst(
+                w, &at,
+                verdict_pair(t->mean[0][k][1], t->se[0][k][1], t->mean[0][k][0], t->se[0][k][0], -1, FIG6_1_RUNS), k);
         }
         if (c == 1 && t->have[1][k][0] && t->have[1][k][1])
             keep_worst(
@@ -30,8 +29,9 @@ static int decide(const struct fig6_1_cells *t, int c, int kmin, struct verdict 
                 verdict_similar(t->mean[1][k][1], t->se[1][k][1], t->mean[1][k][0], t->se[1][k][0], 0.25, FIG6_1_RUNS),
                 k);
         if (c == 2 && t->have[0][k][1] && t->have[1][k][1]) {
-            double m[2] = {t->mean[0][k][1], t->mean[1][k][1]}, e[2] = {t->se[0][k][1], t->se[1][k][1]};
-            keep_worst(w, &at, verdict_extreme(m, e, both, 2, 1, +1, FIG6_1_RUNS, z), k);
+            keep_worst(
+                w, &at,
+                verdict_pair(t->mean[1][k][1], t->se[1][k][1], t->mean[0][k][1], t->se[0][k][1], +1, FIG6_1_RUNS), k);
         }
     }
     return at;
@@ -74,7 +74,7 @@ static void claims_accept(struct claims *cl, const struct fig6_1_cells *t)
         if (rows[i].c == 1) { /* the ratio and its first-order error */
             double a = t->mean[1][k][1], b = t->mean[1][k][0];
             v = a / b;
-            se = v * sqrt(pow(t->se[1][k][1] / a, 2) + pow(t->se[1][k][0] / b, 2));
+            se = ratio_se(a, t->se[1][k][1], b, t->se[1][k][0]);
         }
         snprintf(zs, sizeof zs, "%s=%.2f@%d", (const char *[]){"mmlt-kept", "1x", "mmlt-changed"}[rows[i].c], w.zmin,
                  k);
@@ -93,14 +93,13 @@ static void claims_accept(struct claims *cl, const struct fig6_1_cells *t)
  * unconditional share of perturbations that change it (below 1/2). Errors over the FIG6_1_RUNS runs. */
 static void claims_moves(struct claims *cl, const struct fig6_1_cells *t)
 {
-    const bool both[2] = {true, true};
     for (int q = 1; q >= 0; q--) {
         struct verdict w;
         int at = -1;
         for (int k = 2; k <= t->K; k++) {
             if (!t->moves[q][k][1]) continue;
-            double lim = q ? 0.5 * (k + 1) : 0.5, m[2] = {t->moves[q][k][0], lim}, e[2] = {t->moves[q][k][1], 0}, z[2];
-            keep_worst(&w, &at, verdict_extreme(m, e, both, 2, 0, -1, FIG6_1_RUNS, z), k);
+            double lim = q ? 0.5 * (k + 1) : 0.5;
+            keep_worst(&w, &at, verdict_pair(t->moves[q][k][0], t->moves[q][k][1], lim, 0, -1, FIG6_1_RUNS), k);
         }
         if (at < 0) continue;
         char zs[128], md[256];
@@ -121,13 +120,11 @@ static void claims_moves(struct claims *cl, const struct fig6_1_cells *t)
  * inversion that fails, or a target that differs between techniques, would lower it). */
 static void claims_always(struct claims *cl, const struct fig6_1_cells *t)
 {
-    const bool both[2] = {true, true};
     struct verdict w;
     int at = -1;
     for (int k = 2; k <= t->K; k++) {
         if (!(t->moves[2][k][0] > 0)) continue;
-        double m[2] = {t->moves[2][k][0], 0.99}, e[2] = {t->moves[2][k][1], 0}, z[2];
-        keep_worst(&w, &at, verdict_extreme(m, e, both, 2, 0, +1, FIG6_1_RUNS, z), k);
+        keep_worst(&w, &at, verdict_pair(t->moves[2][k][0], t->moves[2][k][1], 0.99, 0, +1, FIG6_1_RUNS), k);
     }
     if (at < 0) return;
     char zs[64], md[128];

@@ -65,6 +65,18 @@ struct verdict verdict_extreme(const double *mean, const double *se, const bool 
     return v;
 }
 
+struct verdict verdict_pair(double a, double se_a, double b, double se_b, int sign, int seeds)
+{
+    double z[2];
+    return verdict_extreme((const double[2]){a, b}, (const double[2]){se_a, se_b}, (const bool[2]){true, true}, 2, 0,
+                           sign, seeds, z);
+}
+
+double ratio_se(double a, double se_a, double b, double se_b)
+{
+    return fabs(a / b) * sqrt(pow(se_a / a, 2) + pow(se_b / b, 2));
+}
+
 struct verdict verdict_no_rejection(double p_min, double alpha, int m)
 {
     double each = -expm1(log1p(-alpha) / m);

@@ -27,6 +27,13 @@ void mean_se(const double *x, int n, double *mean, double *se);
 struct verdict verdict_extreme(const double *mean, const double *se, const bool *have, int k, int m, int sign,
                                int seeds, double *z);
 
+/* Claim: a lies above (sign = +1) or below (sign = -1) b, z = sign (a - b) / sqrt(se_a^2 + se_b^2)
+ * (zmin; deciding is 1): verdict_extreme of two. A fixed bound is a b with se_b = 0. */
+struct verdict verdict_pair(double a, double se_a, double b, double se_b, int sign, int seeds);
+
+/* The ratio a / b's first-order (delta-method) standard error, a and b independent. */
+double ratio_se(double a, double se_a, double b, double se_b);
+
 /* Claim: a and b are similar, |a - b| within margin * b (an equivalence test, two one-sided z tests
  * against the margin): "holds" when both z values reach 2 (the difference lies inside the margin),
  * "contradicted" when (|a - b| - margin b) / se reaches 2 (outside it), "undecided" otherwise. zmin
