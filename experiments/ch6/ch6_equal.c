@@ -50,17 +50,16 @@ static void make_budgets(struct ch6_equal *e, double t0)
     if (fabs(e->budgets[e->nb - 1] - e->T) > 1e-9 * e->T && e->nb < CH6_MAX_BUDGETS) e->budgets[e->nb++] = e->T;
 }
 
-/* The label (default: the scene's folder name) and the renderer: in-process (tools/render_run.h),
- * or the program --render names. */
+/* The scene's folder name, the label (default: that name) and the renderer: in-process
+ * (tools/render_run.h), or the program --render names. */
 static void names(struct ch6_equal *e, char *sname, size_t n)
 {
-    if (!e->name) {
-        snprintf(sname, n, "%s", e->scene);
-        char *sl = strrchr(sname, '/');
-        if (sl) *sl = 0;
-        sl = strrchr(sname, '/');
-        e->name = sl ? sl + 1 : sname;
-    }
+    snprintf(sname, n, "%s", e->scene);
+    char *sl = strrchr(sname, '/');
+    if (sl) *sl = 0;
+    sl = strrchr(sname, '/');
+    e->scene_name = sl ? sl + 1 : sname;
+    if (!e->name) e->name = e->scene_name;
     if (!*e->render) {
         snprintf(e->render, sizeof e->render, "render");
         e->renderer = (struct proc_prog){.main = render_run};
@@ -117,9 +116,12 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
          .help = "smallest budget; budgets double from it up to T (default T: one budget)"},
         {"--resolution", OPT_WXH, .str = &res, .arg = "WxH", .lo = 1, .hi = INT_MAX,
          .expect = "WxH with positive integers", .help = "override the camera (also for the reference)"},
-        OPT_REFERENCE(e->refpath, .help = "cached BDPT reference EXR, re-rendered when the scene file's content or the "
-                                          "reference's settings change (its key: FILE with .key for .exr; default "
-                                          "results/reference/NAME-bdpt-WxH-minK-SPP.exr)"),
+        OPT_REFERENCE(e->refpath,
+                      .help =
+                          "cached BDPT reference EXR, re-rendered when the scene file's content or the "
+                          "reference's settings change (its key: FILE with .key for .exr; default "
+                          "results/reference/SCENE-bdpt-WxH-minK-SPP.exr, SCENE the scene's folder: a --name shares "
+                          "its scene's references)"),
         {"--reference-spp", OPT_INT, OPT_DST(e->refspp), .arg = "N", .lo = 0, .hi = 1 << 24, .def = "256",
          .help = "BDPT samples per pixel of the reference (0: no reference, only the render CSVs' counts: the "
                  "non-zero ratios)"},

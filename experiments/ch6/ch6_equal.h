@@ -32,6 +32,7 @@ struct ch6_equal {
     /* the command line */
     const char *prog, *scene, *out, *name, *refpath, *res, *source, *command, *scale, *insets;
     const char *study;                /* --study: whose scales, and whose claims (ch6_claims.h) */
+    const char *scene_name;           /* the scene's folder: the reference's default name, whatever --name */
     char render[4096], extra_s[1024]; /* render: --render, or "render" (in-process) */
     int seeds, refspp, blk, threads, minlen, spp, first_seed;
     int inset[2][4], ninsets; /* --insets parsed: {x, y, w, h} each; 0 or 2 */

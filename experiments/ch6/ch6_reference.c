@@ -65,7 +65,7 @@ void ch6_reference(struct ch6_equal *e)
     if (e->refspp) {
         if (e->maxlen) snprintf(maxs, sizeof maxs, "-max%d", e->maxlen); /* absent: the default, as before */
         if (!e->refpath) {
-            snprintf(e->defref, sizeof e->defref, "results/reference/%s-bdpt-%s-min%d%s-%d.exr", e->name,
+            snprintf(e->defref, sizeof e->defref, "results/reference/%s-bdpt-%s-min%d%s-%d.exr", e->scene_name,
                      e->res ? e->res : "native", e->minlen, maxs, e->refspp);
             e->refpath = e->defref;
         }
