@@ -5,12 +5,22 @@
 #include <math.h>
 #include <stdlib.h>
 
-int block_relmse_in(const struct image *a, const struct image *ref, int blk, double eps, const int rect[4], double *out,
-                    int cap)
+bool block_in_mask(const bool *mask, int w, int x0, int y0, int blk)
+{
+    if (!mask) return true;
+    for (int y = y0; y < y0 + blk; y++)
+        for (int x = x0; x < x0 + blk; x++)
+            if (!mask[(size_t)y * w + x]) return false;
+    return true;
+}
+
+int block_relmse_in(const struct image *a, const struct image *ref, int blk, double eps, const int rect[4],
+                    const bool *mask, double *out, int cap)
 {
     int bw = rect[2] / blk, bh = rect[3] / blk, n = 0;
     for (int by = 0; by < bh; by++)
         for (int bx = 0; bx < bw; bx++) {
+            if (!block_in_mask(mask, a->w, rect[0] + bx * blk, rect[1] + by * blk, blk)) continue;
             double s = 0;
             for (int y = rect[1] + by * blk; y < rect[1] + (by + 1) * blk; y++)
                 for (int x = rect[0] + bx * blk; x < rect[0] + (bx + 1) * blk; x++) {
@@ -26,7 +36,7 @@ int block_relmse_in(const struct image *a, const struct image *ref, int blk, dou
 
 int block_relmse(const struct image *a, const struct image *ref, int blk, double eps, double *out, int cap)
 {
-    return block_relmse_in(a, ref, blk, eps, (const int[4]){0, 0, a->w, a->h}, out, cap);
+    return block_relmse_in(a, ref, blk, eps, (const int[4]){0, 0, a->w, a->h}, NULL, out, cap);
 }
 
 double block_spread(const double *v, int n)
@@ -54,6 +64,21 @@ double median_of(double *v, int n)
     if (n <= 0) return NAN;
     qsort(v, (size_t)n, sizeof *v, cmp_double);
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double relmse_where(const struct image *a, const struct image *ref, double eps, const bool *mask, bool in)
+{
+    double s = 0;
+    size_t n = 0, npx = (size_t)a->w * a->h;
+    for (size_t i = 0; i < npx; i++) {
+        if (mask[i] != in) continue;
+        for (int c = 0; c < 3; c++) {
+            double p = a->px[3 * i + c], r = ref->px[3 * i + c];
+            s += (p - r) * (p - r) / (r * r + eps);
+        }
+        n++;
+    }
+    return n ? s / (3.0 * n) : NAN;
 }
 
 double trimmed_relmse(const struct image *a, const struct image *ref, double eps, double drop)

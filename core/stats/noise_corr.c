@@ -1,6 +1,7 @@
 /* Autocorrelation profiles and correlation lengths of an error field (noise_corr.h). */
 #include "stats/noise_corr.h"
 #include "base/util.h"
+#include "stats/error_stats.h"
 #include <math.h>
 #include <stdlib.h>
 
@@ -82,16 +83,18 @@ double *error_field(const struct image *img, const struct image *ref)
 }
 
 double error_blur_share_in(const struct image *a, const struct image *ref, double eps, int k, const int rect[4],
-                           double s)
+                           const bool *mask, double s)
 {
     double all = 0, blurred = 0;
     int bw = rect[2] / k, bh = rect[3] / k;
     for (int by = 0; by < bh; by++)
-        for (int bx = 0; bx < bw; bx++)
+        for (int bx = 0; bx < bw; bx++) {
+            int x0 = rect[0] + bx * k, y0 = rect[1] + by * k;
+            if (!block_in_mask(mask, a->w, x0, y0, k)) continue;
             for (int c = 0; c < 3; c++) {
                 double m = 0;
-                for (int y = rect[1] + by * k; y < rect[1] + (by + 1) * k; y++)
-                    for (int x = rect[0] + bx * k; x < rect[0] + (bx + 1) * k; x++) {
+                for (int y = y0; y < y0 + k; y++)
+                    for (int x = x0; x < x0 + k; x++) {
                         size_t i = 3 * ((size_t)y * a->w + x) + (size_t)c;
                         double r = ref->px[i], e = (s * a->px[i] - r) / sqrt(r * r + eps);
                         m += e;
@@ -100,13 +103,14 @@ double error_blur_share_in(const struct image *a, const struct image *ref, doubl
                 m /= (double)k * k;
                 blurred += m * m;
             }
+        }
     /* per pixel: the blocks' squared means stand for k^2 pixels each */
     return all > 0 ? blurred * k * k / all : NAN;
 }
 
 double error_blur_share(const struct image *a, const struct image *ref, double eps, int k)
 {
-    return error_blur_share_in(a, ref, eps, k, (const int[4]){0, 0, a->w, a->h}, mean_lum_scale(a, ref));
+    return error_blur_share_in(a, ref, eps, k, (const int[4]){0, 0, a->w, a->h}, NULL, mean_lum_scale(a, ref));
 }
 
 double error_corr_length(const struct image *img, const struct image *ref)

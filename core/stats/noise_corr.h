@@ -45,10 +45,11 @@ double mean_lum_scale(const struct image *img, const struct image *ref);
  * mean(block mean^2) / mean(error^2): 1 / k^2 in expectation for white noise, near 1 for error that
  * is constant over regions much larger than k. */
 double error_blur_share(const struct image *a, const struct image *ref, double eps, int k);
-/* error_blur_share over the rectangle rect = {x, y, w, h} of the images only (partial blocks at its
- * right and bottom edges dropped), a scaled by s: the whole image's mean_lum_scale, so that an error
- * spread over the whole rectangle is not scaled away. */
+/* error_blur_share over the k x k blocks of the rectangle rect = {x, y, w, h} of the images (partial
+ * blocks at its right and bottom edges dropped) that lie wholly inside mask (a->w * a->h flags; NULL:
+ * every block), a scaled by s: the whole image's mean_lum_scale, so that an error spread over the
+ * whole rectangle is not scaled away. NAN when no block is left. */
 double error_blur_share_in(const struct image *a, const struct image *ref, double eps, int k, const int rect[4],
-                           double s);
+                           const bool *mask, double s);
 
 #endif

@@ -23,13 +23,13 @@ void fig4_5_ratio(const struct accept_table *t, int a, int b, int k, double *r, 
 static void ratio_row(struct claims *cl, const struct accept_table *t, int a, int b, int k, double target,
                       const char *id, const char *claim, const char *stat)
 {
-    char zs[64], md[128];
+    char against[32];
     double r, rse;
     fig4_5_ratio(t, a, b, k, &r, &rse);
     struct verdict v = verdict_similar(r, rse, target, 0, 0.25, 1);
-    snprintf(zs, sizeof zs, "%gx=%.2f", target, v.zmin);
-    snprintf(md, sizeof md, "%g within ±25 %% at length %d (z = %.1f)", target, k, v.zmin);
-    claims_row(cl, id, "thesis §4.3", claim, stat, fig4_5_variants[a].name, r, rse, zs, md, &v);
+    snprintf(against, sizeof against, "%gx", target);
+    claims_row_against(cl, id, "thesis §4.3", claim, stat, fig4_5_variants[a].name, r, rse, &v, against,
+                       "%g within ±25 %% at length %d", target, k);
 }
 
 void fig4_5_light_ratio(const struct accept_table *t, int k, double *r, double *se)
@@ -54,7 +54,7 @@ static void mean_over_lengths(const double *mean, const double *se, int K, doubl
  * the acceptance averaged over lengths 2..K within ±10 %. */
 static void claims_predicted(struct claims *cl, const struct accept_table *t, const struct trials_table *tr)
 {
-    char zs[256], md[512], stat[96];
+    char stat[96];
     const struct {
         int run;
         enum trial_stat stat;
@@ -64,14 +64,12 @@ static void claims_predicted(struct claims *cl, const struct accept_table *t, co
         mean_over_lengths(t->mean[pred[p].run], t->se[pred[p].run], t->K, &mc, &sc);
         mean_over_lengths(tr->value[pred[p].stat], tr->se[pred[p].stat], t->K, &mp, &sp);
         struct verdict v = verdict_similar(mc, sc, mp, sp, 0.10, 1);
-        snprintf(zs, sizeof zs, "predicted10%%=%.2f", v.zmin);
-        snprintf(md, sizeof md, "predicted from independent trials %.4g ± %.2g, within ±10 %% (z = %.1f)", mp, sp,
-                 v.zmin);
         snprintf(stat, sizeof stat, "acceptance, mean over lengths 2-%d", t->K);
-        claims_row(cl, "harness", "harness check",
-                   p == 0 ? "MMLT large steps accept as an independence sampler of their target predicts"
-                          : "MCTLS accepts as an independence sampler of Eq. 4.7's target predicts",
-                   stat, fig4_5_variants[pred[p].run].name, mc, sc, zs, md, &v);
+        claims_row_against(cl, "harness", "harness check",
+                           p == 0 ? "MMLT large steps accept as an independence sampler of their target predicts"
+                                  : "MCTLS accepts as an independence sampler of Eq. 4.7's target predicts",
+                           stat, fig4_5_variants[pred[p].run].name, mc, sc, &v, "predicted10%",
+                           "predicted from independent trials %.4g ± %.2g, within ±10 %%", mp, sp);
     }
 }
 
@@ -142,21 +140,18 @@ static void claims_source(struct claims *cl, const struct accept_table *t)
         int b = mmlt_steps[i].run;
         double r0 = 1 - t->mean[b][2], r1 = 1 - t->mean[V_MCTLS][2];
         v = verdict_similar(r1, t->se[V_MCTLS][2], r0, t->se[b][2], SIMILAR_REJECTION, 1);
-        snprintf(zs, sizeof zs, "%s=%.2f", fig4_5_variants[b].name, v.zmin);
-        snprintf(md, sizeof md, "%s rejected %.4g ± %.2g, within ±%g %% of it (z = %.1f)", mmlt_steps[i].what, r0,
-                 t->se[b][2], 100 * SIMILAR_REJECTION, v.zmin);
-        claims_row(cl, mmlt_steps[i].id, "thesis §4.3",
-                   "MCTLS is rejected similarly often as MMLT large steps for short paths",
-                   "rejection rate at length 2", "mctls", r1, t->se[V_MCTLS][2], zs, md, &v);
+        claims_row_against(cl, mmlt_steps[i].id, "thesis §4.3",
+                           "MCTLS is rejected similarly often as MMLT large steps for short paths",
+                           "rejection rate at length 2", "mctls", r1, t->se[V_MCTLS][2], &v, fig4_5_variants[b].name,
+                           "%s rejected %.4g ± %.2g, within ±%g %% of it", mmlt_steps[i].what, r0, t->se[b][2],
+                           100 * SIMILAR_REJECTION);
     }
     double sl, sls;
     slope_over_lengths(t, V_MCTLS, &sl, &sls);
     v = verdict_pair(sl, sls, 0, 0, +1, 1);
-    snprintf(zs, sizeof zs, "zero=%.2f", v.zmin);
-    snprintf(md, sizeof md, "a slope of 0 (z = %.1f)", v.zmin);
     snprintf(stat, sizeof stat, "slope of MCTLS's acceptance over lengths 2-%d (per length)", t->K);
-    claims_row(cl, "T15", "thesis §4.3", "MCTLS's acceptance increases with the path length", stat, "mctls", sl, sls,
-               zs, md, &v);
+    claims_row_against(cl, "T15", "thesis §4.3", "MCTLS's acceptance increases with the path length", stat, "mctls", sl,
+                       sls, &v, "zero", "a slope of 0");
     if (t->K >= 11) /* the length the thesis names */
         ratio_row(cl, t, V_MCTLS, V_MMLT, 11, 5, "harness:T16",
                   "at path length 11 MCTLS is up to five times more likely to be accepted",
@@ -181,19 +176,18 @@ static void claims_readings(struct claims *cl, const struct accept_table *t)
               "MCTLS is rejected about as often as MMLT large steps for short paths",
               "acceptance ratio MCTLS / MMLT at length 2");
     struct verdict v = verdict_similar(t->mean[0][t->K], t->se[0][t->K], t->mean[0][2], t->se[0][2], 0.25, 1);
-    snprintf(zs, sizeof zs, "length2=%.2f", v.zmin);
-    snprintf(md, sizeof md, "length 2: %.4g ± %.2g, within ±25 %% (z = %.1f)", t->mean[0][2], t->se[0][2], v.zmin);
     char stat[96];
     snprintf(stat, sizeof stat, "MMLT large-step acceptance at length %d", t->K);
-    claims_row(cl, "harness:T13", "thesis §4.3", "MMLT large steps are consistently low over all path lengths", stat,
-               "mmlt-large", t->mean[0][t->K], t->se[0][t->K], zs, md, &v);
+    claims_row_against(cl, "harness:T13", "thesis §4.3", "MMLT large steps are consistently low over all path lengths",
+                       stat, "mmlt-large", t->mean[0][t->K], t->se[0][t->K], &v, "length2",
+                       "length 2: %.4g ± %.2g, within ±25 %%", t->mean[0][2], t->se[0][2]);
 }
 
 /* The harness's checks of the drawn trials and the caption's reason (more trials for longer paths,
  * more proposals with light). */
 static void claims_trials(struct claims *cl, const struct accept_table *t)
 {
-    char zs[256], md[512], stat[96];
+    char stat[96];
     double r, rse;
     struct verdict v;
     /* one drawn trial is an MMLT large step (a check of the drawn trials): the acceptance averaged
@@ -202,11 +196,9 @@ static void claims_trials(struct claims *cl, const struct accept_table *t)
     mean_over_lengths(t->mean[V_TRIES1], t->se[V_TRIES1], t->K, &m1, &s1);
     mean_over_lengths(t->mean[V_MMLT], t->se[V_MMLT], t->K, &m0, &s0);
     v = verdict_similar(m1, s1, m0, s0, 0.05, 1);
-    snprintf(zs, sizeof zs, "mmlt-large5%%=%.2f", v.zmin);
-    snprintf(md, sizeof md, "MMLT large steps %.4g ± %.2g within ±5 %% (z = %.1f)", m0, s0, v.zmin);
     snprintf(stat, sizeof stat, "large-step acceptance, mean over lengths 2-%d", t->K);
-    claims_row(cl, "harness", "harness check", "MCTLS with one drawn trial is an MMLT large step", stat, "mctls-tries1",
-               m1, s1, zs, md, &v);
+    claims_row_against(cl, "harness", "harness check", "MCTLS with one drawn trial is an MMLT large step", stat,
+                       "mctls-tries1", m1, s1, &v, "mmlt-large5%", "MMLT large steps %.4g ± %.2g within ±5 %%", m0, s0);
     /* the thesis's count: its MMLT large steps draw among k + 2 techniques, t = 0 always failing; at
      * the length the thesis names (11) this is its own comparison */
     int k11 = t->K >= 11 ? 11 : t->K;
@@ -219,23 +211,20 @@ static void claims_trials(struct claims *cl, const struct accept_table *t)
     fig4_5_ratio(t, V_TRIES4, V_MMLT, 3, &r3, &rse3);
     fig4_5_ratio(t, V_TRIES4, V_MMLT, t->K, &r, &rse);
     v = verdict_similar(r, rse, r3, rse3, 0.25, 1);
-    snprintf(zs, sizeof zs, "length3=%.2f", v.zmin);
-    snprintf(md, sizeof md, "length 3: %.3g ± %.2g, within ±25 %% (z = %.1f)", r3, rse3, v.zmin);
     snprintf(stat, sizeof stat, "acceptance ratio, 4 drawn trials / MMLT, at length %d", t->K);
-    claims_row(cl, "T17", "thesis Fig. 4.5 caption",
-               "MCTLS gains with length because longer paths give more trials: at a fixed number of trials the gain "
-               "stays flat",
-               stat, "mctls-tries4", r, rse, zs, md, &v);
+    claims_row_against(cl, "T17", "thesis Fig. 4.5 caption",
+                       "MCTLS gains with length because longer paths give more trials: at a fixed number of trials the "
+                       "gain stays flat",
+                       stat, "mctls-tries4", r, rse, &v, "length3", "length 3: %.3g ± %.2g, within ±25 %%", r3, rse3);
     /* the caption's reason read directly: MCTLS's proposals carry light more often than MMLT's by
      * a factor that grows with length (longest length against length 3) */
     fig4_5_light_ratio(t, t->K, &r, &rse);
     fig4_5_light_ratio(t, 3, &r3, &rse3);
     v = verdict_pair(r, rse, r3, rse3, +1, 1);
-    snprintf(zs, sizeof zs, "length3=%.2f", v.zmin);
-    snprintf(md, sizeof md, "length 3: %.3g ± %.2g (z = %.1f)", r3, rse3, v.zmin);
     snprintf(stat, sizeof stat, "share of proposals with light, MCTLS / MMLT, at length %d", t->K);
-    claims_row(cl, "T17", "thesis Fig. 4.5 caption", "MCTLS generates more proposals with light for longer paths", stat,
-               "mctls", r, rse, zs, md, &v);
+    claims_row_against(cl, "T17", "thesis Fig. 4.5 caption",
+                       "MCTLS generates more proposals with light for longer paths", stat, "mctls", r, rse, &v,
+                       "length3", "length 3: %.3g ± %.2g", r3, rse3);
 }
 
 /* Thesis §4.3 on Figure 4.5 (fig4_5_claims.h). */

@@ -1,21 +1,8 @@
 /* Edge mask from primary hits at pixel centres (see edge_mask.h). */
 #include "ch5/edge_mask.h"
 #include "base/util.h"
-#include "camera/camera.h"
-#include "path/path.h"
+#include "common/primary_hit.h"
 #include <stdlib.h>
-
-/* The two image numbers of one pixel centre. */
-struct centre_sampler {
-    struct sampler base;
-    double u[2];
-};
-static double centre_next(struct sampler *s, enum dim_kind kind)
-{
-    (void)kind;
-    return ((struct centre_sampler *)s)->u[s->offset];
-}
-static const struct sampler_ops centre_ops = {centre_next, NULL, NULL};
 
 struct px_hit {
     bool hit, flat;
@@ -35,18 +22,13 @@ static bool boundary(const struct px_hit *a, const struct px_hit *b)
 
 bool *edge_mask(const struct scene *sc, int radius)
 {
-    int W = sc->cam.width, H = sc->cam.height, m = camera_margin(&sc->cam);
+    int W = sc->cam.width, H = sc->cam.height;
     struct px_hit *px = xcalloc((size_t)W * H, sizeof *px);
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
-            struct centre_sampler cs = {
-                {&centre_ops, 0, 0, 0},
-                {(x + 0.5 + m) / camera_film_width(&sc->cam), (y + 0.5 + m) / camera_film_height(&sc->cam)}};
-            double rx, ry;
-            vec3 d = camera_sample_dir(&sc->cam, sc->cam.pos, &cs.base, &rx, &ry, NULL);
             struct hit h;
             struct px_hit *p = &px[(size_t)y * W + x];
-            p->hit = accel_intersect(sc->accel, sc->cam.pos, d, 0, INFINITY, &h);
+            p->hit = primary_hit(sc, x, y, &h);
             if (!p->hit) continue;
             const struct prim *pr = &sc->prims[h.prim];
             p->prim = h.prim;

@@ -33,6 +33,9 @@ enum ch6_q {
     Q_NORM_ERR,      /* |image mean luminance / the reference's - 1|: the normalisation's error (and the reference's) */
     Q_B_IMAGE_RSE,   /* the relative standard error of the b the image is scaled to (seed pass or pooled) */
     Q_BLOCK_MAX,     /* log10 of the largest per-block relMSE: the error of the image's worst region */
+    Q_GLOSSY_RELMSE, /* relMSE over the pixels whose first hit is glossy (glossy_mask.h) */
+    Q_GLOSSY_BLUR8,  /* error share surviving an 8 x 8 blur over the 8 x 8 blocks wholly on glossy surfaces */
+    Q_GLOSSY_RATIO,  /* log10 of the glossy pixels' relMSE over the other pixels': how unevenly the error falls */
     Q_COUNT
 };
 

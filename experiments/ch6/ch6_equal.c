@@ -213,6 +213,7 @@ int main(int argc, char **argv)
     ch6_write_tables(&e);
     ch6_report(&e);
     free(e.blocks);
+    free(e.glossy);
     free(e.methods_buf);
     img_destroy(e.ref);
     return 0;

@@ -58,6 +58,8 @@ struct ch6_equal {
     double mlum, eps, expo;
     double *blocks; /* the per-block relMSE scratch, cap values */
     int cap;
+    bool *glossy; /* the pixels whose first hit is glossy (glossy_mask.h), with a reference; NULL without */
+    int nglossy;
     /* R[method][budget][seed]; sum[method][q]: mean and se over seeds at the largest budget */
     struct ch6_run (*R)[CH6_MAX_BUDGETS][CH6_MAX_SEEDS];
     double sum[CH6_MAX_METHODS][Q_COUNT][2];
@@ -72,8 +74,8 @@ char **ch6_with_scale(const struct opts_spec *spec, int *argc, char **argv);
  * --render-args split. */
 void ch6_methods_parse(struct ch6_equal *e, const char *methods);
 /* ch6_reference.c: the scene's content hash (for the reference's and the run cache's keys; the scene
- * is loaded only when either is used) and the run cache opened when --run-cache names one and the
- * runs are in-process. */
+ * is loaded only when either is used), its glossy pixels at the runs' resolution (with a reference),
+ * and the run cache opened when --run-cache names one and the runs are in-process. */
 void ch6_scene_identity(struct ch6_equal *e);
 /* ch6_reference.c: the cached BDPT reference (common/refcache.h) into e->ref (NULL with
  * --reference-spp 0), its statistics, and OUT/reference.png. */

@@ -3,6 +3,7 @@
  * pixels (samples per pixel, seed, shortest length, resolution), rendered like the runs. The scene's
  * content hash is computed here once and shared with the run cache's key (ch6_scene_identity). */
 #include "ch6/ch6_equal.h"
+#include "ch6/glossy_mask.h"
 #include "common/die.h"
 #include "common/proc.h"
 #include "common/refcache.h"
@@ -50,6 +51,9 @@ void ch6_scene_identity(struct ch6_equal *e)
     struct scene *sc = scene_load(e->scene, err, sizeof err);
     if (!sc) die(DIE_USAGE, e->prog, "%s", err);
     e->scene_hash = ckpt_scene_hash(sc);
+    int w, h;
+    if (e->res && sscanf(e->res, "%dx%d", &w, &h) == 2) camera_resize(&sc->cam, w, h);
+    if (e->refspp) e->glossy = glossy_mask(sc, &e->nglossy);
     scene_free(sc);
     if (e->run_cache_dir && !e->renderer.path) /* in-process runs: this executable renders them */
         e->cache = (struct run_cache){.dir = e->run_cache_dir, .build = ckpt_build_hash(), .scene = e->scene_hash};

@@ -42,20 +42,33 @@ static void inset_statistics(const struct ch6_equal *e, struct ch6_run *r, const
         if (rc[0] + rc[2] > im->w || rc[1] + rc[3] > im->h)
             die(DIE_USAGE, e->prog, "--insets: rectangle %d (%d,%d,%d,%d) lies outside the %dx%d image", i + 1, rc[0],
                 rc[1], rc[2], rc[3], im->w, im->h);
-        int m = block_relmse_in(im, e->ref, e->blk, e->eps, rc, e->blocks + n, e->cap - n);
+        int m = block_relmse_in(im, e->ref, e->blk, e->eps, rc, NULL, e->blocks + n, e->cap - n);
         n += m < e->cap - n ? m : e->cap - n;
         r->q[Q_INSET_BLUR8] +=
-            error_blur_share_in(im, e->ref, e->eps, 8, rc, mean_lum_scale(im, e->ref)) / (last - first + 1);
+            error_blur_share_in(im, e->ref, e->eps, 8, rc, NULL, mean_lum_scale(im, e->ref)) / (last - first + 1);
     }
     r->q[Q_INSET_SPREAD] = block_spread(e->blocks, n);
+}
+
+/* The error on glossy surfaces, where the MMLT paper places original MLT's artifacts (Figs. 1, 6):
+ * its relMSE, its share surviving an 8 x 8 blur (the splotches; blocks wholly on glossy pixels, the
+ * image scaled as a whole) and how it compares with the rest of the image's. */
+static void glossy_statistics(const struct ch6_equal *e, struct ch6_run *r, const struct image *im)
+{
+    if (!e->glossy || !e->nglossy) return;
+    r->q[Q_GLOSSY_RELMSE] = relmse_where(im, e->ref, e->eps, e->glossy, true);
+    r->q[Q_GLOSSY_BLUR8] = error_blur_share_in(im, e->ref, e->eps, 8, (const int[4]){0, 0, im->w, im->h}, e->glossy,
+                                               mean_lum_scale(im, e->ref));
+    double rest = relmse_where(im, e->ref, e->eps, e->glossy, false);
+    r->q[Q_GLOSSY_RATIO] = rest > 0 && r->q[Q_GLOSSY_RELMSE] > 0 ? log10(r->q[Q_GLOSSY_RELMSE] / rest) : NAN;
 }
 
 /* A run's image against the reference (no reference: every image statistic nan). */
 static void image_statistics(struct ch6_equal *e, struct ch6_run *r, const struct image *im)
 {
-    static const enum ch6_q image_q[] = {Q_RELMSE,       Q_RELMSE_SCALED, Q_SPREAD,   Q_BLOCK_MEDIAN,
-                                         Q_TRIMMED,      Q_BLUR4,         Q_BLUR8,    Q_CORRLEN,
-                                         Q_INSET_SPREAD, Q_INSET_BLUR8,   Q_NORM_ERR, Q_BLOCK_MAX};
+    static const enum ch6_q image_q[] = {Q_RELMSE,   Q_RELMSE_SCALED, Q_SPREAD,        Q_BLOCK_MEDIAN, Q_TRIMMED,
+                                         Q_BLUR4,    Q_BLUR8,         Q_CORRLEN,       Q_INSET_SPREAD, Q_INSET_BLUR8,
+                                         Q_NORM_ERR, Q_BLOCK_MAX,     Q_GLOSSY_RELMSE, Q_GLOSSY_BLUR8, Q_GLOSSY_RATIO};
     for (size_t k = 0; k < sizeof image_q / sizeof *image_q; k++)
         r->q[image_q[k]] = NAN;
     const struct image *ref = e->ref;
@@ -79,6 +92,7 @@ static void image_statistics(struct ch6_equal *e, struct ch6_run *r, const struc
     r->q[Q_CORRLEN] = error_corr_length(im, ref);
     r->q[Q_NORM_ERR] = fabs(img_mean_luminance(im) / e->mlum - 1);
     inset_statistics(e, r, im);
+    glossy_statistics(e, r, im);
 }
 
 /* Non-zero fraction of the 'total' rows of the render's statistics: all kinds (kind NULL) or one. */

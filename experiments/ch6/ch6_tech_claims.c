@@ -44,11 +44,8 @@ char *ch6_tech_claims(const struct ch6_tech_claims_in *in, char *err, size_t err
             goto done;
         int seeds = c[0]->nrows < c[1]->nrows ? c[0]->nrows : c[1]->nrows;
         struct verdict v = verdict_pair(m[0], s[0], m[1], s[1], rows[i].sign, seeds);
-        char zs[64], vs[128];
-        snprintf(zs, sizeof zs, "pssmlt=%.2f", v.zmin);
-        snprintf(vs, sizeof vs, "pssmlt %.4g ± %.2g (z = %.1f)", m[1], s[1], v.zmin);
-        claims_row(&cl, "M-f", "MMLT paper §5, Fig. 5", rows[i].claim, rows[i].statistic, "mmlt", m[0], s[0], zs, vs,
-                   &v);
+        claims_row_against(&cl, "M-f", "MMLT paper §5, Fig. 5", rows[i].claim, rows[i].statistic, "mmlt", m[0], s[0],
+                           &v, "pssmlt", "pssmlt %.4g ± %.2g", m[1], s[1]);
     }
     md = claims_finish(&cl, in->dir, err, errlen);
 done:

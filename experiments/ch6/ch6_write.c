@@ -42,6 +42,9 @@ static const struct quantity {
     {Q_NORM_ERR, "norm_error", "%.6g", true},
     {Q_B_IMAGE_RSE, "b_image_rse", "%.6g", true},
     {Q_BLOCK_MAX, "block_max_log10_relmse", "%.6g", true},
+    {Q_GLOSSY_RELMSE, "glossy_relmse", "%.6g", true},
+    {Q_GLOSSY_BLUR8, "glossy_blur8_share", "%.6g", true},
+    {Q_GLOSSY_RATIO, "glossy_log10_relmse_ratio", "%.6g", true},
 };
 enum { NQ = sizeof quantities / sizeof *quantities };
 _Static_assert((int)NQ == (int)Q_COUNT, "every quantity of enum ch6_q has a column");

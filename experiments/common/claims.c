@@ -89,6 +89,20 @@ void claims_row(struct claims *cl, const char *id, const char *source, const cha
             need, *flag ? "; ⚠ " : "", flag);
 }
 
+void claims_row_against(struct claims *cl, const char *id, const char *source, const char *claim, const char *statistic,
+                        const char *method, double value, double se, const struct verdict *v, const char *against,
+                        const char *against_md, ...)
+{
+    char versus[256], md[512];
+    snprintf(versus, sizeof versus, "%s=%.2f", against, v->zmin);
+    va_list ap;
+    va_start(ap, against_md);
+    int n = vsnprintf(md, sizeof md, against_md, ap);
+    va_end(ap);
+    if (n >= 0 && (size_t)n < sizeof md) snprintf(md + n, sizeof md - (size_t)n, " (z = %.1f)", v->zmin);
+    claims_row(cl, id, source, claim, statistic, method, value, se, versus, md, v);
+}
+
 char *claims_finish(struct claims *cl, const char *dir, char *err, size_t errlen)
 {
     fclose(cl->c);

@@ -29,6 +29,12 @@ void claims_begin(struct claims *cl, const char *scale, const char *command, con
 void claims_row(struct claims *cl, const char *id, const char *source, const char *claim, const char *statistic,
                 const char *method, double value, double se, const char *versus, const char *versus_md,
                 const struct verdict *v);
+/* claims_row against one thing, `against` (a method, or a bound such as "0.5"): the CSV's comparison
+ * "AGAINST=z", the table's the printf format `against_md` (what is compared with, "mmlt %.4g ± %.2g"
+ * or "below 0.5") followed by " (z = z)", z being v's. */
+void claims_row_against(struct claims *cl, const char *id, const char *source, const char *claim, const char *statistic,
+                        const char *method, double value, double se, const struct verdict *v, const char *against,
+                        const char *against_md, ...) __attribute__((format(printf, 11, 12)));
 /* The comparison's two forms for claims_row from verdict_extreme's z over k methods: "NAME=z;..."
  * into versus and "NAME mean ± se (z = z); ..." into versus_md, for the methods whose z is a number. */
 void claims_versus(const char *const *names, const double *mean, const double *se, const double *z, int k, char *versus,
