@@ -183,7 +183,9 @@ static void complete_and_compare(const char *run, const char *resume, bool mcmc)
  * 10-50 % of the uninterrupted run's duration. A start that finishes before its kill (a resumed run
  * has less left to do, and a loaded machine stretches the start-up) ends that run, and its
  * checkpoint is removed so that the next start begins afresh; starts go on, up to three per wanted kill, until `kills`
- * kills have landed in a running render. After every kill the checkpoint is absent or whole. Returns how many starts
+ * kills have landed in a running render. When none of those starts continued from a checkpoint (a loaded machine
+ * stretches the start-up and the seed pass, which write none, past every early kill), up to `kills` more starts are
+ * killed later, at 50-90 %, until one has. After every kill the checkpoint is absent or whole. Returns how many starts
  * were killed while running; *resumed counts the starts that continued from a checkpoint. */
 static int kill_and_resume(const char *args, bool mcmc, int kills, uint64_t seed, int *resumed, int *starts)
 {
@@ -196,11 +198,11 @@ static int kill_and_resume(const char *args, bool mcmc, int kills, uint64_t seed
     int killed = 0;
     *resumed = 0;
     int i = 0;
-    for (; i < 3 * kills && killed < kills; i++) {
-        bool from_ckpt = exists("run.ckpt");
+    for (; killed < kills ? i < 3 * kills : !*resumed && i < 4 * kills; i++) {
+        bool from_ckpt = exists("run.ckpt"), extra = killed >= kills;
         *resumed += from_ckpt;
         pid_t pid = start(run, from_ckpt ? resume : "");
-        usleep((useconds_t)(1e6 * (0.1 + 0.4 * rng_uniform(&r)) * span));
+        usleep((useconds_t)(1e6 * ((extra ? 0.5 : 0.1) + 0.4 * rng_uniform(&r)) * span));
         kill(pid, SIGKILL);
         int st = finish(pid);
         cr_assert(absent_or_intact("run.ckpt"), "start %d left a torn checkpoint", i);
@@ -230,9 +232,9 @@ static void kills_of(const char *args, bool mcmc, int kills, uint64_t seed)
                 "this test)",
                 args, killed, starts, resumed, kill_points);
     /* timing decides where the kills land: all must hit a running render within three starts per
-     * kill, and one resume must start from a checkpoint */
-    cr_assert_eq(killed, kills, "%s: only %d of %d kills hit a running render in %d starts", args, killed, kills,
-                 3 * kills);
+     * kill, and one resume must start from a checkpoint (with up to `kills` later kills for it) */
+    cr_assert_geq(killed, kills, "%s: only %d of %d kills hit a running render in %d starts", args, killed, kills,
+                  starts);
     cr_assert_gt(resumed, 0, "%s", args);
 }
 
