@@ -19,7 +19,8 @@
  * Writes OUT/runs.csv (one row per run), OUT/summary.csv (mean +- standard error over seeds per method
  * and budget), OUT/stats.csv (the same at the largest budget, one row per method and statistic),
  * OUT/NAME.md (the table and the claims), OUT/reference.png and OUT/<method>.png (first seed, budget
- * T); all atomically.
+ * T), and OUT/glossy-mask.png (the reference, dimmed off the glossy pixels) when the scene has glossy
+ * surfaces; all atomically.
  *
  * This file is the orchestration: the options, then the parts of ch6_equal.h in order (scales,
  * methods, reference, runs, tables, report). --scale quick|full|paper applies that scale's rows of

@@ -59,7 +59,7 @@ struct ch6_equal {
     double *blocks; /* the per-block relMSE scratch, cap values */
     int cap;
     bool *glossy; /* the pixels whose first hit is glossy (glossy_mask.h), with a reference; NULL without */
-    int nglossy;
+    int nglossy, glossy_w, glossy_h; /* how many, and the mask's size (the camera's at --resolution) */
     /* R[method][budget][seed]; sum[method][q]: mean and se over seeds at the largest budget */
     struct ch6_run (*R)[CH6_MAX_BUDGETS][CH6_MAX_SEEDS];
     double sum[CH6_MAX_METHODS][Q_COUNT][2];

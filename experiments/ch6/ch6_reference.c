@@ -54,12 +54,29 @@ void ch6_scene_identity(struct ch6_equal *e)
     int w, h;
     if (e->res && sscanf(e->res, "%dx%d", &w, &h) == 2) camera_resize(&sc->cam, w, h);
     if (e->refspp) e->glossy = glossy_mask(sc, &e->nglossy);
+    e->glossy_w = sc->cam.width, e->glossy_h = sc->cam.height;
     scene_free(sc);
     if (e->run_cache_dir && !e->renderer.path) /* in-process runs: this executable renders them */
         e->cache = (struct run_cache){.dir = e->run_cache_dir, .build = ckpt_build_hash(), .scene = e->scene_hash};
     if (e->cache.dir && !e->cache.build)
         die(DIE_RUNTIME, e->prog,
             "--run-cache: cannot read the running executable (/proc/self/exe) to identify the build");
+}
+
+/* OUT/glossy-mask.png: the reference with the pixels off the glossy surfaces dimmed to a fifth, to
+ * show where the glossy statistics are measured. */
+static void write_glossy_png(const struct ch6_equal *e)
+{
+    if (!e->ref || !e->nglossy || e->ref->w != e->glossy_w || e->ref->h != e->glossy_h) return;
+    char err[4200], path[4096];
+    struct image *m = img_create(e->ref->w, e->ref->h);
+    for (size_t i = 0; i < (size_t)m->w * m->h; i++)
+        for (int c = 0; c < 3; c++)
+            m->px[3 * i + c] = e->ref->px[3 * i + c] * (e->glossy[i] ? 1 : 0.2);
+    snprintf(path, sizeof path, "%s/glossy-mask.png", e->out);
+    bool ok = img_write_png(m, e->expo, path, err, sizeof err);
+    img_destroy(m);
+    if (!ok) die(DIE_RUNTIME, e->prog, "%s", err);
 }
 
 void ch6_reference(struct ch6_equal *e)
@@ -85,4 +102,5 @@ void ch6_reference(struct ch6_equal *e)
     if (e->ref && !(e->mlum > 0)) die(DIE_RUNTIME, e->prog, "the reference is black: %s", e->refpath);
     snprintf(path, sizeof path, "%s/reference.png", e->out);
     if (e->ref && !img_write_png(e->ref, e->expo, path, err, sizeof err)) die(DIE_RUNTIME, e->prog, "%s", err);
+    write_glossy_png(e);
 }

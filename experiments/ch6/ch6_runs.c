@@ -55,7 +55,7 @@ static void inset_statistics(const struct ch6_equal *e, struct ch6_run *r, const
  * image scaled as a whole) and how it compares with the rest of the image's. */
 static void glossy_statistics(const struct ch6_equal *e, struct ch6_run *r, const struct image *im)
 {
-    if (!e->glossy || !e->nglossy) return;
+    if (!e->glossy || !e->nglossy || im->w != e->glossy_w || im->h != e->glossy_h) return;
     r->q[Q_GLOSSY_RELMSE] = relmse_where(im, e->ref, e->eps, e->glossy, true);
     r->q[Q_GLOSSY_BLUR8] = error_blur_share_in(im, e->ref, e->eps, 8, (const int[4]){0, 0, im->w, im->h}, e->glossy,
                                                mean_lum_scale(im, e->ref));

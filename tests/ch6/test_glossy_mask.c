@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/util.h"
 #include "ch6/glossy_mask.h"
 #include "path/scene_ready.h"
 #include "stats/error_stats.h"
@@ -70,4 +71,43 @@ Test(glossy_mask, statistics_count_only_the_masked_pixels)
     cr_expect(isnan(relmse_where(a, ref, 0.01, none, true)));
     img_destroy(ref);
     img_destroy(a);
+}
+
+#ifndef BIN_DIR
+#define BIN_DIR "bin"
+#endif
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+/* Whether FILE holds TEXT. */
+static bool file_has(const char *file, const char *text)
+{
+    char *s = read_whole_file(file);
+    cr_assert(s, "cannot read %s", file);
+    bool has = strstr(s, text) != NULL;
+    free(s);
+    return has;
+}
+
+/* bin/ch6_equal end to end: on the gold sphere the glossy statistics get their rows and the mask its
+ * picture; on the Cornell box (every surface Lambertian) neither is written. */
+Test(glossy_mask, ch6_equal_measures_on_glossy_scenes_only, .timeout = 120)
+{
+    char dir[] = "/tmp/glossy-ch6-XXXXXX", cmd[1200], f[256];
+    cr_assert(mkdtemp(dir));
+    const char *scene[2] = {"tests/data/glossy-sphere.json", "scenes/cornell-box/scene.json"};
+    for (int k = 0; k < 2; k++) {
+        snprintf(cmd, sizeof cmd,
+                 BIN_DIR "/ch6_equal --scene %s --out %s/%d --methods mmlt --seeds 2 --spp 2 --resolution 32x32 "
+                         "--reference-spp 4 --reference %s/ref%d.exr --render-args '--seed-paths 2000' >/dev/null 2>&1",
+                 scene[k], dir, k, dir, k);
+        cr_assert_eq(system(cmd), 0, "%s", cmd);
+        snprintf(f, sizeof f, "%s/%d/stats.csv", dir, k);
+        cr_expect_eq(file_has(f, ",mmlt,glossy_relmse,"), k == 0, "%s", f);
+        snprintf(f, sizeof f, "%s/%d/glossy-mask.png", dir, k);
+        cr_expect_eq(access(f, F_OK) == 0, k == 0, "%s", f);
+    }
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    cr_assert_eq(system(cmd), 0);
 }
