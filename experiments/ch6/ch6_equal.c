@@ -115,7 +115,7 @@ static const char *parse(struct ch6_equal *e, int argc, char **argv)
          .help = "seeds S .. S+N-1 (a regression check's seeds differ from its baseline's)"},
         {"--t0", OPT_DOUBLE, OPT_DST(t0), .arg = "S", .lo = 0.01, .hi = 1e6,
          .help = "smallest budget; budgets double from it up to T (default T: one budget)"},
-        {"--resolution", OPT_WXH, .str = &res, .arg = "WxH", .lo = 1, .hi = INT_MAX,
+        {"--resolution", OPT_WXH, OPT_DST(e->res_wh), .str = &res, .arg = "WxH", .lo = 1, .hi = INT_MAX,
          .expect = "WxH with positive integers", .help = "override the camera (also for the reference)"},
         OPT_REFERENCE(e->refpath,
                       .help =

@@ -31,6 +31,7 @@ struct ch6_run {
 struct ch6_equal {
     /* the command line */
     const char *prog, *scene, *out, *name, *refpath, *res, *source, *command, *scale, *insets;
+    int res_wh[2];                    /* --resolution parsed (when res is set) */
     const char *study;                /* --study: whose scales, and whose claims (ch6_claims.h) */
     const char *scene_name;           /* the scene's folder: the reference's default name, whatever --name */
     char render[4096], extra_s[1024]; /* render: --render, or "render" (in-process) */

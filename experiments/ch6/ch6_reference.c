@@ -51,8 +51,7 @@ void ch6_scene_identity(struct ch6_equal *e)
     struct scene *sc = scene_load(e->scene, err, sizeof err);
     if (!sc) die(DIE_USAGE, e->prog, "%s", err);
     e->scene_hash = ckpt_scene_hash(sc);
-    int w, h;
-    if (e->res && sscanf(e->res, "%dx%d", &w, &h) == 2) camera_resize(&sc->cam, w, h);
+    if (e->res) camera_resize(&sc->cam, e->res_wh[0], e->res_wh[1]);
     if (e->refspp) e->glossy = glossy_mask(sc, &e->nglossy);
     e->glossy_w = sc->cam.width, e->glossy_h = sc->cam.height;
     scene_free(sc);
