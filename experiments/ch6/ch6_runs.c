@@ -167,10 +167,12 @@ static int render_argv(struct ch6_equal *e, const struct ch6_method *m, char **r
     int c = 0;
     rv[c++] = e->render;
     rv[c++] = (char *)e->scene;
-    for (int k = 0; k < m->argc; k++)
-        rv[c++] = m->argv[k];
+    /* the shared --render-args first: bin/render keeps an option's last value, so a method's own
+     * setting of the same option (its own --seed-paths, say) overrides the shared one */
     for (int k = 0; k < e->extra_c; k++)
         rv[c++] = e->extra_argv[k];
+    for (int k = 0; k < m->argc; k++)
+        rv[c++] = m->argv[k];
     for (int k = 0; k < nfixed; k++)
         rv[c++] = fixed[k];
     if (e->res) {

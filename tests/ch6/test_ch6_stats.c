@@ -215,7 +215,8 @@ static char *slurp_file(const char *path)
 }
 
 /* bin/ch6_equal end to end on a tiny Cornell box, its renders in-process: a method render does not
- * accept is probed, skipped and named; the others get one row per seed and budget, and the table.
+ * accept is probed, skipped and named; the others get one row per seed and budget, and the table;
+ * a method's own options override --render-args.
  * Bad input: exit 2. */
 Test(ch6_tool, skips_a_method_the_renderer_lacks_and_writes_its_tables, .timeout = 120)
 {
@@ -225,7 +226,7 @@ Test(ch6_tool, skips_a_method_the_renderer_lacks_and_writes_its_tables, .timeout
     snprintf(cmd, sizeof cmd,
              BIN_DIR
              "/ch6_equal --scene scenes/cornell-box/scene.json --out %s/o --methods 'pssmlt,nosuch,big=--method mmlt "
-             "--p-large 1' "
+             "--p-large 1 --seed-paths 500' "
              "--seeds 2 --time 0.2 --t0 0.1 --resolution 16x16 --reference-spp 4 --reference %s/ref.exr --min-length 2 "
              "--render-args '--seed-paths 2000' >/dev/null 2>&1",
              dir, dir);
@@ -236,6 +237,11 @@ Test(ch6_tool, skips_a_method_the_renderer_lacks_and_writes_its_tables, .timeout
     cr_assert(strstr(runs, "cornell-box,pssmlt,2,0.2,"), "%s", runs);
     cr_assert(strstr(runs, "cornell-box,big,1,0.1,"), "%s", runs);
     cr_assert(strstr(runs, "# min_length 2"), "%s", runs);
+    /* a method's own option beats the shared --render-args (big's seed pass is its own 500) */
+    snprintf(cmd, sizeof cmd, "%s/o/runs/big-s1-t0.2.csv", dir);
+    cr_assert(strstr(slurp_file(cmd), "\n# seed_paths 500\n"), "%s", cmd);
+    snprintf(cmd, sizeof cmd, "%s/o/runs/pssmlt-s1-t0.2.csv", dir);
+    cr_assert(strstr(slurp_file(cmd), "\n# seed_paths 2000\n"), "%s", cmd);
     snprintf(cmd, sizeof cmd, "%s/o/cornell-box.md", dir);
     cr_assert(strstr(slurp_file(cmd), "| nosuch | not available in this build"));
     /* the claims: only (1) has its method here (pssmlt), once per statistic, each with a verdict word */
