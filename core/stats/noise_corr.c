@@ -5,41 +5,55 @@
 #include <math.h>
 #include <stdlib.h>
 
-bool corr_profiles(const double *f, int w, int h, int maxlag, double *rho_x, double *rho_y)
+bool corr_profiles_in(const double *f, int w, int h, const bool *mask, int maxlag, double *rho_x, double *rho_y)
 {
     ASSERT(maxlag >= 0 && maxlag < w && maxlag < h);
-    size_t n = (size_t)w * h;
+    size_t n = (size_t)w * h, m = 0;
     double mean = 0;
     for (size_t i = 0; i < n; i++)
-        mean += f[i];
-    mean /= (double)n;
+        if (!mask || mask[i]) mean += f[i], m++;
+    if (m == 0) return false;
+    mean /= (double)m;
+    /* outside the mask e is 0 and flagged out, so a pair counts only with both ends inside */
     double *e = xmalloc(n * sizeof *e), var = 0;
     for (size_t i = 0; i < n; i++) {
-        e[i] = f[i] - mean;
+        e[i] = !mask || mask[i] ? f[i] - mean : 0;
         var += e[i] * e[i];
     }
-    var /= (double)n;
+    var /= (double)m;
     if (!(var > 0)) {
         free(e);
         return false;
     }
     for (int d = 0; d <= maxlag; d++) {
-        double sx = 0, sy = 0;
+        double sx = 0, sy = 0, nx = (double)(w - d) * h, ny = (double)(h - d) * w;
+        if (mask) nx = ny = 0;
         for (int y = 0; y < h; y++) {
             const double *r = e + (size_t)y * w;
-            for (int x = 0; x + d < w; x++)
+            const bool *mr = mask ? mask + (size_t)y * w : NULL;
+            for (int x = 0; x + d < w; x++) {
                 sx += r[x] * r[x + d];
+                if (mr) nx += mr[x] && mr[x + d];
+            }
             if (y + d < h) {
                 const double *r2 = e + (size_t)(y + d) * w;
-                for (int x = 0; x < w; x++)
+                const bool *mr2 = mask ? mask + (size_t)(y + d) * w : NULL;
+                for (int x = 0; x < w; x++) {
                     sy += r[x] * r2[x];
+                    if (mr) ny += mr[x] && mr2[x];
+                }
             }
         }
-        rho_x[d] = sx / ((double)(w - d) * h) / var;
-        rho_y[d] = sy / ((double)(h - d) * w) / var;
+        rho_x[d] = nx > 0 ? sx / nx / var : NAN;
+        rho_y[d] = ny > 0 ? sy / ny / var : NAN;
     }
     free(e);
     return true;
+}
+
+bool corr_profiles(const double *f, int w, int h, int maxlag, double *rho_x, double *rho_y)
+{
+    return corr_profiles_in(f, w, h, NULL, maxlag, rho_x, rho_y);
 }
 
 double corr_length(const double *rho, int n, double level)
@@ -53,8 +67,10 @@ double corr_length_lag1(const double *rho, int n)
 {
     if (n < 2 || !(rho[1] > 0)) return NAN;
     double lv = rho[1] * exp(-1.0);
-    for (int d = 2; d < n; d++)
+    for (int d = 2; d < n; d++) {
+        if (isnan(rho[d])) return d - 1; /* a masked profile with no pairs this far */
         if (rho[d] < lv) return d - 1 + (rho[d - 1] - lv) / (rho[d - 1] - rho[d]);
+    }
     return n - 1;
 }
 
@@ -113,16 +129,21 @@ double error_blur_share(const struct image *a, const struct image *ref, double e
     return error_blur_share_in(a, ref, eps, k, (const int[4]){0, 0, a->w, a->h}, NULL, mean_lum_scale(a, ref));
 }
 
-double error_corr_length(const struct image *img, const struct image *ref)
+double error_corr_length_in(const struct image *img, const struct image *ref, const bool *mask)
 {
     int maxlag = 32;
     if (maxlag >= img->w) maxlag = img->w - 1;
     if (maxlag >= img->h) maxlag = img->h - 1;
     if (maxlag < 2) return NAN;
     double *e = error_field(img, ref), rx[33], ry[33];
-    bool ok = corr_profiles(e, img->w, img->h, maxlag, rx, ry);
+    bool ok = corr_profiles_in(e, img->w, img->h, mask, maxlag, rx, ry);
     free(e);
     if (!ok) return NAN;
     double lx = corr_length_lag1(rx, maxlag + 1), ly = corr_length_lag1(ry, maxlag + 1);
     return 0.5 * ((isnan(lx) ? 1 : lx) + (isnan(ly) ? 1 : ly));
+}
+
+double error_corr_length(const struct image *img, const struct image *ref)
+{
+    return error_corr_length_in(img, ref, NULL);
 }

@@ -17,10 +17,15 @@
 /* rho_x[d], rho_y[d] for d = 0..maxlag (horizontal and vertical lags); f is w*h, row-major.
  * maxlag must be below w and h. Returns false when the field is constant (no variance). */
 bool corr_profiles(const double *f, int w, int h, int maxlag, double *rho_x, double *rho_y);
+/* The same over the pixels of mask (w*h flags; NULL: every pixel): the mean and variance over them,
+ * and a lag's sum over the pairs with both ends in it; NAN at a lag no such pair has. False also
+ * when the mask is empty. */
+bool corr_profiles_in(const double *f, int w, int h, const bool *mask, int maxlag, double *rho_x, double *rho_y);
 /* The first lag at which rho[0..n-1] falls below level, interpolated; n - 1 when it never does. */
 double corr_length(const double *rho, int n, double level);
 /* 1 + the first lag d >= 1 at which rho[d] / rho[1] falls below 1/e, interpolated (n >= 2); NAN when
- * rho[1] <= 0 (no correlated part to measure). */
+ * rho[1] <= 0 (no correlated part to measure); d - 1 when rho[d] is NAN before that (a masked
+ * profile whose pairs end there). */
 double corr_length_lag1(const double *rho, int n);
 /* The luminance error field of an MCMC render against a reference, after scaling the render to the
  * reference's mean: e = lum(s I - R), s = mean lum R / mean lum I. The scale removes the error of
@@ -34,6 +39,9 @@ double *error_field(const struct image *img, const struct image *ref);
  * render dominated by isolated fireflies gives that). NAN only when the error is constant (an
  * error-free render) or the image is under 3 pixels on a side. */
 double error_corr_length(const struct image *img, const struct image *ref);
+/* error_corr_length over the pixels of mask (corr_profiles_in; NULL: every pixel), the render
+ * scaled by the whole image's mean_lum_scale. */
+double error_corr_length_in(const struct image *img, const struct image *ref, const bool *mask);
 /* That scale, s = mean lum ref / mean lum img (1 when img is black). */
 double mean_lum_scale(const struct image *img, const struct image *ref);
 

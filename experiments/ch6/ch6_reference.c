@@ -3,8 +3,8 @@
  * pixels (samples per pixel, seed, shortest length, resolution), rendered like the runs. The scene's
  * content hash is computed here once and shared with the run cache's key (ch6_scene_identity). */
 #include "ch6/ch6_equal.h"
-#include "ch6/glossy_mask.h"
 #include "common/die.h"
+#include "common/glossy_mask.h"
 #include "common/proc.h"
 #include "common/refcache.h"
 #include "io/checkpoint.h"

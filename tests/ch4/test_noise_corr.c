@@ -139,3 +139,45 @@ Test(noise_corr, an_axis_without_correlation_counts_as_one)
     img_destroy(im);
     img_destroy(ref);
 }
+
+/* corr_profiles_in (the T27 statistic on the rings' pixels of Fig. 5.6): blurred noise (s = 3) on
+ * the left half of the field, white noise on the right. Masked to a half, the length is that half's
+ * (sqrt(1 + 4 s^2) = 6.08 and 1); a mask of every pixel gives the unmasked profile to the bit; a
+ * lag no pair of the mask spans is NAN and ends the length there. */
+Test(noise_corr, a_mask_measures_only_its_pixels)
+{
+    const int w = 512, h = 256, L = 30;
+    double *f = synthetic(w, h, 3.0, 3.0, 0.0, 4);
+    rng g;
+    rng_seed(&g, 5, 1);
+    bool *left = malloc(sizeof(bool) * w * h), *all = malloc(sizeof(bool) * w * h);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            size_t i = (size_t)y * w + x;
+            left[i] = x < w / 2;
+            all[i] = true;
+            if (!left[i]) f[i] = 3.0 + gauss(&g);
+        }
+    double rx[31], ry[31], ax[31], ay[31];
+    cr_assert(corr_profiles(f, w, h, L, rx, ry));
+    cr_assert(corr_profiles_in(f, w, h, all, L, ax, ay));
+    for (int d = 0; d <= L; d++)
+        cr_assert(rx[d] == ax[d] && ry[d] == ay[d], "lag %d", d);
+    cr_assert(corr_profiles_in(f, w, h, left, L, ax, ay));
+    double l = 0.5 * (corr_length_lag1(ax, L + 1) + corr_length_lag1(ay, L + 1)), e = sqrt(1 + 4 * 9.0);
+    cr_assert(fabs(l / e - 1) < 0.1, "left half: %g, expected %g", l, e);
+    for (int i = 0; i < w * h; i++)
+        left[i] = !left[i];
+    cr_assert(corr_profiles_in(f, w, h, left, L, ax, ay));
+    for (int d = 1; d <= L; d++)
+        cr_assert(fabs(ax[d]) < 0.03 && fabs(ay[d]) < 0.03, "white half, lag %d: %g %g", d, ax[d], ay[d]);
+    /* a 3-pixel-wide column: no horizontal pair beyond lag 2 */
+    for (int i = 0; i < w * h; i++)
+        left[i] = i % w >= 10 && i % w < 13;
+    cr_assert(corr_profiles_in(f, w, h, left, L, ax, ay));
+    cr_assert(!isnan(ax[2]) && isnan(ax[3]));
+    cr_assert(corr_length_lag1(ax, L + 1) <= 2);
+    free(f);
+    free(left);
+    free(all);
+}

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 
 #include "base/util.h"
-#include "ch6/glossy_mask.h"
+#include "common/glossy_mask.h"
 #include "path/scene_ready.h"
 #include "stats/error_stats.h"
 #include "stats/noise_corr.h"

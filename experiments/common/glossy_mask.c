@@ -1,5 +1,5 @@
 /* Glossy first hits per pixel (glossy_mask.h). */
-#include "ch6/glossy_mask.h"
+#include "common/glossy_mask.h"
 #include "base/util.h"
 #include "common/primary_hit.h"
 
