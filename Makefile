@@ -354,7 +354,7 @@ figures:
 
 report:
 	@bash scripts/install-deps.sh --report
-	bash scripts/report.sh $(SCALE)
+	REPORT_TARGETS='$(FIGURE_TARGETS)' bash scripts/report.sh $(SCALE)
 	bash scripts/report-check.sh results/report/index.html
 
 # ---- make lint: the architecture and the layout, checked. The core's folders include only those

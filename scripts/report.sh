@@ -14,11 +14,13 @@ out=${REPORT_DIR:-results/report} # tests write elsewhere
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 ch6=results/ch6-$scale hyb=results/hybrid-study-$scale tech=results/mmlt-ratio/technique-k6-$scale meq=results/mmlt-equal-$scale
 bg=results/bdpt-pt-$scale cdc=results/cdc-ch6-$scale mis=results/mis-robust-$scale md=results/mmlt-design-$scale
-pr=results/pitp-rate-$scale
+pr=results/pitp-rate-$scale f4=results/mmlt-fig4-$scale f9=results/mmlt-fig9-$scale fd=results/fused-door-$scale
+fc=results/fused-caustic-$scale
 # The claims ledger's files: every claims.csv of the figures at this scale.
 ledger=$(ls results/fig*/claims.csv results/inverse-density/claims.csv results/table1-cmlt/claims.csv "$ch6"/*/claims.csv \
   results/mmlt-ratio/"$scale"/*/claims.csv "$hyb"/*/claims.csv "$meq"/*/claims.csv "$tech"/claims.csv "$bg"/*/claims.csv \
-  "$cdc"/*/claims.csv "$mis"/*/claims.csv "$md"/*/claims.csv "$pr"/*/claims.csv 2>/dev/null || true)
+  "$cdc"/*/claims.csv "$mis"/*/claims.csv "$md"/*/claims.csv "$pr"/*/claims.csv "$f4"/*/claims.csv "$f9"/*/claims.csv \
+  "$fd"/*/claims.csv "$fc"/*/claims.csv 2>/dev/null || true)
 # id | title | make command | images (space-separated) | data files | claim | verdict: the README's quick-scale
 # result, or @FILE... = the measured verdicts, the '- ' lines of those files (written by the run's scripts)
 entries=(
@@ -46,7 +48,16 @@ entries=(
 "pitp-rate|The harness's question: how often should PITP move the technique? (--pitp-rate P, equal time, chapter-6 scenes)|make pitp-rate|$pr/ajar/pitp-rate.png $pr/living-room/pitp-rate.png $pr/staircase/pitp-rate.png|$pr/pitp-rate.md $pr/living-room/claims.csv $pr/staircase/claims.csv $pr/ajar/claims.csv|Neither source asks: the thesis moves the technique before every small step (P = 1), Tungsten's reversible jump at a rate of 0.05.|@$pr/living-room/claims.md $pr/staircase/claims.md $pr/ajar/claims.md"
 "mmlt-design|MMLT paper §4: b_k once or progressively, one chain per length or one over all (equal time; ajar with direct light, the paper's setting, and the chapter-6 scenes)|make mmlt-design||$md/ajar-direct/claims.csv $md/living-room/claims.csv $md/staircase/claims.csv $md/ajar/claims.csv|b_k estimated progressively is less likely to miss rare bounces; one chain per path length is more efficient.|@$md/ajar-direct/claims.md $md/living-room/claims.md $md/staircase/claims.md $md/ajar/claims.md"
 "mmlt-equal|MMLT paper §5 and Fig. 4: BDPT, PSSMLT and MMLT at equal time (ajar, up to 8 bounces)|make mmlt-equal||$meq/ajar/summary.csv $meq/ajar/ajar.md $meq/ajar/claims.csv|BDPT and PSSMLT are noisy, PSSMLT barely improves on BDPT, MMLT is less noisy than both.|@$meq/ajar/claims.md"
+"mmlt-fig4|MMLT paper Figs. 1, 4 and 6: BDPT, PSSMLT, Veach's MLT and MMLT at equal time (ajar, up to 8 bounces; the glossy pixels)|make mmlt-fig4|$f4/ajar/glossy-mask.png|$f4/ajar/summary.csv $f4/ajar/ajar.md $f4/ajar/claims.csv|MMLT renders glossy surfaces more accurately than original MLT, which shows splotchy artifacts there and converges more slowly on them than elsewhere; PSSMLT is noisy overall.|@$f4/ajar/claims.md"
+"mmlt-fig9|MMLT paper Fig. 9: the diffuse door, PSSMLT, Veach's MLT and MMLT at equal time|make mmlt-fig9||$f9/ajar-diffuse/summary.csv $f9/ajar-diffuse/ajar-diffuse.md $f9/ajar-diffuse/claims.csv|On a diffuse door original MLT beats MMLT, which beats PSSMLT.|@$f9/ajar-diffuse/claims.md"
+"fused-door|Veach's perturbations fused into MMLT and PITP through the inverse (Otsu et al. 2017; thesis §7.1): the door scene (ajar)|make fused-door||$fd/ajar/summary.csv $fd/ajar/ajar.md $fd/ajar/claims.csv|Original MLT wins on a door scene; the fused chain is robust (beats MMLT and original MLT); do other perturbations through the inverse help PITP (§7.1)?|@$fd/ajar/claims.md"
+"fused-caustic|Veach's perturbations fused into MMLT and PITP through the inverse (Otsu et al. 2017; thesis §7.1): the caustic scene (glass-marble)|make fused-caustic||$fc/glass-marble/summary.csv $fc/glass-marble/glass-marble.md $fc/glass-marble/claims.csv|MMLT wins on a caustic scene; the fused chain is robust (beats MMLT and original MLT); do other perturbations through the inverse help PITP (§7.1)?|@$fc/glass-marble/claims.md"
 )
+# REPORT_TARGETS (make report: its FIGURE_TARGETS): every figure target has an entry, so that none
+# of them (and none of its claims) can be left out of the page and the ledger.
+for t in ${REPORT_TARGETS:-}; do
+  printf '%s\n' "${entries[@]}" | grep -q "^$t|" || { echo "report: make $t has no entry in scripts/report.sh (entries=)" >&2; exit 1; }
+done
 page() {
 cat <<'HEAD'
 <!DOCTYPE html>

@@ -47,3 +47,21 @@ Test(report, ledger_check_refuses_a_bad_verdict_and_a_missing_figure, .timeout =
     expect_ledger_refused("f=$(grep -o 'data-claims=\"[^\"]*\"' results/report/index.html | head -1); grep -vF \"$f\"",
                           "claims ledger: BAD.*no ledger row for");
 }
+
+/* make report hands report.sh its figure targets (REPORT_TARGETS): each must have an entry on the
+ * page, whose claims then reach the ledger. The Makefile's own list passes; one target more, without
+ * an entry, is refused with its name. */
+Test(report, every_figure_target_has_an_entry, .timeout = 120)
+{
+    int st =
+        system("set -e; t=$(make --no-print-directory -n report | sed -n \"s/^REPORT_TARGETS='\\([^']*\\)'.*/\\1/p\"); "
+               "[ -n \"$t\" ]; case \" $t \" in *' mmlt-fig9 '*) ;; *) exit 3;; esac; d=$(mktemp -d); "
+               "REPORT_TARGETS=\"$t\" REPORT_DIR=$d bash scripts/report.sh quick >/dev/null 2>&1; "
+               "if REPORT_TARGETS=\"$t nosuch\" REPORT_DIR=$d bash scripts/report.sh quick 2>$d/err >/dev/null; then "
+               "exit 4; fi; "
+               "grep -q 'make nosuch has no entry' $d/err; rm -rf $d");
+    cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 0,
+              "status %d (3: no figure targets from make -n report; 4: an "
+              "unlisted target accepted)",
+              WIFEXITED(st) ? WEXITSTATUS(st) : -1);
+}
