@@ -50,18 +50,24 @@ Test(report, ledger_check_refuses_a_bad_verdict_and_a_missing_figure, .timeout =
 
 /* make report hands report.sh its figure targets (REPORT_TARGETS): each must have an entry on the
  * page, whose claims then reach the ledger. The Makefile's own list passes; one target more, without
- * an entry, is refused with its name. */
+ * an entry, is refused with its name. report.sh runs in a scratch folder (its scripts and the
+ * catalogue, no results), so that the other tests' files cannot touch it; make's parent flags are
+ * dropped (no jobserver to inherit). */
 Test(report, every_figure_target_has_an_entry, .timeout = 120)
 {
-    int st =
-        system("set -e; t=$(make --no-print-directory -n report | sed -n \"s/^REPORT_TARGETS='\\([^']*\\)'.*/\\1/p\"); "
-               "[ -n \"$t\" ]; case \" $t \" in *' mmlt-fig9 '*) ;; *) exit 3;; esac; d=$(mktemp -d); "
-               "REPORT_TARGETS=\"$t\" REPORT_DIR=$d bash scripts/report.sh quick >/dev/null 2>&1; "
-               "if REPORT_TARGETS=\"$t nosuch\" REPORT_DIR=$d bash scripts/report.sh quick 2>$d/err >/dev/null; then "
-               "exit 4; fi; "
-               "grep -q 'make nosuch has no entry' $d/err; rm -rf $d");
+    int st = system(
+        "set -e; r=$PWD; d=$(mktemp -d); trap 'rm -rf $d' EXIT; "
+        "t=$(env -u MAKEFLAGS -u MAKELEVEL make --no-print-directory -n report 2>$d/make.err "
+        "| sed -n \"s/^REPORT_TARGETS='\\([^']*\\)'.*/\\1/p\"); "
+        "case \" $t \" in *' mmlt-fig9 '*) ;; *) cat $d/make.err >&2; exit 3;; esac; "
+        "mkdir $d/w $d/w/results; ln -s $r/scripts $d/w/scripts; cp $r/results/claims-catalogue.csv $d/w/results/; "
+        "cd $d/w; REPORT_TARGETS=\"$t\" REPORT_DIR=$d/out bash scripts/report.sh quick >/dev/null 2>$d/err1 "
+        "|| { cat $d/err1 >&2; exit 5; }; "
+        "if REPORT_TARGETS=\"$t nosuch\" REPORT_DIR=$d/out bash scripts/report.sh quick 2>$d/err >/dev/null; then exit "
+        "4; "
+        "fi; grep -q 'make nosuch has no entry' $d/err || { cat $d/err >&2; exit 6; }");
     cr_assert(WIFEXITED(st) && WEXITSTATUS(st) == 0,
-              "status %d (3: no figure targets from make -n report; 4: an "
-              "unlisted target accepted)",
+              "status %d (3: no figure targets from make -n report; 5: report.sh failed with them; 4: an unlisted "
+              "target accepted; 6: refused without naming it)",
               WIFEXITED(st) ? WEXITSTATUS(st) : -1);
 }
