@@ -162,12 +162,13 @@ static void run_kind(const struct scene *sc, const struct fig5_cfg *c, const str
     for (int i = 0; i < c->seeds; i++) {
         struct mlt_result r;
         fig5_run(sc, c, kind ? SMALL_STEP_CONTROLLED : SMALL_STEP_PSS, c->fig.seed + (uint64_t)i, false, &r);
-        x[i] = img_relmse(r.img, ref, 0.01);
-        x[c->seeds + i] = error_corr_length(r.img, ref);
-        x[2 * c->seeds + i] = error_blur_share(r.img, ref, 0.01, 8);
-        x[3 * c->seeds + i] = median_block_relmse(r.img, ref);
-        x[4 * c->seeds + i] = trimmed_relmse(r.img, ref, 0.01, 0.001);
-        x[5 * c->seeds + i] = decay_slope(sc, c, kind, c->fig.seed + (uint64_t)i, ref, x[3 * c->seeds + i]);
+        x[Q_RELMSE * c->seeds + i] = img_relmse(r.img, ref, 0.01);
+        x[Q_CORRLEN * c->seeds + i] = error_corr_length(r.img, ref);
+        x[Q_BLUR8 * c->seeds + i] = error_blur_share(r.img, ref, 0.01, 8);
+        x[Q_MEDIAN * c->seeds + i] = median_block_relmse(r.img, ref);
+        x[Q_TRIMMED * c->seeds + i] = trimmed_relmse(r.img, ref, 0.01, 0.001);
+        x[Q_SLOPE * c->seeds + i] =
+            decay_slope(sc, c, kind, c->fig.seed + (uint64_t)i, ref, x[Q_MEDIAN * c->seeds + i]);
         x[Q_GLOSSY_CORRLEN * c->seeds + i] = error_corr_length_in(r.img, ref, glossy);
         x[Q_GLOSSY_BLUR4 * c->seeds + i] = error_blur_share_in(
             r.img, ref, 0.01, 4, (const int[4]){0, 0, ref->w, ref->h}, glossy, mean_lum_scale(r.img, ref));
